@@ -1,0 +1,33 @@
+//! # tabor-numerics
+//!
+//! The one numerical layer every tabor model stands on. It holds no physics:
+//!
+//! - [`roots`](crate::root_finding): Brent's method (from the `roots` crate) with
+//!   bracket validation and automatic bracket expansion, and a safeguarded Newton
+//!   iteration for smooth problems;
+//! - [`quadrature`](crate::quadrature): Clenshaw-Curtis (from the `quadrature` crate)
+//!   for smooth integrands, tanh-sinh for integrands with endpoint singularities, and
+//!   fixed Gauss-Legendre rules for hot loops;
+//! - [`special`]: Gamma and Beta functions (from `statrs`), the incomplete beta
+//!   function `B(x; a, b)` of seed 000 eqs. (5.11), (5.17) and the Gamma-function
+//!   ratios `β(n)`, `β(n, k)` of the power-law contact solutions;
+//! - [`Cost`]: evaluations and iterations that callers accumulate, so the library can
+//!   show what accuracy costs;
+//! - [`NumericsError`]: typed failures (no bracket, no convergence, non-finite value,
+//!   invalid argument) instead of NaN or panics.
+//!
+//! Every routine takes a tolerance and returns the value with what it spent.
+
+mod cost;
+mod error;
+pub mod quadrature;
+pub mod root_finding;
+pub mod special;
+
+pub use cost::Cost;
+pub use error::NumericsError;
+pub use quadrature::{GaussLegendre, Integral, QuadTolerance};
+pub use root_finding::{BracketExpansion, Root, RootTolerance};
+
+/// Result type of this crate.
+pub type Result<T> = std::result::Result<T, NumericsError>;

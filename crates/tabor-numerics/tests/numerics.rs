@@ -1,0 +1,460 @@
+//! Known values, failure modes and property tests of the numerical layer.
+
+use approx::assert_relative_eq;
+use proptest::prelude::*;
+use std::f64::consts::{FRAC_PI_2, PI};
+use tabor_numerics::quadrature::{
+    integrate_singular, integrate_singular_by_distance, integrate_smooth,
+};
+use tabor_numerics::root_finding::{brent, brent_expanding, expand_bracket, newton_safeguarded};
+use tabor_numerics::special::{
+    beta, gamma, gamma_ratio, graded_power_law_beta, incomplete_beta, power_law_beta,
+    regularized_incomplete_beta,
+};
+use tabor_numerics::{
+    BracketExpansion, GaussLegendre, NumericsError, QuadTolerance, RootTolerance,
+};
+
+// ---------------------------------------------------------------- quadrature
+
+#[test]
+fn inverse_square_root_singularity() {
+    // ∫₀¹ x^(-1/2) dx = 2
+    let i = integrate_singular(|x| x.powf(-0.5), 0.0, 1.0, QuadTolerance::relative(1e-12)).unwrap();
+    assert_relative_eq!(i.value, 2.0, max_relative = 1e-13);
+    assert!(i.error_estimate <= 2e-12);
+    assert!(i.evaluations > 0);
+}
+
+#[test]
+fn strong_endpoint_singularity() {
+    // ∫₀¹ x^(-0.9) dx = 10: most of the mass sits within 1e-10 of 0.
+    let i = integrate_singular(|x| x.powf(-0.9), 0.0, 1.0, QuadTolerance::relative(1e-10)).unwrap();
+    assert_relative_eq!(i.value, 10.0, max_relative = 1e-9);
+}
+
+#[test]
+fn log_and_semicircle() {
+    let tol = QuadTolerance::relative(1e-13);
+    let i = integrate_singular(f64::ln, 0.0, 1.0, tol).unwrap();
+    assert_relative_eq!(i.value, -1.0, max_relative = 1e-13);
+    let i = integrate_singular(|x| (1.0 - x * x).sqrt(), -1.0, 1.0, tol).unwrap();
+    assert_relative_eq!(i.value, FRAC_PI_2, max_relative = 1e-13);
+    // both endpoints singular: ∫₀¹ dx/√(x(1−x)) = π
+    let i =
+        integrate_singular_by_distance(|_, da, db| 1.0 / (da * db).sqrt(), 0.0, 1.0, tol).unwrap();
+    assert_relative_eq!(i.value, PI, max_relative = 1e-13);
+    // the same on a shifted interval, where 1 − x and x − a both lose digits
+    let i = integrate_singular_by_distance(|_, da, db| 1.0 / (da * db).sqrt(), 10.0, 12.0, tol)
+        .unwrap();
+    assert_relative_eq!(i.value, PI, max_relative = 1e-13);
+}
+
+#[test]
+fn crate_de_rule_is_not_enough_for_singular_endpoints() {
+    // Documents why integrate_singular does not delegate to the quadrature crate's
+    // double-exponential rule: it misses ∫₀¹ x^(-1/2) = 2 by more than 1e-7.
+    let o = quadrature::integrate(|x: f64| x.powf(-0.5), 0.0, 1.0, 1e-14);
+    assert!((o.integral - 2.0).abs() > 1e-8);
+}
+
+#[test]
+fn smooth_integrals() {
+    let tol = QuadTolerance::relative(1e-13);
+    let i = integrate_smooth(f64::sin, 0.0, PI, tol).unwrap();
+    assert_relative_eq!(i.value, 2.0, max_relative = 1e-13);
+    let i = integrate_smooth(f64::exp, 0.0, 1.0, tol).unwrap();
+    assert_relative_eq!(i.value, 1f64.exp() - 1.0, max_relative = 1e-14);
+    // Runge's function needs subdivision: 2/5 · atan 5
+    let i = integrate_smooth(|x| 1.0 / (1.0 + 25.0 * x * x), -1.0, 1.0, tol).unwrap();
+    assert_relative_eq!(i.value, 0.4 * 5f64.atan(), max_relative = 1e-13);
+    // a sharp peak
+    let i = integrate_smooth(|x| 1.0 / (1e-4 + x * x), -1.0, 1.0, tol).unwrap();
+    assert_relative_eq!(i.value, 2.0 * 100.0 * 100f64.atan(), max_relative = 1e-12);
+}
+
+#[test]
+fn reversed_and_empty_intervals() {
+    let tol = QuadTolerance::relative(1e-12);
+    let i = integrate_smooth(f64::exp, 1.0, 0.0, tol).unwrap();
+    assert_relative_eq!(i.value, -(1f64.exp() - 1.0), max_relative = 1e-13);
+    let i = integrate_singular(|x| x.powf(-0.5), 1.0, 0.0, tol).unwrap();
+    assert_relative_eq!(i.value, -2.0, max_relative = 1e-12);
+    assert_eq!(
+        integrate_smooth(f64::exp, 2.0, 2.0, tol).unwrap().value,
+        0.0
+    );
+}
+
+#[test]
+fn quadrature_failure_modes() {
+    let tol = QuadTolerance::relative(1e-10);
+    let e = integrate_smooth(|x| 1.0 / (x - 0.5), 0.0, 1.0, tol).unwrap_err();
+    assert!(matches!(e, NumericsError::NonFinite { .. }), "{e:?}");
+    let e = integrate_singular(|_| f64::NAN, 0.0, 1.0, tol).unwrap_err();
+    assert!(matches!(e, NumericsError::NonFinite { .. }), "{e:?}");
+    let e = integrate_smooth(f64::exp, f64::NAN, 1.0, tol).unwrap_err();
+    assert!(matches!(e, NumericsError::InvalidArgument { .. }), "{e:?}");
+    let e = integrate_smooth(f64::exp, 0.0, 1.0, QuadTolerance::relative(-1.0)).unwrap_err();
+    assert!(matches!(e, NumericsError::InvalidArgument { .. }), "{e:?}");
+    // a divergent integral cannot converge
+    let e = integrate_singular(|x| 1.0 / x, 0.0, 1.0, tol).unwrap_err();
+    assert!(matches!(e, NumericsError::NoConvergence { .. }), "{e:?}");
+    assert!(e.to_string().contains("tanh-sinh"));
+}
+
+#[test]
+fn gauss_legendre_known_rules() {
+    let g2 = GaussLegendre::new(2).unwrap();
+    assert_relative_eq!(g2.nodes()[1], 1.0 / 3f64.sqrt(), max_relative = 1e-15);
+    assert_relative_eq!(g2.weights()[0], 1.0, max_relative = 1e-15);
+    let g3 = GaussLegendre::new(3).unwrap();
+    assert_relative_eq!(g3.nodes()[2], (0.6f64).sqrt(), max_relative = 1e-15);
+    assert_relative_eq!(g3.weights()[1], 8.0 / 9.0, max_relative = 1e-15);
+    assert_relative_eq!(g3.weights()[0], 5.0 / 9.0, max_relative = 1e-15);
+    assert!(GaussLegendre::new(0).is_err());
+    for n in [5usize, 16, 40, 101] {
+        let g = GaussLegendre::new(n).unwrap();
+        let wsum: f64 = g.weights().iter().sum();
+        assert_relative_eq!(wsum, 2.0, max_relative = 1e-14);
+        // exact for x^(2n-2) on [0, 1]
+        let p = (2 * n - 2) as i32;
+        let v = g.integrate(|x| x.powi(p), 0.0, 1.0);
+        assert_relative_eq!(v, 1.0 / (p as f64 + 1.0), max_relative = 1e-13);
+    }
+}
+
+proptest! {
+    #[test]
+    fn smooth_polynomials_match_antiderivative(a in -10.0f64..10.0, w in 1e-3f64..10.0, c3 in -5.0f64..5.0, c0 in -5.0f64..5.0) {
+        let b = a + w;
+        let f = |x: f64| c3 * x * x * x + x * x + c0;
+        let anti = |x: f64| c3 * x.powi(4) / 4.0 + x.powi(3) / 3.0 + c0 * x;
+        let exact = anti(b) - anti(a);
+        let i = integrate_smooth(f, a, b, QuadTolerance { absolute: 1e-12, relative: 1e-12 }).unwrap();
+        prop_assert!((i.value - exact).abs() <= 1e-10 * (1.0 + exact.abs()));
+    }
+
+    #[test]
+    fn singular_powers_match_closed_form(p in -0.8f64..3.0, b in 1e-3f64..1e3) {
+        // ∫₀^b x^p dx = b^(p+1)/(p+1)
+        let exact = b.powf(p + 1.0) / (p + 1.0);
+        let i = integrate_singular(|x| x.powf(p), 0.0, b, QuadTolerance::relative(1e-11)).unwrap();
+        prop_assert!((i.value / exact - 1.0).abs() <= 1e-9, "p={p} b={b} got {} want {exact}", i.value);
+    }
+}
+
+// ------------------------------------------------------------------ roots
+
+#[test]
+fn brent_known_roots() {
+    let tol = RootTolerance::relative(1e-15);
+    let r = brent(|x| x * x - 2.0, 0.0, 2.0, tol).unwrap();
+    assert_relative_eq!(r.value, 2f64.sqrt(), max_relative = 4e-16);
+    assert!(r.iterations > 0 && r.evaluations >= r.iterations);
+    // the Dottie number, the fixed point of cos
+    let r = brent(|x| x.cos() - x, 0.0, 1.0, tol).unwrap();
+    assert_relative_eq!(r.value, 0.739_085_133_215_160_7, max_relative = 1e-15);
+    // reversed bracket, exact zero at an end
+    let r = brent(|x| x - 3.0, 3.0, -1.0, tol).unwrap();
+    assert_eq!(r.value, 3.0);
+}
+
+#[test]
+fn brent_failure_modes() {
+    let tol = RootTolerance::relative(1e-12);
+    let e = brent(|x| x * x + 1.0, -1.0, 1.0, tol).unwrap_err();
+    assert!(matches!(e, NumericsError::NoBracket { .. }), "{e:?}");
+    let e = brent(|x| if x > 0.5 { f64::NAN } else { x - 0.7 }, 0.0, 1.0, tol).unwrap_err();
+    assert!(matches!(e, NumericsError::NonFinite { .. }), "{e:?}");
+    let e = brent(
+        |x| (x - 0.3).powi(3) * 1e-3 + (x - 0.3),
+        0.0,
+        1.0,
+        RootTolerance {
+            absolute: 0.0,
+            relative: 1e-15,
+            max_iterations: 2,
+        },
+    )
+    .unwrap_err();
+    assert!(matches!(e, NumericsError::NoConvergence { .. }), "{e:?}");
+    let e = brent(|x| x, f64::INFINITY, 1.0, tol).unwrap_err();
+    assert!(matches!(e, NumericsError::InvalidArgument { .. }), "{e:?}");
+    let e = brent(
+        |x| x,
+        -1.0,
+        1.0,
+        RootTolerance {
+            absolute: f64::NAN,
+            relative: 0.0,
+            max_iterations: 10,
+        },
+    )
+    .unwrap_err();
+    assert!(matches!(e, NumericsError::InvalidArgument { .. }), "{e:?}");
+}
+
+#[test]
+fn bracket_expansion() {
+    // geometric: the root at 1e5 is found from [0.1, 0.2]
+    let r = brent_expanding(
+        |v| v - 1e5,
+        0.1,
+        0.2,
+        BracketExpansion::default(),
+        RootTolerance::relative(1e-14),
+    )
+    .unwrap();
+    assert_relative_eq!(r.value, 1e5, max_relative = 1e-14);
+    // and a root at 1e-6 downwards
+    let r = brent_expanding(
+        |v| v.ln() - (1e-6f64).ln(),
+        0.1,
+        0.2,
+        BracketExpansion::default(),
+        RootTolerance::relative(1e-14),
+    )
+    .unwrap();
+    assert_relative_eq!(r.value, 1e-6, max_relative = 1e-13);
+    // linear within limits
+    let (lo, hi, _) = expand_bracket(
+        |x| x + 50.0,
+        0.0,
+        1.0,
+        BracketExpansion::Linear {
+            factor: 1.6,
+            min: -1e3,
+            max: 1e3,
+            max_steps: 50,
+        },
+    )
+    .unwrap();
+    assert!(lo <= -50.0 && hi >= -50.0);
+    let e = expand_bracket(
+        |x| x * x + 1.0,
+        0.0,
+        1.0,
+        BracketExpansion::Linear {
+            factor: 1.6,
+            min: -10.0,
+            max: 10.0,
+            max_steps: 50,
+        },
+    )
+    .unwrap_err();
+    assert!(matches!(e, NumericsError::NoBracket { .. }));
+    let e = expand_bracket(
+        |x| x,
+        -1.0,
+        1.0,
+        BracketExpansion::Geometric {
+            factor: 2.0,
+            max_steps: 5,
+        },
+    )
+    .unwrap_err();
+    assert!(matches!(e, NumericsError::InvalidArgument { .. }));
+}
+
+#[test]
+fn newton_known_roots() {
+    // Wallis' cubic x³ − 2x − 5 = 0
+    let r = newton_safeguarded(
+        |x| (x * x * x - 2.0 * x - 5.0, 3.0 * x * x - 2.0),
+        2.0,
+        3.0,
+        2.5,
+        RootTolerance::relative(1e-15),
+    )
+    .unwrap();
+    assert_relative_eq!(r.value, 2.094_551_481_542_326_5, max_relative = 1e-15);
+    // a bad start (derivative 0) falls back to bisection
+    let r = newton_safeguarded(
+        |x| (x * x - 4.0, 2.0 * x),
+        -1.0,
+        5.0,
+        0.0,
+        RootTolerance::relative(1e-14),
+    )
+    .unwrap();
+    assert_relative_eq!(r.value, 2.0, max_relative = 1e-14);
+    let e = newton_safeguarded(
+        |x| (x * x + 1.0, 2.0 * x),
+        -1.0,
+        1.0,
+        0.0,
+        RootTolerance::relative(1e-14),
+    )
+    .unwrap_err();
+    assert!(matches!(e, NumericsError::NoBracket { .. }));
+}
+
+proptest! {
+    #[test]
+    fn brent_finds_random_roots(r in -1e3f64..1e3, below in 1e-3f64..1e3, above in 1e-3f64..1e3) {
+        let f = |x: f64| (x - r) * (1.0 + 0.1 * x * x);
+        let root = brent(f, r - below, r + above, RootTolerance { absolute: 1e-12, relative: 1e-14, max_iterations: 200 }).unwrap();
+        prop_assert!((root.value - r).abs() <= 2e-12 + 2e-14 * r.abs());
+    }
+
+    #[test]
+    fn newton_finds_random_roots(r in 0.01f64..100.0, lo_f in 0.0f64..0.99, hi_f in 1.01f64..10.0) {
+        let f = |x: f64| (x.powi(3) - r.powi(3), 3.0 * x * x);
+        let root = newton_safeguarded(f, lo_f * r, hi_f * r, hi_f * r, RootTolerance::relative(1e-14)).unwrap();
+        prop_assert!((root.value / r - 1.0).abs() <= 1e-13);
+    }
+}
+
+// --------------------------------------------------------- special functions
+
+#[test]
+fn gamma_known_values() {
+    // Abramowitz & Stegun Table 6.1 / exact values
+    assert_relative_eq!(gamma(0.5).unwrap(), PI.sqrt(), max_relative = 1e-14);
+    assert_relative_eq!(gamma(5.0).unwrap(), 24.0, max_relative = 1e-14);
+    assert_relative_eq!(
+        gamma(0.4).unwrap(),
+        2.218_159_543_757_688,
+        max_relative = 1e-14
+    );
+    assert_relative_eq!(
+        gamma(0.9).unwrap(),
+        1.068_628_702_119_319_4,
+        max_relative = 1e-14
+    );
+    assert_relative_eq!(
+        gamma_ratio(300.5, 300.0).unwrap(),
+        300f64.sqrt() * (1.0 - 1.0 / 2400.0),
+        max_relative = 1e-6
+    );
+    assert!(gamma(-1.0).is_err());
+    assert!(gamma(f64::NAN).is_err());
+}
+
+#[test]
+fn incomplete_beta_known_values() {
+    // I_{1/2}(2, 3) = 11/16 (polynomial case)
+    assert_relative_eq!(
+        regularized_incomplete_beta(0.5, 2.0, 3.0).unwrap(),
+        11.0 / 16.0,
+        max_relative = 1e-14
+    );
+    // (5.19): B(z²; 1/2, 1/2) = 2 arcsin z
+    for z in [0.01, 0.3, 0.5, 0.9, 0.999] {
+        assert_relative_eq!(
+            incomplete_beta(z * z, 0.5, 0.5).unwrap(),
+            2.0 * f64::asin(z),
+            max_relative = 1e-13
+        );
+    }
+    // I_x(a, 1) = x^a and I_x(1, b) = 1 − (1−x)^b
+    for x in [0.1, 0.5, 0.77] {
+        assert_relative_eq!(
+            regularized_incomplete_beta(x, 0.4, 1.0).unwrap(),
+            x.powf(0.4),
+            max_relative = 1e-13
+        );
+        assert_relative_eq!(
+            regularized_incomplete_beta(x, 1.0, 2.5).unwrap(),
+            1.0 - (1.0 - x).powf(2.5),
+            max_relative = 1e-13
+        );
+    }
+    // B(1; 2/5, 1/2) = Γ(2/5)Γ(1/2)/Γ(9/10), the Hertz contact time factor of (5.12)
+    let b = 2.218_159_543_757_688 * PI.sqrt() / 1.068_628_702_119_319_4;
+    assert_relative_eq!(
+        incomplete_beta(1.0, 0.4, 0.5).unwrap(),
+        b,
+        max_relative = 1e-13
+    );
+    assert_relative_eq!(beta(0.4, 0.5).unwrap(), b, max_relative = 1e-13);
+    assert!(incomplete_beta(1.5, 0.4, 0.5).is_err());
+    assert!(incomplete_beta(0.5, 0.0, 0.5).is_err());
+}
+
+#[test]
+fn incomplete_beta_against_quadrature() {
+    // an independent path: tanh-sinh of the defining integral
+    for &(x, a, b) in &[
+        (0.3, 0.4, 0.5),
+        (0.9, 2.0 / 3.0, 0.5),
+        (0.5, 0.25, 0.5),
+        (0.99, 5.0 / 11.0, 0.5),
+    ] {
+        let q = integrate_singular(
+            |t: f64| t.powf(a - 1.0) * (1.0 - t).powf(b - 1.0),
+            0.0,
+            x,
+            QuadTolerance::relative(1e-13),
+        )
+        .unwrap();
+        assert_relative_eq!(
+            incomplete_beta(x, a, b).unwrap(),
+            q.value,
+            max_relative = 1e-12
+        );
+    }
+}
+
+#[test]
+fn power_law_beta_known_values() {
+    // statrs' Gamma is good to a few ulp (see statrs_gamma_accuracy), hence 1e-14
+    assert_relative_eq!(
+        power_law_beta(1.0).unwrap(),
+        FRAC_PI_2,
+        max_relative = 1e-14
+    );
+    assert_relative_eq!(power_law_beta(2.0).unwrap(), 2.0, max_relative = 1e-14);
+    assert_relative_eq!(
+        power_law_beta(3.0).unwrap(),
+        0.75 * PI,
+        max_relative = 1e-14
+    );
+    assert_relative_eq!(
+        power_law_beta(4.0).unwrap(),
+        8.0 / 3.0,
+        max_relative = 1e-14
+    );
+    // large n: β(n) ≈ √(π n / 2) (Stirling), no overflow
+    let n = 1e4;
+    assert_relative_eq!(
+        power_law_beta(n).unwrap(),
+        (PI * n / 2.0).sqrt(),
+        max_relative = 1e-4
+    );
+    assert!(power_law_beta(0.0).is_err());
+    for k in [-0.9, -0.5, 0.0, 0.3, 0.99] {
+        assert_relative_eq!(
+            graded_power_law_beta(2.0, k).unwrap(),
+            2.0 / (1.0 + k),
+            max_relative = 1e-13
+        );
+    }
+    for n in [0.7, 1.0, 2.5, 7.0] {
+        assert_relative_eq!(
+            graded_power_law_beta(n, 0.0).unwrap(),
+            power_law_beta(n).unwrap(),
+            max_relative = 1e-14
+        );
+    }
+    assert!(graded_power_law_beta(2.0, 1.0).is_err());
+    assert!(graded_power_law_beta(2.0, -1.0).is_err());
+}
+
+#[test]
+fn statrs_gamma_accuracy() {
+    // measured precision of the Gamma function we rely on
+    let mut worst: f64 = 0.0;
+    for (x, exact) in [
+        (1.5, PI.sqrt() / 2.0),
+        (2.5, 0.75 * PI.sqrt()),
+        (3.0, 2.0),
+        (1.0, 1.0),
+        (6.0, 120.0),
+    ] {
+        worst = worst.max((gamma(x).unwrap() / exact - 1.0).abs());
+    }
+    eprintln!("worst relative Gamma error {worst:e}");
+    assert!(worst < 1e-13);
+}
