@@ -1,4 +1,5 @@
 //! Known values, failure modes and property tests of the numerical layer.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use approx::assert_relative_eq;
 use proptest::prelude::*;

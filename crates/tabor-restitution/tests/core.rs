@@ -1,4 +1,5 @@
 //! Tests of the restitution core with synthetic models whose answers are known in
+#![allow(clippy::unwrap_used, clippy::expect_used)]
 //! closed form.
 
 use approx::assert_relative_eq;

@@ -1,0 +1,39 @@
+//! `tabor`: the command line over the tabor library.
+//!
+//! One module per subcommand in `cmd/`; each parses its own arguments, calls the
+//! library and prints either a human-readable table or, with `--json`, one JSON
+//! object. Bad input ends with one line on stderr and exit code 2.
+
+mod cmd;
+mod output;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// Adhesive impact of elastic spheres: energy loss, restitution, sticking velocity.
+#[derive(Parser)]
+#[command(name = "tabor", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Effective modulus, radius and mass of a two-body collision.
+    Effective(cmd::effective::Args),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Effective(args) => cmd::effective::run(&args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
