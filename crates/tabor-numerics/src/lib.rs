@@ -20,6 +20,7 @@
 
 mod cost;
 mod error;
+pub mod ode;
 pub mod quadrature;
 pub mod root_finding;
 pub mod special;
