@@ -1,0 +1,1 @@
+//! # tabor-dynamics (work in progress)
