@@ -11,6 +11,8 @@
 //! - [`special`]: Gamma and Beta functions (from `statrs`), the incomplete beta
 //!   function `B(x; a, b)` of seed 000 eqs. (5.11), (5.17) and the Gamma-function
 //!   ratios `β(n)`, `β(n, k)` of the power-law contact solutions;
+//! - [`chebyshev`]: Chebyshev interpolation (single and piecewise) for precomputed
+//!   fast tiers of expensive smooth functions;
 //! - [`Cost`]: evaluations and iterations that callers accumulate, so the library can
 //!   show what accuracy costs;
 //! - [`NumericsError`]: typed failures (no bracket, no convergence, non-finite value,
@@ -18,6 +20,7 @@
 //!
 //! Every routine takes a tolerance and returns the value with what it spent.
 
+pub mod chebyshev;
 mod cost;
 mod error;
 pub mod ode;

@@ -459,3 +459,62 @@ fn statrs_gamma_accuracy() {
     eprintln!("worst relative Gamma error {worst:e}");
     assert!(worst < 1e-13);
 }
+
+// ----------------------------------------------------------- Chebyshev
+
+#[test]
+fn chebyshev_interpolation() {
+    use tabor_numerics::chebyshev::{ChebyshevSeries, PiecewiseChebyshev};
+    // a cubic is reproduced exactly by 4 points
+    let s = ChebyshevSeries::fit(
+        |x| Ok::<f64, NumericsError>(x * x * x - 2.0 * x + 1.0),
+        -1.0,
+        3.0,
+        4,
+    )
+    .unwrap();
+    for x in [-1.0, 0.0, 0.7, 3.0] {
+        assert_relative_eq!(
+            s.eval(x),
+            x * x * x - 2.0 * x + 1.0,
+            max_relative = 1e-13,
+            epsilon = 1e-14
+        );
+    }
+    // exp on [0, 1] with 20 points: error near machine precision
+    let s = ChebyshevSeries::fit(|x: f64| Ok::<f64, NumericsError>(x.exp()), 0.0, 1.0, 20).unwrap();
+    assert!(s.tail() < 1e-15);
+    for i in 0..=100 {
+        let x = i as f64 / 100.0;
+        assert_relative_eq!(s.eval(x), x.exp(), max_relative = 2e-15);
+    }
+    // √x on [1e-6, 1] needs pieces
+    let p = PiecewiseChebyshev::fit(
+        |x: f64| Ok::<f64, NumericsError>(x.sqrt()),
+        1e-6,
+        1.0,
+        24,
+        1e-14,
+        200,
+    )
+    .unwrap();
+    assert!(p.pieces().len() > 1);
+    for i in 0..=1000 {
+        let x = 1e-6 * (1e6f64).powf(i as f64 / 1000.0);
+        assert_relative_eq!(p.eval(x), x.sqrt(), max_relative = 1e-12);
+    }
+    assert!(p.cost().evaluations >= 24);
+    // failures
+    assert!(ChebyshevSeries::fit(|x: f64| Ok::<f64, NumericsError>(x), 1.0, 0.0, 8).is_err());
+    assert!(ChebyshevSeries::fit(|x: f64| Ok::<f64, NumericsError>(1.0 / x), -1.0, 1.0, 8).is_ok());
+    assert!(ChebyshevSeries::fit(|_| Ok::<f64, NumericsError>(f64::NAN), -1.0, 1.0, 8).is_err());
+    assert!(PiecewiseChebyshev::fit(
+        |x: f64| Ok::<f64, NumericsError>(x.abs()),
+        -1.0,
+        1.0,
+        8,
+        1e-14,
+        4
+    )
+    .is_err());
+}

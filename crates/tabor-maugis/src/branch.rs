@@ -1,0 +1,154 @@
+//! The two equilibrium branches of the Maugis-Dugdale contact in the seed's
+//! normalization (`../shared/spec/maugis-dugdale.md`).
+//!
+//! The contact branch is parametrized by `θ = arccos(â/b̂) ∈ (0, π/2]`: with
+//! `â = b̂ cos θ` and `s = b̂ sin θ` the gap condition becomes the quadratic
+//! `(3Λ/π) P(θ) b̂² + (32Λ²/π²) Q(θ) b̂ = 1` with
+//! `P(θ) = ½ sin 2θ − θ cos 2θ` and `Q(θ) = θ sin θ − (1 − cos θ)`,
+//! so every state on the branch is explicit in θ: no arccos of numbers near 1, no
+//! inner root search. `P` and `Q` cancel at leading order for small θ and are
+//! evaluated by their Taylor series there.
+
+use std::f64::consts::{FRAC_PI_2, PI};
+
+/// Below this θ, `P` and `Q` are summed as series (the direct forms lose
+/// `ε/θ²` relative accuracy).
+const SERIES_THETA: f64 = 0.5;
+
+/// `P(θ) = ½ sin 2θ − θ cos 2θ = Σ_{k≥1} (−1)^(k+1) k (2θ)^(2k+1) / (2k+1)!`
+/// (`= (4/3)θ³ − (8/15)θ⁵ + …`).
+pub(crate) fn p_of_theta(theta: f64) -> f64 {
+    if theta < SERIES_THETA {
+        let x = 2.0 * theta;
+        let x2 = x * x;
+        // term_k = (−1)^(k+1) k x^(2k+1)/(2k+1)!
+        let mut power = x * x2 / 6.0; // x^3/3!
+        let mut sum = 0.0;
+        let mut k = 1.0;
+        loop {
+            let term = k * power;
+            sum += term;
+            if term.abs() <= 1e-17 * sum.abs() {
+                break;
+            }
+            // x^(2k+3)/(2k+3)! = x^(2k+1)/(2k+1)! · x²/((2k+2)(2k+3))
+            power *= -x2 / ((2.0 * k + 2.0) * (2.0 * k + 3.0));
+            k += 1.0;
+        }
+        sum
+    } else {
+        let (s2, c2) = (2.0 * theta).sin_cos();
+        0.5 * s2 - theta * c2
+    }
+}
+
+/// `Q(θ) = θ sin θ − (1 − cos θ) = Σ_{j≥1} (−1)^(j−1) (2j − 1) θ^(2j) / (2j)!`
+/// (`= θ²/2 − θ⁴/8 + …`).
+pub(crate) fn q_of_theta(theta: f64) -> f64 {
+    if theta < SERIES_THETA {
+        let t2 = theta * theta;
+        let mut power = t2 / 2.0; // θ²/2!
+        let mut sum = 0.0;
+        let mut j = 1.0;
+        loop {
+            let term = (2.0 * j - 1.0) * power;
+            sum += term;
+            if term.abs() <= 1e-17 * sum.abs() {
+                break;
+            }
+            power *= -t2 / ((2.0 * j + 1.0) * (2.0 * j + 2.0));
+            j += 1.0;
+        }
+        sum
+    } else {
+        let (s, c) = theta.sin_cos();
+        theta * s - (1.0 - c)
+    }
+}
+
+/// An equilibrium state on the contact branch (â > 0), all quantities normalized.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactState {
+    /// θ = arccos(â/b̂).
+    pub theta: f64,
+    /// Contact radius â = a/a_c.
+    pub contact_radius: f64,
+    /// Cohesive-zone radius b̂ = b/a_c.
+    pub cohesive_radius: f64,
+    /// Indentation depth d̂ = d/d_n (negative = separated).
+    pub depth: f64,
+    /// Normal force F̂ = F/F_n, positive in compression.
+    pub force: f64,
+    /// dd̂/dθ along the branch.
+    pub depth_slope: f64,
+}
+
+/// The contact-branch state at parameter θ ∈ (0, π/2] for Tabor parameter Λ.
+///
+/// Gap condition, depth and force of `maugis-dugdale.md` (the MD solution of seed
+/// 000 section 3.3.3, used by eqs. (5.43), (5.45)): `b̂` is the positive root of the
+/// quadratic in b̂, taken in the cancellation-free form `2/(β + √(β² + 4α))`.
+pub fn contact_state(lambda: f64, theta: f64) -> ContactState {
+    let p = p_of_theta(theta);
+    let q = q_of_theta(theta);
+    let alpha = 3.0 * lambda * p / PI;
+    let beta = 32.0 * lambda * lambda * q / (PI * PI);
+    let root = (beta * beta + 4.0 * alpha).sqrt();
+    let b = 2.0 / (beta + root);
+    let (s, c) = theta.sin_cos();
+    let a = b * c;
+    let depth = 3.0 * a * a - 16.0 * lambda / PI * b * s;
+    let force = a * a * a - 4.0 * lambda / PI * b * b * (c * s + theta);
+    // db̂/dθ from implicit differentiation of α b̂² + β b̂ = 1, with
+    // P' = 2θ sin 2θ and Q' = θ cos θ.
+    let dalpha = 3.0 * lambda / PI * 2.0 * theta * (2.0 * theta).sin();
+    let dbeta = 32.0 * lambda * lambda / (PI * PI) * theta * c;
+    let db = -(dalpha * b * b + dbeta * b) / (2.0 * alpha * b + beta);
+    // d̂ = 3 b̂² cos²θ − (16Λ/π) b̂ sin θ
+    let depth_slope =
+        6.0 * b * db * c * c - 6.0 * b * b * c * s - 16.0 * lambda / PI * (db * s + b * c);
+    ContactState {
+        theta,
+        contact_radius: a,
+        cohesive_radius: b,
+        depth,
+        force,
+        depth_slope,
+    }
+}
+
+/// A state on the branch without direct contact (â = 0): uniform tension σ0 on a
+/// disc of radius b̂ ≤ K b̂_c.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NoContactState {
+    /// Cohesive-zone radius b̂.
+    pub cohesive_radius: f64,
+    /// Depth d̂ = (3/2) b̂² − (32Λ/π²) b̂ − 1/Λ.
+    pub depth: f64,
+    /// Force F̂ = −2Λ b̂² (tensile).
+    pub force: f64,
+}
+
+/// The no-contact state with cohesive radius `b̂` (seed 000 eqs. (5.41), (5.44)).
+pub fn no_contact_state(lambda: f64, cohesive_radius: f64) -> NoContactState {
+    let b = cohesive_radius;
+    NoContactState {
+        cohesive_radius: b,
+        depth: 1.5 * b * b - 32.0 * lambda / (PI * PI) * b - 1.0 / lambda,
+        force: -2.0 * lambda * b * b,
+    }
+}
+
+/// `b̂_c = 32Λ/(3π²)`: the minimum of d̂ on the no-contact branch (pull-off there).
+pub fn no_contact_pull_off_radius(lambda: f64) -> f64 {
+    32.0 * lambda / (3.0 * PI * PI)
+}
+
+/// `K = 1 − π/2 + √((1 − π/2)² + 3π⁴/(2⁹ Λ³))` of seed 000 eq. (5.46): the
+/// no-contact branch ends (meets the contact branch at â = 0) at `b̂ = K b̂_c`.
+pub fn junction_factor(lambda: f64) -> f64 {
+    let c = 1.0 - FRAC_PI_2;
+    let x = 3.0 * PI.powi(4) / (512.0 * lambda * lambda * lambda);
+    // c < 0: c + √(c² + x) = x/(√(c² + x) − c), no cancellation
+    x / ((c * c + x).sqrt() - c)
+}

@@ -1,0 +1,331 @@
+//! The Maugis-Dugdale impact path and its adhesive energy loss, seed 000 section
+//! 5.3.2, eqs. (5.40)-(5.46).
+
+use crate::branch::{contact_state, junction_factor, no_contact_pull_off_radius, no_contact_state};
+use serde::Serialize;
+use std::f64::consts::{FRAC_PI_2, PI};
+use tabor_numerics::quadrature::integrate_smooth;
+use tabor_numerics::root_finding::{brent, newton_safeguarded};
+use tabor_numerics::{Cost, QuadTolerance, RootTolerance};
+use tabor_restitution::{validate, Error, Result};
+
+/// `Λ1 = (3π³/1024)^(1/3) ≈ 0.4495`: at and below it the impact starts and ends
+/// without direct contact (case 1). Seed 000 eq. (5.42).
+pub const LAMBDA_1: f64 = 0.449_528_231_858_144;
+
+/// `Λ2 = (3π⁴/(512(π − 1)))^(1/3) ≈ 0.6435` (K = 1): above it the impact also ends
+/// with direct contact (case 3). Seed 000 eq. (5.46) and the text after (5.42).
+pub const LAMBDA_2: f64 = 0.643_533_715_989_629_8;
+
+/// The JKR loss in units of `F_n d_n`: `4(1 + ∛864)/(15 ∛3) ≈ 1.9459`, seed 000 eq.
+/// (5.36) divided by the energy scale (the prefactor of (5.43) is its inverse).
+pub const JKR_NORMALIZED_LOSS: f64 = 1.945_924_205_903_97;
+
+/// Which path the impact takes (seed 000 section 5.3.2, the three cases).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum TaborCase {
+    /// Case 1, Λ ≤ Λ1: starts and ends without direct contact; closed form (5.44).
+    NoContact,
+    /// Case 2, Λ1 < Λ ≤ Λ2: starts with direct contact, ends without; quadrature on
+    /// the contact branch plus the closed form (5.46).
+    ContactThenNoContact,
+    /// Case 3, Λ > Λ2: starts and ends with direct contact; quadrature (5.43).
+    Contact,
+}
+
+impl TaborCase {
+    /// The case of a Tabor parameter Λ > 0.
+    pub fn of(lambda: f64) -> TaborCase {
+        if lambda <= LAMBDA_1 {
+            TaborCase::NoContact
+        } else if lambda <= LAMBDA_2 {
+            TaborCase::ContactThenNoContact
+        } else {
+            TaborCase::Contact
+        }
+    }
+
+    /// The seed's case number, 1, 2 or 3.
+    pub fn number(&self) -> u8 {
+        match self {
+            TaborCase::NoContact => 1,
+            TaborCase::ContactThenNoContact => 2,
+            TaborCase::Contact => 3,
+        }
+    }
+}
+
+/// A normalized equilibrium state on the impact path.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct PathState {
+    /// Contact radius â (0 without direct contact).
+    pub contact_radius: f64,
+    /// Cohesive-zone radius b̂.
+    pub cohesive_radius: f64,
+    /// Depth d̂.
+    pub depth: f64,
+    /// Force F̂, positive in compression.
+    pub force: f64,
+    /// θ of the contact branch, or `None` on the no-contact branch.
+    pub theta: Option<f64>,
+}
+
+impl PathState {
+    fn from_contact(lambda: f64, theta: f64) -> Self {
+        let s = contact_state(lambda, theta);
+        PathState {
+            contact_radius: s.contact_radius,
+            cohesive_radius: s.cohesive_radius,
+            depth: s.depth,
+            force: s.force,
+            theta: Some(theta),
+        }
+    }
+    fn from_no_contact(lambda: f64, b: f64) -> Self {
+        let s = no_contact_state(lambda, b);
+        PathState {
+            contact_radius: 0.0,
+            cohesive_radius: b,
+            depth: s.depth,
+            force: s.force,
+            theta: None,
+        }
+    }
+}
+
+/// The characteristic states of a Maugis-Dugdale impact at Tabor parameter Λ.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ImpactPath {
+    /// The Tabor parameter Λ.
+    pub lambda: f64,
+    /// The case (1, 2 or 3).
+    pub case: TaborCase,
+    /// The state right after jump-in at d̂ = −1/Λ (5.40), (5.41).
+    pub jump_in: PathState,
+    /// The state at pull-off, the minimum of d̂ along the path (the
+    /// displacement-controlled instability).
+    pub pull_off: PathState,
+    /// Cost of locating the states.
+    pub cost: Cost,
+}
+
+/// Checks Λ: finite and > 0.
+pub(crate) fn check_lambda(lambda: f64) -> Result<f64> {
+    validate::positive("tabor_parameter", lambda)
+}
+
+const ROOT_TOL: RootTolerance = RootTolerance {
+    absolute: 0.0,
+    relative: 1e-15,
+    max_iterations: 200,
+};
+
+/// The impact path at Tabor parameter Λ: case, jump-in and pull-off states.
+///
+/// Seed 000 eqs. (5.40)-(5.42): jump-in at d̂0 = −1/Λ onto the stable equilibrium
+/// state with that depth (b̂0 = 2 b̂_c without contact, (5.41)); pull-off at the
+/// minimum of d̂ along the branch.
+pub fn impact_path(lambda: f64) -> Result<ImpactPath> {
+    let lambda = check_lambda(lambda)?;
+    let case = TaborCase::of(lambda);
+    let bc = no_contact_pull_off_radius(lambda);
+    let mut cost = Cost::ZERO;
+    let (jump_in, pull_off) = match case {
+        TaborCase::NoContact => (
+            PathState::from_no_contact(lambda, 2.0 * bc),
+            PathState::from_no_contact(lambda, bc),
+        ),
+        TaborCase::ContactThenNoContact => {
+            let theta_in = jump_in_theta(lambda, FRAC_PI_2, &mut cost)?;
+            (
+                PathState::from_contact(lambda, theta_in),
+                PathState::from_no_contact(lambda, bc),
+            )
+        }
+        TaborCase::Contact => {
+            let theta_c = pull_off_theta(lambda, &mut cost)?;
+            let theta_in = jump_in_theta(lambda, theta_c, &mut cost)?;
+            (
+                PathState::from_contact(lambda, theta_in),
+                PathState::from_contact(lambda, theta_c),
+            )
+        }
+    };
+    Ok(ImpactPath {
+        lambda,
+        case,
+        jump_in,
+        pull_off,
+        cost,
+    })
+}
+
+/// θ_c of the contact-branch pull-off (dd̂/dθ = 0) in case 3. Where rounding leaves
+/// no sign change next to Λ2, the pull-off is the junction θ = π/2.
+fn pull_off_theta(lambda: f64, cost: &mut Cost) -> Result<f64> {
+    let slope = |t: f64| contact_state(lambda, t).depth_slope;
+    let top = FRAC_PI_2;
+    if slope(top) <= 0.0 {
+        return Ok(top);
+    }
+    let mut lo = top;
+    let mut evaluations = 1u64;
+    loop {
+        lo *= 0.5;
+        evaluations += 1;
+        if slope(lo) < 0.0 {
+            break;
+        }
+        if lo < 1e-300 {
+            return Err(Error::Model {
+                model: "Maugis-Dugdale",
+                message: format!(
+                    "no pull-off state found on the contact branch for Lambda = {lambda:e}"
+                ),
+            });
+        }
+    }
+    let hi = (2.0 * lo).min(top);
+    let root = brent(slope, lo, hi, ROOT_TOL)?;
+    *cost += root.cost() + Cost::new(evaluations, 0);
+    Ok(root.value)
+}
+
+/// θ_in of the jump-in state on the contact branch: d̂(θ) = −1/Λ with θ < θ_max
+/// (the stable, large-contact side).
+fn jump_in_theta(lambda: f64, theta_max: f64, cost: &mut Cost) -> Result<f64> {
+    theta_at_depth(lambda, -1.0 / lambda, theta_max, cost)
+}
+
+/// θ < θ_max on the contact branch where d̂(θ) = `target` (d̂ decreases in θ there).
+pub(crate) fn theta_at_depth(
+    lambda: f64,
+    target: f64,
+    theta_max: f64,
+    cost: &mut Cost,
+) -> Result<f64> {
+    let g = |t: f64| {
+        let s = contact_state(lambda, t);
+        (s.depth - target, s.depth_slope)
+    };
+    let mut hi = theta_max;
+    let mut lo = theta_max;
+    let mut evaluations = 0u64;
+    loop {
+        lo *= 0.5;
+        evaluations += 1;
+        if g(lo).0 > 0.0 {
+            break;
+        }
+        hi = lo;
+        if lo < 1e-300 {
+            return Err(Error::Model {
+                model: "Maugis-Dugdale",
+                message: format!(
+                    "no state with depth {target:e} found on the contact branch for Lambda = {lambda:e}"
+                ),
+            });
+        }
+    }
+    let root = newton_safeguarded(g, lo, hi, 0.5 * (lo + hi), ROOT_TOL)?;
+    *cost += root.cost() + Cost::new(evaluations, 0);
+    Ok(root.value)
+}
+
+/// The adhesive energy loss of a Maugis-Dugdale impact in units of `F_n d_n`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct NormalizedLoss {
+    /// The Tabor parameter Λ.
+    pub lambda: f64,
+    /// The case (1, 2 or 3).
+    pub case: TaborCase,
+    /// `|ΔU_kin| / (F_n d_n)` (> 0).
+    pub loss: f64,
+    /// `|ΔU_kin| / |ΔU_kin^JKR|`, the ordinate of seed 000 Fig. 5.2.
+    pub loss_over_jkr: f64,
+    /// Estimated absolute error of `loss`; 0 for the closed form of case 1.
+    pub error_estimate: f64,
+    /// Which formula produced it.
+    pub method: &'static str,
+    /// Work spent.
+    pub cost: Cost,
+}
+
+/// The adhesive energy loss `|ΔU_kin| / (F_n d_n)` of a Maugis-Dugdale impact at Tabor
+/// parameter Λ, to the relative tolerance `tolerance` (direct evaluation).
+///
+/// Seed 000 eqs. (5.43)-(5.46): case 1 closed form `17·2¹⁹Λ⁵/(3⁴π⁸)` (5.44); case 2
+/// quadrature of `∫F̂ dd̂` on the contact branch (in θ, where the integrand is smooth
+/// through the pull-off point) plus the closed form (5.46), written as
+/// `2¹⁹Λ⁵(K − 1)²(3K² + 2K + 1)/(3⁴π⁸)` so that it stays accurate as K → 1; case 3
+/// quadrature (5.43).
+pub fn normalized_loss(lambda: f64, tolerance: f64) -> Result<NormalizedLoss> {
+    let lambda = check_lambda(lambda)?;
+    let tol = validate::tolerance("tolerance", tolerance)?;
+    let case = TaborCase::of(lambda);
+    let bc = no_contact_pull_off_radius(lambda);
+    let bc4 = bc * bc * bc * bc;
+    let (loss, error, method, cost) = match case {
+        TaborCase::NoContact => (
+            8.5 * lambda * bc4,
+            0.0,
+            "Maugis-Dugdale case 1, closed form (5.44)",
+            Cost::ZERO,
+        ),
+        TaborCase::ContactThenNoContact | TaborCase::Contact => {
+            let path = impact_path(lambda)?;
+            let theta_in = path.jump_in.theta.unwrap_or(FRAC_PI_2);
+            let theta_end = path.pull_off.theta.unwrap_or(FRAC_PI_2);
+            let closed = if case == TaborCase::ContactThenNoContact {
+                let k = junction_factor(lambda);
+                let km1 = junction_factor_minus_one(lambda);
+                0.5 * lambda * bc4 * km1 * km1 * (3.0 * k * k + 2.0 * k + 1.0)
+            } else {
+                0.0
+            };
+            // Relative tolerance on the total: the closed part is exact.
+            let integral = integrate_smooth(
+                |t| {
+                    let s = contact_state(lambda, t);
+                    s.force * s.depth_slope
+                },
+                theta_in,
+                theta_end,
+                QuadTolerance {
+                    absolute: 0.25 * tol * closed,
+                    relative: 0.25 * tol,
+                },
+            )?;
+            let method = if case == TaborCase::Contact {
+                "Maugis-Dugdale case 3, quadrature on the contact branch (5.43)"
+            } else {
+                "Maugis-Dugdale case 2, quadrature on the contact branch + closed form (5.46)"
+            };
+            (
+                integral.value + closed,
+                integral.error_estimate,
+                method,
+                path.cost + integral.cost(),
+            )
+        }
+    };
+    Ok(NormalizedLoss {
+        lambda,
+        case,
+        loss,
+        loss_over_jkr: loss / JKR_NORMALIZED_LOSS,
+        error_estimate: error,
+        method,
+        cost,
+    })
+}
+
+/// `K − 1` without cancellation: `(x − (π − 1)) / (√((1 − π/2)² + x) + π/2)` with
+/// `x = 3π⁴/(512Λ³)`, and `x − (π − 1) = (π − 1)((Λ2/Λ)³ − 1)`.
+fn junction_factor_minus_one(lambda: f64) -> f64 {
+    let c = 1.0 - FRAC_PI_2;
+    let x = 3.0 * PI.powi(4) / (512.0 * lambda * lambda * lambda);
+    let r = LAMBDA_2 / lambda;
+    (PI - 1.0) * (r * r * r - 1.0) / ((c * c + x).sqrt() + FRAC_PI_2)
+}

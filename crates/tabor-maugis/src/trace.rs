@@ -1,0 +1,170 @@
+//! The curve F̂(d̂) along a Maugis-Dugdale impact, with â and b̂: approach, jump-in,
+//! loading, unloading, pull-off. For plots, and as the force law of a time-domain
+//! simulation ([`equilibrium_state`]).
+
+use crate::branch::{contact_state, junction_factor, no_contact_pull_off_radius, no_contact_state};
+use crate::impact::{check_lambda, impact_path, theta_at_depth, PathState, TaborCase};
+use serde::Serialize;
+use std::f64::consts::FRAC_PI_2;
+use tabor_numerics::Cost;
+use tabor_restitution::{validate, Error, Result};
+
+/// The stage of the impact a traced point belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Phase {
+    /// Approach without force, d̂ < −1/Λ.
+    Approach,
+    /// The jump onto the equilibrium branch at d̂ = −1/Λ (5.40).
+    JumpIn,
+    /// Loading along the equilibrium branch.
+    Loading,
+    /// Unloading along the same branch down to the pull-off depth.
+    Unloading,
+    /// The snap-off at the displacement-controlled instability.
+    PullOff,
+}
+
+/// One point of the traced curve, normalized.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct TracePoint {
+    /// The stage of the impact.
+    pub phase: Phase,
+    /// Depth d̂.
+    pub depth: f64,
+    /// Force F̂ (compression positive).
+    pub force: f64,
+    /// Contact radius â.
+    pub contact_radius: f64,
+    /// Cohesive-zone radius b̂ (0 when no adhesive zone exists).
+    pub cohesive_radius: f64,
+}
+
+/// The equilibrium state at depth d̂ on the stable branch that the impact follows
+/// between jump-in and pull-off (and above, for deeper indentation). Depths below
+/// the pull-off depth have no such state: an error names `depth`.
+///
+/// Seed 000 section 5.3.2: the no-contact branch `d̂ = (3/2)b̂² − (32Λ/π²)b̂ − 1/Λ`
+/// for `b̂_c ≤ b̂ ≤ K b̂_c` (solved in closed form), else the contact branch.
+pub fn equilibrium_state(lambda: f64, depth: f64) -> Result<PathState> {
+    let lambda = check_lambda(lambda)?;
+    let depth = validate::finite("depth", depth)?;
+    let path = impact_path(lambda)?;
+    let mut cost = Cost::ZERO;
+    equilibrium_state_on(&path, depth, &mut cost)
+}
+
+fn equilibrium_state_on(
+    path: &crate::impact::ImpactPath,
+    depth: f64,
+    cost: &mut Cost,
+) -> Result<PathState> {
+    let lambda = path.lambda;
+    if depth < path.pull_off.depth {
+        return Err(Error::invalid(
+            "depth",
+            depth,
+            "is below the pull-off depth: no equilibrium state with adhesive contact",
+        ));
+    }
+    let bc = no_contact_pull_off_radius(lambda);
+    let k = junction_factor(lambda);
+    if path.case != TaborCase::Contact {
+        // the no-contact part of the stable path: b̂ from b̂_c to K b̂_c
+        let junction = no_contact_state(lambda, k * bc);
+        if depth <= junction.depth {
+            // (3/2)b² − 3 b_c b − (1/Λ + d) = 0, larger root
+            let c = 1.0 / lambda + depth;
+            let disc = (9.0 * bc * bc + 6.0 * c).max(0.0);
+            let b = (3.0 * bc + disc.sqrt()) / 3.0;
+            let s = no_contact_state(lambda, b);
+            return Ok(PathState {
+                contact_radius: 0.0,
+                cohesive_radius: b,
+                depth: s.depth,
+                force: s.force,
+                theta: None,
+            });
+        }
+    }
+    let theta_top = path.pull_off.theta.unwrap_or(FRAC_PI_2);
+    if depth == path.pull_off.depth && path.pull_off.theta.is_some() {
+        return Ok(path.pull_off);
+    }
+    let theta = theta_at_depth(lambda, depth, theta_top, cost)?;
+    let s = contact_state(lambda, theta);
+    Ok(PathState {
+        contact_radius: s.contact_radius,
+        cohesive_radius: s.cohesive_radius,
+        depth: s.depth,
+        force: s.force,
+        theta: Some(theta),
+    })
+}
+
+/// Traces F̂(d̂), â and b̂ along an impact at Tabor parameter Λ that reaches the
+/// maximum depth `max_depth` (d̂ ≥ −1/Λ), with `points` points on each of the
+/// loading and unloading stages (≥ 2).
+pub fn trace_impact(lambda: f64, max_depth: f64, points: usize) -> Result<Vec<TracePoint>> {
+    let lambda = check_lambda(lambda)?;
+    let max_depth = validate::finite("max_depth", max_depth)?;
+    if points < 2 {
+        return Err(Error::invalid(
+            "points",
+            points as f64,
+            "must be at least 2",
+        ));
+    }
+    let path = impact_path(lambda)?;
+    let d_in = path.jump_in.depth;
+    if max_depth < d_in {
+        return Err(Error::invalid(
+            "max_depth",
+            max_depth,
+            "must be at least the jump-in depth -1/Lambda",
+        ));
+    }
+    let mut cost = Cost::ZERO;
+    let point = |phase: Phase, s: &PathState| TracePoint {
+        phase,
+        depth: s.depth,
+        force: s.force,
+        contact_radius: s.contact_radius,
+        cohesive_radius: s.cohesive_radius,
+    };
+    let mut out = Vec::with_capacity(2 * points + 6);
+    let approach_start = d_in - (max_depth - d_in).max(1.0 / lambda) * 0.25;
+    for d in [approach_start, d_in] {
+        out.push(TracePoint {
+            phase: Phase::Approach,
+            depth: d,
+            force: 0.0,
+            contact_radius: 0.0,
+            cohesive_radius: 0.0,
+        });
+    }
+    out.push(point(Phase::JumpIn, &path.jump_in));
+    for i in 1..points {
+        let d = d_in + (max_depth - d_in) * i as f64 / (points - 1) as f64;
+        let s = equilibrium_state_on(&path, d, &mut cost)?;
+        out.push(point(Phase::Loading, &s));
+    }
+    let d_off = path.pull_off.depth;
+    for i in 1..points {
+        let d = max_depth + (d_off - max_depth) * i as f64 / (points - 1) as f64;
+        let s = if i == points - 1 {
+            path.pull_off
+        } else {
+            equilibrium_state_on(&path, d, &mut cost)?
+        };
+        out.push(point(Phase::Unloading, &s));
+    }
+    out.push(TracePoint {
+        phase: Phase::PullOff,
+        depth: d_off,
+        force: 0.0,
+        contact_radius: 0.0,
+        cohesive_radius: 0.0,
+    });
+    Ok(out)
+}

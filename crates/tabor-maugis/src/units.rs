@@ -1,0 +1,112 @@
+//! Physical scales of the normalization and conversions into the Tabor parameter Λ.
+
+use crate::impact::check_lambda;
+use serde::Serialize;
+use std::f64::consts::PI;
+use tabor_restitution::{validate, Result};
+
+/// The JKR force-controlled critical state that normalizes the Maugis-Dugdale
+/// solution (`maugis-dugdale.md`, "Scales").
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Scales {
+    /// `a_c = (9πΔγR²/(8E*))^(1/3)` (m).
+    pub contact_radius: f64,
+    /// `F_n = (3/2)πΔγR` (N).
+    pub force: f64,
+    /// `d_n = a_c²/(3R)` (m).
+    pub depth: f64,
+    /// `F_n d_n` (J), the unit of the normalized loss.
+    pub energy: f64,
+}
+
+impl Scales {
+    /// The scales for effective modulus E* (Pa), effective radius R (m) and work of
+    /// adhesion Δγ (J/m²).
+    pub fn new(
+        effective_modulus: f64,
+        effective_radius: f64,
+        work_of_adhesion: f64,
+    ) -> Result<Self> {
+        let e = validate::positive("effective_modulus", effective_modulus)?;
+        let r = validate::positive("effective_radius", effective_radius)?;
+        let w = validate::positive("work_of_adhesion", work_of_adhesion)?;
+        let a_c = (9.0 * PI * w * r / (8.0 * e)).cbrt() * r.cbrt();
+        let force = 1.5 * PI * w * r;
+        let depth = a_c * (a_c / (3.0 * r));
+        let energy = force * depth;
+        for (name, v) in [
+            ("contact radius scale a_c", a_c),
+            ("depth scale d_n", depth),
+            ("energy scale F_n d_n", energy),
+        ] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(tabor_restitution::Error::invalid(
+                    name,
+                    v,
+                    "the inputs give a scale that underflows or overflows",
+                ));
+            }
+        }
+        Ok(Scales {
+            contact_radius: a_c,
+            force,
+            depth,
+            energy,
+        })
+    }
+}
+
+/// `Λ = π (9/4)^(1/3) / 6 ≈ 0.6861` times Maugis' λ.
+pub const LAMBDA_PER_MAUGIS_PARAMETER: f64 = 0.686_108_492_583_778_5;
+
+/// Dugdale equivalence of Tabor's μ (Lennard-Jones): `λ ≈ 1.1570 μ`
+/// (`maugis-dugdale.md`; Johnson & Greenwood 1997 match σ0 = 1.03 σ_th and
+/// h = 0.97 z0).
+pub const MAUGIS_PER_TABOR_MU: f64 = 1.157;
+
+/// The seed's Tabor parameter from the Dugdale cohesive stress σ0 (Pa):
+/// `Λ = σ0 a_c² / (3 R Δγ)` (`maugis-dugdale.md`).
+pub fn tabor_parameter_from_cohesive_stress(
+    cohesive_stress: f64,
+    work_of_adhesion: f64,
+    effective_modulus: f64,
+    effective_radius: f64,
+) -> Result<f64> {
+    let s0 = validate::positive("cohesive_stress", cohesive_stress)?;
+    let scales = Scales::new(effective_modulus, effective_radius, work_of_adhesion)?;
+    // σ0 a_c²/(3RΔγ) = σ0 d_n / Δγ = d_n / h
+    check_lambda(s0 * scales.depth / work_of_adhesion)
+}
+
+/// The seed's Tabor parameter from the range of adhesion h = Δγ/σ0 (m):
+/// `Λ = d_n / h` (`maugis-dugdale.md`).
+pub fn tabor_parameter_from_range(
+    range: f64,
+    work_of_adhesion: f64,
+    effective_modulus: f64,
+    effective_radius: f64,
+) -> Result<f64> {
+    let h = validate::positive("range", range)?;
+    let scales = Scales::new(effective_modulus, effective_radius, work_of_adhesion)?;
+    check_lambda(scales.depth / h)
+}
+
+/// The seed's Tabor parameter from Maugis' λ = 2σ0 (R/(πΔγK²))^(1/3), K = 4E*/3:
+/// `Λ = π(9/4)^(1/3)/6 · λ ≈ 0.6861 λ` (`maugis-dugdale.md`).
+pub fn tabor_parameter_from_maugis(maugis_parameter: f64) -> Result<f64> {
+    let l = validate::positive("maugis_parameter", maugis_parameter)?;
+    check_lambda(LAMBDA_PER_MAUGIS_PARAMETER * l)
+}
+
+/// The seed's Tabor parameter from Tabor's μ = (RΔγ²/(E*² z0³))^(1/3), through the
+/// Dugdale equivalence λ ≈ 1.1570 μ (an approximation: the Dugdale and
+/// Lennard-Jones laws are different). So Λ = 4 is μ ≈ 5 (seed 000, after (5.46)).
+pub fn tabor_parameter_from_tabor_mu(tabor_mu: f64) -> Result<f64> {
+    let mu = validate::positive("tabor_parameter_mu", tabor_mu)?;
+    check_lambda(LAMBDA_PER_MAUGIS_PARAMETER * MAUGIS_PER_TABOR_MU * mu)
+}
+
+/// Maugis' λ from the seed's Λ (inverse of [`tabor_parameter_from_maugis`]).
+pub fn maugis_parameter(tabor_parameter: f64) -> Result<f64> {
+    Ok(check_lambda(tabor_parameter)? / LAMBDA_PER_MAUGIS_PARAMETER)
+}
