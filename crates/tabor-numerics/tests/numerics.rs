@@ -483,7 +483,7 @@ fn chebyshev_interpolation() {
     }
     // exp on [0, 1] with 20 points: error near machine precision
     let s = ChebyshevSeries::fit(|x: f64| Ok::<f64, NumericsError>(x.exp()), 0.0, 1.0, 20).unwrap();
-    assert!(s.tail() < 1e-15);
+    assert!(s.tail() < 1e-14); // rounding level of the cosine sums
     for i in 0..=100 {
         let x = i as f64 / 100.0;
         assert_relative_eq!(s.eval(x), x.exp(), max_relative = 2e-15);
