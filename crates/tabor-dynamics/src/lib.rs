@@ -1,1 +1,24 @@
-//! # tabor-dynamics (work in progress)
+//! # tabor-dynamics
+//!
+//! The time-domain simulation of one central impact, seed 000 eq. (5.5) and its
+//! generalizations: `m d̈ = −F(d, ḋ, history)` with the overlap d (positive in
+//! contact), starting at first contact (or an approach distance) with ḋ = v0 (5.6),
+//! ending at separation or sticking.
+//!
+//! - [`ForceLaw`]: the contact law, as branches with hooks at located events
+//!   (turning points, branch ends) where history may change, so that adhesive
+//!   (JKR, Maugis-Dugdale) and plastic laws plug in; implemented here for the
+//!   elastic contacts of `tabor-elastic`.
+//! - [`simulate_impact`]: Dormand-Prince 5(4) with event location
+//!   (`tabor_numerics::ode`), energy bookkeeping (the contact work integrated with
+//!   the motion), a trajectory record and an [`ImpactSimulation`] outcome.
+//! - [`SimulatedImpact`]: any law as a `tabor_restitution::ImpactModel`.
+
+mod law;
+mod simulate;
+
+pub use law::{BranchChange, ForceLaw};
+pub use simulate::{
+    simulate_impact, ContactEvent, EventKind, ImpactSimulation, SimulatedImpact,
+    SimulationSettings, TrajectoryPoint,
+};

@@ -1,0 +1,181 @@
+//! The force-law interface of the simulator, and its implementation for the
+//! elastic contacts of `tabor-elastic`.
+
+use tabor_elastic::{ElasticContact, ElasticImpact};
+use tabor_restitution::Result;
+
+/// What the motion does after a hook ([`ForceLaw::on_branch_end`],
+/// [`ForceLaw::on_max_compression`], [`ForceLaw::on_min_compression`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum BranchChange {
+    /// The motion goes on (possibly on a new branch the hook switched to).
+    Continue,
+    /// The bodies part: the impact ends, the rebound speed is −ḋ there.
+    Separate,
+    /// The bodies stay together: the impact ends with restitution 0.
+    Stick,
+}
+
+/// A contact force law for the equation of motion `m d̈ = −F(d, ḋ, history)`
+/// (seed 000 eq. (5.5) and its generalizations), with `d` the overlap
+/// (indentation, positive in contact) and `F` the normal force, positive when
+/// repulsive.
+///
+/// # Branches and history
+///
+/// A law is a sequence of smooth *branches*. Within a branch, [`ForceLaw::force`]
+/// must be a pure, smooth function of `(d, ḋ)`: the integrator evaluates it at
+/// trial points, also at rejected steps and slightly beyond the branch end, so it
+/// must return finite values there too (extend the branch, or clamp). History
+/// changes only in the hooks, which the simulator calls at located events:
+///
+/// - [`ForceLaw::begin_impact`] once before the motion starts (reset to the first
+///   branch; the law is `&mut`, so the same value can simulate many impacts);
+/// - [`ForceLaw::on_max_compression`] where ḋ changes from + to − (the turning point;
+///   a plastic law switches to its unloading branch and stores d_max here);
+/// - [`ForceLaw::on_min_compression`] where ḋ changes from − to + while the impact
+///   is still running (the body falls back inward: by default it sticks);
+/// - [`ForceLaw::on_branch_end`] where [`ForceLaw::branch_end`] falls from > 0 to
+///   ≤ 0 (separation at d = 0 for elastic laws; jump-in at d = −h, snap-off at a
+///   negative d, or F = 0 on a plastic unloading branch for others).
+///
+/// After every event the integrator restarts, so force jumps (jump-in) are exact.
+///
+/// # How the laws still to come plug in
+///
+/// - **JKR** (fixed grip): [`ForceLaw::begin_impact`] puts the law on the JKR
+///   branch at d = 0 (jump-in: `force(0, ·)` is already attractive);
+///   `branch_end = d − d_c` with d_c < 0 the fixed-grip snap-off overlap, or, for
+///   the load-controlled rule, a − a_pull-off (the minimum of F); `on_branch_end`
+///   returns [`BranchChange::Separate`].
+/// - **Maugis-Dugdale**: [`ForceLaw::start_overlap`] returns the approach distance
+///   (< −h), [`ForceLaw::in_contact`] is false and `force` is 0 until
+///   `branch_end = −h − d` reaches 0; `on_branch_end` then switches to the
+///   equilibrium branch (now `in_contact`, `branch_end = d − d_min`) and returns
+///   [`BranchChange::Continue`]; at d_min it returns [`BranchChange::Separate`].
+/// - **Plastic**: loading law until `on_max_compression` switches to elastic
+///   unloading with the residual depth (stored in the law), `branch_end = F`;
+///   separation when F reaches 0.
+///
+/// The crate's tests contain two such toy laws (hysteretic loading/unloading, and
+/// approach + jump-in + snap-off).
+pub trait ForceLaw {
+    /// A short name for reports.
+    fn name(&self) -> String;
+
+    /// A typical magnitude of the overlap during an impact of effective mass
+    /// `effective_mass` at `impact_speed` (m), > 0: the simulation runs in units
+    /// of this length and of length/v0, and the tolerances apply there. d_max of
+    /// the elastic impact is a good choice; within a factor of ten is fine.
+    fn overlap_scale(&self, effective_mass: f64, impact_speed: f64) -> Result<f64>;
+
+    /// Called once before the motion starts: reset to the first branch.
+    fn begin_impact(&mut self, _effective_mass: f64, _impact_speed: f64) -> Result<()> {
+        Ok(())
+    }
+
+    /// The overlap at which the motion starts (m): 0 (first contact, seed 000
+    /// eq. (5.6)) by default; negative for an approach from a distance.
+    fn start_overlap(&self) -> f64 {
+        0.0
+    }
+
+    /// Whether the bodies are in contact on the current branch (the contact time is
+    /// measured from the first event after which this is true, or from the start).
+    fn in_contact(&self) -> bool {
+        true
+    }
+
+    /// The normal force F (N, repulsive > 0) at overlap `overlap` (m) and overlap
+    /// rate `overlap_rate` (m/s) on the current branch. Pure (see the trait docs).
+    fn force(&self, overlap: f64, overlap_rate: f64) -> Result<f64>;
+
+    /// The contact radius (m) on the current branch, for the trajectory record.
+    fn contact_radius(&self, overlap: f64, overlap_rate: f64) -> Result<f64>;
+
+    /// The signed distance to the end of the current branch: positive while the
+    /// branch holds; the branch ends where it falls to 0. Default: the overlap
+    /// (separation at d = 0).
+    fn branch_end(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
+        Ok(overlap)
+    }
+
+    /// Called where [`ForceLaw::branch_end`] reaches 0. Default: separation.
+    /// Returning [`BranchChange::Continue`] requires switching to a branch whose
+    /// `branch_end` is positive at this point (else the simulation reports an error).
+    fn on_branch_end(&mut self, _overlap: f64, _overlap_rate: f64) -> Result<BranchChange> {
+        Ok(BranchChange::Separate)
+    }
+
+    /// Called at the turning point ḋ: + → − (maximum compression) at overlap
+    /// `overlap`. Default: continue on the same branch.
+    fn on_max_compression(&mut self, _overlap: f64) -> Result<BranchChange> {
+        Ok(BranchChange::Continue)
+    }
+
+    /// Called where ḋ: − → + (the body turns inward again before separating).
+    /// Default: [`BranchChange::Stick`]: the body is caught in the potential well
+    /// and, without further dissipation modelled, would oscillate forever.
+    fn on_min_compression(&mut self, _overlap: f64) -> Result<BranchChange> {
+        Ok(BranchChange::Stick)
+    }
+}
+
+impl<L: ForceLaw + ?Sized> ForceLaw for &mut L {
+    fn name(&self) -> String {
+        (**self).name()
+    }
+    fn overlap_scale(&self, m: f64, v: f64) -> Result<f64> {
+        (**self).overlap_scale(m, v)
+    }
+    fn begin_impact(&mut self, m: f64, v: f64) -> Result<()> {
+        (**self).begin_impact(m, v)
+    }
+    fn start_overlap(&self) -> f64 {
+        (**self).start_overlap()
+    }
+    fn in_contact(&self) -> bool {
+        (**self).in_contact()
+    }
+    fn force(&self, d: f64, r: f64) -> Result<f64> {
+        (**self).force(d, r)
+    }
+    fn contact_radius(&self, d: f64, r: f64) -> Result<f64> {
+        (**self).contact_radius(d, r)
+    }
+    fn branch_end(&self, d: f64, r: f64) -> Result<f64> {
+        (**self).branch_end(d, r)
+    }
+    fn on_branch_end(&mut self, d: f64, r: f64) -> Result<BranchChange> {
+        (**self).on_branch_end(d, r)
+    }
+    fn on_max_compression(&mut self, d: f64) -> Result<BranchChange> {
+        (**self).on_max_compression(d)
+    }
+    fn on_min_compression(&mut self, d: f64) -> Result<BranchChange> {
+        (**self).on_min_compression(d)
+    }
+}
+
+/// The elastic contacts of `tabor-elastic` (Hertz (5.5), power-law indenter
+/// (5.15), graded media (5.20), (5.28)): one conservative branch, `F = K d^q` for
+/// d > 0 and 0 otherwise, separation at d = 0.
+impl ForceLaw for ElasticContact {
+    fn name(&self) -> String {
+        ElasticContact::name(self)
+    }
+
+    /// d_max of the closed form, seed 000 eqs. (5.8), (5.16), (5.21), (5.28).
+    fn overlap_scale(&self, effective_mass: f64, impact_speed: f64) -> Result<f64> {
+        ElasticImpact::new(*self, effective_mass)?.max_overlap(impact_speed)
+    }
+
+    fn force(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
+        Ok(ElasticContact::force(self, overlap))
+    }
+
+    fn contact_radius(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
+        Ok(ElasticContact::contact_radius(self, overlap))
+    }
+}
