@@ -22,12 +22,15 @@ struct Cli {
 enum Command {
     /// Effective modulus, radius and mass of a two-body collision.
     Effective(cmd::effective::Args),
+    /// Maugis-Dugdale adhesive loss W(Λ) over the Tabor parameter, as a table.
+    MaugisLoss(cmd::maugis_loss::Args),
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Effective(args) => cmd::effective::run(&args),
+        Command::MaugisLoss(args) => cmd::maugis_loss::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,3 +1,4 @@
 //! One module per subcommand.
 
 pub mod effective;
+pub mod maugis_loss;
