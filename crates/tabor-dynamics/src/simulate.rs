@@ -324,7 +324,8 @@ pub fn simulate_impact<L: ForceLaw + ?Sized>(
         }
         let d = y[0] * scale;
         max_overlap = max_overlap.max(d);
-        max_force = max_force.max(record(law, s, &y, &mut trajectory)?);
+        let force_before = record(law, s, &y, &mut trajectory)?;
+        max_force = max_force.max(force_before);
         let decision = match kind {
             EventKind::MaxCompression => law.on_max_compression(d)?,
             EventKind::MinCompression => law.on_min_compression(d)?,
@@ -342,6 +343,11 @@ pub fn simulate_impact<L: ForceLaw + ?Sized>(
         }
         if decision != BranchChange::Continue {
             break (decision, y);
+        }
+        if law.force(d, y[1] * v0)? != force_before {
+            // The hook switched to a branch with a different force (jump-in): record
+            // the state again, so the jump shows as two points at the same time.
+            max_force = max_force.max(record(law, s, &y, &mut trajectory)?);
         }
         if kind == EventKind::BranchEnd {
             let g = law.branch_end(d, y[1] * v0)?;
