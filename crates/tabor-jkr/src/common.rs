@@ -116,9 +116,29 @@ fn quad_relative(tolerance: f64) -> f64 {
     tolerance.max(4.0 * f64::EPSILON)
 }
 
+/// `∫_{x_from}^{x_to} g(x) dx` (0 < x_from, x_to) by adaptive Clenshaw-Curtis in the
+/// variable `u = ln x`, in which sums of powers of x are smooth over any number of
+/// decades (the energy balance of a power law near n = 1/2 spans ten).
+fn integrate_powers<F: Fn(f64) -> f64>(
+    integrand: F,
+    x_from: f64,
+    x_to: f64,
+    tol: QuadTolerance,
+) -> Result<tabor_numerics::Integral> {
+    Ok(integrate_smooth(
+        |u| {
+            let x = u.exp();
+            integrand(x) * x
+        },
+        x_from.ln(),
+        x_to.ln(),
+        tol,
+    )?)
+}
+
 /// The loss `∫_{x_start}^{x_end} F̂ (dd̂/dx̂) dx̂` (first touch to separation) by
-/// adaptive Clenshaw-Curtis; `integrand(x) = F̂(x) d̂'(x)` is smooth on the interval
-/// (it is bounded away from x = 0).
+/// adaptive Clenshaw-Curtis in `ln x`; `integrand(x) = F̂(x) d̂'(x)` is smooth on the
+/// interval (it is bounded away from x = 0).
 pub(crate) fn loss_by_quadrature<F: Fn(f64) -> f64>(
     integrand: F,
     x_start: f64,
@@ -126,7 +146,7 @@ pub(crate) fn loss_by_quadrature<F: Fn(f64) -> f64>(
     tolerance: f64,
     branch: &'static str,
 ) -> Result<NormalizedLoss> {
-    let integral = integrate_smooth(
+    let integral = integrate_powers(
         integrand,
         x_start,
         x_end,
@@ -140,7 +160,7 @@ pub(crate) fn loss_by_quadrature<F: Fn(f64) -> f64>(
     })
 }
 
-/// The work `∫_{x_start}^{x} F̂ d̂' dx̂` by quadrature, with an absolute floor
+/// The work `∫_{x_start}^{x} F̂ d̂' dx̂` by quadrature in `ln x`, with an absolute floor
 /// `scale·tolerance` (the integral crosses zero on its way).
 pub(crate) fn work_by_quadrature<F: Fn(f64) -> f64>(
     integrand: F,
@@ -150,7 +170,7 @@ pub(crate) fn work_by_quadrature<F: Fn(f64) -> f64>(
     tolerance: f64,
 ) -> Result<(f64, Cost)> {
     let t = quad_relative(tolerance);
-    let integral = integrate_smooth(
+    let integral = integrate_powers(
         integrand,
         x_start,
         x,

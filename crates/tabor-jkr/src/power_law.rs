@@ -184,7 +184,9 @@ impl AdhesiveContact for PowerLawProfile {
     }
 
     /// The energy balance `m v0²/2 = ∫_{a0}^{a_max} F dd` as for (5.35); the seed
-    /// gives no closed form for the power law, so the work is a quadrature.
+    /// gives no closed form for the power law, so the work is a quadrature. The
+    /// residual is relative to `m v0²/2` plus the depth of the adhesive well (the work
+    /// from first touch to zero force).
     fn max_contact_radius(&self, kinetic_energy: f64, tolerance: f64) -> Result<MaxContactRadius> {
         let k = validate::positive("kinetic_energy", kinetic_energy)?;
         let tol = validate::tolerance("tolerance", tolerance)?;
@@ -197,17 +199,27 @@ impl AdhesiveContact for PowerLawProfile {
             ));
         }
         let core = self.core;
+        let integrand = |y: f64| core.work_integrand(y);
+        // The depth of the adhesive well, from first touch to zero force: the energy the
+        // residual is measured against (with the kinetic energy), since the work passes
+        // through it on the way to a_max.
+        let zero_force = core.zero_force_radius();
+        let (well, mut cost) = work_by_quadrature(integrand, 1.0, zero_force, 0.0, 0.1 * tol)?;
+        let offset = (-well).max(f64::MIN_POSITIVE);
+        let scale = k_hat + offset;
         let mut m = solve_energy_balance(
             Balance {
-                work: |x| work_by_quadrature(|y| core.work_integrand(y), 1.0, x, 1.0, 0.1 * tol),
-                slope: |x| core.work_integrand(x),
-                zero_force_radius: core.zero_force_radius(),
+                work: |x| work_by_quadrature(integrand, 1.0, x, scale, 0.1 * tol),
+                slope: integrand,
+                zero_force_radius: zero_force,
                 upper_guess: core.upper_guess(k_hat),
-                offset: 1.0,
+                offset,
             },
             k_hat,
             tol,
         )?;
+        cost += m.cost;
+        m.cost = cost;
         m.contact_radius = finite_output(
             MODEL,
             "maximum contact radius",
