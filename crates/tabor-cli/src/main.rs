@@ -22,6 +22,8 @@ struct Cli {
 enum Command {
     /// Effective modulus, radius and mass of a two-body collision.
     Effective(cmd::effective::Args),
+    /// JKR adhesive impact of a sphere: energy loss, sticking velocity, restitution.
+    Jkr(cmd::jkr::Args),
     /// Maugis-Dugdale adhesive loss W(Λ) over the Tabor parameter, as a table.
     MaugisLoss(cmd::maugis_loss::Args),
 }
@@ -30,6 +32,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Effective(args) => cmd::effective::run(&args),
+        Command::Jkr(args) => cmd::jkr::run(&args),
         Command::MaugisLoss(args) => cmd::maugis_loss::run(&args),
     };
     match result {

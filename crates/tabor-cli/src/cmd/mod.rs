@@ -1,4 +1,5 @@
 //! One module per subcommand.
 
 pub mod effective;
+pub mod jkr;
 pub mod maugis_loss;
