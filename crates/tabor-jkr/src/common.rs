@@ -65,7 +65,9 @@ pub struct MaxContactRadius {
     pub contact_radius: f64,
     /// The residual of the energy balance, |work(a_max) − m v0²/2|, relative to
     /// `m v0²/2 + |ΔU_0|` (the terms that must balance, ΔU_0 being the constant term
-    /// of (5.35)); below the requested tolerance.
+    /// of (5.35), (5.49); for the power law, which has no closed form, the depth of the
+    /// adhesive well between first touch and zero force); below the requested
+    /// tolerance.
     pub energy_residual: f64,
     /// Work spent (root finding and, where the work is a quadrature, integration).
     pub cost: Cost,
