@@ -5,8 +5,12 @@
 //!
 //! This facade re-exports the workspace crates:
 //!
-//! - [`numerics`]: root finding, quadrature, special functions, cost accounting;
+//! - [`numerics`]: root finding, quadrature, special functions, Chebyshev
+//!   interpolation, cost accounting;
 //! - [`restitution`]: effective properties, the [`ImpactModel`](restitution::ImpactModel)
-//!   trait, restitution and sticking velocity from an energy loss.
+//!   trait, restitution and sticking velocity from an energy loss;
+//! - [`maugis`]: Maugis-Dugdale adhesive impact across the Tabor-parameter range.
 
+pub use tabor_maugis as maugis;
 pub use tabor_numerics as numerics;
+pub use tabor_restitution as restitution;

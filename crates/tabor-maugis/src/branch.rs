@@ -18,6 +18,13 @@ const SERIES_THETA: f64 = 0.5;
 /// `P(θ) = ½ sin 2θ − θ cos 2θ = Σ_{k≥1} (−1)^(k+1) k (2θ)^(2k+1) / (2k+1)!`
 /// (`= (4/3)θ³ − (8/15)θ⁵ + …`).
 pub(crate) fn p_of_theta(theta: f64) -> f64 {
+    let (s, c) = theta.sin_cos();
+    p_of_theta_with(theta, s, c)
+}
+
+/// [`p_of_theta`] with `sin θ`, `cos θ` already known.
+#[inline]
+fn p_of_theta_with(theta: f64, sin: f64, cos: f64) -> f64 {
     if theta < SERIES_THETA {
         let x = 2.0 * theta;
         let x2 = x * x;
@@ -37,14 +44,21 @@ pub(crate) fn p_of_theta(theta: f64) -> f64 {
         }
         sum
     } else {
-        let (s2, c2) = (2.0 * theta).sin_cos();
-        0.5 * s2 - theta * c2
+        // ½ sin 2θ − θ cos 2θ with sin 2θ = 2 sc, cos 2θ = c² − s²
+        sin * cos - theta * (cos * cos - sin * sin)
     }
 }
 
 /// `Q(θ) = θ sin θ − (1 − cos θ) = Σ_{j≥1} (−1)^(j−1) (2j − 1) θ^(2j) / (2j)!`
 /// (`= θ²/2 − θ⁴/8 + …`).
 pub(crate) fn q_of_theta(theta: f64) -> f64 {
+    let (s, c) = theta.sin_cos();
+    q_of_theta_with(theta, s, c)
+}
+
+/// [`q_of_theta`] with `sin θ`, `cos θ` already known.
+#[inline]
+fn q_of_theta_with(theta: f64, sin: f64, cos: f64) -> f64 {
     if theta < SERIES_THETA {
         let t2 = theta * theta;
         let mut power = t2 / 2.0; // θ²/2!
@@ -61,8 +75,7 @@ pub(crate) fn q_of_theta(theta: f64) -> f64 {
         }
         sum
     } else {
-        let (s, c) = theta.sin_cos();
-        theta * s - (1.0 - c)
+        theta * sin - (1.0 - cos)
     }
 }
 
@@ -89,19 +102,19 @@ pub struct ContactState {
 /// 000 section 3.3.3, used by eqs. (5.43), (5.45)): `b̂` is the positive root of the
 /// quadratic in b̂, taken in the cancellation-free form `2/(β + √(β² + 4α))`.
 pub fn contact_state(lambda: f64, theta: f64) -> ContactState {
-    let p = p_of_theta(theta);
-    let q = q_of_theta(theta);
+    let (s, c) = theta.sin_cos();
+    let p = p_of_theta_with(theta, s, c);
+    let q = q_of_theta_with(theta, s, c);
     let alpha = 3.0 * lambda * p / PI;
     let beta = 32.0 * lambda * lambda * q / (PI * PI);
     let root = (beta * beta + 4.0 * alpha).sqrt();
     let b = 2.0 / (beta + root);
-    let (s, c) = theta.sin_cos();
     let a = b * c;
     let depth = 3.0 * a * a - 16.0 * lambda / PI * b * s;
     let force = a * a * a - 4.0 * lambda / PI * b * b * (c * s + theta);
     // db̂/dθ from implicit differentiation of α b̂² + β b̂ = 1, with
     // P' = 2θ sin 2θ and Q' = θ cos θ.
-    let dalpha = 3.0 * lambda / PI * 2.0 * theta * (2.0 * theta).sin();
+    let dalpha = 3.0 * lambda / PI * 4.0 * theta * s * c;
     let dbeta = 32.0 * lambda * lambda / (PI * PI) * theta * c;
     let db = -(dalpha * b * b + dbeta * b) / (2.0 * alpha * b + beta);
     // d̂ = 3 b̂² cos²θ − (16Λ/π) b̂ sin θ
