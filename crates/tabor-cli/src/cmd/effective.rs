@@ -3,7 +3,9 @@
 
 use crate::output::{print_json, print_table};
 use serde::Serialize;
-use tabor_restitution::effective::{effective_modulus, effective_radius, reduced_mass, sphere_mass};
+use tabor_restitution::effective::{
+    effective_modulus, effective_radius, reduced_mass, sphere_mass,
+};
 use tabor_restitution::ElasticMaterial;
 
 /// Arguments of `tabor effective`.
