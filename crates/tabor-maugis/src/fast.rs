@@ -11,7 +11,7 @@
 //! The table is built from the direct evaluation at tolerance 1e-14 on first use
 //! (about 1-2 ms) and kept for the life of the process.
 
-use crate::impact::{normalized_loss, TaborCase, JKR_NORMALIZED_LOSS, LAMBDA_1, LAMBDA_2};
+use crate::impact::{jkr_normalized_loss, normalized_loss, TaborCase, LAMBDA_1, LAMBDA_2};
 use std::sync::OnceLock;
 use tabor_numerics::chebyshev::PiecewiseChebyshev;
 use tabor_numerics::Cost;
@@ -63,7 +63,7 @@ pub fn loss_over_jkr_fast(lambda: f64) -> Result<f64> {
     Ok(match TaborCase::of(lambda) {
         TaborCase::NoContact => {
             let bc = crate::branch::no_contact_pull_off_radius(lambda);
-            8.5 * lambda * bc * bc * bc * bc / JKR_NORMALIZED_LOSS
+            8.5 * lambda * bc * bc * bc * bc / jkr_normalized_loss()
         }
         TaborCase::ContactThenNoContact => {
             let u = ((lambda - LAMBDA_1) / (LAMBDA_2 - LAMBDA_1)).sqrt();

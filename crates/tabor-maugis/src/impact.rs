@@ -17,9 +17,14 @@ pub const LAMBDA_1: f64 = 0.449_528_231_858_144;
 /// with direct contact (case 3). Seed 000 eq. (5.46) and the text after (5.42).
 pub const LAMBDA_2: f64 = 0.643_533_715_989_629_8;
 
-/// The JKR loss in units of `F_n d_n`: `4(1 + ∛864)/(15 ∛3) ≈ 1.9459`, seed 000 eq.
-/// (5.36) divided by the energy scale (the prefactor of (5.43) is its inverse).
-pub const JKR_NORMALIZED_LOSS: f64 = 1.945_924_205_903_97;
+/// The JKR loss in units of `F_n d_n`, `4(1 + ∛864)/(15 ∛3) ≈ 1.9459`: seed 000
+/// eq. (5.36) from `tabor-jkr` (fixed grip, the displacement-driven separation that
+/// the Maugis-Dugdale impact also follows). The prefactor of (5.43) is its inverse.
+pub fn jkr_normalized_loss() -> f64 {
+    tabor_jkr::normalized::energy_loss(tabor_jkr::SeparationRule::FixedGrip, 0.5)
+        .map(|l| l.value)
+        .unwrap_or(f64::NAN)
+}
 
 /// Which path the impact takes (seed 000 section 5.3.2, the three cases).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -314,7 +319,7 @@ pub fn normalized_loss(lambda: f64, tolerance: f64) -> Result<NormalizedLoss> {
         lambda,
         case,
         loss,
-        loss_over_jkr: loss / JKR_NORMALIZED_LOSS,
+        loss_over_jkr: loss / jkr_normalized_loss(),
         error_estimate: error,
         method,
         cost,

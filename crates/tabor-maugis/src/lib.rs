@@ -26,8 +26,8 @@ pub mod units;
 
 pub use fast::{fast_tier_pieces, loss_over_jkr_fast, prepare_fast_tier, FAST_TIER_RELATIVE_ERROR};
 pub use impact::{
-    impact_path, normalized_loss, ImpactPath, NormalizedLoss, PathState, TaborCase,
-    JKR_NORMALIZED_LOSS, LAMBDA_1, LAMBDA_2,
+    impact_path, jkr_normalized_loss, normalized_loss, ImpactPath, NormalizedLoss, PathState,
+    TaborCase, LAMBDA_1, LAMBDA_2,
 };
 pub use model::MaugisDugdaleImpact;
 pub use trace::{equilibrium_state, trace_impact, Phase, TracePoint};

@@ -127,8 +127,16 @@ pub fn sticking_velocity<M: ImpactModel + ?Sized>(
         let loss = model.energy_loss(scale)?;
         let joules = validate::non_negative("energy_loss", loss.joules)?;
         cost += loss.cost;
+        let speed = (2.0 * joules / m).sqrt();
+        if !speed.is_finite() {
+            return Err(Error::invalid(
+                "mass",
+                m,
+                "gives a sticking velocity sqrt(2|dU|/m) that overflows",
+            ));
+        }
         return Ok(StickingVelocity {
-            speed: (2.0 * joules / m).sqrt(),
+            speed,
             method: StickingMethod::ClosedForm,
             cost,
         });

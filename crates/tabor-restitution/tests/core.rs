@@ -207,3 +207,14 @@ proptest! {
         prop_assert!((vc / exact - 1.0).abs() <= 1e-11);
     }
 }
+
+#[test]
+fn sticking_velocity_overflow_is_an_error() {
+    let model = AffineLoss {
+        mass: 1e-308,
+        constant: 1e10,
+        fraction: 0.0,
+    };
+    // either the speed scale or the closed form overflows: an error, never inf
+    assert!(sticking_velocity(&model, 1e-10).is_err());
+}

@@ -2,7 +2,7 @@
 //! Fig. 5.2) as a tab-separated table.
 
 use serde::Serialize;
-use tabor_maugis::{loss_over_jkr_fast, normalized_loss, TaborCase, JKR_NORMALIZED_LOSS};
+use tabor_maugis::{jkr_normalized_loss, loss_over_jkr_fast, normalized_loss, TaborCase};
 
 /// Arguments of `tabor maugis-loss`.
 #[derive(clap::Args)]
@@ -83,7 +83,7 @@ pub fn run(args: &Args) -> Result<(), String> {
             Row {
                 lambda,
                 case: TaborCase::of(lambda).number(),
-                loss: r * JKR_NORMALIZED_LOSS,
+                loss: r * jkr_normalized_loss(),
                 loss_over_jkr: r,
                 error_estimate: None,
                 method: "fast tier (Chebyshev interpolant, relative error < 1e-10)",
