@@ -94,7 +94,11 @@ fn main() -> Result<(), Box<dyn Error>> {
     );
     for lambda in [0.1, 1.0, 4.0, 10.0, 100.0] {
         let w = normalized_loss(lambda, TOLERANCE)?;
-        println!("  Λ = {lambda:>6}: W/W_JKR = {:.12} (case {})", w.loss_over_jkr, w.case.number());
+        println!(
+            "  Λ = {lambda:>6}: W/W_JKR = {:.12} (case {})",
+            w.loss_over_jkr,
+            w.case.number()
+        );
     }
     println!("wrote {} and {}", csv_path.display(), svg_path.display());
     Ok(())
@@ -107,7 +111,10 @@ fn plot(rows: &[Row], path: &std::path::Path) -> Result<(), Box<dyn Error>> {
     let x_range = (0.01f64..100.0f64).log_scale();
 
     let mut chart = ChartBuilder::on(&left)
-        .caption("Maugis-Dugdale loss / JKR loss (seed 000, Fig. 5.2)", ("sans-serif", 20))
+        .caption(
+            "Maugis-Dugdale loss / JKR loss (seed 000, Fig. 5.2)",
+            ("sans-serif", 20),
+        )
         .margin(12)
         .x_label_area_size(40)
         .y_label_area_size(50)
@@ -118,16 +125,28 @@ fn plot(rows: &[Row], path: &std::path::Path) -> Result<(), Box<dyn Error>> {
         .y_desc("|ΔU| / |ΔU_JKR|")
         .draw()?;
     chart
-        .draw_series(LineSeries::new(rows.iter().map(|r| (r.lambda, r.loss_over_jkr)), BLUE.stroke_width(2)))?
+        .draw_series(LineSeries::new(
+            rows.iter().map(|r| (r.lambda, r.loss_over_jkr)),
+            BLUE.stroke_width(2),
+        ))?
         .label("Maugis-Dugdale")
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLUE.stroke_width(2)));
     chart
-        .draw_series(LineSeries::new([(0.01, 1.0), (100.0, 1.0)], BLACK.stroke_width(1)))?
+        .draw_series(LineSeries::new(
+            [(0.01, 1.0), (100.0, 1.0)],
+            BLACK.stroke_width(1),
+        ))?
         .label("JKR limit")
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK));
-    for (lambda, name, color) in [(LAMBDA_1, "Λ1 (case 1 | 2)", RED), (LAMBDA_2, "Λ2 (case 2 | 3)", GREEN)] {
+    for (lambda, name, color) in [
+        (LAMBDA_1, "Λ1 (case 1 | 2)", RED),
+        (LAMBDA_2, "Λ2 (case 2 | 3)", GREEN),
+    ] {
         chart
-            .draw_series(LineSeries::new([(lambda, 0.0), (lambda, 1.05)], color.stroke_width(1)))?
+            .draw_series(LineSeries::new(
+                [(lambda, 0.0), (lambda, 1.05)],
+                color.stroke_width(1),
+            ))?
             .label(name)
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color));
     }
@@ -158,11 +177,15 @@ fn plot(rows: &[Row], path: &std::path::Path) -> Result<(), Box<dyn Error>> {
     for (name, color, f) in series {
         chart
             .draw_series(LineSeries::new(
-                rows.iter().map(|r| (r.lambda, f(r))).filter(|p| p.1 >= y_min),
+                rows.iter()
+                    .map(|r| (r.lambda, f(r)))
+                    .filter(|p| p.1 >= y_min),
                 color.stroke_width(2),
             ))?
             .label(name)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+            });
     }
     chart
         .configure_series_labels()

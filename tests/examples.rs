@@ -26,8 +26,16 @@ fn temp_dir(name: &str) -> PathBuf {
 #[test]
 fn loss_vs_lambda_matches_the_direct_evaluation() {
     let dir = temp_dir("loss_vs_lambda");
-    let out = Command::new(example("loss_vs_lambda")).arg("--out").arg(&dir).output().unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = Command::new(example("loss_vs_lambda"))
+        .arg("--out")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let svg = std::fs::read_to_string(dir.join("loss_vs_lambda.svg")).unwrap();
     assert!(svg.starts_with("<svg") && svg.contains("Tabor parameter"));
     let csv = std::fs::read_to_string(dir.join("loss_vs_lambda.csv")).unwrap();
@@ -40,8 +48,13 @@ fn loss_vs_lambda_matches_the_direct_evaluation() {
         let fields: Vec<&str> = line.split(',').collect();
         let lambda: f64 = fields[lambda_col].parse().unwrap();
         let ratio: f64 = fields[ratio_col].parse().unwrap();
-        let direct = tabor::maugis::normalized_loss(lambda, 1e-12).unwrap().loss_over_jkr;
-        assert!((ratio / direct - 1.0).abs() <= 1e-14, "Λ={lambda}: {ratio} vs {direct}");
+        let direct = tabor::maugis::normalized_loss(lambda, 1e-12)
+            .unwrap()
+            .loss_over_jkr;
+        assert!(
+            (ratio / direct - 1.0).abs() <= 1e-14,
+            "Λ={lambda}: {ratio} vs {direct}"
+        );
         n += 1;
     }
     assert!(n >= 200);

@@ -23,10 +23,24 @@ fn help_and_version() {
 #[test]
 fn effective_json() {
     let out = tabor(&[
-        "effective", "--youngs-modulus", "54e9", "--poisson-ratio", "0.17", "--radius", "1e-6",
-        "--density", "2650", "--target-radius", "1e-6", "--json",
+        "effective",
+        "--youngs-modulus",
+        "54e9",
+        "--poisson-ratio",
+        "0.17",
+        "--radius",
+        "1e-6",
+        "--density",
+        "2650",
+        "--target-radius",
+        "1e-6",
+        "--json",
     ]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON output");
     let e = v["effective_modulus"].as_f64().expect("number");
     assert!((e / (54e9 / (2.0 * (1.0 - 0.17 * 0.17))) - 1.0).abs() < 1e-14);
@@ -38,9 +52,37 @@ fn effective_json() {
 #[test]
 fn bad_input_exits_2_with_one_line() {
     for args in [
-        &["effective", "--youngs-modulus", "-1", "--poisson-ratio", "0.3", "--radius", "1", "--mass", "1"][..],
-        &["effective", "--youngs-modulus", "nan", "--poisson-ratio", "0.3", "--radius", "1", "--mass", "1"][..],
-        &["effective", "--youngs-modulus", "1e9", "--poisson-ratio", "0.3", "--radius", "1"][..],
+        &[
+            "effective",
+            "--youngs-modulus",
+            "-1",
+            "--poisson-ratio",
+            "0.3",
+            "--radius",
+            "1",
+            "--mass",
+            "1",
+        ][..],
+        &[
+            "effective",
+            "--youngs-modulus",
+            "nan",
+            "--poisson-ratio",
+            "0.3",
+            "--radius",
+            "1",
+            "--mass",
+            "1",
+        ][..],
+        &[
+            "effective",
+            "--youngs-modulus",
+            "1e9",
+            "--poisson-ratio",
+            "0.3",
+            "--radius",
+            "1",
+        ][..],
         &["effective", "--youngs-modulus", "abc"][..],
     ] {
         let out = tabor(args);
@@ -48,7 +90,17 @@ fn bad_input_exits_2_with_one_line() {
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(!err.contains("panicked"), "{err}");
     }
-    let out = tabor(&["effective", "--youngs-modulus", "-1", "--poisson-ratio", "0.3", "--radius", "1", "--mass", "1"]);
+    let out = tabor(&[
+        "effective",
+        "--youngs-modulus",
+        "-1",
+        "--poisson-ratio",
+        "0.3",
+        "--radius",
+        "1",
+        "--mass",
+        "1",
+    ]);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("youngs_modulus"), "{err}");
