@@ -1,0 +1,547 @@
+//! The adhesive interpolation model: JKR loading to the adhesive yield onset, cubic
+//! elasto-plastic interpolation, fully plastic law; JKR unloading with the radius
+//! `R_p` and residual depth `d_res`; separation at the displacement-controlled
+//! instability. Seed 000, eqs. (5.111)-(5.126).
+//!
+//! Normalized core in the units of the JKR force-controlled critical state (`a_c`,
+//! `F_n`, `d_n`, energies in `F_n d_n`; `shared/spec/maugis-dugdale.md`), force
+//! positive in compression. The JKR relations are those of `tabor_jkr::normalized`.
+
+use crate::util::{exceeds, finite_output, positive_output, Hermite};
+use serde::Serialize;
+use tabor_jkr::normalized as jkr;
+use tabor_jkr::{ContactState, JkrImpact, JkrSphere, SeparationRule};
+use tabor_numerics::root_finding::{brent, newton_safeguarded, RootTolerance};
+use tabor_restitution::{
+    restitution_from_loss, sticking_velocity, validate, EnergyLoss, Error, ImpactModel, Result,
+};
+
+const MODEL: &str = "adhesive interpolation";
+
+/// `Q̃`: fully plastic `F̂ = (Q̃/Φ) â²`. Seed 000, eq. (5.114).
+pub const ADHESIVE_PLASTIC_SLOPE: f64 = 3.5;
+/// `D̃`: fully plastic for `d̂ > D̃/Φ²`. Seed 000, eq. (5.114).
+pub const ADHESIVE_PLASTIC_ONSET: f64 = 400.0;
+/// `κ` of `Φ = κ (Δγ E*²/(σ_Y³ R))^(1/3)`, calibrated so that seed 000 eq. (5.126),
+/// `v_c²/v_Y² = 0.37 Φ⁵`, holds exactly with `v_c` of (5.38) and `v_Y` of (5.103):
+/// `κ = (K/0.37)^(1/5)`, `K = Û_JKR (3∛3/8) π^(5/3) / ((8/15)(4π/5)⁵)`.
+/// (`shared/spec/models.md`; the book's own definition (3.293) is not available.)
+pub const ADHESION_PARAMETER_FACTOR: f64 = 0.814_472_068_900_012_1;
+
+/// The adhesion parameter `Φ = κ (Δγ E*²/(σ_Y³ R))^(1/3)` from material data:
+/// effective modulus `E*` (Pa), effective radius `R` (m), yield stress `σ_Y` (Pa),
+/// work of adhesion `Δγ` (J/m²), all finite and > 0.
+///
+/// Seed 000, the parameter Φ of (5.111) (the book's (3.293)), calibrated by (5.126).
+pub fn adhesion_parameter(
+    effective_modulus: f64,
+    effective_radius: f64,
+    yield_stress: f64,
+    work_of_adhesion: f64,
+) -> Result<f64> {
+    let e = validate::positive("effective_modulus", effective_modulus)?;
+    let r = validate::positive("effective_radius", effective_radius)?;
+    let s = validate::positive("yield_stress", yield_stress)?;
+    let dg = validate::positive("work_of_adhesion", work_of_adhesion)?;
+    // (Δγ/R)^(1/3) (E/σ)^(2/3) / σ^(1/3), ordered against overflow.
+    let phi = ADHESION_PARAMETER_FACTOR * (dg / r).cbrt() * (e / s).powf(2.0 / 3.0) / s.cbrt();
+    positive_output(MODEL, "adhesion parameter", phi)
+}
+
+/// The adhesive yield force `F̂_Y(Φ) = 2(0.111Φ − 0.8236 − 0.0636/Φ + 0.0087/Φ² +
+/// 1.2429/Φ³)` (units of `F_n`, compression positive), for ν = 0.3.
+///
+/// Seed 000, eq. (5.111) (from ref. [51]).
+pub fn adhesive_yield_force(adhesion_parameter: f64) -> Result<f64> {
+    let p = validate::positive("adhesion_parameter", adhesion_parameter)?;
+    let f = 2.0 * (0.111 * p - 0.8236 - 0.0636 / p + 0.0087 / (p * p) + 1.2429 / (p * p * p));
+    finite_output(MODEL, "yield force", f)
+}
+
+/// The state at maximum compression and the JKR unloading it sets up (normalized).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct AdhesiveTurningPoint {
+    /// `d̂_max`.
+    pub max_depth: f64,
+    /// `F̂_max` (compression positive).
+    pub max_force: f64,
+    /// `â_max`.
+    pub max_contact_radius: f64,
+    /// `R_p/R` (corrected (5.123), see [`AdhesiveInterpolation::turning_point`]).
+    pub unloading_radius_ratio: f64,
+    /// `d̂_res`, seed 000 eq. (5.124).
+    pub residual_depth: f64,
+    /// `d̂` where contact breaks, `d̂_res + d̂_c^WS(R_p)`, seed 000 eq. (5.125).
+    pub separation_depth: f64,
+    /// The kinetic energy left at separation (units of `F_n d_n`, < 0: the body
+    /// cannot get there and sticks).
+    pub rebound_energy: f64,
+}
+
+/// The adhesive interpolation model in normalized units, for one adhesion parameter
+/// Φ and the constants `Q̃`, `D̃`.
+///
+/// Loading from first touch (`d̂ = 0`): JKR (`F̂ = â³ − 2â^(3/2)`,
+/// `d̂ = 3â² − 4â^(1/2)`) up to the yield state `(â_Y, d̂_Y, F̂_Y)` of
+/// (5.111)-(5.113); the cubics (5.115)-(5.120) to `d̂_0 = D̃/Φ²`; beyond, the fully
+/// plastic law (5.114). If `d̂_Y < 0` (for Φ between about 1.8 and 3.7 the yield
+/// load lies below the JKR first-touch force −8/9) the contact yields at first touch
+/// and loading starts on the cubic.
+///
+/// Seed 000, eqs. (5.111)-(5.125).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AdhesiveInterpolation {
+    phi: f64,
+    plastic_slope: f64,
+    plastic_onset: f64,
+    yield_state: ContactState,
+    onset_depth: f64,
+    force: Hermite,
+    radius: Hermite,
+    work_at_yield: f64,
+    work_at_onset: f64,
+}
+
+impl AdhesiveInterpolation {
+    /// The model for adhesion parameter Φ (finite, > 0) with `Q̃ = 3.5`, `D̃ = 400`.
+    ///
+    /// Seed 000, eqs. (5.111)-(5.120).
+    pub fn new(adhesion_parameter: f64) -> Result<Self> {
+        Self::with_constants(
+            adhesion_parameter,
+            ADHESIVE_PLASTIC_SLOPE,
+            ADHESIVE_PLASTIC_ONSET,
+        )
+    }
+
+    /// The model with explicit `Q̃` (> 0) and `D̃` (> 0). Fails when the elasto-plastic
+    /// range is empty (`d̂_0 ≤ max(d̂_Y, 0)`, Φ above about 9 for the defaults) or its
+    /// cubics do not increase monotonically.
+    ///
+    /// Seed 000, eqs. (5.111)-(5.120).
+    pub fn with_constants(
+        adhesion_parameter: f64,
+        plastic_slope: f64,
+        plastic_onset: f64,
+    ) -> Result<Self> {
+        let phi = validate::positive("adhesion_parameter", adhesion_parameter)?;
+        let q = validate::positive("plastic_slope", plastic_slope)?;
+        let dd = validate::positive("plastic_onset", plastic_onset)?;
+        if !(1e-4..=1e4).contains(&phi) {
+            return Err(Error::invalid(
+                "adhesion_parameter",
+                phi,
+                "must lie in [1e-4, 1e4]",
+            ));
+        }
+        if q > 1e6 || dd > 1e8 {
+            return Err(Error::invalid(
+                if q > 1e6 {
+                    "plastic_slope"
+                } else {
+                    "plastic_onset"
+                },
+                if q > 1e6 { q } else { dd },
+                "must be <= 1e6 (Q) and <= 1e8 (D)",
+            ));
+        }
+        // (5.111)-(5.113)
+        let f_y = adhesive_yield_force(phi)?;
+        if f_y <= -1.0 {
+            return Err(Error::invalid(
+                "adhesion_parameter",
+                phi,
+                "gives a yield force F_Y <= -F_n, outside the fit (5.111)",
+            ));
+        }
+        let a_y = (1.0 + (1.0 + f_y).sqrt()).powf(2.0 / 3.0);
+        let d_y = jkr::depth(a_y)?;
+        // (5.114), (5.117), (5.120)
+        let d0 = dd / (phi * phi);
+        let f0 = 2.0 * q * dd / (3.0 * phi * phi * phi);
+        let f0p = 2.0 * q / (3.0 * phi);
+        let a0 = (2.0 * dd / (3.0 * phi * phi)).sqrt();
+        let a0p = (phi * phi / (6.0 * dd)).sqrt();
+        if !exceeds(d0, d_y.max(0.0)) {
+            return Err(Error::invalid(
+                "adhesion_parameter",
+                phi,
+                "leaves no elasto-plastic range: the fully plastic onset D/Phi^2 lies \
+                 below the yield depth",
+            ));
+        }
+        // (5.116), (5.119): slopes of the JKR branch at the yield state.
+        let slope = 6.0 * a_y - 2.0 / a_y.sqrt();
+        let c1 = (3.0 * a_y * a_y - 3.0 * a_y.sqrt()) / slope;
+        let c4 = 1.0 / slope;
+        let length = d0 - d_y;
+        let force = Hermite::new(f_y, c1, f0, f0p, length);
+        let radius = Hermite::new(a_y, c4, a0, a0p, length);
+        let start = (-d_y).max(0.0);
+        if !exceeds(force.min_slope(start), 0.0) || !exceeds(radius.min_slope(start), 0.0) {
+            return Err(Error::invalid(
+                "adhesion_parameter",
+                phi,
+                "gives an elasto-plastic interpolation (5.115)/(5.118) that is not increasing",
+            ));
+        }
+        let work_at_yield = if d_y > 0.0 {
+            jkr::kinetic_energy_to_reach(a_y)?
+        } else {
+            0.0
+        };
+        let work_at_onset = work_at_yield + force.integral(length) - force.integral(start);
+        let model = AdhesiveInterpolation {
+            phi,
+            plastic_slope: q,
+            plastic_onset: dd,
+            yield_state: ContactState {
+                contact_radius: a_y,
+                depth: d_y,
+                force: f_y,
+            },
+            onset_depth: d0,
+            force,
+            radius,
+            work_at_yield,
+            work_at_onset,
+        };
+        finite_output(MODEL, "loading work", work_at_onset)?;
+        Ok(model)
+    }
+
+    /// The adhesion parameter Φ.
+    pub fn adhesion_parameter(&self) -> f64 {
+        self.phi
+    }
+
+    /// The yield state `(â_Y, d̂_Y, F̂_Y)` on the JKR branch.
+    ///
+    /// Seed 000, eqs. (5.111)-(5.113).
+    pub fn yield_state(&self) -> ContactState {
+        self.yield_state
+    }
+
+    /// The onset of the fully plastic range `d̂_0 = D̃/Φ²`.
+    ///
+    /// Seed 000, eq. (5.114).
+    pub fn plastic_onset_depth(&self) -> f64 {
+        self.onset_depth
+    }
+
+    /// The loading work from first touch to the yield state (units of `F_n d_n`; 0
+    /// when the contact yields at first touch).
+    ///
+    /// Seed 000, (5.35) (the JKR loading work, `tabor_jkr`) up to (5.113).
+    pub fn yield_kinetic_energy(&self) -> f64 {
+        self.work_at_yield
+    }
+
+    /// The loading force `F̂(d̂)` at `d̂ ≥ 0` (finite).
+    ///
+    /// Seed 000, eqs. (5.111), (5.114), (5.115).
+    pub fn loading_force(&self, depth: f64) -> Result<f64> {
+        let d = validate::non_negative("depth", depth)?;
+        Ok(self.loading_state(d)?.force)
+    }
+
+    /// The loading contact radius `â(d̂)` at `d̂ ≥ 0` (finite).
+    ///
+    /// Seed 000, eqs. (5.112), (5.114), (5.118).
+    pub fn loading_contact_radius(&self, depth: f64) -> Result<f64> {
+        let d = validate::non_negative("depth", depth)?;
+        Ok(self.loading_state(d)?.contact_radius)
+    }
+
+    /// The loading work `∫_0^d̂ F̂ dd̂` (units of `F_n d_n`) at `d̂ ≥ 0`.
+    ///
+    /// Seed 000, (5.35) on the JKR part, integrals of (5.115) and (5.114) beyond.
+    pub fn loading_work(&self, depth: f64) -> Result<f64> {
+        let d = validate::non_negative("depth", depth)?;
+        let w = if d <= self.yield_state.depth {
+            jkr::kinetic_energy_to_reach(invert_jkr_depth(d)?)?
+        } else if d <= self.onset_depth {
+            self.cubic_work(d)
+        } else {
+            self.plastic_work(d)
+        };
+        finite_output(MODEL, "loading work", w)
+    }
+
+    /// State on the loading curve at `d̂` (≥ 0, or slightly below for the simulator).
+    pub(crate) fn loading_state(&self, d: f64) -> Result<ContactState> {
+        let y = self.yield_state;
+        let (a, f) = if d <= y.depth {
+            let a = invert_jkr_depth(d)?;
+            (a, jkr::force(a)?)
+        } else if d <= self.onset_depth {
+            let t = d - y.depth;
+            (self.radius.value(t), self.force.value(t))
+        } else {
+            (
+                (2.0 * d / 3.0).sqrt(),
+                2.0 * self.plastic_slope * d / (3.0 * self.phi),
+            )
+        };
+        Ok(ContactState {
+            contact_radius: a,
+            depth: d,
+            force: f,
+        })
+    }
+
+    fn cubic_work(&self, d: f64) -> f64 {
+        let start = (-self.yield_state.depth).max(0.0);
+        self.work_at_yield + self.force.integral(d - self.yield_state.depth)
+            - self.force.integral(start)
+    }
+
+    fn plastic_work(&self, d: f64) -> f64 {
+        let d0 = self.onset_depth;
+        self.work_at_onset + self.plastic_slope / (3.0 * self.phi) * (d - d0) * (d + d0)
+    }
+
+    /// The maximum depth `d̂_max` reached with kinetic energy `kinetic_energy`
+    /// (units of `F_n d_n`, finite, > 0): the root of `Ŵ(d̂_max) = Ê` (JKR energy
+    /// balance (5.35) by `tabor_jkr`, Brent on the quartic of the cubic range,
+    /// closed form in the plastic range).
+    ///
+    /// Seed 000, eqs. (5.35), (5.114), (5.115).
+    pub fn max_depth(&self, kinetic_energy: f64) -> Result<f64> {
+        let k = validate::positive("kinetic_energy", kinetic_energy)?;
+        Ok(self.max_state(k)?.depth)
+    }
+
+    fn max_state(&self, k: f64) -> Result<ContactState> {
+        let d = if k <= self.work_at_yield {
+            let a = jkr::max_contact_radius(k, 1e-14)?.contact_radius;
+            return Ok(ContactState {
+                contact_radius: a,
+                depth: jkr::depth(a)?,
+                force: jkr::force(a)?,
+            });
+        } else if k <= self.work_at_onset {
+            let lo = self.yield_state.depth.max(0.0);
+            brent(
+                |d| self.cubic_work(d) - k,
+                lo,
+                self.onset_depth,
+                RootTolerance::relative(4.0 * f64::EPSILON),
+            )?
+            .value
+        } else {
+            let d0 = self.onset_depth;
+            (d0 * d0 + 3.0 * self.phi * (k - self.work_at_onset) / self.plastic_slope).sqrt()
+        };
+        self.loading_state(finite_output(MODEL, "maximum depth", d)?)
+    }
+
+    /// The turning point of an impact with kinetic energy `kinetic_energy` (units of
+    /// `F_n d_n`, > 0) and the JKR unloading it sets up: `R_p` from continuity of the
+    /// force, `d_res` (5.124), separation depth (5.125), and the rebound energy
+    /// `(R_p/R)^(4/3) [Ŵ_JKR(â'_max) − Ŵ_JKR(â'_c)]` with `â' = â (R/R_p)^(2/3)`.
+    ///
+    /// `R_p`: continuity of (5.122) at the turning point gives
+    /// `R_p = 4E* a_max³ / (3(F_max + √(8π a_max³ Δγ E*)))` (compression positive);
+    /// the printed (5.123) lacks the factor 3 on the root (proved by a test: only the
+    /// corrected form makes the unloading force equal `F_max` at `a_max`).
+    ///
+    /// Seed 000, eqs. (5.121)-(5.125).
+    pub fn turning_point(&self, kinetic_energy: f64) -> Result<AdhesiveTurningPoint> {
+        let k = validate::positive("kinetic_energy", kinetic_energy)?;
+        let s = self.max_state(k)?;
+        let a = s.contact_radius;
+        // F̂ = â³/ρ − 2 â^(3/2) at the turning point.
+        let rho = positive_output(MODEL, "R_p/R", a * a * a / (s.force + 2.0 * a * a.sqrt()))?;
+        let shrink = rho.powf(2.0 / 3.0);
+        let scaled = a / shrink;
+        // (5.124): d̂ − d̂_res = ρ^(1/3) d̂_JKR(â/ρ^(2/3)).
+        let residual = s.depth - rho.cbrt() * jkr::depth(scaled)?;
+        let critical = jkr::critical_state(SeparationRule::FixedGrip);
+        let separation = residual + rho.cbrt() * critical.depth;
+        let rebound = rho.powf(4.0 / 3.0)
+            * (jkr::kinetic_energy_to_reach(scaled)?
+                - jkr::kinetic_energy_to_reach(critical.contact_radius)?);
+        Ok(AdhesiveTurningPoint {
+            max_depth: s.depth,
+            max_force: s.force,
+            max_contact_radius: a,
+            unloading_radius_ratio: rho,
+            residual_depth: residual,
+            separation_depth: separation,
+            rebound_energy: finite_output(MODEL, "rebound energy", rebound)?,
+        })
+    }
+
+    /// The kinetic energy lost (units of `F_n d_n`) by an impact with kinetic energy
+    /// `kinetic_energy` (> 0): `Ê − Ê_rebound`, all of `Ê` when the body cannot reach
+    /// the separation point (sticking).
+    ///
+    /// Seed 000, eqs. (5.111)-(5.125).
+    pub fn energy_loss(&self, kinetic_energy: f64) -> Result<f64> {
+        let t = self.turning_point(kinetic_energy)?;
+        Ok((kinetic_energy - t.rebound_energy.max(0.0)).clamp(0.0, kinetic_energy))
+    }
+
+    /// The restitution at `v0/v_c` (> 0), `v_c` the elastic JKR sticking velocity
+    /// (5.38): kinetic energy `Û_JKR (v0/v_c)²`, restitution by (5.37) from the core.
+    ///
+    /// Seed 000, text after (5.125): ε depends on `v0/v_c` and Φ only.
+    pub fn restitution(&self, speed_ratio: f64) -> Result<f64> {
+        let s = validate::positive("speed_ratio", speed_ratio)?;
+        let u_jkr = jkr::energy_loss(SeparationRule::FixedGrip, 1e-12)?.value;
+        let kinetic = finite_output(MODEL, "kinetic energy", u_jkr * s * s)?;
+        // Units: v_c = 1, energy F_n d_n, so the mass is 2 Û_JKR.
+        restitution_from_loss(self.energy_loss(kinetic)?, 2.0 * u_jkr, s)
+    }
+}
+
+/// The stable JKR branch `â ≥ (1/3)^(2/3)` at depth `d̂` (clamped to the fixed-grip
+/// instability below `d̂ = −3^(2/3)`): Newton in `u = √â` on `3u⁴ − 4u = d̂`.
+pub(crate) fn invert_jkr_depth(d: f64) -> Result<f64> {
+    let critical = jkr::critical_state(SeparationRule::FixedGrip);
+    if d <= critical.depth {
+        return Ok(critical.contact_radius);
+    }
+    let u_lo = critical.contact_radius.sqrt();
+    let u_hi = 1.5 + (d.max(0.0) / 3.0).powf(0.25);
+    let root = newton_safeguarded(
+        |u| {
+            let u3 = u * u * u;
+            (3.0 * u3 * u - 4.0 * u - d, 12.0 * u3 - 4.0)
+        },
+        u_lo,
+        u_hi,
+        u_hi.min((d.max(0.0) / 3.0).powf(0.25).max(1.1)),
+        RootTolerance::relative(4.0 * f64::EPSILON),
+    )?;
+    Ok(root.value * root.value)
+}
+
+/// The adhesive interpolation model in SI units: an [`ImpactModel`].
+///
+/// Seed 000, eqs. (5.111)-(5.126).
+#[derive(Clone, Debug)]
+pub struct AdhesiveInterpolationImpact {
+    model: AdhesiveInterpolation,
+    sphere: JkrSphere,
+    mass: f64,
+    elastic_sticking_velocity: f64,
+    yield_velocity: f64,
+}
+
+impl AdhesiveInterpolationImpact {
+    /// From material data: effective modulus `E*` (Pa), effective radius `R` (m),
+    /// yield stress `σ_Y` (Pa), work of adhesion `Δγ` (J/m²), effective mass `m` (kg);
+    /// Φ by [`adhesion_parameter`].
+    ///
+    /// Seed 000, eqs. (5.111)-(5.126).
+    pub fn from_yield_stress(
+        effective_modulus: f64,
+        effective_radius: f64,
+        yield_stress: f64,
+        work_of_adhesion: f64,
+        effective_mass: f64,
+    ) -> Result<Self> {
+        let phi = adhesion_parameter(
+            effective_modulus,
+            effective_radius,
+            yield_stress,
+            work_of_adhesion,
+        )?;
+        Self::new(
+            effective_modulus,
+            effective_radius,
+            work_of_adhesion,
+            phi,
+            effective_mass,
+        )
+    }
+
+    /// With the adhesion parameter Φ given directly.
+    ///
+    /// Seed 000, eqs. (5.111)-(5.125).
+    pub fn new(
+        effective_modulus: f64,
+        effective_radius: f64,
+        work_of_adhesion: f64,
+        adhesion_parameter: f64,
+        effective_mass: f64,
+    ) -> Result<Self> {
+        let sphere = JkrSphere::new(effective_modulus, effective_radius, work_of_adhesion)?;
+        let model = AdhesiveInterpolation::new(adhesion_parameter)?;
+        let elastic = JkrImpact::new(sphere, effective_mass)?;
+        let v_c = sticking_velocity(&elastic, 1e-12)?.speed;
+        let v_c = positive_output(MODEL, "elastic sticking velocity", v_c)?;
+        let energy = sphere.scales().energy;
+        let yield_velocity = finite_output(
+            MODEL,
+            "yield velocity",
+            (2.0 * model.yield_kinetic_energy() * energy / effective_mass).sqrt(),
+        )?;
+        Ok(AdhesiveInterpolationImpact {
+            model,
+            sphere,
+            mass: effective_mass,
+            elastic_sticking_velocity: v_c,
+            yield_velocity,
+        })
+    }
+
+    /// The normalized model.
+    pub fn model(&self) -> &AdhesiveInterpolation {
+        &self.model
+    }
+
+    /// The JKR sphere (scales `a_c`, `F_n`, `d_n`).
+    pub fn sphere(&self) -> &JkrSphere {
+        &self.sphere
+    }
+
+    /// The elastic JKR sticking velocity `v_c` (m/s), seed 000 eq. (5.38).
+    pub fn elastic_sticking_velocity(&self) -> f64 {
+        self.elastic_sticking_velocity
+    }
+
+    /// The impact speed (m/s) at which the contact reaches the adhesive yield onset
+    /// (5.111) (0 when it yields at first touch).
+    ///
+    /// Seed 000, eqs. (5.35), (5.111)-(5.113).
+    pub fn yield_velocity(&self) -> f64 {
+        self.yield_velocity
+    }
+
+    /// Kinetic energy of an impact at `v0`, in units of `F_n d_n`.
+    fn kinetic(&self, impact_speed: f64) -> Result<f64> {
+        let v = validate::positive("impact_speed", impact_speed)?;
+        positive_output(
+            MODEL,
+            "kinetic energy",
+            0.5 * self.mass * v * v / self.sphere.scales().energy,
+        )
+    }
+}
+
+impl ImpactModel for AdhesiveInterpolationImpact {
+    fn name(&self) -> String {
+        format!(
+            "adhesive interpolation (Phi = {:.4})",
+            self.model.adhesion_parameter()
+        )
+    }
+    fn effective_mass(&self) -> f64 {
+        self.mass
+    }
+    /// Seed 000, eqs. (5.111)-(5.125), in units of `F_n d_n`.
+    fn energy_loss(&self, impact_speed: f64) -> Result<EnergyLoss> {
+        let k = self.kinetic(impact_speed)?;
+        let loss = self.model.energy_loss(k)? * self.sphere.scales().energy;
+        Ok(EnergyLoss::closed_form(
+            finite_output(MODEL, "energy loss", loss)?,
+            "adhesive interpolation (5.111)-(5.125)",
+        ))
+    }
+    fn speed_scale(&self) -> f64 {
+        self.elastic_sticking_velocity
+    }
+}

@@ -1,0 +1,82 @@
+//! Output checks and small helpers shared by the models.
+
+use tabor_restitution::{Error, Result};
+
+/// A computed value that must be finite.
+pub(crate) fn finite_output(model: &'static str, what: &str, value: f64) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::Model {
+            model,
+            message: format!("{what} is not finite ({value:e}): inputs out of range"),
+        })
+    }
+}
+
+/// A computed value that must be finite and > 0.
+pub(crate) fn positive_output(model: &'static str, what: &str, value: f64) -> Result<f64> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::Model {
+            model,
+            message: format!(
+                "{what} = {value:e} is not finite and positive: inputs out of the representable range"
+            ),
+        })
+    }
+}
+
+/// A cubic Hermite segment on `[0, L]`: `p(t) = y0 + m0 t + c2 t² + c3 t³` with
+/// `p(0) = y0`, `p'(0) = m0`, `p(L) = y1`, `p'(L) = m1`.
+///
+/// The construction of seed 000 eqs. (5.115)-(5.120) (and, in the variable
+/// `x = d/d_Y`, of the chapter-3 interpolation (3.285) behind (5.107)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Hermite {
+    pub y0: f64,
+    pub m0: f64,
+    pub c2: f64,
+    pub c3: f64,
+    pub length: f64,
+}
+
+impl Hermite {
+    pub fn new(y0: f64, m0: f64, y1: f64, m1: f64, length: f64) -> Self {
+        let l = length;
+        Hermite {
+            y0,
+            m0,
+            c2: (3.0 * (y1 - y0) - (2.0 * m0 + m1) * l) / (l * l),
+            c3: (2.0 * (y0 - y1) + (m0 + m1) * l) / (l * l * l),
+            length: l,
+        }
+    }
+    pub fn value(&self, t: f64) -> f64 {
+        self.y0 + t * (self.m0 + t * (self.c2 + t * self.c3))
+    }
+    pub fn slope(&self, t: f64) -> f64 {
+        self.m0 + t * (2.0 * self.c2 + 3.0 * t * self.c3)
+    }
+    /// `∫_0^t p`.
+    pub fn integral(&self, t: f64) -> f64 {
+        t * (self.y0 + t * (0.5 * self.m0 + t * (self.c2 / 3.0 + 0.25 * t * self.c3)))
+    }
+    /// The smallest slope on `[lo, L]` (the slope is a quadratic in t).
+    pub fn min_slope(&self, lo: f64) -> f64 {
+        let mut m = self.slope(lo).min(self.slope(self.length));
+        if self.c3 > 0.0 {
+            let t = -self.c2 / (3.0 * self.c3);
+            if t > lo && t < self.length {
+                m = m.min(self.slope(t));
+            }
+        }
+        m
+    }
+}
+
+/// `a > b`, false when either is NaN.
+pub(crate) fn exceeds(a: f64, b: f64) -> bool {
+    a > b
+}
