@@ -1,0 +1,85 @@
+//! Rigid sphere (parabolic, radius R, mass m, speed v0) on an incompressible
+//! standard medium `G(t) = G∞ + G1 exp(−t/τ)`, τ = η/G1 (5.75), solved by the MDR
+//! model with internal variables (5.84), (5.88), (5.89) (see [`crate::mdr`] for
+//! the discretization). ε depends on β = G∞/G1 and
+//! `δ = η (R v0/(m² G∞³))^(1/5)` (5.90) only; β → 0 is the rigorous Kelvin-Voigt
+//! sphere of [`crate::kelvin_voigt_sphere`].
+//!
+//! Scaled: τ̂ = v0 τ/d0 = β (64/15)^(2/5) δ (d0 of (5.74) with G = G∞).
+
+use crate::mdr::{self, ScaledMedium};
+use crate::scaled::{positive_up_to, ScaledImpact};
+use crate::standard_flat::check_modulus_ratio;
+use tabor_restitution::{validate, Error, Result};
+
+/// Largest viscous parameter δ accepted.
+pub const MAX_VISCOUS_PARAMETER: f64 = 1e3;
+/// Smallest scaled relaxation time τ̂ = β (64/15)^(2/5) δ (explicit integration of
+/// 200 stiff element variables below it is too slow).
+pub const MIN_RELAXATION_TIME: f64 = 1e-4;
+
+fn medium(beta: f64, delta: f64) -> Result<ScaledMedium> {
+    let b = check_modulus_ratio(beta)?;
+    let d = positive_up_to(
+        "viscous_parameter",
+        delta,
+        MAX_VISCOUS_PARAMETER,
+        "must be finite and lie in (0, 1e3]",
+    )?;
+    let tau = b * (64.0_f64 / 15.0).powf(0.4) * d;
+    if tau < MIN_RELAXATION_TIME {
+        return Err(Error::invalid(
+            "viscous_parameter",
+            d,
+            "times modulus_ratio must be >= 5.6e-5 (too stiff; use the Kelvin-Voigt limit)",
+        ));
+    }
+    Ok(ScaledMedium {
+        beta: b,
+        tau,
+        tau0: 0.0,
+    })
+}
+
+/// The parameters `β = G∞/G1` and `δ = η (R v0/(m² G∞³))^(1/5)` from the relaxed
+/// modulus G∞, the branch modulus G1, the viscosity η (Pa s), the radius R, the
+/// impact speed v0 and the mass m.
+///
+/// Seed 000, eq. (5.90).
+pub fn parameters(
+    relaxed_modulus: f64,
+    branch_modulus: f64,
+    viscosity: f64,
+    radius: f64,
+    impact_speed: f64,
+    mass: f64,
+) -> Result<(f64, f64)> {
+    let g_inf = validate::positive("relaxed_modulus", relaxed_modulus)?;
+    let g1 = validate::positive("branch_modulus", branch_modulus)?;
+    let beta = validate::positive("modulus_ratio", g_inf / g1)?;
+    let delta = crate::kelvin_voigt_sphere::viscous_parameter(
+        viscosity,
+        radius,
+        impact_speed,
+        mass,
+        g_inf,
+    )?;
+    Ok((beta, delta))
+}
+
+/// The coefficient of restitution ε(β, δ), relative integration tolerance 1e-8.
+///
+/// Seed 000, eqs. (5.84)-(5.90), Fig. 5.13.
+pub fn restitution(modulus_ratio: f64, viscous_parameter: f64) -> Result<f64> {
+    Ok(solve(modulus_ratio, viscous_parameter, 1e-8)?.restitution)
+}
+
+/// The impact in the scaling (5.74) (G = G∞), relative integration tolerance
+/// `tolerance`; the MDR discretization adds an error of about 1e-4 in ε.
+///
+/// Seed 000, eqs. (5.84)-(5.90).
+pub fn solve(modulus_ratio: f64, viscous_parameter: f64, tolerance: f64) -> Result<ScaledImpact> {
+    let m = medium(modulus_ratio, viscous_parameter)?;
+    validate::tolerance("tolerance", tolerance)?;
+    mdr::solve(&m, tolerance)
+}

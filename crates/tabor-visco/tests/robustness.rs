@@ -1,0 +1,127 @@
+//! Arbitrary inputs: every public function returns a finite value (restitution in
+//! [0, 1]) or an error naming the parameter; none panics.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use proptest::prelude::*;
+use tabor_restitution::{Error, ImpactModel};
+use tabor_visco::models::{KelvinVoigtFlatPunch, KelvinVoigtSphere, MaxwellBranchSphere};
+use tabor_visco::*;
+
+fn check_eps(r: tabor_restitution::Result<f64>) {
+    match r {
+        Ok(e) => assert!(e.is_finite() && (0.0..=1.0).contains(&e), "{e}"),
+        Err(Error::InvalidParameter { parameter, .. }) => assert!(!parameter.is_empty()),
+        Err(_) => {}
+    }
+}
+
+fn check_value(r: tabor_restitution::Result<f64>) {
+    if let Ok(v) = r {
+        assert!(v.is_finite(), "{v}");
+    }
+}
+
+fn any() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        proptest::num::f64::ANY,
+        -10.0..10.0f64,
+        1e-6..1e3f64,
+        Just(0.0),
+        Just(1.0),
+        Just(0.5),
+    ]
+}
+
+proptest! {
+    #[test]
+    fn closed_forms_never_panic(a in any(), b in any(), c in any(), d in any()) {
+        check_eps(kelvin_voigt_flat::restitution(a));
+        check_value(kelvin_voigt_flat::contact_time(a));
+        check_value(kelvin_voigt_flat::damping_ratio(a, b, c, d));
+        check_value(kelvin_voigt_flat::natural_frequency(a, b, c));
+        check_eps(kelvin_voigt_sphere::first_order_restitution(a));
+        check_value(kelvin_voigt_sphere::viscous_parameter(a, b, c, d, a));
+        check_value(kelvin_voigt_sphere::overlap_scale(a, b, c, d));
+        check_value(standard_flat::equivalent_damping_ratio(a, b));
+        check_eps(standard_flat::equivalent_restitution(a, b));
+        check_value(standard_flat::parameters(a, b, c, d, a).map(|p| p.0 + p.1));
+        check_value(standard_sphere::parameters(a, b, c, d, a, b).map(|p| p.0 + p.1));
+        check_value(compressible_flat::poisson_ratio(a, b));
+        check_value(compressible_flat::bulk_damping_ratio_equal_viscosities(a, b));
+        check_value(compressible_flat::damping_ratios(a, b, c, d, a, b).map(|p| p.0 + p.1));
+        check_value(damping_law::tsuji_damping(a));
+        check_value(damping_law::scaled_damping(a, b, c, d, a, b));
+    }
+
+    #[test]
+    fn integrated_models_never_panic(a in any(), b in any(), c in any()) {
+        check_eps(kelvin_voigt_sphere::restitution(a, SphereModel::KuwabaraKono));
+        check_eps(kelvin_voigt_sphere::restitution(a, SphereModel::Rigorous));
+        check_eps(kelvin_voigt_sphere::solve(a, SphereModel::Rigorous, b).map(|s| s.restitution));
+        check_eps(damping_law::restitution(a, b));
+        check_eps(standard_flat::restitution(a, b));
+        check_eps(compressible_flat::restitution(a, b, c));
+        check_eps(compressible_flat::solve(a, b, c, c).map(|s| s.restitution));
+    }
+
+    #[test]
+    fn physical_models_never_panic(a in any(), b in any(), c in any(), d in any(), v in any()) {
+        if let Ok(m) = KelvinVoigtFlatPunch::new(a, b, c, d) {
+            check_eps(tabor_restitution::impact(&m, v).map(|o| o.restitution));
+        }
+        if let Ok(m) = KelvinVoigtSphere::new(a, b, c, d, SphereModel::KuwabaraKono) {
+            check_eps(tabor_restitution::impact(&m, v).map(|o| o.restitution));
+        }
+        if let Ok(m) = MaxwellBranchSphere::standard(a, b, c, d, a) {
+            let _ = m.name();
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 16, ..ProptestConfig::default() })]
+    #[test]
+    fn mdr_models_never_panic(a in any(), b in any()) {
+        check_eps(standard_sphere::restitution(a, b));
+        check_eps(kelvin_maxwell_sphere::restitution(a, b));
+    }
+}
+
+#[test]
+fn errors_name_the_parameter() {
+    let cases: Vec<(tabor_restitution::Result<f64>, &str)> = vec![
+        (kelvin_voigt_flat::restitution(f64::NAN), "damping_ratio"),
+        (kelvin_voigt_flat::restitution(0.0), "damping_ratio"),
+        (kelvin_voigt_flat::restitution(-1.0), "damping_ratio"),
+        (
+            kelvin_voigt_flat::restitution(f64::INFINITY),
+            "damping_ratio",
+        ),
+        (
+            kelvin_voigt_sphere::restitution(2e3, SphereModel::Rigorous),
+            "viscous_parameter",
+        ),
+        (standard_flat::restitution(0.0, 1.0), "modulus_ratio"),
+        (standard_flat::restitution(1.0, -1.0), "viscous_parameter"),
+        (
+            compressible_flat::restitution(0.5, 1.0, 1.0),
+            "poisson_ratio",
+        ),
+        (
+            compressible_flat::restitution(0.3, 1.0, f64::NAN),
+            "bulk_damping_ratio",
+        ),
+        (damping_law::restitution(2.0, 1.0), "damping_exponent"),
+        (damping_law::restitution(0.5, 0.0), "damping"),
+        (
+            kelvin_voigt_sphere::solve(0.1, SphereModel::Rigorous, 0.0).map(|s| s.restitution),
+            "tolerance",
+        ),
+    ];
+    for (r, name) in cases {
+        match r {
+            Err(Error::InvalidParameter { parameter, .. }) => assert_eq!(parameter, name),
+            other => panic!("expected an error naming {name}, got {other:?}"),
+        }
+    }
+}
