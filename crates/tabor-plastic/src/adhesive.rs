@@ -9,8 +9,9 @@
 
 use crate::util::{exceeds, finite_output, positive_output, Hermite};
 use serde::Serialize;
+use tabor_dynamics::{BranchChange, ForceLaw};
 use tabor_jkr::normalized as jkr;
-use tabor_jkr::{ContactState, JkrImpact, JkrSphere, SeparationRule};
+use tabor_jkr::{ContactState, JkrImpact, JkrScales, JkrSphere, SeparationRule};
 use tabor_numerics::root_finding::{brent, newton_safeguarded, RootTolerance};
 use tabor_restitution::{
     restitution_from_loss, sticking_velocity, validate, EnergyLoss, Error, ImpactModel, Result,
@@ -230,7 +231,8 @@ impl AdhesiveInterpolation {
     }
 
     /// The loading work from first touch to the yield state (units of `F_n d_n`; 0
-    /// when the contact yields at first touch).
+    /// when the contact yields at first touch, negative when the yield state lies in
+    /// the adhesive well, so that even a vanishing impact speed reaches it).
     ///
     /// Seed 000, (5.35) (the JKR loading work, `tabor_jkr`) up to (5.113).
     pub fn yield_kinetic_energy(&self) -> f64 {
@@ -350,25 +352,18 @@ impl AdhesiveInterpolation {
     pub fn turning_point(&self, kinetic_energy: f64) -> Result<AdhesiveTurningPoint> {
         let k = validate::positive("kinetic_energy", kinetic_energy)?;
         let s = self.max_state(k)?;
-        let a = s.contact_radius;
-        // F̂ = â³/ρ − 2 â^(3/2) at the turning point.
-        let rho = positive_output(MODEL, "R_p/R", a * a * a / (s.force + 2.0 * a * a.sqrt()))?;
-        let shrink = rho.powf(2.0 / 3.0);
-        let scaled = a / shrink;
-        // (5.124): d̂ − d̂_res = ρ^(1/3) d̂_JKR(â/ρ^(2/3)).
-        let residual = s.depth - rho.cbrt() * jkr::depth(scaled)?;
+        let u = JkrUnloading::from_turning_point(s)?;
         let critical = jkr::critical_state(SeparationRule::FixedGrip);
-        let separation = residual + rho.cbrt() * critical.depth;
-        let rebound = rho.powf(4.0 / 3.0)
-            * (jkr::kinetic_energy_to_reach(scaled)?
+        let rebound = u.rho.powf(4.0 / 3.0)
+            * (jkr::kinetic_energy_to_reach(s.contact_radius / u.rho.powf(2.0 / 3.0))?
                 - jkr::kinetic_energy_to_reach(critical.contact_radius)?);
         Ok(AdhesiveTurningPoint {
             max_depth: s.depth,
             max_force: s.force,
-            max_contact_radius: a,
-            unloading_radius_ratio: rho,
-            residual_depth: residual,
-            separation_depth: separation,
+            max_contact_radius: s.contact_radius,
+            unloading_radius_ratio: u.rho,
+            residual_depth: u.residual,
+            separation_depth: u.separation,
             rebound_energy: finite_output(MODEL, "rebound energy", rebound)?,
         })
     }
@@ -393,6 +388,40 @@ impl AdhesiveInterpolation {
         let kinetic = finite_output(MODEL, "kinetic energy", u_jkr * s * s)?;
         // Units: v_c = 1, energy F_n d_n, so the mass is 2 Û_JKR.
         restitution_from_loss(self.energy_loss(kinetic)?, 2.0 * u_jkr, s)
+    }
+}
+
+/// JKR unloading with radius `R_p = ρ R` (normalized): (5.121)-(5.125).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct JkrUnloading {
+    rho: f64,
+    residual: f64,
+    separation: f64,
+}
+
+impl JkrUnloading {
+    /// `ρ` from continuity of the force, `F̂ = â³/ρ − 2â^(3/2)` (corrected (5.123));
+    /// `d̂_res` (5.124): `d̂ − d̂_res = ρ^(1/3) d̂_JKR(â/ρ^(2/3))`; separation (5.125).
+    fn from_turning_point(s: ContactState) -> Result<Self> {
+        let a = s.contact_radius;
+        let rho = positive_output(MODEL, "R_p/R", a * a * a / (s.force + 2.0 * a * a.sqrt()))?;
+        let scaled = a / rho.powf(2.0 / 3.0);
+        let residual = s.depth - rho.cbrt() * jkr::depth(scaled)?;
+        let critical = jkr::critical_state(SeparationRule::FixedGrip);
+        Ok(JkrUnloading {
+            rho,
+            residual,
+            separation: residual + rho.cbrt() * critical.depth,
+        })
+    }
+
+    /// `(â, F̂)` at depth `d̂` on the unloading branch (clamped at the instability).
+    fn state(&self, d: f64) -> Result<(f64, f64)> {
+        let scaled = invert_jkr_depth((d - self.residual) / self.rho.cbrt())?;
+        Ok((
+            scaled * self.rho.powf(2.0 / 3.0),
+            self.rho * jkr::force(scaled)?,
+        ))
     }
 }
 
@@ -477,7 +506,7 @@ impl AdhesiveInterpolationImpact {
         let yield_velocity = finite_output(
             MODEL,
             "yield velocity",
-            (2.0 * model.yield_kinetic_energy() * energy / effective_mass).sqrt(),
+            (2.0 * model.yield_kinetic_energy().max(0.0) * energy / effective_mass).sqrt(),
         )?;
         Ok(AdhesiveInterpolationImpact {
             model,
@@ -504,11 +533,24 @@ impl AdhesiveInterpolationImpact {
     }
 
     /// The impact speed (m/s) at which the contact reaches the adhesive yield onset
-    /// (5.111) (0 when it yields at first touch).
+    /// (5.111) (0 when it yields at first touch or inside the adhesive well).
     ///
     /// Seed 000, eqs. (5.35), (5.111)-(5.113).
     pub fn yield_velocity(&self) -> f64 {
         self.yield_velocity
+    }
+
+    /// The time-domain force law of this model for `tabor_dynamics::simulate_impact`:
+    /// jump-in at first touch, loading (JKR, cubic, plastic), turning point, JKR
+    /// unloading with `R_p` and `d_res`, snap-off at (5.125).
+    ///
+    /// Seed 000, eqs. (5.111)-(5.125).
+    pub fn force_law(&self) -> AdhesiveForceLaw {
+        AdhesiveForceLaw {
+            model: self.model,
+            scales: self.sphere.scales(),
+            unloading: None,
+        }
     }
 
     /// Kinetic energy of an impact at `v0`, in units of `F_n d_n`.
@@ -543,5 +585,79 @@ impl ImpactModel for AdhesiveInterpolationImpact {
     }
     fn speed_scale(&self) -> f64 {
         self.elastic_sticking_velocity
+    }
+}
+
+/// The adhesive interpolation model as a `tabor_dynamics::ForceLaw`: the motion
+/// starts at first touch (`d = 0`) on the JKR branch (the jump-in force −(8/9)F_n is
+/// already attractive there), loads along (5.111)-(5.115), switches at the turning
+/// point to JKR unloading with `R_p` and `d_res` (5.121)-(5.124), and separates at
+/// the displacement-controlled instability (5.125) (`branch_end = d − d_sep`).
+///
+/// Seed 000, eqs. (5.111)-(5.125).
+#[derive(Clone, Debug, PartialEq)]
+pub struct AdhesiveForceLaw {
+    model: AdhesiveInterpolation,
+    scales: JkrScales,
+    unloading: Option<JkrUnloading>,
+}
+
+impl ForceLaw for AdhesiveForceLaw {
+    fn name(&self) -> String {
+        format!(
+            "adhesive interpolation (Phi = {:.4})",
+            self.model.adhesion_parameter()
+        )
+    }
+
+    /// `d_max` of the analytic model (at least `d_n`).
+    fn overlap_scale(&self, effective_mass: f64, impact_speed: f64) -> Result<f64> {
+        let m = validate::positive("effective_mass", effective_mass)?;
+        let v = validate::positive("impact_speed", impact_speed)?;
+        let k = positive_output(
+            MODEL,
+            "kinetic energy",
+            0.5 * m * v * v / self.scales.energy,
+        )?;
+        let d = self.model.max_depth(k)?;
+        positive_output(MODEL, "overlap scale", d.max(1.0) * self.scales.depth)
+    }
+
+    fn begin_impact(&mut self, _m: f64, _v0: f64) -> Result<()> {
+        self.unloading = None;
+        Ok(())
+    }
+
+    fn force(&self, overlap: f64, _rate: f64) -> Result<f64> {
+        let d = validate::finite("overlap", overlap)? / self.scales.depth;
+        let f = match self.unloading {
+            None => self.model.loading_state(d)?.force,
+            Some(u) => u.state(d)?.1,
+        };
+        finite_output(MODEL, "force", f * self.scales.force)
+    }
+
+    fn contact_radius(&self, overlap: f64, _rate: f64) -> Result<f64> {
+        let d = validate::finite("overlap", overlap)? / self.scales.depth;
+        let a = match self.unloading {
+            None => self.model.loading_state(d)?.contact_radius,
+            Some(u) => u.state(d)?.0,
+        };
+        finite_output(MODEL, "contact radius", a * self.scales.contact_radius)
+    }
+
+    fn branch_end(&self, overlap: f64, _rate: f64) -> Result<f64> {
+        Ok(match self.unloading {
+            None => overlap,
+            Some(u) => overlap - u.separation * self.scales.depth,
+        })
+    }
+
+    /// Seed 000, eqs. (5.123)-(5.124) (corrected (5.123)).
+    fn on_max_compression(&mut self, overlap: f64) -> Result<BranchChange> {
+        let d = validate::finite("overlap", overlap)? / self.scales.depth;
+        let state = self.model.loading_state(d)?;
+        self.unloading = Some(JkrUnloading::from_turning_point(state)?);
+        Ok(BranchChange::Continue)
     }
 }

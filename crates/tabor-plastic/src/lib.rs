@@ -43,9 +43,9 @@ mod superposition;
 mod util;
 
 pub use adhesive::{
-    adhesion_parameter, adhesive_yield_force, AdhesiveInterpolation, AdhesiveInterpolationImpact,
-    AdhesiveTurningPoint, ADHESION_PARAMETER_FACTOR, ADHESIVE_PLASTIC_ONSET,
-    ADHESIVE_PLASTIC_SLOPE,
+    adhesion_parameter, adhesive_yield_force, AdhesiveForceLaw, AdhesiveInterpolation,
+    AdhesiveInterpolationImpact, AdhesiveTurningPoint, ADHESION_PARAMETER_FACTOR,
+    ADHESIVE_PLASTIC_ONSET, ADHESIVE_PLASTIC_SLOPE,
 };
 pub use contact::{PlasticContact, LIMITING_PRESSURE_RATIO};
 pub use dimensionless_fit::{Clamping, DimensionlessFit, FittedRestitution};
