@@ -169,7 +169,8 @@ fn plot(rows: &[Row], path: &std::path::Path) -> Result<(), Box<dyn Error>> {
         .y_label_area_size(50)
         .build_cartesian_2d(x_range, y_min..0.5)?;
     chart.configure_mesh().x_desc("Tabor parameter Λ").draw()?;
-    let series: [(&str, RGBColor, fn(&Row) -> f64); 3] = [
+    type Column = fn(&Row) -> f64;
+    let series: [(&str, RGBColor, Column); 3] = [
         ("F̂ at pull-off", BLUE, |r| r.pull_off_force),
         ("d̂ at jump-in (−1/Λ)", RED, |r| r.jump_in_depth),
         ("d̂ at pull-off", GREEN, |r| r.pull_off_depth),

@@ -9,8 +9,14 @@
 //!   interpolation, cost accounting;
 //! - [`restitution`]: effective properties, the [`ImpactModel`](restitution::ImpactModel)
 //!   trait, restitution and sticking velocity from an energy loss;
-//! - [`maugis`]: Maugis-Dugdale adhesive impact across the Tabor-parameter range.
+//! - [`elastic`]: non-adhesive elastic impact (Hertz, power-law, graded media);
+//! - [`jkr`]: JKR adhesive impact (spheres, power-law profiles, graded media);
+//! - [`maugis`]: Maugis-Dugdale adhesive impact across the Tabor-parameter range;
+//! - [`dynamics`]: the time-domain simulator and its force-law interface.
 
+pub use tabor_dynamics as dynamics;
+pub use tabor_elastic as elastic;
+pub use tabor_jkr as jkr;
 pub use tabor_maugis as maugis;
 pub use tabor_numerics as numerics;
 pub use tabor_restitution as restitution;

@@ -45,6 +45,7 @@
 //! ```
 
 mod common;
+mod dynamics;
 mod graded;
 mod impact;
 pub mod normalized;
@@ -53,6 +54,7 @@ mod relations;
 mod sphere;
 
 pub use common::{ContactState, MaxContactRadius, NormalizedLoss, SeparationRule};
+pub use dynamics::JkrForceLaw;
 pub use graded::GradedSphere;
 pub use impact::{AdhesiveContact, JkrImpact, DEFAULT_TOLERANCE};
 pub use power_law::PowerLawProfile;

@@ -18,12 +18,14 @@
 //! - [`trace_impact`], [`equilibrium_state`]: the curve F̂(d̂) along the impact.
 
 pub mod branch;
+mod dynamics;
 mod fast;
 mod impact;
 mod model;
 mod trace;
 pub mod units;
 
+pub use dynamics::MaugisDugdaleForceLaw;
 pub use fast::{fast_tier_pieces, loss_over_jkr_fast, prepare_fast_tier, FAST_TIER_RELATIVE_ERROR};
 pub use impact::{
     impact_path, jkr_normalized_loss, normalized_loss, ImpactPath, NormalizedLoss, PathState,

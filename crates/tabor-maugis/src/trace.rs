@@ -54,7 +54,7 @@ pub fn equilibrium_state(lambda: f64, depth: f64) -> Result<PathState> {
     equilibrium_state_on(&path, depth, &mut cost)
 }
 
-fn equilibrium_state_on(
+pub(crate) fn equilibrium_state_on(
     path: &crate::impact::ImpactPath,
     depth: f64,
     cost: &mut Cost,

@@ -1,0 +1,120 @@
+//! The Maugis-Dugdale impact as a time-domain force law for `tabor-dynamics`.
+
+use crate::impact::{impact_path, ImpactPath};
+use crate::model::MaugisDugdaleImpact;
+use crate::trace::equilibrium_state_on;
+use crate::units::Scales;
+use tabor_dynamics::{BranchChange, ForceLaw};
+use tabor_numerics::Cost;
+use tabor_restitution::{validate, Result};
+
+/// The Maugis-Dugdale contact as a force law `F(d)` following the traced branch
+/// (seed 000 section 5.3.2): the sphere approaches with `F = 0` from
+/// `d = −(3/2)h` until the gap at the first point equals the range h
+/// (`d̂ = −1/Λ`, (5.40)), jumps onto the stable equilibrium state with that depth
+/// (no contact, b̂0 = 2b̂_c (5.41), in case 1), loads and unloads along the
+/// equilibrium branch, and snaps off at its minimum depth (the
+/// displacement-controlled instability) with the speed it has there.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MaugisDugdaleForceLaw {
+    scales: Scales,
+    path: ImpactPath,
+    approaching: bool,
+}
+
+impl MaugisDugdaleForceLaw {
+    /// The force law of a Maugis-Dugdale impact.
+    pub fn new(model: &MaugisDugdaleImpact) -> Result<Self> {
+        Ok(MaugisDugdaleForceLaw {
+            scales: model.scales(),
+            path: impact_path(model.tabor_parameter())?,
+            approaching: true,
+        })
+    }
+
+    /// The range of adhesion h = d_n/Λ (m).
+    pub fn range(&self) -> f64 {
+        self.scales.depth / self.path.lambda
+    }
+
+    /// The depth of jump-in −h and of snap-off (m).
+    pub fn jump_in_and_pull_off_depths(&self) -> (f64, f64) {
+        (
+            self.path.jump_in.depth * self.scales.depth,
+            self.path.pull_off.depth * self.scales.depth,
+        )
+    }
+
+    fn state(&self, overlap: f64) -> Result<crate::impact::PathState> {
+        // clamp trial points beyond the snap-off to the snap-off state
+        let d = (overlap / self.scales.depth).max(self.path.pull_off.depth);
+        let mut cost = Cost::ZERO;
+        equilibrium_state_on(&self.path, d, &mut cost)
+    }
+}
+
+impl ForceLaw for MaugisDugdaleForceLaw {
+    fn name(&self) -> String {
+        format!("Maugis-Dugdale (Lambda = {:.6e})", self.path.lambda)
+    }
+
+    fn overlap_scale(&self, effective_mass: f64, impact_speed: f64) -> Result<f64> {
+        let m = validate::positive("effective_mass", effective_mass)?;
+        let v = validate::positive("impact_speed", impact_speed)?;
+        // R and E* from the scales: d_n = a_c²/(3R), F_n = 1.5πΔγR; the Hertz
+        // d_max (5.8) needs E*√R = (9π/8)Δγ R²/a_c³ · √R
+        let s = self.scales;
+        let r_times_dg = s.force / (1.5 * std::f64::consts::PI);
+        let r = s.contact_radius * s.contact_radius / (3.0 * s.depth);
+        let dg = r_times_dg / r;
+        let e = 9.0 * std::f64::consts::PI * dg * r * r / (8.0 * s.contact_radius.powi(3));
+        let hertz = (15.0 * m * v * v / (16.0 * e * r.sqrt())).powf(0.4);
+        let scale = hertz.max(s.depth).max(self.range());
+        validate::positive("overlap_scale", scale)
+    }
+
+    fn begin_impact(&mut self, _effective_mass: f64, _impact_speed: f64) -> Result<()> {
+        self.approaching = true;
+        Ok(())
+    }
+
+    fn start_overlap(&self) -> f64 {
+        -1.5 * self.range()
+    }
+
+    fn in_contact(&self) -> bool {
+        !self.approaching
+    }
+
+    fn force(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
+        if self.approaching {
+            return Ok(0.0);
+        }
+        Ok(self.state(overlap)?.force * self.scales.force)
+    }
+
+    fn contact_radius(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
+        if self.approaching {
+            return Ok(0.0);
+        }
+        Ok(self.state(overlap)?.contact_radius * self.scales.contact_radius)
+    }
+
+    fn branch_end(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
+        let (jump_in, pull_off) = self.jump_in_and_pull_off_depths();
+        Ok(if self.approaching {
+            jump_in - overlap
+        } else {
+            overlap - pull_off
+        })
+    }
+
+    fn on_branch_end(&mut self, _overlap: f64, _overlap_rate: f64) -> Result<BranchChange> {
+        if self.approaching {
+            self.approaching = false;
+            Ok(BranchChange::Continue)
+        } else {
+            Ok(BranchChange::Separate)
+        }
+    }
+}
