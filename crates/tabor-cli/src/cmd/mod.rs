@@ -3,3 +3,4 @@
 pub mod effective;
 pub mod jkr;
 pub mod maugis_loss;
+pub mod visco;
