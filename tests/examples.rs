@@ -60,3 +60,32 @@ fn loss_vs_lambda_matches_the_direct_evaluation() {
     assert!(n >= 200);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn trajectory_writes_both_laws() {
+    let dir = temp_dir("trajectory");
+    let out = Command::new(example("trajectory"))
+        .arg("--out")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let csv = std::fs::read_to_string(dir.join("trajectory.csv")).unwrap();
+    assert!(csv.lines().any(|l| l.starts_with("JKR")));
+    assert!(csv.lines().any(|l| l.starts_with("Maugis-Dugdale")));
+    assert!(dir.join("trajectory.svg").exists());
+    // the printed simulated and analytic restitutions agree to the printed digits
+    let text = String::from_utf8(out.stdout).unwrap();
+    for line in text.lines().filter(|l| l.contains("simulated")) {
+        let num = |key: &str| -> f64 {
+            let rest = &line[line.find(key).unwrap() + key.len()..];
+            rest.split(',').next().unwrap().trim().parse().unwrap()
+        };
+        assert_eq!(num("simulated ε = "), num("analytic ε = "), "{line}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
