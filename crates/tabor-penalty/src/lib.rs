@@ -1,0 +1,3 @@
+//! # tabor-penalty
+//!
+//! Penalty contact laws for multibody codes (work in progress).
