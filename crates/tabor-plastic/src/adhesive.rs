@@ -369,13 +369,14 @@ impl AdhesiveInterpolation {
     }
 
     /// The kinetic energy lost (units of `F_n d_n`) by an impact with kinetic energy
-    /// `kinetic_energy` (> 0): `Ê − Ê_rebound`, all of `Ê` when the body cannot reach
-    /// the separation point (sticking).
+    /// `kinetic_energy` (> 0): `Ê − Ê_rebound`. When the body cannot reach the
+    /// separation point (`Ê_rebound < 0`) this exceeds `Ê` and the core reports
+    /// sticking (as the constant elastic JKR loss does below `v_c`).
     ///
     /// Seed 000, eqs. (5.111)-(5.125).
     pub fn energy_loss(&self, kinetic_energy: f64) -> Result<f64> {
         let t = self.turning_point(kinetic_energy)?;
-        Ok((kinetic_energy - t.rebound_energy.max(0.0)).clamp(0.0, kinetic_energy))
+        Ok((kinetic_energy - t.rebound_energy).max(0.0))
     }
 
     /// The restitution at `v0/v_c` (> 0), `v_c` the elastic JKR sticking velocity
