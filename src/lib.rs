@@ -12,7 +12,8 @@
 //! - [`elastic`]: non-adhesive elastic impact (Hertz, power-law, graded media);
 //! - [`jkr`]: JKR adhesive impact (spheres, power-law profiles, graded media);
 //! - [`maugis`]: Maugis-Dugdale adhesive impact across the Tabor-parameter range;
-//! - [`dynamics`]: the time-domain simulator and its force-law interface.
+//! - [`dynamics`]: the time-domain simulator and its force-law interface;
+//! - [`visco`]: viscoelastic impact (Kelvin-Voigt, standard, Kelvin-Maxwell media).
 
 pub use tabor_dynamics as dynamics;
 pub use tabor_elastic as elastic;
@@ -20,3 +21,4 @@ pub use tabor_jkr as jkr;
 pub use tabor_maugis as maugis;
 pub use tabor_numerics as numerics;
 pub use tabor_restitution as restitution;
+pub use tabor_visco as visco;
