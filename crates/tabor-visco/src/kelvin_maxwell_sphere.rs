@@ -2,7 +2,7 @@
 //! Maxwell branch G1 whose relaxation time τ is the elastic contact time (5.12)
 //! with G = G∞, and a parallel dashpot η0 standing for all faster relaxations
 //! (seed 000 section 5.4.4, (5.91)). MDR as for the standard medium
-//! ([`crate::mdr`]) with the line load (5.91). ε depends on β = G∞/G1 and
+//! (the `mdr` module) with the line load (5.91). ε depends on β = G∞/G1 and
 //! `δ = η0 (R v0/(m² G∞³))^(1/5)` (5.92) only.
 //!
 //! Scaled (5.74), G = G∞: τ̂ = T_S v0/d0 = (4/5) B(2/5, 1/2) ≈ 2.943 (5.12),

@@ -1,6 +1,6 @@
 //! Rigid sphere (parabolic, radius R, mass m, speed v0) on an incompressible
 //! standard medium `G(t) = G∞ + G1 exp(−t/τ)`, τ = η/G1 (5.75), solved by the MDR
-//! model with internal variables (5.84), (5.88), (5.89) (see [`crate::mdr`] for
+//! model with internal variables (5.84), (5.88), (5.89) (see the private `mdr` module for
 //! the discretization). ε depends on β = G∞/G1 and
 //! `δ = η (R v0/(m² G∞³))^(1/5)` (5.90) only; β → 0 is the rigorous Kelvin-Voigt
 //! sphere of [`crate::kelvin_voigt_sphere`].
