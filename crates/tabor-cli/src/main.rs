@@ -26,6 +26,8 @@ enum Command {
     Jkr(cmd::jkr::Args),
     /// Maugis-Dugdale adhesive loss W(Λ) over the Tabor parameter, as a table.
     MaugisLoss(cmd::maugis_loss::Args),
+    /// Elasto-plastic impact with and without adhesion: restitution, yield and sticking velocity.
+    Plastic(cmd::plastic::Args),
     /// Viscoelastic impact: restitution versus the dimensionless parameters.
     Visco(cmd::visco::Args),
 }
@@ -36,6 +38,7 @@ fn main() -> ExitCode {
         Command::Effective(args) => cmd::effective::run(&args),
         Command::Jkr(args) => cmd::jkr::run(&args),
         Command::MaugisLoss(args) => cmd::maugis_loss::run(&args),
+        Command::Plastic(args) => cmd::plastic::run(&args),
         Command::Visco(args) => cmd::visco::run(&args),
     };
     match result {

@@ -57,4 +57,5 @@ pub use loading::{
     Interpolation, LoadingLaw, Thornton, TurningPoint, DEFAULT_PLASTIC_ONSET, DEFAULT_PLASTIC_SLOPE,
 };
 pub use superposition::Superposition;
+pub use tabor_dynamics::SimulationSettings;
 pub use tabor_restitution::{EnergyLoss, Error, Result};

@@ -3,4 +3,5 @@
 pub mod effective;
 pub mod jkr;
 pub mod maugis_loss;
+pub mod plastic;
 pub mod visco;

@@ -1,0 +1,154 @@
+//! End-to-end tests of `tabor plastic`.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use std::process::Command;
+
+fn tabor(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_tabor"))
+        .args(args)
+        .output()
+        .expect("the tabor binary runs")
+}
+
+/// Alumina sphere (R = 2.5 mm, m = 0.25 g) on a steel plate, seed 000 Table 5.2.
+const BASE: [&str; 10] = [
+    "--modulus",
+    "1.413e11",
+    "--radius",
+    "2.5e-3",
+    "--mass",
+    "2.5e-4",
+    "--yield-stress",
+    "1.03e9",
+    "--speed",
+    "1.0",
+];
+
+fn json(model: &str, extra: &[&str]) -> serde_json::Value {
+    let mut args = vec!["plastic", "--model", model];
+    args.extend(BASE);
+    args.extend(extra);
+    args.push("--json");
+    let out = tabor(&args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+#[test]
+fn every_model_reports_restitution_and_yield_velocity() {
+    for (model, extra) in [
+        ("thornton", vec![]),
+        ("interpolation", vec![]),
+        ("jackson-green", vec!["--poisson-ratio", "0.29"]),
+        ("dimensionless-fit", vec!["--density", "3820"]),
+        ("adhesive-interpolation", vec!["--work-of-adhesion", "0.5"]),
+        ("superposition", vec!["--work-of-adhesion", "0.5"]),
+    ] {
+        let v = json(model, &extra);
+        let e = v["restitution"].as_f64().unwrap();
+        assert!(e > 0.0 && e < 1.0, "{model}: {e}");
+        assert!(v["yield_velocity"].as_f64().unwrap() > 0.0);
+        assert!(v["energy_loss"].as_f64().unwrap() > 0.0);
+        assert!(v["model"].is_string() && v["warnings"].is_array());
+        let adhesive = model.starts_with("adhesive") || model == "superposition";
+        assert_eq!(v.get("sticking_velocity").is_some(), adhesive, "{model}");
+    }
+}
+
+#[test]
+fn thornton_matches_the_published_restitution() {
+    // v0 = 2 v_Y: eps = 0.9306 (seed 000 / spec), 5e-5.
+    let v_y = json("thornton", &[])["yield_velocity"].as_f64().unwrap();
+    let speed = format!("{}", 2.0 * v_y);
+    let mut args = vec!["plastic", "--model", "thornton"];
+    args.extend(&BASE[..8]);
+    args.extend(["--speed", speed.as_str(), "--json"]);
+    let out = tabor(&args);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!((v["restitution"].as_f64().unwrap() - 0.9306).abs() < 5e-5);
+}
+
+#[test]
+fn seed_001_clamping_is_reported() {
+    // Just above its yield velocity the fit exceeds 1 for this material.
+    let v = json("dimensionless-fit", &["--density", "3958.226"]);
+    let v_y = v["yield_velocity"].as_f64().unwrap();
+    let speed = format!("{}", 1.0001 * v_y);
+    let mut args = vec![
+        "plastic",
+        "--model",
+        "dimensionless-fit",
+        "--density",
+        "3958.226",
+    ];
+    args.extend(&BASE[..8]);
+    args.extend(["--speed", speed.as_str(), "--json"]);
+    let out = tabor(&args);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["clamping"], "to-one");
+    assert_eq!(v["restitution"].as_f64().unwrap(), 1.0);
+    assert!(!v["warnings"].as_array().unwrap().is_empty());
+}
+
+#[test]
+fn bad_input_is_one_line_naming_the_parameter_and_exit_2() {
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["--model", "thornton", "--modulus", "-1"], "--modulus"),
+        (vec!["--model", "thornton", "--radius", "nan"], "--radius"),
+        (vec!["--model", "thornton", "--mass", "0"], "--mass"),
+        (
+            vec!["--model", "thornton", "--yield-stress", "inf"],
+            "--yield-stress",
+        ),
+        (vec!["--model", "thornton", "--speed", "-2"], "--speed"),
+        (vec!["--model", "jackson-green"], "--poisson-ratio"),
+        (
+            vec!["--model", "jackson-green", "--poisson-ratio", "0.7"],
+            "--poisson-ratio",
+        ),
+        (vec!["--model", "dimensionless-fit"], "--density"),
+        (
+            vec!["--model", "adhesive-interpolation"],
+            "--work-of-adhesion",
+        ),
+        (
+            vec!["--model", "superposition", "--work-of-adhesion", "-1"],
+            "--work-of-adhesion",
+        ),
+    ];
+    for (overrides, name) in cases {
+        // Base values, with the overridden flags replaced.
+        let mut args = vec!["plastic"];
+        let mut i = 0;
+        while i < BASE.len() {
+            if !overrides.contains(&BASE[i]) {
+                args.extend([BASE[i], BASE[i + 1]]);
+            }
+            i += 2;
+        }
+        args.extend(&overrides);
+        let out = tabor(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains(name), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn help_says_which_model_needs_which_flag() {
+    let out = tabor(&["plastic", "--help"]);
+    let help = String::from_utf8_lossy(&out.stdout);
+    for needle in [
+        "--poisson-ratio",
+        "--density",
+        "--work-of-adhesion",
+        "jackson-green",
+    ] {
+        assert!(help.contains(needle), "{needle}");
+    }
+}
