@@ -1,0 +1,39 @@
+//! # tabor-scene
+//!
+//! The main entry point of tabor for users: describe a collision once — the bodies,
+//! the interface, the requested accuracy — and get its restitution, whether the
+//! bodies stick, the sticking velocity and the energy lost, computed by only the
+//! effects the scene calls for, each with the reason it was used or skipped.
+//!
+//! - [`Scene`]: a validated scene, from TOML or JSON ([`Scene::from_path`],
+//!   [`Scene::from_str`]) or built in code ([`SceneBuilder`]); file format in
+//!   `examples/scenes/README.md`;
+//! - [`Scene::outcome`], [`Scene::outcome_at`]: restitution (5.37), sticking,
+//!   sticking velocity, total and per-effect losses, effects used and skipped,
+//!   model, branch, accuracy, cost and warnings ([`Outcome`]);
+//! - [`Scene::sticking_velocity`], [`Scene::simulate`] (time domain);
+//! - [`sweep`]: outcomes over a range of speeds or another parameter, in parallel.
+//!
+//! Effect selection (seed 000 chapter 5 and the issue that specified it):
+//! adhesion is used when a work of adhesion is given and its loss is at least the
+//! requested accuracy times the kinetic energy; the JKR closed form is used when the
+//! Maugis-Dugdale loss differs from it by less than the accuracy, the case-1 closed
+//! form when Λ ≤ Λ1, the numerical Maugis-Dugdale solution otherwise. Plasticity is
+//! used when a yield stress is given and the impact exceeds the yield onset
+//! (adhesive or not); with adhesion it is the adhesive interpolation model
+//! (superposition on request). Viscoelasticity (an incompressible Kelvin-Voigt
+//! body, rigorous model) is used when a viscosity is given and its loss matters;
+//! combined with other losses it is added to them, with a warning.
+
+mod effects;
+pub mod file;
+mod scene;
+mod sweep;
+
+pub use effects::{Effect, Outcome};
+pub use file::{Format, ParseError, SceneFile};
+pub use scene::{
+    Adhesion, AdhesionRange, AdhesivePlasticity, Body, PlasticityModel, Scene, SceneBuilder,
+    SceneError, DEFAULT_ACCURACY,
+};
+pub use sweep::{spaced, sweep, SweepParameter};

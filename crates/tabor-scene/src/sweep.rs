@@ -1,0 +1,124 @@
+//! Sweeps: the outcome of a scene over many values of one parameter, in parallel.
+
+use crate::effects::Outcome;
+use crate::file::AdhesionFile;
+use crate::scene::{Scene, SceneError};
+use rayon::prelude::*;
+use serde::Serialize;
+
+/// A scene parameter that a sweep varies.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum SweepParameter {
+    /// The impact speed (m/s).
+    Speed,
+    /// The sphere's radius (m).
+    SphereRadius,
+    /// The work of adhesion (J/m²).
+    WorkOfAdhesion,
+    /// The Tabor parameter Λ (replaces any range given).
+    TaborParameter,
+    /// The target's yield stress (Pa).
+    YieldStress,
+}
+
+impl SweepParameter {
+    /// The parameter named as on the command line (`speed`, `sphere-radius`,
+    /// `work-of-adhesion`, `tabor-parameter`, `yield-stress`).
+    pub fn from_name(name: &str) -> Option<Self> {
+        Some(match name {
+            "speed" => SweepParameter::Speed,
+            "sphere-radius" => SweepParameter::SphereRadius,
+            "work-of-adhesion" => SweepParameter::WorkOfAdhesion,
+            "tabor-parameter" => SweepParameter::TaborParameter,
+            "yield-stress" => SweepParameter::YieldStress,
+            _ => return None,
+        })
+    }
+
+    /// The name as on the command line.
+    pub fn name(&self) -> &'static str {
+        match self {
+            SweepParameter::Speed => "speed",
+            SweepParameter::SphereRadius => "sphere-radius",
+            SweepParameter::WorkOfAdhesion => "work-of-adhesion",
+            SweepParameter::TaborParameter => "tabor-parameter",
+            SweepParameter::YieldStress => "yield-stress",
+        }
+    }
+}
+
+impl Scene {
+    /// The same scene with `parameter` set to `value`, validated again.
+    pub fn with_parameter(
+        &self,
+        parameter: SweepParameter,
+        value: f64,
+    ) -> Result<Scene, SceneError> {
+        let mut data = self.data.clone();
+        match parameter {
+            SweepParameter::Speed => return self.with_speed(value),
+            SweepParameter::SphereRadius => data.sphere.radius = Some(value),
+            SweepParameter::WorkOfAdhesion => {
+                data.adhesion
+                    .get_or_insert_with(AdhesionFile::default)
+                    .work_of_adhesion = value
+            }
+            SweepParameter::TaborParameter => {
+                let a = data.adhesion.get_or_insert_with(AdhesionFile::default);
+                a.range = None;
+                a.cohesive_stress = None;
+                a.maugis_parameter = None;
+                a.tabor_parameter = Some(value);
+            }
+            SweepParameter::YieldStress => data.target.yield_stress = Some(value),
+        }
+        let mut s = Scene::from_data(data)?;
+        s.name = self.name.clone();
+        Ok(s)
+    }
+}
+
+/// The outcome of `scene` for each value of `parameter`, computed in parallel on
+/// rayon's pool (deterministic: each point is independent of the others and of the
+/// number of threads). `on_point` is called once per finished point (for progress).
+pub fn sweep<F>(
+    scene: &Scene,
+    parameter: SweepParameter,
+    values: &[f64],
+    on_point: F,
+) -> Vec<Result<Outcome, SceneError>>
+where
+    F: Fn() + Sync,
+{
+    values
+        .par_iter()
+        .map(|&value| {
+            let result = scene
+                .with_parameter(parameter, value)
+                .and_then(|s| s.outcome());
+            on_point();
+            result
+        })
+        .collect()
+}
+
+/// `points` values from `from` to `to`, evenly or logarithmically spaced.
+pub fn spaced(from: f64, to: f64, points: usize, log: bool) -> Result<Vec<f64>, SceneError> {
+    if points < 2 || !from.is_finite() || !to.is_finite() || (log && !(from > 0.0 && to > 0.0)) {
+        return Err(SceneError::field(
+            "sweep",
+            format!("invalid range {from}:{to}:{points} (need finite ends, >= 2 points, positive ends with --log)"),
+        ));
+    }
+    Ok((0..points)
+        .map(|i| {
+            let f = i as f64 / (points - 1) as f64;
+            if log {
+                from * (to / from).powf(f)
+            } else {
+                from + (to - from) * f
+            }
+        })
+        .collect())
+}
