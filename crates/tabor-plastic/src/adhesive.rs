@@ -85,7 +85,7 @@ pub struct AdhesiveTurningPoint {
 /// Loading from first touch (`d̂ = 0`): JKR (`F̂ = â³ − 2â^(3/2)`,
 /// `d̂ = 3â² − 4â^(1/2)`) up to the yield state `(â_Y, d̂_Y, F̂_Y)` of
 /// (5.111)-(5.113); the cubics (5.115)-(5.120) to `d̂_0 = D̃/Φ²`; beyond, the fully
-/// plastic law (5.114). If `d̂_Y < 0` (for Φ between about 1.8 and 3.7 the yield
+/// plastic law (5.114). If `d̂_Y < 0` (for Φ between about 1.8 and 3.3 the yield
 /// load lies below the JKR first-touch force −8/9) the contact yields at first touch
 /// and loading starts on the cubic.
 ///
@@ -116,7 +116,7 @@ impl AdhesiveInterpolation {
     }
 
     /// The model with explicit `Q̃` (> 0) and `D̃` (> 0). Fails when the elasto-plastic
-    /// range is empty (`d̂_0 ≤ max(d̂_Y, 0)`, Φ above about 9 for the defaults) or its
+    /// range is empty (`d̂_0 ≤ max(d̂_Y, 0)`, Φ above about 9.3 for the defaults) or its
     /// cubics do not increase monotonically.
     ///
     /// Seed 000, eqs. (5.111)-(5.120).
