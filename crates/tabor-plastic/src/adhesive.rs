@@ -60,6 +60,8 @@ pub fn adhesive_yield_force(adhesion_parameter: f64) -> Result<f64> {
 }
 
 /// The state at maximum compression and the JKR unloading it sets up (normalized).
+///
+/// Seed 000, eqs. (5.121)-(5.125).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct AdhesiveTurningPoint {
     /// `d̂_max`.
@@ -212,6 +214,8 @@ impl AdhesiveInterpolation {
     }
 
     /// The adhesion parameter Φ.
+    ///
+    /// Seed 000, the Φ of (5.111).
     pub fn adhesion_parameter(&self) -> f64 {
         self.phi
     }
@@ -519,11 +523,15 @@ impl AdhesiveInterpolationImpact {
     }
 
     /// The normalized model.
+    ///
+    /// Seed 000, eqs. (5.111)-(5.125).
     pub fn model(&self) -> &AdhesiveInterpolation {
         &self.model
     }
 
     /// The JKR sphere (scales `a_c`, `F_n`, `d_n`).
+    ///
+    /// Seed 000, eqs. (5.33)-(5.34) (the JKR relations used for loading and unloading).
     pub fn sphere(&self) -> &JkrSphere {
         &self.sphere
     }

@@ -62,16 +62,22 @@ impl PlasticContact {
     }
 
     /// The effective modulus `E*` (Pa).
+    ///
+    /// Seed 000, `Ẽ` of (5.102).
     pub fn effective_modulus(&self) -> f64 {
         self.modulus
     }
 
     /// The effective radius `R` (m).
+    ///
+    /// Seed 000, `R̃` of (5.102).
     pub fn effective_radius(&self) -> f64 {
         self.radius
     }
 
     /// The yield stress `σ_Y` (Pa).
+    ///
+    /// Seed 000, `σ_f` of (5.102).
     pub fn yield_stress(&self) -> f64 {
         self.yield_stress
     }

@@ -8,6 +8,8 @@ use tabor_restitution::{validate, EnergyLoss, Error, ImpactModel, Result};
 const MODEL: &str = "dimensionless fit";
 
 /// How the fitted formula was kept inside [0, 1].
+///
+/// Seed 001, eq. (19) (values outside [0, 1]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Clamping {

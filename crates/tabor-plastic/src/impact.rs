@@ -39,11 +39,15 @@ impl<L: LoadingLaw> PlasticImpact<L> {
     }
 
     /// The contact.
+    ///
+    /// Seed 000, eq. (5.102).
     pub fn contact(&self) -> &PlasticContact {
         &self.contact
     }
 
     /// The loading law.
+    ///
+    /// Seed 000, eqs. (5.101), (5.107).
     pub fn law(&self) -> &L {
         &self.law
     }
@@ -89,6 +93,8 @@ impl<L: LoadingLaw> PlasticImpact<L> {
     /// The time-domain force law of this model for `tabor_dynamics::simulate_impact`
     /// (loading, turning point, Hertzian unloading with `R_p` and `d_res`,
     /// separation at `F = 0`).
+    ///
+    /// Seed 000, eqs. (5.101)-(5.105).
     pub fn force_law(&self) -> PlasticForceLaw<L> {
         PlasticForceLaw {
             contact: self.contact,

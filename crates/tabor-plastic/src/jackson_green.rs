@@ -16,9 +16,13 @@ const MODEL: &str = "Jackson-Green";
 /// Jackson-Green law, `H/σ_Y = 2.67` (the mean pressure `Q p_Y/3` of the
 /// interpolation model with Q = 5, p_Y = 1.6 σ_Y), instead of Jackson and Green's
 /// geometry-dependent `H_G`. `shared/spec/models.md` (Jackson-Green type).
+///
+/// Seed 000, text after (5.108) (Q = 5, chapter 3 (3.282)).
 pub const DEFAULT_HARDNESS_RATIO: f64 = 2.67;
 
 /// Jackson and Green's switch from Hertz to the FEM fit, `δ = d/d*_Y = 1.9`.
+///
+/// Seed 000, section 5.5.1 (ref. [44]).
 pub const FIT_ONSET: f64 = 1.9;
 
 /// The Jackson-Green contact of an elastic-plastic sphere on a half-space
@@ -84,6 +88,8 @@ impl JacksonGreen {
     }
 
     /// The same contact with hardness ratio `H/σ_Y` (finite, > 0).
+    ///
+    /// Seed 000, section 5.5.1 (ref. [44]).
     pub fn with_hardness_ratio(mut self, hardness_ratio: f64) -> Result<Self> {
         let h = validate::positive("hardness_ratio", hardness_ratio)?;
         if h > 1e6 {
@@ -94,11 +100,15 @@ impl JacksonGreen {
     }
 
     /// The hardness ratio `H/σ_Y` in use.
+    ///
+    /// Seed 000, section 5.5.1 (ref. [44]).
     pub fn hardness_ratio(&self) -> f64 {
         self.hardness_ratio
     }
 
     /// Poisson's ratio ν of the yielding body.
+    ///
+    /// Seed 000, eq. (5.108).
     pub fn poisson_ratio(&self) -> f64 {
         self.poisson_ratio
     }
@@ -172,6 +182,8 @@ impl JacksonGreen {
 
     /// The time-domain force law (loading, turning point, elastic unloading with the
     /// residual depth, separation at `F = 0`).
+    ///
+    /// Seed 000, section 5.5.1 (ref. [44]).
     pub fn force_law(&self) -> JacksonGreenLaw {
         JacksonGreenLaw {
             contact: *self,
@@ -352,6 +364,8 @@ impl JacksonGreenImpact {
     }
 
     /// The full simulation of one impact at `v0` (m/s, > 0).
+    ///
+    /// Seed 000, section 5.5.1.
     pub fn simulate(&self, impact_speed: f64) -> Result<ImpactSimulation> {
         self.simulation.simulate(impact_speed)
     }

@@ -112,6 +112,8 @@ pub trait LoadingLaw: sealed::RawLoading + Clone + std::fmt::Debug {
 }
 
 /// The state at maximum compression, normalized by the yield onset.
+///
+/// Seed 000, eqs. (5.104)-(5.105), chapter 3 (3.273)-(3.274).
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct TurningPoint {
     /// `d_max/d_Y`, seed 000 eq. (5.104)/(5.107).
@@ -261,11 +263,15 @@ impl Interpolation {
     }
 
     /// `Q`: fully plastic `F/F_Y = Q d/d_Y`.
+    ///
+    /// Seed 000, text after (5.108) (chapter 3, (3.282)).
     pub fn plastic_slope(&self) -> f64 {
         self.plastic_slope
     }
 
     /// `D`: the fully plastic range starts at `d = D d_Y`.
+    ///
+    /// Seed 000, text after (5.108) (chapter 3, (3.282)).
     pub fn plastic_onset(&self) -> f64 {
         self.plastic_onset
     }

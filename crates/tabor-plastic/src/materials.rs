@@ -7,6 +7,8 @@ use tabor_restitution::Result;
 
 /// One material: Young's modulus (Pa), Poisson's ratio, yield stress (Pa, `None`
 /// for the hard sphere) and density (kg/m³, `None` when the table gives none).
+///
+/// Seed 000, Table 5.2; seed 001, Table 3.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Material {
     /// Name as in the table.
@@ -24,6 +26,8 @@ pub struct Material {
 impl Material {
     /// The effective modulus `E*` of this material against `other`
     /// (`1/E* = (1−ν1²)/E1 + (1−ν2²)/E2`).
+    ///
+    /// Seed 000, `Ẽ` of section 5.5.2 (Table 5.2).
     pub fn effective_modulus_with(&self, other: &Material) -> Result<f64> {
         effective_modulus(
             &ElasticMaterial::new(self.youngs_modulus, self.poisson_ratio)?,

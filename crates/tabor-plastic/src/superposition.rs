@@ -26,11 +26,15 @@ impl<P: ImpactModel> Superposition<P> {
     }
 
     /// The non-adhesive plastic model.
+    ///
+    /// Seed 000, `ε_pl` of (5.109).
     pub fn plastic(&self) -> &P {
         &self.plastic
     }
 
     /// The elastic adhesive impact (its loss is (5.36), its sticking velocity (5.38)).
+    ///
+    /// Seed 000, `ε_adh` of (5.109), (5.36)-(5.38).
     pub fn adhesive(&self) -> &JkrImpact<JkrSphere> {
         &self.adhesive
     }

@@ -43,7 +43,7 @@ pub(crate) struct Hermite {
 }
 
 impl Hermite {
-    pub fn new(y0: f64, m0: f64, y1: f64, m1: f64, length: f64) -> Self {
+    pub(crate) fn new(y0: f64, m0: f64, y1: f64, m1: f64, length: f64) -> Self {
         let l = length;
         Hermite {
             y0,
@@ -53,18 +53,18 @@ impl Hermite {
             length: l,
         }
     }
-    pub fn value(&self, t: f64) -> f64 {
+    pub(crate) fn value(&self, t: f64) -> f64 {
         self.y0 + t * (self.m0 + t * (self.c2 + t * self.c3))
     }
-    pub fn slope(&self, t: f64) -> f64 {
+    pub(crate) fn slope(&self, t: f64) -> f64 {
         self.m0 + t * (2.0 * self.c2 + 3.0 * t * self.c3)
     }
     /// `∫_0^t p`.
-    pub fn integral(&self, t: f64) -> f64 {
+    pub(crate) fn integral(&self, t: f64) -> f64 {
         t * (self.y0 + t * (0.5 * self.m0 + t * (self.c2 / 3.0 + 0.25 * t * self.c3)))
     }
     /// The smallest slope on `[lo, L]` (the slope is a quadratic in t).
-    pub fn min_slope(&self, lo: f64) -> f64 {
+    pub(crate) fn min_slope(&self, lo: f64) -> f64 {
         let mut m = self.slope(lo).min(self.slope(self.length));
         if self.c3 > 0.0 {
             let t = -self.c2 / (3.0 * self.c3);
