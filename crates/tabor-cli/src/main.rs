@@ -30,6 +30,14 @@ enum Command {
     Plastic(cmd::plastic::Args),
     /// Viscoelastic impact: restitution versus the dimensionless parameters.
     Visco(cmd::visco::Args),
+    /// The impact of a scene file: restitution, sticking, losses, effects used.
+    Impact(cmd::scene::ImpactArgs),
+    /// Restitution of a scene over a range of speeds (or another parameter), as CSV.
+    Sweep(cmd::scene::SweepArgs),
+    /// The sticking velocity of a scene.
+    Sticking(cmd::scene::StickingArgs),
+    /// Simulate a scene's impact in the time domain.
+    Trajectory(cmd::scene::TrajectoryArgs),
 }
 
 fn main() -> ExitCode {
@@ -40,6 +48,10 @@ fn main() -> ExitCode {
         Command::MaugisLoss(args) => cmd::maugis_loss::run(&args),
         Command::Plastic(args) => cmd::plastic::run(&args),
         Command::Visco(args) => cmd::visco::run(&args),
+        Command::Impact(args) => cmd::scene::impact(&args),
+        Command::Sweep(args) => cmd::scene::sweep(&args),
+        Command::Sticking(args) => cmd::scene::sticking(&args),
+        Command::Trajectory(args) => cmd::scene::trajectory(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -4,4 +4,5 @@ pub mod effective;
 pub mod jkr;
 pub mod maugis_loss;
 pub mod plastic;
+pub mod scene;
 pub mod visco;

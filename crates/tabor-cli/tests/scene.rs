@@ -1,0 +1,192 @@
+//! The scene subcommands end to end: impact, sweep, sticking, trajectory.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use std::path::PathBuf;
+use std::process::Command;
+
+fn tabor(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_tabor"))
+        .args(args)
+        .output()
+        .expect("the tabor binary runs")
+}
+
+fn scene(name: &str) -> String {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/scenes")
+        .join(name)
+        .to_string_lossy()
+        .into_owned()
+}
+
+fn json(out: &std::process::Output) -> serde_json::Value {
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+#[test]
+fn impact_json_has_the_documented_keys() {
+    let v = json(&tabor(&["impact", &scene("silica_maugis.toml"), "--json"]));
+    for key in [
+        "restitution",
+        "sticks",
+        "sticking_velocity",
+        "energy_loss",
+        "tabor_parameter",
+        "model",
+        "effects",
+    ] {
+        assert!(v.get(key).is_some(), "{key} missing: {v}");
+    }
+    let effects = v["effects"].as_array().unwrap();
+    for e in effects {
+        assert!(e["name"].is_string() && e["used"].is_boolean() && e["reason"].is_string());
+    }
+    assert!(v["tabor_parameter"].as_f64().unwrap() > 0.0);
+    // --speed overrides the file
+    let slow = json(&tabor(&[
+        "impact",
+        &scene("silica.toml"),
+        "--speed",
+        "0.05",
+        "--json",
+    ]));
+    assert_eq!(slow["sticks"], true);
+    assert_eq!(slow["restitution"], 0.0);
+}
+
+#[test]
+fn sticking_and_trajectory() {
+    let v = json(&tabor(&["sticking", &scene("silica.toml"), "--json"]));
+    let vc = v["sticking_velocity"].as_f64().unwrap();
+    assert!((vc - 0.0866).abs() < 1e-3);
+    let v = json(&tabor(&[
+        "trajectory",
+        &scene("silica.toml"),
+        "--speed",
+        "0.2",
+        "--json",
+    ]));
+    let (sim, analytic) = (
+        v["restitution"].as_f64().unwrap(),
+        v["restitution_analytic"].as_f64().unwrap(),
+    );
+    assert!((sim / analytic - 1.0).abs() < 1e-6, "{sim} vs {analytic}");
+    assert!(v["contact_time"].as_f64().unwrap() > 0.0);
+    assert_eq!(v["sticks"], false);
+    let dir = std::env::temp_dir().join(format!("tabor-cli-traj-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = dir.join("t.csv");
+    let out = tabor(&[
+        "trajectory",
+        &scene("alumina_on_steel.toml"),
+        "--out",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(std::fs::read_to_string(&csv).unwrap().lines().count() > 10);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn sweep_writes_csv() {
+    let dir = std::env::temp_dir().join(format!("tabor-cli-sweep-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = dir.join("s.csv");
+    let out = tabor(&[
+        "sweep",
+        &scene("silica.toml"),
+        "--speed",
+        "0.01:1:30",
+        "--log",
+        "--out",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert_eq!(text.lines().count(), 31);
+    assert!(text.starts_with("speed,restitution,sticks"));
+    let out = tabor(&[
+        "sweep",
+        &scene("silica.toml"),
+        "--parameter",
+        "tabor-parameter",
+        "--values",
+        "0.1:100:10",
+        "--log",
+        "--out",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn bad_scenes_exit_2_with_one_line() {
+    let dir = std::env::temp_dir().join(format!("tabor-cli-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let good = std::fs::read_to_string(scene("silica.toml")).unwrap();
+    let cases = [
+        (
+            "unknown.toml",
+            good.replace(
+                "poisson_ratio = 0.17\n\n[target]",
+                "poisson_ratio = 0.17\ncolour = \"red\"\n\n[target]",
+            ),
+        ),
+        (
+            "type.toml",
+            good.replace("speed = 0.1 ", "speed = \"fast\" "),
+        ),
+        (
+            "missing.toml",
+            good.replace("youngs_modulus = 54e9    # Pa\n", ""),
+        ),
+        ("syntax.toml", good.replace("[adhesion]", "[adhesion")),
+        (
+            "negative.toml",
+            good.replace("work_of_adhesion = 0.05", "work_of_adhesion = -0.05"),
+        ),
+        ("bad.json", "{\"sphere\": [1, 2".to_string()),
+    ];
+    for (name, text) in cases {
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        for sub in ["impact", "sticking"] {
+            let out = tabor(&[sub, path.to_str().unwrap()]);
+            assert_eq!(out.status.code(), Some(2), "{name}");
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(err.lines().count(), 1, "{name}: {err}");
+            assert!(err.contains("line "), "{name}: {err}");
+            assert!(!err.contains("panicked"), "{name}: {err}");
+        }
+    }
+    let out = tabor(&["impact", "/nonexistent/scene.toml"]);
+    assert_eq!(out.status.code(), Some(2));
+    let out = tabor(&[
+        "sweep",
+        &scene("silica.toml"),
+        "--speed",
+        "1:0",
+        "--out",
+        "/tmp/x.csv",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    std::fs::remove_dir_all(&dir).ok();
+}
