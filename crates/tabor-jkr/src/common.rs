@@ -282,3 +282,21 @@ where
         cost,
     })
 }
+
+impl NormalizedLoss {
+    /// The loss in joules for the energy scale `energy` (`F_n d_n` or the contact's
+    /// own scale), with its error estimate, branch and cost; non-finite products are
+    /// errors naming `model`.
+    pub(crate) fn in_joules(
+        self,
+        model: &'static str,
+        energy: f64,
+    ) -> Result<tabor_restitution::EnergyLoss> {
+        Ok(tabor_restitution::EnergyLoss {
+            joules: finite_output(model, "energy loss", self.value * energy)?,
+            error_estimate: finite_output(model, "error estimate", self.error_estimate * energy)?,
+            branch: self.branch.into(),
+            cost: self.cost,
+        })
+    }
+}

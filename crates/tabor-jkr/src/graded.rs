@@ -194,16 +194,7 @@ impl AdhesiveContact for GradedSphere {
                     tol,
                     "JKR graded medium, load-controlled: quadrature of the integral of (5.51) to F' = 0",
                 )?;
-                Ok(EnergyLoss {
-                    joules: finite_output(MODEL, "energy loss", n.value * self.scales.energy)?,
-                    error_estimate: finite_output(
-                        MODEL,
-                        "error estimate",
-                        n.error_estimate * self.scales.energy,
-                    )?,
-                    branch: n.branch.into(),
-                    cost: n.cost,
-                })
+                n.in_joules(MODEL, self.scales.energy)
             }
         }
     }

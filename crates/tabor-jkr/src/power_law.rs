@@ -169,16 +169,7 @@ impl AdhesiveContact for PowerLawProfile {
                     tol,
                     "JKR power-law profile, load-controlled: quadrature of the integral in (5.39) to F' = 0",
                 )?;
-                Ok(EnergyLoss {
-                    joules: finite_output(MODEL, "energy loss", n.value * self.scales.energy)?,
-                    error_estimate: finite_output(
-                        MODEL,
-                        "error estimate",
-                        n.error_estimate * self.scales.energy,
-                    )?,
-                    branch: n.branch.into(),
-                    cost: n.cost,
-                })
+                n.in_joules(MODEL, self.scales.energy)
             }
         }
     }

@@ -146,14 +146,7 @@ impl AdhesiveContact for JkrSphere {
     /// Seed 000, eq. (5.36) (fixed grip), or its integral to the load-controlled
     /// pull-off point by quadrature; [`normalized::energy_loss`] times `F_n d_n`.
     fn energy_loss(&self, rule: SeparationRule, tolerance: f64) -> Result<EnergyLoss> {
-        let n = normalized::energy_loss(rule, tolerance)?;
-        let scale = self.scales.energy;
-        Ok(EnergyLoss {
-            joules: finite_output(MODEL, "energy loss", n.value * scale)?,
-            error_estimate: finite_output(MODEL, "error estimate", n.error_estimate * scale)?,
-            branch: n.branch.into(),
-            cost: n.cost,
-        })
+        normalized::energy_loss(rule, tolerance)?.in_joules(MODEL, self.scales.energy)
     }
 
     /// Seed 000, eq. (5.35); [`normalized::max_contact_radius`] in physical units.
