@@ -28,6 +28,8 @@ enum Command {
     MaugisLoss(cmd::maugis_loss::Args),
     /// Elasto-plastic impact with and without adhesion: restitution, yield and sticking velocity.
     Plastic(cmd::plastic::Args),
+    /// Penalty contact laws: parameters for a nominal restitution, and what they achieve.
+    Penalty(cmd::penalty::Args),
     /// Viscoelastic impact: restitution versus the dimensionless parameters.
     Visco(cmd::visco::Args),
     /// The impact of a scene file: restitution, sticking, losses, effects used.
@@ -47,6 +49,7 @@ fn main() -> ExitCode {
         Command::Jkr(args) => cmd::jkr::run(&args),
         Command::MaugisLoss(args) => cmd::maugis_loss::run(&args),
         Command::Plastic(args) => cmd::plastic::run(&args),
+        Command::Penalty(args) => cmd::penalty::run(&args),
         Command::Visco(args) => cmd::visco::run(&args),
         Command::Impact(args) => cmd::scene::impact(&args),
         Command::Sweep(args) => cmd::scene::sweep(&args),

@@ -37,4 +37,7 @@ pub use characteristic::{
     ContactCharacteristic,
 };
 pub use damped::{damped_restitution, exact_damping_factor, DampedPowerLaw, DampingModel};
+/// The simulator the laws plug into (re-exported from `tabor-dynamics`, seed 000
+/// eq. (5.5) generalized to `m d̈ = −F(d, ḋ)`).
+pub use tabor_dynamics::{simulate_impact, ForceLaw, ImpactSimulation, SimulationSettings};
 pub use tabor_restitution::{Error, Result};

@@ -3,6 +3,7 @@
 pub mod effective;
 pub mod jkr;
 pub mod maugis_loss;
+pub mod penalty;
 pub mod plastic;
 pub mod scene;
 pub mod visco;
