@@ -38,20 +38,7 @@ impl QuadTolerance {
         }
     }
     fn validate(&self) -> Result<()> {
-        if !(self.absolute >= 0.0 && self.absolute.is_finite()) {
-            return Err(NumericsError::InvalidArgument {
-                name: "absolute tolerance",
-                value: self.absolute,
-                requirement: "must be finite and >= 0",
-            });
-        }
-        if !(self.relative >= 0.0 && self.relative.is_finite()) {
-            return Err(NumericsError::InvalidArgument {
-                name: "relative tolerance",
-                value: self.relative,
-                requirement: "must be finite and >= 0",
-            });
-        }
+        crate::error::require_tolerances(self.absolute, self.relative)?;
         if self.absolute == 0.0 && self.relative == 0.0 {
             return Err(NumericsError::InvalidArgument {
                 name: "tolerance",
