@@ -92,7 +92,9 @@ fn median_time<R>(mut f: impl FnMut() -> R) -> f64 {
     let start = Instant::now();
     black_box(f());
     let once = start.elapsed().max(Duration::from_nanos(1));
-    let reps = (MIN_BATCH.as_secs_f64() / once.as_secs_f64()).ceil().max(1.0) as u32;
+    let reps = (MIN_BATCH.as_secs_f64() / once.as_secs_f64())
+        .ceil()
+        .max(1.0) as u32;
     let mut batches: Vec<f64> = (0..BATCHES)
         .map(|_| {
             let start = Instant::now();

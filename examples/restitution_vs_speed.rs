@@ -95,7 +95,10 @@ fn out_dir() -> Result<PathBuf, Box<dyn Error>> {
 fn models(pair: &Pair) -> Result<Models, Box<dyn Error>> {
     let (r, m) = (SPHERE_RADIUS_SECTION_5_5_2, SPHERE_MASS_SECTION_5_5_2);
     let e_star = ALUMINA_TABLE_5_2.effective_modulus_with(&pair.plate)?;
-    let sigma_y = pair.plate.yield_stress.ok_or("plate without yield stress")?;
+    let sigma_y = pair
+        .plate
+        .yield_stress
+        .ok_or("plate without yield stress")?;
     let contact = PlasticContact::new(e_star, r, sigma_y)?;
     let thornton = PlasticImpact::new(contact, Thornton, m)?;
     let interpolation = PlasticImpact::new(contact, Interpolation::default(), m)?;

@@ -85,7 +85,9 @@ fn sticking_velocities(material: &Material, r1: f64) -> Result<([f64; 3], f64), 
     let dg = material.work_of_adhesion;
     let sphere = JkrSphere::new(e_star, r, dg)?;
     let fixed = JkrImpact::new(sphere, m)?;
-    let load = fixed.clone().with_separation(SeparationRule::LoadControlled);
+    let load = fixed
+        .clone()
+        .with_separation(SeparationRule::LoadControlled);
     let md = MaugisDugdaleImpact::from_range(e_star, r, dg, RANGE, m)?.with_tolerance(TOLERANCE)?;
     let models: [&dyn ImpactModel; 3] = [&fixed, &load, &md];
     let mut v = [0.0; 3];
