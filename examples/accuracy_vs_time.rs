@@ -66,6 +66,18 @@ const GROUPS: [&str; 8] = [
     "simulated Maugis-Dugdale impact, Λ = 1 (restitution)",
 ];
 
+/// The row groups as written into the CSV (no commas).
+const GROUP_KEYS: [&str; 8] = [
+    "maugis_lambda_0.3",
+    "maugis_lambda_0.55",
+    "maugis_lambda_2",
+    "maugis_lambda_1e3",
+    "maugis_fast_tier",
+    "jkr_load_controlled",
+    "simulated_jkr",
+    "simulated_maugis_lambda_1",
+];
+
 struct Row {
     group: usize,
     /// Λ for the fast-tier rows, the requested tolerance otherwise.
@@ -158,7 +170,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         let fast = loss_over_jkr_fast(lambda)?;
         rows.push(Row {
             group: 4,
-            label: format!("Λ = {lambda}"),
+            label: format!("lambda={lambda}"),
             requested: FAST_TIER_RELATIVE_ERROR,
             achieved: relative_error(fast, reference),
             evaluations: 0,
@@ -252,7 +264,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         writeln!(
             csv,
             "{},{},{:.3e},{:.6e},{},{:.6e},{:.17e},{:.17e}",
-            GROUPS[r.group],
+            GROUP_KEYS[r.group],
             r.label,
             r.requested,
             r.achieved,
@@ -284,7 +296,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             "| {} | {} | {:.1e} | {} | {} | {} |",
             GROUPS[r.group],
             if r.group == 4 {
-                format!("{} (bound {:.0e})", r.label, r.requested)
+                format!("Λ = {} (bound {:.0e})", &r.label[7..], r.requested)
             } else {
                 r.label.clone()
             },

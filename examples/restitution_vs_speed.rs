@@ -163,8 +163,15 @@ fn main() -> Result<(), Box<dyn Error>> {
             pair.name, set.yield_velocity, set.sticking_velocity, set.adhesion_parameter
         );
         print!("{:>10}", "v0 (m/s)");
-        for name in MODELS {
-            print!(" {:>13.13}", name);
+        for name in [
+            "Thornton",
+            "interp.",
+            "Jackson-Green",
+            "seed 001 fit",
+            "superpos.",
+            "adh. interp.",
+        ] {
+            print!(" {name:>13}");
         }
         println!();
         for v in [3e-4, 1e-3, 0.01, 0.1, 1.0, 3.0, 6.0] {

@@ -89,3 +89,229 @@ fn trajectory_writes_both_laws() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Runs the example `name` with `--out` into a fresh temporary directory and returns
+/// the directory, its stdout and the parsed CSV `<name>.csv` (header, rows).
+fn run_example(name: &str) -> (PathBuf, String, Vec<String>, Vec<Vec<String>>) {
+    let dir = temp_dir(name);
+    let out = Command::new(example(name))
+        .arg("--out")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let svg = std::fs::read_to_string(dir.join(format!("{name}.svg"))).unwrap();
+    assert!(svg.starts_with("<svg"), "{name}.svg is not an SVG");
+    let csv = std::fs::read_to_string(dir.join(format!("{name}.csv"))).unwrap();
+    let mut lines = csv.lines();
+    let header = lines.next().unwrap().split(',').map(String::from).collect();
+    let rows = lines
+        .map(|l| l.split(',').map(String::from).collect())
+        .collect();
+    (dir, String::from_utf8(out.stdout).unwrap(), header, rows)
+}
+
+fn column(header: &[String], name: &str) -> usize {
+    header
+        .iter()
+        .position(|h| h == name)
+        .unwrap_or_else(|| panic!("no column {name} in {header:?}"))
+}
+
+fn close(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * b.abs()
+}
+
+#[test]
+fn sticking_velocity_matches_the_closed_forms() {
+    use std::f64::consts::PI;
+    let (dir, _, header, rows) = run_example("sticking_velocity");
+    let [radius, material, model, speed, lambda] = [
+        "radius",
+        "material",
+        "model",
+        "sticking_velocity",
+        "tabor_parameter",
+    ]
+    .map(|c| column(&header, c));
+    assert_eq!(rows.len(), 61 * 2 * 3);
+    // (E, ν, ρ, Δγ) of the two materials
+    let props = |name: &str| match name {
+        "silica" => (54e9, 0.17, 2650.0, 0.05),
+        "ice" => (7e9, 0.25, 1000.0, 0.38),
+        other => panic!("unknown material {other}"),
+    };
+    let mut checked = 0;
+    for (i, row) in rows.iter().enumerate().filter(|(i, _)| i % 17 == 0) {
+        let r1: f64 = row[radius].parse().unwrap();
+        let v: f64 = row[speed].parse().unwrap();
+        let (e, nu, rho, dg) = props(&row[material]);
+        let e_star = e / (2.0 * (1.0 - nu * nu));
+        let r = r1 / 2.0;
+        let m = 4.0 / 3.0 * PI * r1.powi(3) * rho / 2.0;
+        // seed 000 (5.36) written out; F_n d_n for the load-controlled antiderivative
+        let a_c = (9.0 * PI * dg * r * r / (8.0 * e_star)).cbrt();
+        let (f_n, d_n) = (1.5 * PI * dg * r, a_c * a_c / (3.0 * r));
+        let expected_lambda = d_n / 0.3e-9;
+        let loss = match row[model].as_str() {
+            "JKR fixed grip" => {
+                0.1 * (1.0 + 864f64.cbrt())
+                    * (r.powi(4) * (PI * dg).powi(5) / (e_star * e_star)).cbrt()
+            }
+            "JKR load-controlled" => (1.2 * (4.0f64 / 3.0).powf(4.0 / 3.0) - 0.8) * f_n * d_n,
+            "Maugis-Dugdale" => {
+                tabor::maugis::normalized_loss(expected_lambda, 1e-12)
+                    .unwrap()
+                    .loss
+                    * f_n
+                    * d_n
+            }
+            other => panic!("row {i}: unknown model {other}"),
+        };
+        let expected = (2.0 * loss / m).sqrt();
+        assert!(
+            close(v, expected, 1e-10),
+            "row {i} {row:?}: {v} vs {expected}"
+        );
+        let l: f64 = row[lambda].parse().unwrap();
+        assert!(
+            close(l, expected_lambda, 1e-12),
+            "row {i}: Λ {l} vs {expected_lambda}"
+        );
+        checked += 1;
+    }
+    assert!(checked >= 20);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn restitution_vs_speed_matches_the_models() {
+    use tabor::plastic::materials::*;
+    use tabor::plastic::{PlasticContact, PlasticImpact, Thornton};
+    let (dir, _, header, rows) = run_example("restitution_vs_speed");
+    let [plate, model, speed, restitution] =
+        ["plate", "model", "impact_speed", "restitution"].map(|c| column(&header, c));
+    assert_eq!(rows.len(), 2 * 6 * 81);
+    let (r, m) = (SPHERE_RADIUS_SECTION_5_5_2, SPHERE_MASS_SECTION_5_5_2);
+    let mut checked = 0;
+    for row in &rows {
+        let v: f64 = row[speed].parse().unwrap();
+        let e: f64 = row[restitution].parse().unwrap();
+        assert!((0.0..=1.0).contains(&e), "{row:?}");
+        let (p5, p3) = match row[plate].as_str() {
+            "steel" => (STEEL_TABLE_5_2, STEEL_TABLE_3),
+            "aluminium" => (ALUMINIUM_TABLE_5_2, ALUMINIUM_TABLE_3),
+            other => panic!("unknown plate {other}"),
+        };
+        let e_star = ALUMINA_TABLE_5_2.effective_modulus_with(&p5).unwrap();
+        let sigma = p5.yield_stress.unwrap();
+        match row[model].as_str() {
+            "Thornton" => {
+                // the closed form (5.105), against the generic path of the example
+                let contact = PlasticContact::new(e_star, r, sigma).unwrap();
+                let t = PlasticImpact::new(contact, Thornton, m).unwrap();
+                assert!(close(e, t.restitution(v).unwrap(), 1e-9), "{row:?}");
+                checked += 1;
+            }
+            "seed 001 fit" => {
+                // seed 001 eqs. (18), (19) written out, with its Table 3 constants
+                let e3 = ALUMINA_TABLE_3.effective_modulus_with(&p3).unwrap();
+                let s3 = p3.yield_stress.unwrap();
+                let rho = ALUMINA_TABLE_3.density.unwrap();
+                let v_y = (15.81 * s3.powf(4.5) / (rho * e3.powf(3.5))).sqrt();
+                let expected = if v < v_y {
+                    1.0
+                } else {
+                    (1.16 + 0.253 * (s3 / e3).ln() + 0.056 * (e3 / (rho * v * v)).ln())
+                        .clamp(0.0, 1.0)
+                };
+                assert!((e - expected).abs() < 1e-12, "{row:?}: {expected}");
+                checked += 1;
+            }
+            "superposition (adhesive)" => {
+                // below the yield onset: elastic JKR, ε = √(1 − v_c²/v0²), (5.36)-(5.38)
+                let contact = PlasticContact::new(e_star, r, sigma).unwrap();
+                if v < contact.yield_velocity(m).unwrap() {
+                    let loss = 0.1
+                        * (1.0 + 864f64.cbrt())
+                        * (r.powi(4) * (std::f64::consts::PI * 0.5).powi(5) / (e_star * e_star))
+                            .cbrt();
+                    let ratio = 2.0 * loss / (m * v * v);
+                    let expected = if ratio >= 1.0 {
+                        0.0
+                    } else {
+                        (1.0 - ratio).sqrt()
+                    };
+                    assert!((e - expected).abs() < 1e-9, "{row:?}: {expected}");
+                    checked += 1;
+                }
+            }
+            _ => {}
+        }
+    }
+    assert!(checked > 200);
+    // the adhesive variants stick at the lowest speed, the others rebound elastically
+    for row in rows
+        .iter()
+        .filter(|r| r[speed].parse::<f64>().unwrap() < 1.1e-4)
+    {
+        let e: f64 = row[restitution].parse().unwrap();
+        let adhesive = row[model].contains("adhesive");
+        // (Jackson-Green is simulated: 1 to the integrator's tolerance)
+        let expected = if adhesive { 0.0 } else { 1.0 };
+        assert!((e - expected).abs() < 1e-9, "{row:?}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn accuracy_vs_time_achieves_the_requested_tolerance() {
+    let (dir, stdout, header, rows) = run_example("accuracy_vs_time");
+    let [group, requested, achieved, evaluations, time, value, reference] = [
+        "group",
+        "requested_tolerance",
+        "achieved_error",
+        "evaluations",
+        "time_s",
+        "value",
+        "reference",
+    ]
+    .map(|c| column(&header, c));
+    assert_eq!(rows.len(), 7 * 13 + 4);
+    assert!(stdout.contains("| row | requested | achieved |"));
+    for row in &rows {
+        let f = |c: usize| -> f64 { row[c].parse().unwrap() };
+        let (req, ach) = (f(requested), f(achieved));
+        assert!(f(time) > 0.0 && f(evaluations) >= 0.0, "{row:?}");
+        assert!(
+            close(ach, ((f(value) - f(reference)) / f(reference)).abs(), 1e-5) || ach < 1e-300,
+            "{row:?}"
+        );
+        if row[group].starts_with("simulated") {
+            // Known issue (docs/examples.md, "accuracy_vs_time"): the simulator's
+            // tolerance is the integrator's per-step tolerance; the restitution it
+            // produces has been measured up to 11× the requested tolerance. Bound it.
+            assert!(ach <= 20.0 * req, "{row:?}");
+        } else {
+            assert!(ach <= req, "{row:?}");
+        }
+    }
+    // the references: (5.44) and the load-controlled antiderivative, independently
+    let reference_of = |key: &str| -> f64 {
+        rows.iter().find(|r| r[group] == key).unwrap()[reference]
+            .parse()
+            .unwrap()
+    };
+    let w03 = tabor::maugis::normalized_loss(0.3, 1e-12).unwrap().loss;
+    assert!(close(reference_of("maugis_lambda_0.3"), w03, 1e-14));
+    let lc = tabor::jkr::normalized::energy_loss(tabor::jkr::SeparationRule::LoadControlled, 1e-14)
+        .unwrap()
+        .value;
+    assert!(close(reference_of("jkr_load_controlled"), lc, 1e-14));
+    assert!(close(reference_of("simulated_jkr"), 0.75f64.sqrt(), 1e-12));
+    std::fs::remove_dir_all(&dir).ok();
+}
