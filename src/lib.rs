@@ -13,6 +13,8 @@
 //! - [`jkr`]: JKR adhesive impact (spheres, power-law profiles, graded media);
 //! - [`maugis`]: Maugis-Dugdale adhesive impact across the Tabor-parameter range;
 //! - [`dynamics`]: the time-domain simulator and its force-law interface;
+//! - [`penalty`]: penalty contact laws for DEM codes (damped power laws, contact
+//!   characteristics) calibrated against the impact models;
 //! - [`plastic`]: elasto-plastic impact with and without adhesion;
 //! - [`scene`]: scenes — describe a collision once, compute only the effects it
 //!   calls for (the main entry point);
@@ -23,6 +25,7 @@ pub use tabor_elastic as elastic;
 pub use tabor_jkr as jkr;
 pub use tabor_maugis as maugis;
 pub use tabor_numerics as numerics;
+pub use tabor_penalty as penalty;
 pub use tabor_plastic as plastic;
 pub use tabor_restitution as restitution;
 pub use tabor_scene as scene;

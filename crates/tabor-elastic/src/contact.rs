@@ -256,7 +256,14 @@ impl ElasticContact {
     /// Seed 000, the contact solutions behind eqs. (5.15) and (5.28).
     pub fn contact_radius(&self, overlap: f64) -> f64 {
         if overlap > 0.0 {
-            (overlap / (self.beta * self.profile_prefactor)).powf(1.0 / self.profile_exponent)
+            let scale = self.beta * self.profile_prefactor;
+            let x = overlap / scale;
+            if x.is_finite() {
+                x.powf(1.0 / self.profile_exponent)
+            } else {
+                // the quotient overflows (huge radius): take the root of each factor
+                overlap.powf(1.0 / self.profile_exponent) / scale.powf(1.0 / self.profile_exponent)
+            }
         } else if overlap <= 0.0 {
             0.0
         } else {

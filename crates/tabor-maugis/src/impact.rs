@@ -117,7 +117,16 @@ pub struct ImpactPath {
 
 /// Checks Λ: finite and > 0.
 pub(crate) fn check_lambda(lambda: f64) -> Result<f64> {
-    validate::positive("tabor_parameter", lambda)
+    let lambda = validate::positive("tabor_parameter", lambda)?;
+    // the jump-in depth −1/Λ must be finite (Λ subnormal overflows it)
+    if !(1.0 / lambda).is_finite() {
+        return Err(Error::invalid(
+            "tabor_parameter",
+            lambda,
+            "is so small that the jump-in depth -1/Lambda overflows",
+        ));
+    }
+    Ok(lambda)
 }
 
 const ROOT_TOL: RootTolerance = RootTolerance {

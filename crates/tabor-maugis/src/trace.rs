@@ -51,8 +51,25 @@ pub fn equilibrium_state(lambda: f64, depth: f64) -> Result<PathState> {
     let depth = validate::finite("depth", depth)?;
     let path = impact_path(lambda)?;
     let mut cost = Cost::ZERO;
-    equilibrium_state_on(&path, depth, &mut cost)
+    let s = equilibrium_state_on(&path, depth, &mut cost)?;
+    if !state_is_finite(&s) {
+        return Err(Error::invalid(
+            "depth",
+            depth,
+            "is so large that the equilibrium state overflows",
+        ));
+    }
+    Ok(s)
 }
+
+fn state_is_finite(s: &PathState) -> bool {
+    [s.depth, s.force, s.contact_radius, s.cohesive_radius]
+        .iter()
+        .all(|v| v.is_finite())
+}
+
+/// Most points per stage of [`trace_impact`] (bounds its memory and time).
+const MAX_TRACE_POINTS: usize = 1_000_000;
 
 pub(crate) fn equilibrium_state_on(
     path: &crate::impact::ImpactPath,
@@ -108,11 +125,11 @@ pub(crate) fn equilibrium_state_on(
 pub fn trace_impact(lambda: f64, max_depth: f64, points: usize) -> Result<Vec<TracePoint>> {
     let lambda = check_lambda(lambda)?;
     let max_depth = validate::finite("max_depth", max_depth)?;
-    if points < 2 {
+    if !(2..=MAX_TRACE_POINTS).contains(&points) {
         return Err(Error::invalid(
             "points",
             points as f64,
-            "must be at least 2",
+            "must be at least 2 and at most 1e6",
         ));
     }
     let path = impact_path(lambda)?;
@@ -166,5 +183,16 @@ pub fn trace_impact(lambda: f64, max_depth: f64, points: usize) -> Result<Vec<Tr
         contact_radius: 0.0,
         cohesive_radius: 0.0,
     });
+    if !out.iter().all(|p| {
+        [p.depth, p.force, p.contact_radius, p.cohesive_radius]
+            .iter()
+            .all(|v| v.is_finite())
+    }) {
+        return Err(Error::invalid(
+            "max_depth",
+            max_depth,
+            "is so large that the traced states overflow",
+        ));
+    }
     Ok(out)
 }

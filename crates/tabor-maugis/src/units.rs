@@ -3,7 +3,7 @@
 use crate::impact::check_lambda;
 use serde::Serialize;
 use std::f64::consts::PI;
-use tabor_restitution::{validate, Result};
+use tabor_restitution::{validate, Error, Result};
 
 /// The JKR force-controlled critical state that normalizes the Maugis-Dugdale
 /// solution (`maugis-dugdale.md`, "Scales").
@@ -108,5 +108,14 @@ pub fn tabor_parameter_from_tabor_mu(tabor_mu: f64) -> Result<f64> {
 
 /// Maugis' λ from the seed's Λ (inverse of [`tabor_parameter_from_maugis`]).
 pub fn maugis_parameter(tabor_parameter: f64) -> Result<f64> {
-    Ok(check_lambda(tabor_parameter)? / LAMBDA_PER_MAUGIS_PARAMETER)
+    let lambda = check_lambda(tabor_parameter)?;
+    let maugis = lambda / LAMBDA_PER_MAUGIS_PARAMETER;
+    if !maugis.is_finite() {
+        return Err(Error::invalid(
+            "tabor_parameter",
+            lambda,
+            "is so large that Maugis' lambda overflows",
+        ));
+    }
+    Ok(maugis)
 }

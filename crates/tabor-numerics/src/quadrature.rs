@@ -191,7 +191,8 @@ where
         evaluations: w.evaluations.get(),
         iterations: intervals as u64,
     };
-    if done_error > tol.target(done_value) {
+    // An integral that overflows (huge interval or integrand) is no result either.
+    if !done_value.is_finite() || !done_error.is_finite() || done_error > tol.target(done_value) {
         return Err(NumericsError::NoConvergence {
             method: "adaptive Clenshaw-Curtis",
             iterations: intervals as u64,

@@ -46,7 +46,15 @@ fn characteristic_unchecked(h: f64, eps: f64) -> f64 {
 pub fn loss_factor(gap_rate: f64, loss_speed: f64) -> Result<f64> {
     let v = validate::finite("gap_rate", gap_rate)?;
     let big_v = valid::loss_speed(loss_speed)?;
-    Ok(loss_factor_unchecked(v, big_v))
+    let l = loss_factor_unchecked(v, big_v);
+    if !l.is_finite() {
+        return Err(Error::invalid(
+            "gap_rate",
+            v,
+            "is so large against the loss speed that the loss factor overflows",
+        ));
+    }
+    Ok(l)
 }
 
 fn loss_factor_unchecked(v: f64, big_v: f64) -> f64 {
@@ -174,7 +182,15 @@ impl ContactCharacteristic {
     pub fn force(&self, gap: f64, gap_rate: f64) -> Result<f64> {
         let h = validate::finite("gap", gap)?;
         let v = validate::finite("gap_rate", gap_rate)?;
-        Ok(self.force_unchecked(h, v))
+        let f = self.force_unchecked(h, v);
+        if !f.is_finite() {
+            return Err(Error::invalid(
+                "gap",
+                h,
+                "gives a contact force that overflows",
+            ));
+        }
+        Ok(f)
     }
 
     fn force_unchecked(&self, h: f64, v: f64) -> f64 {

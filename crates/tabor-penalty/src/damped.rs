@@ -160,11 +160,20 @@ impl DampedPowerLaw {
     /// The law with `stiffness` K > 0 (N/mⁿ), `exponent` n ∈ (0, 10] (3/2 for Hertz,
     /// 1 for a linear spring) and `damping_factor` χ ≥ 0 (s/m).
     pub fn new(stiffness: f64, exponent: f64, damping_factor: f64) -> Result<Self> {
-        Ok(DampedPowerLaw {
+        let law = DampedPowerLaw {
             stiffness: validate::positive("stiffness", stiffness)?,
             exponent: valid::exponent(exponent)?,
             damping_factor: validate::non_negative("damping_factor", damping_factor)?,
-        })
+        };
+        // the damping coefficient χ K must be finite too
+        if !law.damping_coefficient().is_finite() {
+            return Err(Error::invalid(
+                "damping_factor",
+                damping_factor,
+                "times the stiffness overflows",
+            ));
+        }
+        Ok(law)
     }
 
     /// The law whose damping factor is `model`'s nominal χ for `restitution` ε at

@@ -248,7 +248,7 @@ impl AdhesiveInterpolation {
     /// Seed 000, eqs. (5.111), (5.114), (5.115).
     pub fn loading_force(&self, depth: f64) -> Result<f64> {
         let d = validate::non_negative("depth", depth)?;
-        Ok(self.loading_state(d)?.force)
+        finite_output(MODEL, "loading force", self.loading_state(d)?.force)
     }
 
     /// The loading contact radius `â(d̂)` at `d̂ ≥ 0` (finite).
@@ -256,7 +256,11 @@ impl AdhesiveInterpolation {
     /// Seed 000, eqs. (5.112), (5.114), (5.118).
     pub fn loading_contact_radius(&self, depth: f64) -> Result<f64> {
         let d = validate::non_negative("depth", depth)?;
-        Ok(self.loading_state(d)?.contact_radius)
+        finite_output(
+            MODEL,
+            "loading contact radius",
+            self.loading_state(d)?.contact_radius,
+        )
     }
 
     /// The loading work `∫_0^d̂ F̂ dd̂` (units of `F_n d_n`) at `d̂ ≥ 0`.

@@ -57,10 +57,25 @@ pub fn quasi_static_check(
     let e = validate::positive("youngs_modulus", youngs_modulus)?;
     let rho = validate::positive("density", density)?;
     let wave_speed = (e / rho).sqrt();
+    if !(wave_speed.is_finite() && wave_speed > 0.0) {
+        return Err(crate::Error::invalid(
+            "density",
+            rho,
+            "gives an elastic wave speed sqrt(E/rho) that overflows or underflows",
+        ));
+    }
     let ratio = v / wave_speed;
+    let hunter_parameter = ratio.powf(0.6);
+    if !(hunter_parameter.is_finite() && hunter_parameter > 0.0) {
+        return Err(crate::Error::invalid(
+            "impact_speed",
+            v,
+            "gives a ratio v0/v_el to the elastic wave speed that overflows or underflows",
+        ));
+    }
     Ok(QuasiStaticCheck {
         wave_speed,
-        hunter_parameter: ratio.powf(0.6),
+        hunter_parameter,
         satisfied: ratio <= QUASI_STATIC_SPEED_RATIO,
     })
 }
@@ -115,6 +130,13 @@ pub fn elastic_limit_check(
     let max_pressure = 2.0 * e / std::f64::consts::PI * (d_max / r).sqrt();
     let max_pressure = validate::finite("max_pressure", max_pressure)?;
     let yield_pressure = YIELD_PRESSURE_FACTOR * sy;
+    if !yield_pressure.is_finite() {
+        return Err(crate::Error::invalid(
+            "yield_stress",
+            sy,
+            "gives a yield pressure 1.6 sigma_Y that overflows",
+        ));
+    }
     Ok(ElasticLimitCheck {
         max_pressure,
         yield_pressure,

@@ -59,7 +59,8 @@ impl ElasticMaterial {
 /// error names `youngs_modulus`.
 pub fn effective_modulus(first: &ElasticMaterial, second: &ElasticMaterial) -> Result<f64> {
     let compliance = first.compliance() + second.compliance();
-    if compliance > 0.0 && compliance.is_finite() {
+    // 1/compliance overflows for moduli near f64::MAX: checked too
+    if compliance > 0.0 && compliance.is_finite() && (1.0 / compliance).is_finite() {
         Ok(1.0 / compliance)
     } else {
         Err(crate::Error::invalid(
@@ -78,7 +79,7 @@ pub fn effective_radius(first: f64, second: Option<f64>) -> Result<f64> {
         None => Ok(r1),
         Some(r2) => {
             let r2 = validate::positive("target radius", r2)?;
-            Ok(r1 * r2 / (r1 + r2))
+            Ok(harmonic_half(r1, r2))
         }
     }
 }
@@ -91,8 +92,21 @@ pub fn reduced_mass(first: f64, second: Option<f64>) -> Result<f64> {
         None => Ok(m1),
         Some(m2) => {
             let m2 = validate::positive("target mass", m2)?;
-            Ok(m1 * m2 / (m1 + m2))
+            Ok(harmonic_half(m1, m2))
         }
+    }
+}
+
+/// `a b/(a + b)` for finite a, b > 0; when the product overflows or underflows
+/// (radii or masses near the ends of the f64 range) the same value is computed as
+/// `min/(1 + min/max)`, which stays finite and positive.
+fn harmonic_half(a: f64, b: f64) -> f64 {
+    let direct = a * b / (a + b);
+    if direct.is_finite() && direct > 0.0 {
+        direct
+    } else {
+        let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+        lo / (1.0 + lo / hi)
     }
 }
 

@@ -114,10 +114,21 @@ pub fn spaced(from: f64, to: f64, points: usize, log: bool) -> Result<Vec<f64>, 
     Ok((0..points)
         .map(|i| {
             let f = i as f64 / (points - 1) as f64;
+            // fallbacks for ends so far apart that to/from or to − from overflows
             if log {
-                from * (to / from).powf(f)
+                let ratio = to / from;
+                if ratio.is_finite() && ratio > 0.0 {
+                    from * ratio.powf(f)
+                } else {
+                    (from.ln() + (to.ln() - from.ln()) * f).exp()
+                }
             } else {
-                from + (to - from) * f
+                let span = to - from;
+                if span.is_finite() {
+                    from + span * f
+                } else {
+                    from * (1.0 - f) + to * f
+                }
             }
         })
         .collect())
