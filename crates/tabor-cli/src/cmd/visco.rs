@@ -147,7 +147,9 @@ fn model_name(m: Model) -> &'static str {
 /// Runs `tabor visco`.
 pub fn run(args: &Args) -> Result<(), String> {
     let name = model_name(args.model);
-    let tol = args.tolerance;
+    // checked here: `tol.max(1e-10)` below would turn a NaN tolerance into 1e-10
+    let tol =
+        tabor_restitution::validate::tolerance("tolerance", args.tolerance).map_err(message)?;
     let mut out = Visco {
         model: name,
         restitution: 0.0,

@@ -1,0 +1,436 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+//! Issue 9: every subcommand given bad input exits with code 2 and one clear line on
+//! stderr (`error: ...`), never a panic or a backtrace. Scene-file errors name the
+//! position (line) and the field.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn tabor(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_tabor"))
+        .args(args)
+        .env("RUST_BACKTRACE", "1")
+        .output()
+        .expect("the tabor binary runs")
+}
+
+/// Exit code 2, exactly one non-empty stderr line starting with `error:`, no panic,
+/// nothing on stdout; returns the line.
+fn one_line_error(args: &[&str]) -> String {
+    let out = tabor(args);
+    let stderr = String::from_utf8_lossy(&out.stderr).to_string();
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "{args:?}: exit {:?}, stderr {stderr}",
+        out.status
+    );
+    assert!(
+        !stderr.contains("panicked") && !stderr.contains("backtrace"),
+        "{args:?}: panic: {stderr}"
+    );
+    let lines: Vec<&str> = stderr.lines().filter(|l| !l.trim().is_empty()).collect();
+    assert_eq!(lines.len(), 1, "{args:?}: not one line: {stderr}");
+    assert!(lines[0].starts_with("error: "), "{args:?}: {stderr}");
+    assert!(lines[0].len() > "error: ".len() + 10, "{args:?}: {stderr}");
+    assert!(out.stdout.is_empty(), "{args:?}: stdout {:?}", out.stdout);
+    lines[0].to_string()
+}
+
+/// Argument-syntax errors (clap): exit code 2, an `error:` first line, no panic.
+/// (clap adds a usage hint below its first line.)
+fn usage_error(args: &[&str]) {
+    let out = tabor(args);
+    let stderr = String::from_utf8_lossy(&out.stderr).to_string();
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+    assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+    assert!(stderr.starts_with("error: "), "{args:?}: {stderr}");
+}
+
+/// Replaces the value of flag `flag` in `base` with `value`, as one `--flag=value`
+/// argument (so that `-inf` is not taken for a flag).
+fn with(base: &[&'static str], flag: &str, value: &'static str) -> Vec<&'static str> {
+    let mut v = base.to_vec();
+    let i = v.iter().position(|a| *a == flag).expect("flag present");
+    v[i] = Box::leak(format!("{flag}={value}").into_boxed_str());
+    v.remove(i + 1);
+    v
+}
+
+/// `--flag=value` as one argument.
+fn kv(flag: &str, value: &str) -> &'static str {
+    Box::leak(format!("{flag}={value}").into_boxed_str())
+}
+
+const BAD_NUMBERS: [&str; 6] = ["-1", "0", "nan", "inf", "-inf", "1e999"];
+
+#[test]
+fn effective_bad_values() {
+    let base = [
+        "effective",
+        "--youngs-modulus",
+        "54e9",
+        "--poisson-ratio",
+        "0.17",
+        "--radius",
+        "1e-6",
+        "--density",
+        "2650",
+    ];
+    for flag in ["--youngs-modulus", "--radius", "--density"] {
+        for bad in BAD_NUMBERS {
+            let line = one_line_error(&with(&base, flag, bad));
+            assert!(
+                line.contains(&flag[2..]) || line.contains(&flag[2..].replace('-', "_")),
+                "{line}"
+            );
+        }
+    }
+    for bad in ["0.6", "-1", "nan", "inf"] {
+        one_line_error(&with(&base, "--poisson-ratio", bad));
+    }
+    usage_error(&with(&base, "--radius", "abc"));
+    usage_error(&["effective", "--radius", "1"]);
+}
+
+#[test]
+fn jkr_bad_values() {
+    let base = [
+        "jkr",
+        "--modulus",
+        "2.78e10",
+        "--radius",
+        "5e-7",
+        "--work-of-adhesion",
+        "0.05",
+        "--mass",
+        "5.5e-15",
+        "--speed",
+        "0.1",
+    ];
+    for flag in [
+        "--modulus",
+        "--radius",
+        "--work-of-adhesion",
+        "--mass",
+        "--speed",
+    ] {
+        for bad in BAD_NUMBERS {
+            one_line_error(&with(&base, flag, bad));
+        }
+    }
+    let mut t = base.to_vec();
+    t.extend(["--tolerance", "2"]);
+    one_line_error(&t);
+    let mut t = base.to_vec();
+    t.extend(["--separation", "sideways"]);
+    usage_error(&t);
+}
+
+#[test]
+fn maugis_loss_bad_values() {
+    for bad in BAD_NUMBERS {
+        one_line_error(&["maugis-loss", kv("--lambda", bad)]);
+        one_line_error(&[
+            "maugis-loss",
+            kv("--from", bad),
+            "--to",
+            "10",
+            "--points",
+            "5",
+            "--log",
+        ]);
+    }
+    one_line_error(&["maugis-loss", "--from", "1", "--to", "10", "--points", "1"]);
+    one_line_error(&["maugis-loss", "--lambda", "1", "--tolerance", "0"]);
+    one_line_error(&["maugis-loss", "--lambda", "1", "--tolerance", "nan"]);
+    usage_error(&["maugis-loss", "--lambda", "one"]);
+}
+
+#[test]
+fn plastic_bad_values() {
+    let base = [
+        "plastic",
+        "--model",
+        "thornton",
+        "--modulus",
+        "1e11",
+        "--radius",
+        "2.5e-3",
+        "--mass",
+        "2.5e-4",
+        "--yield-stress",
+        "1e9",
+        "--speed",
+        "1",
+    ];
+    for flag in [
+        "--modulus",
+        "--radius",
+        "--mass",
+        "--yield-stress",
+        "--speed",
+    ] {
+        for bad in BAD_NUMBERS {
+            one_line_error(&with(&base, flag, bad));
+        }
+    }
+    for (model, extra) in [
+        ("jackson-green", ["--poisson-ratio", "0.7"]),
+        ("dimensionless-fit", ["--density", "-1"]),
+        ("adhesive-interpolation", ["--work-of-adhesion", "nan"]),
+        ("superposition", ["--work-of-adhesion", "-1"]),
+    ] {
+        let mut v = with(&base, "--model", model);
+        v.extend(extra);
+        one_line_error(&v);
+        // and the model's required flag missing altogether
+        one_line_error(&with(&base, "--model", model));
+    }
+    usage_error(&with(&base, "--model", "rubber"));
+}
+
+#[test]
+fn visco_bad_values() {
+    let cases: &[&[&str]] = &[
+        &["--model", "kelvin-voigt-flat", "--damping-ratio", "-1"],
+        &["--model", "kelvin-voigt-flat", "--damping-ratio", "nan"],
+        &["--model", "kelvin-voigt-flat"],
+        &["--model", "kuwabara-kono", "--viscous-parameter", "inf"],
+        &[
+            "--model",
+            "kelvin-voigt-sphere",
+            "--viscous-parameter",
+            "-0.1",
+        ],
+        &["--model", "lee-herrmann", "--damping", "nan"],
+        &["--model", "tsuji", "--alpha", "-1"],
+        &["--model", "hunt-crossley", "--damping", "-1"],
+        &[
+            "--model",
+            "power-damping",
+            "--damping-exponent",
+            "nan",
+            "--damping",
+            "0.1",
+        ],
+        &[
+            "--model",
+            "standard-flat",
+            "--modulus-ratio",
+            "0",
+            "--viscous-parameter",
+            "1",
+        ],
+        &[
+            "--model",
+            "standard-sphere",
+            "--modulus-ratio",
+            "1",
+            "--viscous-parameter",
+            "-1",
+        ],
+        &[
+            "--model",
+            "kelvin-maxwell-sphere",
+            "--modulus-ratio",
+            "nan",
+            "--viscous-parameter",
+            "1",
+        ],
+        &[
+            "--model",
+            "compressible-flat",
+            "--poisson-ratio",
+            "0.7",
+            "--damping-ratio",
+            "0.1",
+        ],
+        &[
+            "--model",
+            "kelvin-voigt-sphere",
+            "--viscous-parameter",
+            "0.1",
+            "--tolerance",
+            "0",
+        ],
+        &[
+            "--model",
+            "standard-sphere",
+            "--modulus-ratio",
+            "1",
+            "--viscous-parameter",
+            "1",
+            "--tolerance",
+            "nan",
+        ],
+    ];
+    for c in cases {
+        let mut v = vec!["visco"];
+        v.extend_from_slice(c);
+        one_line_error(&v);
+    }
+    usage_error(&["visco", "--model", "honey"]);
+}
+
+// ---------------------------------------------------------------------------
+// Scene files
+
+struct TempScene(PathBuf);
+
+impl TempScene {
+    fn new(name: &str, text: &str) -> Self {
+        let dir = std::env::temp_dir().join(format!("tabor-bad-input-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        let path = dir.join(name);
+        std::fs::write(&path, text).expect("write scene");
+        TempScene(path)
+    }
+    fn path(&self) -> &str {
+        self.0.to_str().expect("utf-8 path")
+    }
+}
+
+impl Drop for TempScene {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.0);
+    }
+}
+
+const GOOD: &str = include_str!("../../../examples/scenes/silica.toml");
+
+/// (file name, contents, what the error line must mention)
+fn bad_scenes() -> Vec<(&'static str, String, Vec<&'static str>)> {
+    vec![
+        (
+            "syntax.toml",
+            GOOD.replace("radius = 1e-6            # m", "radius = = 1e-6"),
+            vec!["line 9"],
+        ),
+        (
+            "unknown_key.toml",
+            GOOD.replace("density = 2650           # kg/m³", "densty = 2650"),
+            vec!["line", "sphere", "densty"],
+        ),
+        (
+            "wrong_type.toml",
+            GOOD.replace(
+                "youngs_modulus = 54e9    # Pa",
+                "youngs_modulus = \"54 GPa\"",
+            ),
+            vec!["line", "sphere.youngs_modulus"],
+        ),
+        (
+            "missing_field.toml",
+            GOOD.replace("poisson_ratio = 0.17\n\n[target]", "\n[target]"),
+            vec!["sphere", "poisson_ratio"],
+        ),
+        (
+            "negative.toml",
+            GOOD.replace("radius = 1e-6            # m", "radius = -1e-6"),
+            vec!["line 9", "sphere.radius"],
+        ),
+        (
+            "nan.toml",
+            GOOD.replace("work_of_adhesion = 0.05  # J/m²", "work_of_adhesion = nan"),
+            vec!["line", "adhesion.work_of_adhesion"],
+        ),
+        (
+            "bad_choice.toml",
+            GOOD.replace("\"fixed-grip\"", "\"sideways\""),
+            vec!["line", "separation"],
+        ),
+        ("empty.toml", String::new(), vec!["sphere"]),
+        (
+            "syntax.json",
+            "{\"sphere\": {\"radius\": 1e-6,, }}".to_string(),
+            vec!["line 1", "column"],
+        ),
+        (
+            "unknown.json",
+            "{\"sphere\": {\"radius\": 1e-6, \"colour\": 1}}".to_string(),
+            vec!["line 1", "sphere", "colour"],
+        ),
+        (
+            "wrong_type.json",
+            "{\"sphere\": {\"radius\": \"big\"}}".to_string(),
+            vec!["line 1", "sphere.radius"],
+        ),
+    ]
+}
+
+#[test]
+fn scene_subcommands_bad_files() {
+    let out_csv = std::env::temp_dir().join(format!("tabor-bad-input-{}.csv", std::process::id()));
+    let out_csv = out_csv.to_str().expect("utf-8").to_string();
+    for (name, text, needles) in bad_scenes() {
+        let scene = TempScene::new(name, &text);
+        let p = scene.path();
+        let runs: Vec<Vec<&str>> = vec![
+            vec!["impact", p],
+            vec!["impact", p, "--json"],
+            vec!["sweep", p, "--speed", "0.01:1:3", "--out", &out_csv],
+            vec!["sticking", p],
+            vec!["trajectory", p],
+        ];
+        for args in runs {
+            let line = one_line_error(&args);
+            for needle in &needles {
+                assert!(line.contains(needle), "{args:?}: {line:?} lacks {needle:?}");
+            }
+        }
+    }
+    let _ = std::fs::remove_file(&out_csv);
+}
+
+#[test]
+fn scene_subcommands_bad_arguments() {
+    let good = TempScene::new("good.toml", GOOD);
+    let p = good.path();
+    let missing = "/nonexistent/tabor/scene.toml";
+    let out_csv = std::env::temp_dir().join(format!("tabor-bad-args-{}.csv", std::process::id()));
+    let out_csv = out_csv.to_str().expect("utf-8").to_string();
+    for bad in BAD_NUMBERS {
+        if bad == "1e999" {
+            continue;
+        }
+        one_line_error(&["impact", p, kv("--speed", bad)]);
+        one_line_error(&["trajectory", p, kv("--speed", bad)]);
+    }
+    for args in [
+        vec!["impact", missing],
+        vec!["sticking", missing],
+        vec!["trajectory", missing],
+        vec!["sweep", missing, "--speed", "0.01:1:3", "--out", &out_csv],
+        vec!["trajectory", p, "--tolerance", "0"],
+        vec!["trajectory", p, "--tolerance", "nan"],
+        vec!["sweep", p, "--speed", "0.01:1", "--out", &out_csv],
+        vec!["sweep", p, "--speed", "a:b:c", "--out", &out_csv],
+        vec!["sweep", p, "--speed", "0.01:1:1", "--out", &out_csv],
+        vec!["sweep", p, "--speed=-1:1:3", "--log", "--out", &out_csv],
+        vec!["sweep", p, "--speed", "nan:1:3", "--out", &out_csv],
+        vec![
+            "sweep",
+            p,
+            "--parameter",
+            "colour",
+            "--values",
+            "1:2:3",
+            "--out",
+            &out_csv,
+        ],
+        vec![
+            "sweep",
+            p,
+            "--speed",
+            "0.01:1:3",
+            "--out",
+            "/nonexistent/dir/out.csv",
+        ],
+    ] {
+        one_line_error(&args);
+    }
+    usage_error(&["impact"]);
+    usage_error(&["sweep", p]);
+    let _ = std::fs::remove_file(&out_csv);
+}
