@@ -79,7 +79,7 @@ pub fn effective_radius(first: f64, second: Option<f64>) -> Result<f64> {
         None => Ok(r1),
         Some(r2) => {
             let r2 = validate::positive("target radius", r2)?;
-            Ok(harmonic_half(r1, r2))
+            validate::positive("radius", harmonic_half(r1, r2))
         }
     }
 }
@@ -92,7 +92,7 @@ pub fn reduced_mass(first: f64, second: Option<f64>) -> Result<f64> {
         None => Ok(m1),
         Some(m2) => {
             let m2 = validate::positive("target mass", m2)?;
-            Ok(harmonic_half(m1, m2))
+            validate::positive("mass", harmonic_half(m1, m2))
         }
     }
 }
