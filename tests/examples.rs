@@ -291,14 +291,8 @@ fn accuracy_vs_time_achieves_the_requested_tolerance() {
             close(ach, ((f(value) - f(reference)) / f(reference)).abs(), 1e-5) || ach < 1e-300,
             "{row:?}"
         );
-        if row[group].starts_with("simulated") {
-            // Known issue (docs/examples.md, "accuracy_vs_time"): the simulator's
-            // tolerance is the integrator's per-step tolerance; the restitution it
-            // produces has been measured up to 11× the requested tolerance. Bound it.
-            assert!(ach <= 20.0 * req, "{row:?}");
-        } else {
-            assert!(ach <= req, "{row:?}");
-        }
+        // every row, the simulations included, tracks the requested tolerance
+        assert!(ach <= req, "{row:?}");
     }
     // the references: (5.44) and the load-controlled antiderivative, independently
     let reference_of = |key: &str| -> f64 {

@@ -36,13 +36,18 @@ impl Default for SimulationSettings {
 }
 
 impl SimulationSettings {
-    /// Default settings with relative tolerance `relative` and absolute tolerance
-    /// `relative / 100` (in normalized units).
+    /// Default settings for a requested relative accuracy `relative` of the
+    /// impact's outcome (restitution, contact time). The integrator's per-step
+    /// tolerance is `relative / 100` (at least 1e-15), absolute a further factor 100
+    /// below, in normalized units: local errors add up over the few hundred steps of
+    /// an impact, and a per-step tolerance equal to the requested accuracy was
+    /// measured to miss it by up to 11× (`examples/accuracy_vs_time.rs`).
     pub fn with_tolerance(relative: f64) -> Result<Self> {
         let rel = validate::tolerance("tolerance", relative)?;
         let mut s = SimulationSettings::default();
-        s.tolerance.relative = rel;
-        s.tolerance.absolute = rel * 1e-2;
+        let per_step = (rel * 1e-2).max(1e-15);
+        s.tolerance.relative = per_step;
+        s.tolerance.absolute = per_step * 1e-2;
         Ok(s)
     }
 }

@@ -218,8 +218,8 @@ pub struct TrajectoryArgs {
     /// Write the trajectory (t, d, ḋ, F, a) as CSV here
     #[arg(long)]
     out: Option<PathBuf>,
-    /// Relative tolerance of the integrator
-    #[arg(long, default_value_t = 1e-11, allow_negative_numbers = true)]
+    /// Requested relative accuracy of the simulated outcome
+    #[arg(long, default_value_t = 1e-9, allow_negative_numbers = true)]
     tolerance: f64,
     /// Print one JSON object
     #[arg(long)]
