@@ -63,7 +63,10 @@ pub(crate) fn require_finite(name: &'static str, value: f64) -> Result<f64, Nume
 
 /// Checks that an absolute and a relative tolerance are finite and ≥ 0.
 pub(crate) fn require_tolerances(absolute: f64, relative: f64) -> Result<(), NumericsError> {
-    for (name, value) in [("absolute tolerance", absolute), ("relative tolerance", relative)] {
+    for (name, value) in [
+        ("absolute tolerance", absolute),
+        ("relative tolerance", relative),
+    ] {
         if !(value >= 0.0 && value.is_finite()) {
             return Err(NumericsError::InvalidArgument {
                 name,

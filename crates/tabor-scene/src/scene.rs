@@ -297,7 +297,8 @@ impl Scene {
                 "a graded target must be a half-space (no radius)",
             ));
         }
-        let e = effective_modulus(&sphere.material, &target.material).map_err(SceneError::model)?;
+        let e = effective_modulus(&sphere.material, &target.material)
+            .map_err(in_field("sphere", "youngs_modulus"))?;
         let r_sphere = sphere.radius.unwrap_or(f64::NAN);
         let r = effective_radius(r_sphere, target.radius).map_err(in_field("sphere", "radius"))?;
         let m = reduced_mass(sphere.mass.unwrap_or(f64::NAN), target.mass)
