@@ -490,3 +490,24 @@ fn regression_plastic_penalty_scene_elastic_extremes() {
         "{a} vs {expected}"
     );
 }
+
+#[test]
+fn regression_simulation_scene_and_characteristic_extremes() {
+    use tabor::dynamics::{simulate_impact, SimulationSettings};
+    // m v0² overflows inside the energy bookkeeping: the error is now relative
+    let mut law = tabor::elastic::ElasticContact::hertz(1e9, 1e-3).unwrap();
+    let s = simulate_impact(&mut law, 6.6e-16, 2.6e154, &SimulationSettings::default()).unwrap();
+    assert!(
+        s.energy_error.is_finite() && s.energy_error < 1e-6,
+        "{}",
+        s.energy_error
+    );
+    let k = tabor::penalty::contact_characteristic(-8.6e193, 3.4e246).unwrap();
+    assert!(k.is_finite() && k > 0.0, "{k}");
+    // a model error of the effective modulus names the field
+    let text = include_str!("../examples/scenes/silica.toml")
+        .replace("youngs_modulus = 54e9    # Pa", "youngs_modulus = 1.7e308");
+    if let Err(e) = tabor::scene::Scene::from_str(&text, tabor::scene::Format::Toml) {
+        assert!(e.field.is_some(), "{e}");
+    }
+}

@@ -379,8 +379,6 @@ pub fn simulate_impact<L: ForceLaw + ?Sized>(
     } else {
         (-end_y[1] * v0).max(0.0)
     };
-    let kinetic_end = 0.5 * m * (end_y[1] * v0).powi(2);
-    let work = end_y[2] * m * v0 * v0;
     // in units of the initial kinetic energy m v0²/2 (no overflow for huge m v0²):
     // kinetic_end/kinetic = ḋ̂², work/kinetic = 2 ŵ
     let energy_error = ((end_y[1] * end_y[1] - 1.0) - 2.0 * end_y[2]).abs();

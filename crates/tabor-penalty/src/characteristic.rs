@@ -32,7 +32,13 @@ fn characteristic_unchecked(h: f64, eps: f64) -> f64 {
         -h
     } else {
         // |h| < ε, so ε > 0 here.
-        eps / 4.0 - h / 2.0 + h * h / (4.0 * eps)
+        let k = eps / 4.0 - h / 2.0 + h * h / (4.0 * eps);
+        if k.is_finite() {
+            k
+        } else {
+            // h² overflows (ε near f64::MAX): |h/ε| < 1 keeps this form finite
+            eps / 4.0 - h / 2.0 + (h / eps) * h / 4.0
+        }
     }
 }
 
