@@ -50,6 +50,51 @@ fn effective_json() {
 }
 
 #[test]
+fn effective_sphere_on_rigid_flat() {
+    // A steel sphere (E = 210 GPa, ν = 0.3, R = 1 mm, m = 1e-5 kg) on a rigid,
+    // immovable flat: E* = E/(1 − ν²), R* = R, m* = m.
+    let out = tabor(&[
+        "effective",
+        "--youngs-modulus",
+        "210e9",
+        "--poisson-ratio",
+        "0.3",
+        "--radius",
+        "1e-3",
+        "--mass",
+        "1e-5",
+        "--rigid-target",
+        "--json",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON output");
+    let e = v["effective_modulus"].as_f64().expect("number");
+    assert!((e / (210e9 / (1.0 - 0.09)) - 1.0).abs() < 1e-14);
+    assert_eq!(v["effective_radius"].as_f64(), Some(1e-3));
+    assert_eq!(v["effective_mass"].as_f64(), Some(1e-5));
+    // A rigid target has no Poisson's ratio: contradictory flags are a usage error.
+    let out = tabor(&[
+        "effective",
+        "--youngs-modulus",
+        "210e9",
+        "--poisson-ratio",
+        "0.3",
+        "--radius",
+        "1e-3",
+        "--mass",
+        "1e-5",
+        "--rigid-target",
+        "--target-poisson-ratio",
+        "0.2",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
 fn bad_input_exits_2_with_one_line() {
     for args in [
         &[

@@ -69,11 +69,42 @@ fn silica_json_both_separation_rules() {
         (num(&fixed, "separation_force") / (-5.0 / 6.0 * PI * 0.05 * 0.5e-6) - 1.0).abs() < 1e-12
     );
 
+    // a_max satisfies the energy balance (5.35), written out here: 1e-10 of the
+    // balanced terms (the default tolerance is 1e-12).
+    let (r, dg) = (0.5e-6f64, 0.05f64);
+    let a = num(&fixed, "max_contact_radius");
+    let offset = 0.6 * (4.0 * (PI * dg).powi(5) * r.powi(4) / (e * e)).cbrt();
+    let work = 8.0 * e / (15.0 * r * r) * a.powi(5)
+        - 8.0 / 3.0 * (PI * dg * e / (2.0 * r * r) * a.powi(7)).sqrt()
+        + PI * dg * a * a
+        + offset;
+    let kinetic = 0.5 * m * 0.04;
+    assert!(
+        (work - kinetic).abs() <= 1e-10 * (kinetic + offset),
+        "{work} vs {kinetic}"
+    );
+    assert_eq!(fixed["sticks"].as_bool(), Some(false));
+
     let dem = json(&["--speed", "0.2", "--separation", "load-controlled"]);
     assert!((num(&dem, "sticking_velocity") - 0.061).abs() < 0.02 * 0.061);
     assert!(dem["branch"].as_str().unwrap().contains("quadrature"));
     let ratio = num(&dem, "energy_loss") / num(&fixed, "energy_loss");
     assert!((ratio - 0.493_87).abs() < 1e-5, "{ratio}");
+    // The load-controlled loss against the elementary antiderivative of F̂ dd̂/dâ,
+    // (6/5)â⁵ − 4â^(7/2) + 2â² between â0 = (4/3)^(2/3) and 1, times F_n d_n.
+    let w_hat = |x: f64| 1.2 * x.powi(5) - 4.0 * x.powf(3.5) + 2.0 * x * x;
+    let f_n_d_n = 3.0 * 3f64.cbrt() / 8.0 * (r.powi(4) * (PI * dg).powi(5) / (e * e)).cbrt();
+    let dem_loss = (w_hat(1.0) - w_hat((4.0f64 / 3.0).powf(2.0 / 3.0))) * f_n_d_n;
+    assert!((num(&dem, "energy_loss") / dem_loss - 1.0).abs() < 1e-11);
+    // Restitution (5.37) and the sticking velocity (5.38) from that loss.
+    let eps = (1.0 - 2.0 * dem_loss / (m * 0.04)).sqrt();
+    assert!((num(&dem, "restitution") - eps).abs() < 1e-10);
+    assert!((num(&dem, "sticking_velocity") / (2.0 * dem_loss / m).sqrt() - 1.0).abs() < 1e-10);
+
+    // Below the sticking velocity the bodies stick: ε = 0.
+    let slow = json(&["--speed", "0.05"]);
+    assert_eq!(num(&slow, "restitution"), 0.0);
+    assert_eq!(slow["sticks"].as_bool(), Some(true));
 
     // Without a speed: no restitution, no maximum contact radius.
     let bare = json(&[]);

@@ -67,7 +67,9 @@ pub struct MaxContactRadius {
     /// `m v0²/2 + |ΔU_0|` (the terms that must balance, ΔU_0 being the constant term
     /// of (5.35), (5.49); for the power law, which has no closed form, the depth of the
     /// adhesive well between first touch and zero force); below the requested
-    /// tolerance.
+    /// tolerance. It cannot go below the rounding error of evaluating the work (a few
+    /// 1e-15, up to about 3e-14 measured for k → −1 or n → 1/2), so tolerances under
+    /// 1e-13 are met only to that level.
     pub energy_residual: f64,
     /// Work spent (root finding and, where the work is a quadrature, integration).
     pub cost: Cost,

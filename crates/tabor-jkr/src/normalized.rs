@@ -76,7 +76,8 @@ pub fn kinetic_energy_to_reach(max_contact_radius: f64) -> Result<f64> {
 /// The maximum contact radius `â_max` reached with kinetic energy `kinetic_energy`
 /// (units of `F_n d_n`, > 0), by Brent's method on the energy balance, so that the
 /// residual is below `tolerance · (kinetic_energy + ΔÛ_0)` (`tolerance` relative,
-/// in [1e-15, 0.5]).
+/// in [1e-15, 0.5]; below about 1e-13 the residual stops at the rounding error of
+/// the work, see [`MaxContactRadius::energy_residual`]).
 ///
 /// Seed 000, eq. (5.35).
 pub fn max_contact_radius(kinetic_energy: f64, tolerance: f64) -> Result<MaxContactRadius> {

@@ -260,6 +260,7 @@ fn power_law_max_contact_radius_balances_the_energy() {
                 (work - kinetic).abs() <= (tol + 1e-12) * (kinetic + loss),
                 "n = {n}, {factor}: {work} vs {kinetic}"
             );
+            assert!(m.energy_residual <= tol);
             assert!(m.cost.evaluations > 0);
         }
     }

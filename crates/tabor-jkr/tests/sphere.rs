@@ -282,6 +282,24 @@ fn max_contact_radius_satisfies_the_energy_balance() {
             assert!(a > 4f64.cbrt() * s.scales().contact_radius);
         }
     }
+    // Below about 1e-13 the residual is limited by the rounding of the work itself
+    // (documented on `MaxContactRadius::energy_residual`): tolerance 1e-15 is met to
+    // 1e-13, and the radius agrees with the 1e-13 solution.
+    let tight = JkrImpact::new(s, mass)
+        .unwrap()
+        .with_tolerance(1e-15)
+        .unwrap();
+    let loose = JkrImpact::new(s, mass)
+        .unwrap()
+        .with_tolerance(1e-13)
+        .unwrap();
+    for v0 in [1e-3, 0.0866, 3.0] {
+        let m = tight.max_contact_radius(v0).unwrap();
+        assert!(m.energy_residual <= 1e-13, "{v0}: {}", m.energy_residual);
+        let a = m.contact_radius;
+        let b = loose.max_contact_radius(v0).unwrap().contact_radius;
+        assert!(rel(a, b) < 1e-12, "{v0}: {a} vs {b}");
+    }
 }
 
 #[test]
@@ -355,6 +373,9 @@ proptest! {
             let norm = normalized::energy_loss(rule, tol).unwrap().value;
             prop_assert!(rel(phys / unit, norm) < 1e-13, "{} {} {}", rule, phys / unit, norm);
         }
+        // The physical fixed-grip loss is (5.36) written out, whatever the decades.
+        let phys = s.energy_loss(SeparationRule::FixedGrip, 1e-12).unwrap().joules;
+        prop_assert!(rel(phys, seed.loss_5_36()) < 1e-13, "{phys} vs {}", seed.loss_5_36());
         // And the scales are those of the spec.
         let a_c = (9.0 * PI * dg * r * r / (8.0 * e)).cbrt();
         prop_assert!(rel(s.scales().contact_radius, a_c) < 1e-14);

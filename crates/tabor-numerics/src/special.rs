@@ -43,6 +43,10 @@ pub fn regularized_incomplete_beta(x: f64, a: f64, b: f64) -> Result<f64> {
 ///
 /// Seed 000, eq. (9.42) (appendix, not among the seeds) defines it; (5.19) gives the
 /// identity `B(z²; 1/2, 1/2) = 2 arcsin z` used in the tests.
+///
+/// Accuracy (measured against mpmath in the tests): a few ulp for the trajectory
+/// parameters `a = n/(2n+1) < 1/2`, `b = 1/2`; about 1e-13 relative when a parameter
+/// is of order ten or more (statrs' prefactor through ln Γ).
 pub fn incomplete_beta(x: f64, a: f64, b: f64) -> Result<f64> {
     let reg = regularized_incomplete_beta(x, a, b)?;
     Ok(reg * beta(a, b)?)

@@ -218,3 +218,36 @@ fn sticking_velocity_overflow_is_an_error() {
     // either the speed scale or the closed form overflows: an error, never inf
     assert!(sticking_velocity(&model, 1e-10).is_err());
 }
+
+proptest! {
+    /// Through the generic `impact` of a model: ε ∈ [0, 1], the rebound carries the
+    /// kinetic energy that was not lost (m (ε v0)²/2 = m v0²/2 − |ΔU| when the bodies
+    /// separate), and the bodies stick exactly when ε = 0, at v0 < v_c.
+    #[test]
+    fn impact_outcome_balances_the_energy(
+        log_c in -25.0f64..0.0, log_m in -18.0f64..2.0, fraction in 0.0f64..0.95,
+        log_ratio in -3.0f64..3.0,
+    ) {
+        let model = AffineLoss { mass: 10f64.powf(log_m), constant: 10f64.powf(log_c), fraction };
+        let vc = (2.0 * model.constant / (model.mass * (1.0 - fraction))).sqrt();
+        let v0 = vc * 10f64.powf(log_ratio);
+        let out = impact(&model, v0).unwrap();
+        prop_assert!((0.0..=1.0).contains(&out.restitution));
+        prop_assert_eq!(out.rebound_speed, out.restitution * v0);
+        let kinetic = 0.5 * model.mass * v0 * v0;
+        prop_assert!((out.kinetic_energy / kinetic - 1.0).abs() <= 1e-15);
+        let loss = model.constant + fraction * kinetic;
+        if v0 > vc {
+            prop_assert!(!out.sticks && out.restitution > 0.0);
+            let rebound = 0.5 * model.mass * out.rebound_speed * out.rebound_speed;
+            prop_assert!(
+                (rebound + loss - kinetic).abs() <= 1e-12 * kinetic,
+                "rebound {rebound} + loss {loss} != kinetic {kinetic}"
+            );
+            prop_assert!((out.energy_loss / loss - 1.0).abs() <= 1e-15);
+        } else {
+            prop_assert!(out.sticks && out.restitution == 0.0 && out.rebound_speed == 0.0);
+            prop_assert_eq!(out.energy_loss, kinetic);
+        }
+    }
+}

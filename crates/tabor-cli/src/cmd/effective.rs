@@ -30,7 +30,7 @@ pub struct Args {
     #[arg(long, allow_negative_numbers = true, conflicts_with = "rigid_target")]
     target_youngs_modulus: Option<f64>,
     /// Poisson's ratio of the target; default: same as the sphere
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, conflicts_with = "rigid_target")]
     target_poisson_ratio: Option<f64>,
     /// The target is rigid
     #[arg(long)]
@@ -38,7 +38,8 @@ pub struct Args {
     /// Radius of the target (m); omit for a flat half-space
     #[arg(long, allow_negative_numbers = true)]
     target_radius: Option<f64>,
-    /// Density of the target (kg/m³), for a spherical target (default: the sphere's)
+    /// Density of the target (kg/m³), for a spherical target (default: the sphere's
+    /// --density; with neither density nor --target-mass the target is immovable)
     #[arg(long, allow_negative_numbers = true, conflicts_with = "target_mass")]
     target_density: Option<f64>,
     /// Mass of the target (kg); omit for an immovable target
