@@ -5,12 +5,15 @@
 //! R = 0.5 µm, Δγ = 0.05 J/m²); Maugis-Dugdale at Λ = 2 (case 3). Elasto-plastic
 //! models: the alumina sphere on steel of seed 000 section 5.5.2 (Table 5.2) at
 //! 1 m/s, adhesive variants with Δγ = 0.5 J/m². Viscoelastic: a rigid sphere on an
-//! incompressible Kelvin-Voigt half-space (rigorous model, δ ≈ 0.1).
+//! incompressible Kelvin-Voigt half-space (rigorous model, δ ≈ 0.1), the same ball
+//! on a standard medium and on a Kelvin-Maxwell medium (MDR), and a flat punch of the
+//! same mass and radius on the Kelvin-Voigt half-space. JKR variants: a power-law
+//! profile (n = 4) and a graded medium (k = 0.5), both on the silica scales.
 #![allow(clippy::unwrap_used, clippy::expect_used, missing_docs)]
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
-use tabor::jkr::{JkrImpact, JkrSphere, SeparationRule};
+use tabor::jkr::{GradedSphere, JkrImpact, JkrSphere, PowerLawProfile, SeparationRule};
 use tabor::maugis::{loss_over_jkr_fast, prepare_fast_tier, MaugisDugdaleImpact};
 use tabor::plastic::materials::{
     ALUMINA_TABLE_3, ALUMINA_TABLE_5_2, SPHERE_MASS_SECTION_5_5_2, SPHERE_RADIUS_SECTION_5_5_2,
@@ -21,7 +24,7 @@ use tabor::plastic::{
     PlasticImpact, SimulationSettings, Superposition, Thornton,
 };
 use tabor::restitution::ImpactModel;
-use tabor::visco::models::KelvinVoigtSphere;
+use tabor::visco::models::{KelvinVoigtFlatPunch, KelvinVoigtSphere, MaxwellBranchSphere};
 use tabor::visco::SphereModel;
 
 fn models(c: &mut Criterion) {
@@ -37,6 +40,14 @@ fn models(c: &mut Criterion) {
     let jkr = JkrImpact::new(sphere, m).unwrap();
     let jkr_load = jkr.clone().with_separation(SeparationRule::LoadControlled);
     let md = MaugisDugdaleImpact::new(e_star, r, dg, 2.0, m).unwrap();
+    // f(r) = A r⁴ with the sphere's curvature at r = 20 nm; E(z) = c_N z^(1/2) with
+    // E(10 nm) = E*
+    let power_law = JkrImpact::new(
+        PowerLawProfile::new(e_star, 4.0, 1.0 / (2.0 * r * 4e-16), dg).unwrap(),
+        m,
+    )
+    .unwrap();
+    let graded = JkrImpact::new(GradedSphere::new(e_star / 1e-4, 0.5, r, dg).unwrap(), m).unwrap();
     let v_silica = 0.2;
 
     // alumina on steel (seed 000 Table 5.2; seed 001 Table 3 for the fit)
@@ -72,6 +83,9 @@ fn models(c: &mut Criterion) {
 
     // viscoelastic: rubber-like half-space, a 1 cm steel ball
     let visco = KelvinVoigtSphere::new(1e6, 30.0, 0.01, 0.033, SphereModel::Rigorous).unwrap();
+    let flat_punch = KelvinVoigtFlatPunch::new(1e6, 30.0, 0.01, 0.033).unwrap();
+    let standard = MaxwellBranchSphere::standard(1e6, 1e6, 30.0, 0.01, 0.033).unwrap();
+    let kelvin_maxwell = MaxwellBranchSphere::kelvin_maxwell(1e6, 1e6, 30.0, 0.01, 0.033).unwrap();
     let v_visco = 0.5;
 
     let cases: Vec<(&str, &dyn ImpactModel, f64)> = vec![
@@ -81,6 +95,8 @@ fn models(c: &mut Criterion) {
             v_silica,
         ),
         ("Maugis-Dugdale direct (Λ = 2, 1e-12)", &md, v_silica),
+        ("JKR power-law profile n = 4 (5.39)", &power_law, v_silica),
+        ("JKR graded medium k = 0.5 (5.47)-(5.53)", &graded, v_silica),
         ("Thornton (closed form)", &thornton, v_plastic),
         ("interpolation (closed form)", &interpolation, v_plastic),
         (
@@ -92,6 +108,13 @@ fn models(c: &mut Criterion) {
         ("Jackson-Green (simulated)", &jackson_green, v_plastic),
         ("seed-001 fit", &fit, v_plastic),
         ("Kelvin-Voigt sphere, rigorous", &visco, v_visco),
+        (
+            "Kelvin-Voigt flat punch (5.54)-(5.63)",
+            &flat_punch,
+            v_visco,
+        ),
+        ("standard-medium sphere (MDR)", &standard, v_visco),
+        ("Kelvin-Maxwell sphere (MDR)", &kelvin_maxwell, v_visco),
     ];
     for (name, model, v) in &cases {
         let loss = model.energy_loss(*v).unwrap().joules;

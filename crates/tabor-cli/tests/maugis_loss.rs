@@ -89,6 +89,17 @@ fn bad_input_exits_2() {
             "5",
             "--log",
         ][..],
+        // a range too long to print (was an unbounded allocation)
+        &[
+            "maugis-loss",
+            "--from",
+            "1",
+            "--to",
+            "2",
+            "--points",
+            "18446744073709551615",
+        ][..],
+        &["maugis-loss", "--from", "1", "--to", "2", "--points", "1"][..],
     ] {
         let out = tabor(args);
         assert_eq!(out.status.code(), Some(2), "{args:?}");

@@ -154,7 +154,8 @@ pub fn no_contact_state(lambda: f64, cohesive_radius: f64) -> NoContactState {
     }
 }
 
-/// `b̂_c = 32Λ/(3π²)`: the minimum of d̂ on the no-contact branch (pull-off there).
+/// `b̂_c = 32Λ/(3π²)`: the minimum of d̂ on the no-contact branch (pull-off there);
+/// seed 000 eqs. (5.41) (jump-in at `b̂0 = 2b̂_c`), (5.44), (5.46).
 pub fn no_contact_pull_off_radius(lambda: f64) -> f64 {
     32.0 * lambda / (3.0 * PI * PI)
 }

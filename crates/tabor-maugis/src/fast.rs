@@ -69,7 +69,8 @@ pub fn loss_over_jkr_fast(lambda: f64) -> Result<f64> {
             let u = ((lambda - LAMBDA_1) / (LAMBDA_2 - LAMBDA_1)).sqrt();
             table()?.case2.eval(u)
         }
-        TaborCase::Contact => table()?.case3.eval(LAMBDA_2 / lambda),
+        // W/W_JKR < 1: the interpolant's rounding above 1 as t → 0 is cut off
+        TaborCase::Contact => table()?.case3.eval(LAMBDA_2 / lambda).min(1.0),
     })
 }
 

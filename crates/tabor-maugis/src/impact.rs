@@ -4,6 +4,7 @@
 use crate::branch::{contact_state, junction_factor, no_contact_pull_off_radius, no_contact_state};
 use serde::Serialize;
 use std::f64::consts::{FRAC_PI_2, PI};
+use std::sync::OnceLock;
 use tabor_numerics::quadrature::integrate_smooth;
 use tabor_numerics::root_finding::{brent, newton_safeguarded};
 use tabor_numerics::{Cost, QuadTolerance, RootTolerance};
@@ -17,13 +18,27 @@ pub const LAMBDA_1: f64 = 0.449_528_231_858_144;
 /// with direct contact (case 3). Seed 000 eq. (5.46) and the text after (5.42).
 pub const LAMBDA_2: f64 = 0.643_533_715_989_629_8;
 
+/// From this Λ on, [`normalized_loss`] returns the JKR limit: there
+/// `1 − W/W_JKR ≈ 0.4568/Λ` (the asymptote tested against the mpmath reference) is
+/// below 4.6e-17, less than half the spacing of doubles below 1, so `W_JKR` is the
+/// correctly rounded loss, whereas the branch itself loses its last digits to
+/// rounding (ratios of 1 + 1e-15) and, beyond Λ ≈ 1e76, θ³ underflows.
+pub const LAMBDA_JKR_LIMIT: f64 = 1e16;
+
 /// The JKR loss in units of `F_n d_n`, `4(1 + ∛864)/(15 ∛3) ≈ 1.9459`: seed 000
 /// eq. (5.36) from `tabor-jkr` (fixed grip, the displacement-driven separation that
 /// the Maugis-Dugdale impact also follows). The prefactor of (5.43) is its inverse.
+///
+/// Computed once per process (it divides every loss, so the case-1 closed form and
+/// the fast tier would otherwise spend most of their time on it); the closed form is
+/// written out as the fallback of the (infallible) call.
 pub fn jkr_normalized_loss() -> f64 {
-    tabor_jkr::normalized::energy_loss(tabor_jkr::SeparationRule::FixedGrip, 0.5)
-        .map(|l| l.value)
-        .unwrap_or(f64::NAN)
+    static W_JKR: OnceLock<f64> = OnceLock::new();
+    *W_JKR.get_or_init(|| {
+        tabor_jkr::normalized::energy_loss(tabor_jkr::SeparationRule::FixedGrip, 0.5)
+            .map(|l| l.value)
+            .unwrap_or_else(|_| 4.0 * (1.0 + 864f64.cbrt()) / (15.0 * 3f64.cbrt()))
+    })
 }
 
 /// Which path the impact takes (seed 000 section 5.3.2, the three cases).
@@ -273,7 +288,8 @@ pub struct NormalizedLoss {
 /// quadrature of `∫F̂ dd̂` on the contact branch (in θ, where the integrand is smooth
 /// through the pull-off point) plus the closed form (5.46), written as
 /// `2¹⁹Λ⁵(K − 1)²(3K² + 2K + 1)/(3⁴π⁸)` so that it stays accurate as K → 1; case 3
-/// quadrature (5.43).
+/// quadrature (5.43), and for Λ ≥ [`LAMBDA_JKR_LIMIT`] the JKR loss (5.36), which
+/// equals it to double precision there.
 pub fn normalized_loss(lambda: f64, tolerance: f64) -> Result<NormalizedLoss> {
     let lambda = check_lambda(lambda)?;
     let tol = validate::tolerance("tolerance", tolerance)?;
@@ -287,6 +303,15 @@ pub fn normalized_loss(lambda: f64, tolerance: f64) -> Result<NormalizedLoss> {
             "Maugis-Dugdale case 1, closed form (5.44)",
             Cost::ZERO,
         ),
+        TaborCase::Contact if lambda >= LAMBDA_JKR_LIMIT => {
+            let w_jkr = jkr_normalized_loss();
+            (
+                w_jkr,
+                0.46 / lambda * w_jkr,
+                "Maugis-Dugdale case 3, JKR limit (Lambda >= 1e16: 1 - W/W_JKR = 0.4568/Lambda rounds away)",
+                Cost::ZERO,
+            )
+        }
         TaborCase::ContactThenNoContact | TaborCase::Contact => {
             let path = impact_path(lambda)?;
             let theta_in = path.jump_in.theta.unwrap_or(FRAC_PI_2);

@@ -29,7 +29,7 @@ pub use dynamics::MaugisDugdaleForceLaw;
 pub use fast::{fast_tier_pieces, loss_over_jkr_fast, prepare_fast_tier, FAST_TIER_RELATIVE_ERROR};
 pub use impact::{
     impact_path, jkr_normalized_loss, normalized_loss, ImpactPath, NormalizedLoss, PathState,
-    TaborCase, LAMBDA_1, LAMBDA_2,
+    TaborCase, LAMBDA_1, LAMBDA_2, LAMBDA_JKR_LIMIT,
 };
 pub use model::MaugisDugdaleImpact;
 pub use trace::{equilibrium_state, trace_impact, Phase, TracePoint};

@@ -122,6 +122,10 @@ pub(crate) fn equilibrium_state_on(
 /// Traces F̂(d̂), â and b̂ along an impact at Tabor parameter Λ that reaches the
 /// maximum depth `max_depth` (d̂ ≥ −1/Λ), with `points` points on each of the
 /// loading and unloading stages (≥ 2).
+///
+/// Seed 000 section 5.3.2: approach without force to d̂ = −1/Λ (5.40), jump-in onto
+/// the equilibrium branch ((5.41) without contact), loading and unloading along it,
+/// snap-off at its minimum depth; the enclosed area is the loss (5.43).
 pub fn trace_impact(lambda: f64, max_depth: f64, points: usize) -> Result<Vec<TracePoint>> {
     let lambda = check_lambda(lambda)?;
     let max_depth = validate::finite("max_depth", max_depth)?;

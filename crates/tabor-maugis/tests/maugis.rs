@@ -20,17 +20,26 @@ use tabor_restitution::{impact, sticking_velocity, ImpactModel, StickingMethod};
 
 /// W(Λ)/W_JKR from `tests/reference/md_reference.py`: mpmath at 30-40 digits, the
 /// contact branch parametrized by â (not θ), b̂ by bisection of the gap condition
-/// with arccos, dd̂/dâ by numerical differentiation, tanh-sinh quadrature.
-const REFERENCE: [(f64, f64); 9] = [
+/// with arccos (at 30 + 2 log10 Λ digits, so arccos near 1 costs nothing there),
+/// dd̂/dâ by numerical differentiation, tanh-sinh quadrature. Covers every case and
+/// the whole accuracy range Λ ∈ [1e-3, 1e4] of the direct evaluation.
+const REFERENCE: [(f64, f64); 16] = [
     (0.01, 5.959_487_568_159_266_2e-10),
     (0.3, 0.014_481_554_790_627_017),
     (0.45, 0.109_969_173_715_353_83),
     (0.5, 0.174_004_152_683_569_64),
+    (0.55, 0.236_545_169_834_087_40),
     (0.6, 0.295_696_926_668_501_26),
     (0.64, 0.341_278_877_683_137_26),
     (0.65, 0.352_449_037_394_422_71),
     (0.7, 0.402_186_968_573_521_4),
     (1.0, 0.583_728_265_550_754_22),
+    (2.0, 0.785_906_781_316_458_88),
+    (4.0, 0.889_801_363_884_569_87),
+    (10.0, 0.954_987_251_621_391_89),
+    (100.0, 0.995_438_807_056_853_74),
+    (1e3, 0.999_543_272_426_684_67),
+    (1e4, 0.999_954_321_153_915_64),
 ];
 
 #[test]
@@ -139,12 +148,27 @@ fn continuous_at_the_case_boundaries() {
 fn jkr_limit_and_its_asymptote() {
     // W/W_JKR → 1 as 1 − c/Λ + O(Λ⁻²)
     let c = |lambda: f64| lambda * (1.0 - normalized_loss(lambda, 1e-14).unwrap().loss_over_jkr);
-    let (c3, c4, c5) = (c(1e3), c(1e4), c(1e5));
-    assert!((c4 - c3) > 0.0 && (c5 - c4) > 0.0);
+    let (c2, c3, c4, c5) = (c(1e2), c(1e3), c(1e4), c(1e5));
+    assert!((c3 - c2) > 0.0 && (c4 - c3) > 0.0 && (c5 - c4) > 0.0);
     // the O(Λ⁻²) term makes c(Λ) converge by a factor 10 per decade
-    let ratio = (c4 - c3) / (c5 - c4);
-    assert!((ratio - 10.0).abs() < 0.5, "ratio {ratio}");
-    assert_relative_eq!(c5, 0.456_795, max_relative = 1e-5);
+    for ratio in [(c3 - c2) / (c4 - c3), (c4 - c3) / (c5 - c4)] {
+        assert!((ratio - 10.0).abs() < 0.5, "ratio {ratio}");
+    }
+    // c(Λ) against the mpmath reference (1 − W/W_JKR there is known to ~1e-20, here
+    // to ~Λ·1e-16), and the limit c(∞) by Richardson extrapolation of the reference
+    // values at 1e3 and 1e4: c(∞) = c4 + (c4 − c3)/9 = 0.456795226…
+    let reference_c = |lambda: f64| {
+        let r = REFERENCE.iter().find(|(l, _)| *l == lambda).unwrap().1;
+        lambda * (1.0 - r)
+    };
+    for (lambda, value) in [(1e2, c2), (1e3, c3), (1e4, c4)] {
+        assert_relative_eq!(value, reference_c(lambda), max_relative = 1e-11);
+    }
+    // (its own error is the O(Λ⁻³) term: ~7e-9, from the same extrapolation of 1e2
+    // and 1e3, which is 6.6e-8 lower)
+    let c_limit = reference_c(1e4) + (reference_c(1e4) - reference_c(1e3)) / 9.0;
+    assert_relative_eq!(c_limit, 0.456_795_226, max_relative = 1e-9);
+    assert_relative_eq!(c5 + (c5 - c4) / 9.0, c_limit, max_relative = 1e-7);
     // the branch itself tends to JKR: F̂ = â³ − 2â^(3/2), d̂ = 3â² − 4â^(1/2)
     let lambda = 1e7;
     for theta in [1e-8, 3e-8, 1e-7] {
@@ -191,6 +215,37 @@ fn hard_regions_stay_finite_and_accurate() {
         17.0 * 2f64.powi(19) * 1e-15 / (81.0 * PI.powi(8)),
         max_relative = 1e-14
     );
+}
+
+#[test]
+fn beyond_the_quadrature_range_the_jkr_limit_is_exact_to_rounding() {
+    // from LAMBDA_JKR_LIMIT on the loss is W_JKR: continuous there (the direct
+    // evaluation just below agrees to its rounding), below or at 1 up to f64::MAX
+    // (the θ-branch alone gave ratios of 1 + 1.3e-15 and, from Λ ≈ 1e77, an error)
+    let just_below = normalized_loss(LAMBDA_JKR_LIMIT * (1.0 - 1e-12), 1e-12).unwrap();
+    assert!(just_below.method.contains("quadrature"), "{just_below:?}");
+    assert!(
+        (just_below.loss_over_jkr - 1.0).abs() <= 2e-15,
+        "{just_below:?}"
+    );
+    for lambda in [LAMBDA_JKR_LIMIT, 1e20, 1e77, 1e154, 1e300, f64::MAX] {
+        let w = normalized_loss(lambda, 1e-12).unwrap();
+        assert_eq!(w.case, TaborCase::Contact);
+        assert_eq!(w.loss_over_jkr, 1.0, "Λ = {lambda:e}");
+        assert_eq!(w.loss, jkr_normalized_loss());
+        // the neglected 0.4568/Λ
+        assert!(w.error_estimate >= 0.4568 / lambda * w.loss, "{w:?}");
+        let fast = loss_over_jkr_fast(lambda).unwrap();
+        assert!(fast <= 1.0 && 1.0 - fast <= 1e-15, "Λ = {lambda:e}: {fast}");
+    }
+    for lambda in [1e5, 1e8, 1e12, 1e15] {
+        let fast = loss_over_jkr_fast(lambda).unwrap();
+        // 1 − c/Λ + O(Λ⁻²), c(∞) = 0.456795226 (jkr_limit_and_its_asymptote)
+        let expected = 1.0 - 0.456_795_226 / lambda;
+        assert!(fast < 1.0 || lambda >= 1e15, "Λ = {lambda:e}: {fast}");
+        let bound = 1.0 / (lambda * lambda) + 1e-15;
+        assert!((fast - expected).abs() <= bound, "Λ = {lambda:e}: {fast}");
+    }
 }
 
 #[test]

@@ -21,7 +21,7 @@ pub struct Args {
     /// End of a range of Λ
     #[arg(long, allow_negative_numbers = true, requires = "from")]
     to: Option<f64>,
-    /// Number of points of the range (≥ 2)
+    /// Number of points of the range (2 to 1e7)
     #[arg(long, requires = "from")]
     points: Option<usize>,
     /// Space the range logarithmically
@@ -38,6 +38,9 @@ pub struct Args {
     json: bool,
 }
 
+/// Most points of a range (bounds the table's memory and time).
+const MAX_POINTS: usize = 10_000_000;
+
 #[derive(Serialize)]
 struct Row {
     lambda: f64,
@@ -51,8 +54,10 @@ struct Row {
 fn lambdas(args: &Args) -> Result<Vec<f64>, String> {
     let mut out = args.lambdas.clone();
     if let (Some(from), Some(to), Some(points)) = (args.from, args.to, args.points) {
-        if points < 2 {
-            return Err(format!("invalid points = {points}: must be at least 2"));
+        if !(2..=MAX_POINTS).contains(&points) {
+            return Err(format!(
+                "invalid points = {points}: must be at least 2 and at most {MAX_POINTS}"
+            ));
         }
         if args.log && !(from > 0.0 && to > 0.0) {
             return Err(format!(

@@ -8,7 +8,7 @@ tanh-sinh quadrature, all at 40 significant digits.
 
 Run: python3 md_reference.py   (needs mpmath)
 """
-from mpmath import mp, mpf, pi, sqrt, acos, cbrt, quad, findroot, diff
+from mpmath import mp, mpf, pi, sqrt, acos, cbrt, quad, diff
 
 mp.dps = 40
 
@@ -28,12 +28,27 @@ def cohesive(L, a):
     while gap(L, a, hi) < 0:
         hi *= 2
     # bisection to full precision (robust, independent of Brent/Newton)
-    for _ in range(200):
+    for _ in range(int(mp.prec) + 20):
         mid = (lo + hi) / 2
         if gap(L, a, mid) > 0:
             hi = mid
         else:
             lo = mid
+    return (lo + hi) / 2
+
+
+def bisect(f, lo, hi):
+    """The sign change of f in [lo, hi] by bisection to the working precision
+    (findroot's secant-type solvers stall on the noise of the numerical dd̂/dâ at
+    large Λ)."""
+    flo = f(lo)
+    for _ in range(int(mp.prec) + 10):
+        mid = (lo + hi) / 2
+        fm = f(mid)
+        if (fm > 0) == (flo > 0):
+            lo, flo = mid, fm
+        else:
+            hi = mid
     return (lo + hi) / 2
 
 
@@ -53,7 +68,8 @@ def loss_over_jkr(L):
     bc = 32 * L / (3 * pi**2)
     if L <= L1:
         return 17 * L * bc**4 / 2 / W_JKR
-    mp.dps = 30
+    # 30 digits, plus the digits arccos loses near 1 at large Λ (1 − â/b̂ ~ Λ⁻²)
+    mp.dps = 30 + int(2 * max(0, mp.log10(L)))
     dd = lambda a: diff(lambda x: depth(L, x), a)
     # contact branch: a from a_in (depth = -1/L) down to a_end
     if L <= L2:
@@ -63,11 +79,11 @@ def loss_over_jkr(L):
         grid = [mpf(k) / 400 * 3 for k in range(1, 401)]
         vals = [dd(a) for a in grid]
         k = next(i for i in range(len(grid) - 1) if vals[i] < 0 < vals[i + 1])
-        a_end = findroot(dd, (grid[k], grid[k + 1]), solver="anderson")
+        a_end = bisect(dd, grid[k], grid[k + 1])
     grid = [a_end + mpf(k) / 100 * 4 for k in range(1, 101)]
     vals = [depth(L, a) + 1 / L for a in grid]
     k = next(i for i in range(len(grid) - 1) if vals[i] < 0 < vals[i + 1])
-    a_in = findroot(lambda a: depth(L, a) + 1 / L, (grid[k], grid[k + 1]), solver="anderson")
+    a_in = bisect(lambda a: depth(L, a) + 1 / L, grid[k], grid[k + 1])
     # the impact runs from jump-in (a_in) to pull-off (a_end): d decreases
     w = -quad(lambda a: force(L, a) * dd(a), [a_end, a_in])
     if L <= L2:
@@ -78,5 +94,5 @@ def loss_over_jkr(L):
 
 
 if __name__ == "__main__":
-    for L in ["0.01", "0.3", "0.45", "0.5", "0.6", "0.64", "0.65", "0.7", "1", "2", "4", "10", "100", "1000"]:
+    for L in ["0.01", "0.3", "0.45", "0.5", "0.6", "0.64", "0.65", "0.7", "1", "2", "4", "10", "100", "1000", "10000"]:
         print(L, mp.nstr(loss_over_jkr(L), 20), flush=True)
