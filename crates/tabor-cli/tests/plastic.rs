@@ -73,6 +73,42 @@ fn thornton_matches_the_published_restitution() {
 }
 
 #[test]
+fn adhesive_interpolation_wires_phi_and_the_sticking_velocity() {
+    // Phi from the material data is κ (Δγ E*²/(σ_Y³ R))^(1/3), κ = 0.81447 (spec,
+    // calibrated by (5.126)); giving that Phi through --adhesion-parameter reproduces
+    // the same impact (1e-12) and warns that --yield-stress is not used. The adhesive
+    // sticking velocity is never below the elastic JKR one (5.38).
+    let (e, r, s, dg) = (1.413e11_f64, 2.5e-3_f64, 1.03e9_f64, 0.5_f64);
+    let phi = 0.814_472_068_9 * (dg * e * e / (s * s * s * r)).cbrt();
+    let from_data = json("adhesive-interpolation", &["--work-of-adhesion", "0.5"]);
+    let got = from_data["adhesion_parameter"].as_f64().unwrap();
+    assert!(((got - phi) / phi).abs() < 1e-9, "{got} vs {phi}");
+    assert!(
+        from_data["sticking_velocity"].as_f64().unwrap()
+            >= from_data["elastic_sticking_velocity"].as_f64().unwrap() * (1.0 - 1e-9)
+    );
+    let phi_text = format!("{got:e}");
+    let direct = json(
+        "adhesive-interpolation",
+        &[
+            "--work-of-adhesion",
+            "0.5",
+            "--adhesion-parameter",
+            phi_text.as_str(),
+        ],
+    );
+    let (a, b) = (
+        from_data["restitution"].as_f64().unwrap(),
+        direct["restitution"].as_f64().unwrap(),
+    );
+    assert!((a - b).abs() < 1e-12, "{a} vs {b}");
+    let warned = direct["warnings"].as_array().unwrap();
+    assert!(warned
+        .iter()
+        .any(|w| w.as_str().unwrap().contains("--yield-stress")));
+}
+
+#[test]
 fn seed_001_clamping_is_reported() {
     // Just above its yield velocity the fit exceeds 1 for this material.
     let v = json("dimensionless-fit", &["--density", "3958.226"]);

@@ -53,6 +53,43 @@ fn loading_beyond_the_plastic_onset_follows_the_fully_plastic_law() {
 }
 
 #[test]
+fn max_depth_solves_eq_5_107_as_printed() {
+    // Seed 000 (5.107) written out: s² = 1 + (5/2)X + (15/8)X² + (5C₂/6)X³ + (5C₃/8)X⁴,
+    // X = x − 1, with C₂, C₃ from the Hermite end conditions written out here
+    // (F/F_Y = Q D and slope Q at x = D), not taken from the library. Checks the
+    // library's coefficients (and the README's C₂ = 0.090530, C₃ = −5.7703e−4 for
+    // Q = 5, D = 80) and that d_max solves the printed quartic (1e-12 relative).
+    for &(q, d) in &[(5.0, 80.0), (4.0, 30.0), (6.0, 100.0)] {
+        let l: f64 = d - 1.0;
+        let c2 = (3.0 * (q * d - 1.0) - (3.0 + q) * l) / (l * l);
+        let c3 = (2.0 * (1.0 - q * d) + (1.5 + q) * l) / (l * l * l);
+        let law = Interpolation::new(q, d).unwrap();
+        let (lc2, lc3) = law.force_coefficients();
+        assert!((lc2 - c2).abs() < 1e-14 * c2.abs() && (lc3 - c3).abs() < 1e-14 * c3.abs());
+        if (q, d) == (5.0, 80.0) {
+            assert!((c2 - 0.090530).abs() < 5e-7 && (c3 + 5.7703e-4).abs() < 5e-9);
+        }
+        let printed = |x: f64| {
+            let t = x - 1.0;
+            1.0 + 2.5 * t + 1.875 * t * t + 5.0 * c2 / 6.0 * t.powi(3) + 0.625 * c3 * t.powi(4)
+        };
+        // Speeds inside the elasto-plastic range (x_max between 1 and D).
+        let s_onset = printed(d).sqrt();
+        for &f in &[1e-3, 0.05, 0.3, 0.7, 0.999] {
+            let s = 1.0 + f * (s_onset - 1.0);
+            let x = law.max_depth_ratio(s).unwrap();
+            assert!(x > 1.0 && x < d);
+            assert!(
+                (printed(x) / (s * s) - 1.0).abs() < 1e-12,
+                "Q {q} D {d} s {s}: {} vs {}",
+                printed(x),
+                s * s
+            );
+        }
+    }
+}
+
+#[test]
 fn interpolation_loses_less_than_thornton() {
     // Seed 000, Fig. 5.17: Thornton predicts clearly smaller restitution.
     let law = Interpolation::default();

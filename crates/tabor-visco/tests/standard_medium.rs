@@ -103,12 +103,20 @@ fn equivalent_kelvin_voigt_error_table() {
 #[test]
 fn standard_sphere_tends_to_rigorous_kelvin_voigt() {
     // β → 0 on the MDR grid (200 elements) against the continuous rigorous model:
-    // tolerance 2e-3 (MDR discretization ~1e-4 plus O(β δ)).
+    // tolerance 5e-4 (observed 2.7e-5, 1.0e-4, 1.7e-4: MDR discretization plus O(β δ)).
     for &d in &[0.1, 0.3, 1.0] {
         let rig = kelvin_voigt_sphere::restitution(d, SphereModel::Rigorous).unwrap();
+        let kk = kelvin_voigt_sphere::restitution(d, SphereModel::KuwabaraKono).unwrap();
         let e = standard_sphere::restitution(1e-3, d).unwrap();
-        println!("δ {d}: standard (β=1e-3) {e:.6}, rigorous KV {rig:.6}");
-        assert!((e - rig).abs() < 2e-3, "δ {d}: {e} vs {rig}");
+        println!("δ {d}: standard (β=1e-3) {e:.6}, rigorous KV {rig:.6}, Kuwabara-Kono {kk:.6}");
+        assert!((e - rig).abs() < 5e-4, "δ {d}: {e} vs {rig}");
+        // The MDR (elements leave contact where their line load vanishes, (5.89)) is
+        // an independent path to the rigorous restitution law a² = R(d + τḋ): it must
+        // single it out, not Kuwabara-Kono (gap 9e-3 ... 2.5e-2 here).
+        assert!(
+            (e - kk).abs() > 10.0 * (e - rig).abs(),
+            "δ {d}: {e}, KK {kk}"
+        );
     }
 }
 
@@ -154,10 +162,15 @@ fn compressible_tends_to_incompressible() {
 
 #[test]
 fn incompressible_limit_has_the_smallest_restitution() {
-    // Seed, Fig. 5.16: ε is smallest in the incompressible limit. Prints the largest
-    // relative difference for ν = 0.3 (the seed: about 10 %).
-    let mut worst: f64 = 0.0;
-    for &d1 in &[0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0] {
+    // Seed, Fig. 5.16: ε is smallest in the incompressible limit; "am stärksten ist der
+    // Einfluss im Bereich mittlerer Dämpfungen, wo die relative Differenz zwischen der
+    // Lösung für ν = 0,3 und dem inkompressiblen Grenzfall etwa 10 % beträgt". Read
+    // as a difference in ε of about 0.1 (10 % of the scale of ε), it holds: the
+    // difference ε(0.3) − ε(1/2) peaks at medium damping (D1 ≈ 0.3) at ≈ 0.10.
+    // Read as a ratio (ε − ε_inc)/ε it does not: that grows with D1 (printed).
+    let mut worst_ratio: f64 = 0.0;
+    let (mut peak, mut peak_d1) = (0.0_f64, 0.0);
+    for &d1 in &[0.01, 0.03, 0.1, 0.2, 0.3, 0.5, 1.0, 3.0, 10.0] {
         let inc = kelvin_voigt_flat::restitution(d1).unwrap();
         for &nu in &[0.0, 0.2, 0.3, 0.4, 0.45] {
             let d2 = compressible_flat::bulk_damping_ratio_equal_viscosities(nu, d1).unwrap();
@@ -166,11 +179,20 @@ fn incompressible_limit_has_the_smallest_restitution() {
             if nu == 0.3 {
                 let rel = (e - inc) / e;
                 println!(
-                    "D1 {d1}: ν = 0.3 {e:.5}, incompressible {inc:.5}, (e − e_inc)/e = {rel:.3}"
+                    "D1 {d1}: ν = 0.3 {e:.5}, incompressible {inc:.5}, difference {:.4}, \
+                     (e − e_inc)/e = {rel:.3}",
+                    e - inc
                 );
-                worst = worst.max(rel);
+                worst_ratio = worst_ratio.max(rel);
+                if e - inc > peak {
+                    (peak, peak_d1) = (e - inc, d1);
+                }
             }
         }
     }
-    println!("largest relative difference at ν = 0.3: {worst:.3}");
+    println!(
+        "ν = 0.3: largest difference {peak:.4} at D1 = {peak_d1}; largest ratio {worst_ratio:.3}"
+    );
+    assert!((0.1..=1.0).contains(&peak_d1), "peak at D1 = {peak_d1}");
+    assert!((peak - 0.1).abs() < 0.02, "peak difference {peak}");
 }

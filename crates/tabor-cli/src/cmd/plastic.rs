@@ -287,6 +287,13 @@ pub fn run(args: &Args) -> Result<(), String> {
                     ),
                 }
                 .map_err(message)?;
+                if args.adhesion_parameter.is_some() {
+                    warnings.push(
+                        "adhesion parameter Phi given directly: --yield-stress is checked but \
+                         not used (the model depends on v0/v_c and Phi only)"
+                            .to_string(),
+                    );
+                }
                 phi = Some(m.model().adhesion_parameter());
                 elastic_sticking = Some(m.elastic_sticking_velocity());
                 if m.yield_velocity() == 0.0 {
