@@ -140,3 +140,58 @@ fn small_lambda_needs_a_tighter_tolerance() {
         sim.restitution
     );
 }
+
+#[test]
+fn penalty_bridge_reproduces_plastic_and_viscoelastic_restitution() {
+    // Issue 11's bridge for the non-adhesive models: the calibrated Hunt-Crossley
+    // form with the Hertz stiffness of the same bodies, and seed 002's
+    // characteristic, rebound in a simulated impact with the model's restitution
+    // at the calibration speed (1e-6; the first integrals are exact).
+    use tabor::penalty::{calibrate_characteristic, calibrate_damped_law, PenaltyStiffness};
+    use tabor::plastic::{Interpolation, PlasticContact, PlasticImpact, Thornton};
+    use tabor::visco::models::KelvinVoigtSphere;
+    use tabor::visco::SphereModel;
+
+    let check = |model: &dyn ImpactModel, v0: f64, e: f64, r: f64| {
+        let target = impact(model, v0).unwrap().restitution;
+        assert!(target > 0.0 && target < 1.0, "{}: {target}", model.name());
+        let hertz = PenaltyStiffness::hertz(e, r).unwrap();
+        let c = calibrate_damped_law(model, v0, hertz, &settings()).unwrap();
+        assert!(
+            (c.achieved_restitution - target).abs() < 1e-6,
+            "{}: {} vs {target}",
+            model.name(),
+            c.achieved_restitution
+        );
+        let c = calibrate_characteristic(model, v0, 1e6, 1e-9, &settings()).unwrap();
+        assert!(
+            (c.achieved_restitution - target).abs() < 1e-6,
+            "{}: {} vs {target}",
+            model.name(),
+            c.achieved_restitution
+        );
+    };
+    // alumina on steel (seed 000 Table 5.2)
+    let (e, r, m) = (1.4e11, 2.5e-3, 2.5e-4);
+    let contact = PlasticContact::new(e, r, 1.03e9).unwrap();
+    for v0 in [0.5, 3.0] {
+        check(&PlasticImpact::new(contact, Thornton, m).unwrap(), v0, e, r);
+        check(
+            &PlasticImpact::new(contact, Interpolation::default(), m).unwrap(),
+            v0,
+            e,
+            r,
+        );
+    }
+    // steel ball on a Kelvin-Voigt rubber half-space
+    let (e, r) = (2e7, 5e-3);
+    let visco = KelvinVoigtSphere::new(
+        e / 4.0,
+        50.0,
+        r,
+        sphere_mass(r, 7850.0),
+        SphereModel::Rigorous,
+    )
+    .unwrap();
+    check(&visco, 1.0, e, r);
+}

@@ -481,6 +481,12 @@ fn regression_plastic_penalty_scene_elastic_extremes() {
     assert_eq!(s[2], 1.0);
     let s = tabor::scene::spaced(-f64::MAX, f64::MAX, 3, false).unwrap();
     assert!(s.iter().all(|v| v.is_finite()), "{s:?}");
+    // from · (to/from) rounded up to inf when `to` is near f64::MAX (full fuzzing run)
+    let s = tabor::scene::spaced(1059961537625579.4, f64::MAX, 2, true).unwrap();
+    assert_eq!(s, vec![1059961537625579.4, f64::MAX]);
+    let s = tabor::scene::spaced(1e-300, f64::MAX, 7, true).unwrap();
+    assert!(s.iter().all(|v| v.is_finite()), "{s:?}");
+    assert!(s.windows(2).all(|w| w[0] < w[1]), "{s:?}");
     let c = tabor::elastic::ElasticContact::hertz(3.4e-91, 8e263).unwrap();
     let a = c.contact_radius(1.5e73);
     // a = √(2R·d/β)... for Hertz a = √(R d): finite and within rounding of it

@@ -5,7 +5,7 @@ use crate::scene::{AdhesionRange, AdhesivePlasticity, PlasticityModel, Scene, Sc
 use serde::Serialize;
 use tabor_dynamics::{simulate_impact, ForceLaw, ImpactSimulation, SimulationSettings};
 use tabor_elastic::ElasticContact;
-use tabor_jkr::{GradedSphere, JkrForceLaw, JkrImpact, JkrSphere};
+use tabor_jkr::{GradedSphere, JkrForceLaw, JkrImpact, JkrSphere, SeparationRule};
 use tabor_maugis::{normalized_loss, MaugisDugdaleForceLaw, MaugisDugdaleImpact, LAMBDA_1};
 use tabor_numerics::Cost;
 use tabor_plastic::{
@@ -30,7 +30,9 @@ pub struct Effect {
     pub reason: String,
     /// The model computing it (when used).
     pub model: Option<String>,
-    /// Its energy loss on its own at the impact speed (J), when computed.
+    /// Its energy loss on its own at the impact speed (J), when computed: the
+    /// model's loss, at most the kinetic energy (an effect that alone would make
+    /// the bodies stick takes all of it).
     pub energy_loss: Option<f64>,
 }
 
@@ -232,17 +234,27 @@ fn build_models(scene: &Scene) -> Result<Models, SceneError> {
                     )
                 } else {
                     let w = normalized_loss(lambda, acc).map_err(err)?;
-                    let difference = 1.0 - w.loss_over_jkr;
+                    // relative to the fixed-grip JKR loss, the Λ → ∞ limit of the
+                    // Maugis-Dugdale loss (seed 000 Fig. 5.2)
+                    let difference = (1.0 - w.loss_over_jkr).abs();
                     if difference < acc {
+                        // The substitute must be that limit: the fixed-grip rule, whatever
+                        // `separation` says (the Maugis-Dugdale path has its own snap-off;
+                        // the load-controlled JKR loss is about half of it).
                         let s = JkrSphere::new(e, r, a.work_of_adhesion).map_err(err)?;
                         let model = JkrImpact::new(s, m)
                             .map_err(err)?
-                            .with_separation(a.separation)
+                            .with_separation(SeparationRule::FixedGrip)
                             .with_tolerance(acc)
                             .map_err(err)?;
+                        let rule_note = if a.separation == SeparationRule::FixedGrip {
+                            ""
+                        } else {
+                            " (fixed grip, the Maugis-Dugdale limit; the separation rule applies only without a range)"
+                        };
                         (
                             Adhesive::Jkr(model),
-                            format!("JKR closed form: the Maugis-Dugdale loss at Lambda = {lambda:.4e} differs from JKR by {difference:.2e} < accuracy {acc:.1e}"),
+                            format!("JKR closed form{rule_note}: the Maugis-Dugdale loss at Lambda = {lambda:.4e} differs from JKR by {difference:.2e} < accuracy {acc:.1e}"),
                         )
                     } else {
                         (
@@ -399,7 +411,7 @@ fn select<'a>(
                             Some(loss),
                         )
                     } else {
-                        (true, why.clone(), Some(loss))
+                        (true, why.clone(), Some(loss.min(k)))
                     }
                 }
                 _ => (true, why.clone(), None),
@@ -446,7 +458,7 @@ fn select<'a>(
                         "impact speed {v:.4e} m/s exceeds the {} {:.4e} m/s",
                         onset.1, onset.0
                     ),
-                    Some(loss_at(p, v)?),
+                    Some(loss_at(p, v)?.min(0.5 * scene.effective_mass * v * v)),
                 ),
                 None => (
                     true,
@@ -486,7 +498,7 @@ fn select<'a>(
                         (
                             true,
                             "viscosity given and its loss matters at the requested accuracy".into(),
-                            Some(loss),
+                            Some(loss.min(k)),
                         )
                     }
                 }
@@ -709,16 +721,12 @@ impl Scene {
                         .map_err(err)?,
                 }),
                 LawChoice::Adhesive => match &models.adhesive {
-                    Some((Adhesive::Jkr(_), _)) | None => {
-                        let a = self.adhesion.as_ref().ok_or_else(|| no_law("this scene"))?;
-                        let s = JkrSphere::new(
-                            self.effective_modulus,
-                            self.effective_radius,
-                            a.work_of_adhesion,
-                        )
-                        .map_err(err)?;
-                        Box::new(JkrForceLaw::new(s, a.separation))
+                    // the rule of the selected model (fixed grip when it stands in
+                    // for Maugis-Dugdale)
+                    Some((Adhesive::Jkr(j), _)) => {
+                        Box::new(JkrForceLaw::new(*j.contact(), j.separation()))
                     }
+                    None => return Err(no_law("this scene")),
                     Some((Adhesive::Maugis(md), _)) => {
                         Box::new(MaugisDugdaleForceLaw::new(md).map_err(err)?)
                     }

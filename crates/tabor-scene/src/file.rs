@@ -75,6 +75,9 @@ pub struct AdhesionFile {
     pub tabor_parameter: Option<f64>,
     /// Maugis' λ.
     pub maugis_parameter: Option<f64>,
+    /// Tabor's μ = (R Δγ²/(E*² z0³))^(1/3), converted to Λ through the Dugdale
+    /// equivalence λ ≈ 1.1570 μ (an approximation).
+    pub tabor_mu: Option<f64>,
     /// JKR separation rule: "fixed-grip" (default) or "load-controlled".
     pub separation: Option<String>,
 }

@@ -16,8 +16,9 @@
 //!
 //! Effect selection (seed 000 chapter 5 and the issue that specified it):
 //! adhesion is used when a work of adhesion is given and its loss is at least the
-//! requested accuracy times the kinetic energy; the JKR closed form is used when the
-//! Maugis-Dugdale loss differs from it by less than the accuracy, the case-1 closed
+//! requested accuracy times the kinetic energy; the JKR closed form (fixed grip, the
+//! Λ → ∞ limit of Maugis-Dugdale, whatever the scene's separation rule) is used when
+//! the Maugis-Dugdale loss differs from it by less than the accuracy, the case-1 closed
 //! form when Λ ≤ Λ1, the numerical Maugis-Dugdale solution otherwise. Plasticity is
 //! used when a yield stress is given and the impact exceeds the yield onset
 //! (adhesive or not); with adhesion it is the adhesive interpolation model

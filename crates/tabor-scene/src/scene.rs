@@ -11,6 +11,7 @@ use std::path::Path;
 use tabor_jkr::SeparationRule;
 use tabor_maugis::units::{
     tabor_parameter_from_cohesive_stress, tabor_parameter_from_maugis, tabor_parameter_from_range,
+    tabor_parameter_from_tabor_mu,
 };
 use tabor_restitution::effective::{
     effective_modulus, effective_radius, reduced_mass, sphere_mass,
@@ -124,7 +125,7 @@ pub enum AdhesionRange {
 pub struct Adhesion {
     /// Work of adhesion Δγ (J/m²), ≥ 0.
     pub work_of_adhesion: f64,
-    /// The Tabor parameter, when a range, cohesive stress, Λ or λ was given.
+    /// The Tabor parameter, when a range, cohesive stress, Λ, λ or μ was given.
     pub range: AdhesionRange,
     /// The JKR separation rule.
     pub separation: SeparationRule,
@@ -427,6 +428,7 @@ fn adhesion(a: &AdhesionFile, e: f64, r: f64) -> Result<Adhesion, SceneError> {
         a.cohesive_stress.is_some(),
         a.tabor_parameter.is_some(),
         a.maugis_parameter.is_some(),
+        a.tabor_mu.is_some(),
     ]
     .iter()
     .filter(|x| **x)
@@ -434,7 +436,7 @@ fn adhesion(a: &AdhesionFile, e: f64, r: f64) -> Result<Adhesion, SceneError> {
     if given > 1 {
         return Err(SceneError::field(
             "adhesion",
-            "give at most one of range, cohesive_stress, tabor_parameter, maugis_parameter",
+            "give at most one of range, cohesive_stress, tabor_parameter, maugis_parameter, tabor_mu",
         ));
     }
     let range = if w == 0.0 || given == 0 {
@@ -456,6 +458,10 @@ fn adhesion(a: &AdhesionFile, e: f64, r: f64) -> Result<Adhesion, SceneError> {
     } else if let Some(l) = a.maugis_parameter {
         AdhesionRange::TaborParameter(
             tabor_parameter_from_maugis(l).map_err(in_field("adhesion", "maugis_parameter"))?,
+        )
+    } else if let Some(mu) = a.tabor_mu {
+        AdhesionRange::TaborParameter(
+            tabor_parameter_from_tabor_mu(mu).map_err(in_field("adhesion", "tabor_mu"))?,
         )
     } else {
         AdhesionRange::Jkr

@@ -69,6 +69,7 @@ impl Scene {
                 a.range = None;
                 a.cohesive_stress = None;
                 a.maugis_parameter = None;
+                a.tabor_mu = None;
                 a.tabor_parameter = Some(value);
             }
             SweepParameter::YieldStress => data.target.yield_stress = Some(value),
@@ -111,11 +112,18 @@ pub fn spaced(from: f64, to: f64, points: usize, log: bool) -> Result<Vec<f64>, 
             format!("invalid range {from}:{to}:{points} (need finite ends, >= 2 points, positive ends with --log)"),
         ));
     }
+    let (lo, hi) = (from.min(to), from.max(to));
     Ok((0..points)
         .map(|i| {
+            if i == 0 {
+                return from;
+            }
+            if i == points - 1 {
+                return to;
+            }
             let f = i as f64 / (points - 1) as f64;
             // fallbacks for ends so far apart that to/from or to − from overflows
-            if log {
+            let x = if log {
                 let ratio = to / from;
                 if ratio.is_finite() && ratio > 0.0 {
                     from * ratio.powf(f)
@@ -129,7 +137,9 @@ pub fn spaced(from: f64, to: f64, points: usize, log: bool) -> Result<Vec<f64>, 
                 } else {
                     from * (1.0 - f) + to * f
                 }
-            }
+            };
+            // rounding must not step outside the range (to near f64::MAX gave inf)
+            x.clamp(lo, hi)
         })
         .collect())
 }
