@@ -106,7 +106,9 @@ pub struct ImpactSimulation {
     pub impact_speed: f64,
     /// Rebound speed −ḋ at separation (m/s); 0 when the bodies stick.
     pub rebound_speed: f64,
-    /// Coefficient of restitution, rebound speed / v0.
+    /// Coefficient of restitution, rebound speed / v0. Not clamped: for a lossless
+    /// (elastic) impact it may exceed 1 by the integration error, which
+    /// is of the order of [`ImpactSimulation::energy_error`].
     pub restitution: f64,
     /// True when the bodies stay together.
     pub sticks: bool,
