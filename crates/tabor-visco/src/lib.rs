@@ -12,8 +12,8 @@
 //! | [`kelvin_voigt_sphere`] | Kelvin-Voigt, sphere (5.64)-(5.71) | δ | Kuwabara-Kono and rigorous (MDR), first order (5.71) |
 //! | [`damping_law`] | generalized damping (5.72)-(5.73) | β, γ | Lee-Herrmann, Tsuji, Hunt-Crossley |
 //! | [`standard_flat`] | standard medium, flat punch (5.76)-(5.83) | β, δ | exact ODE; equivalent Kelvin-Voigt (5.83) |
-//! | [`standard_sphere`] | standard medium, sphere (5.84)-(5.90) | β, δ | MDR with internal variables (5.88)-(5.89) |
-//! | [`kelvin_maxwell_sphere`] | Kelvin-Maxwell, sphere (5.91)-(5.92) | β, δ | MDR |
+//! | [`standard_sphere`] | standard medium, sphere (5.84)-(5.90) | β, δ | MDR with internal variables (5.88)-(5.89), continuum limit |
+//! | [`kelvin_maxwell_sphere`] | Kelvin-Maxwell, sphere (5.91)-(5.92) | β, δ | MDR, continuum limit |
 //! | [`compressible_flat`] | compressible Kelvin-Voigt, flat punch (5.93)-(5.100) | ν, D1, D2 | ODE |
 //!
 //! Integrations use `tabor_numerics::ode` (Dormand-Prince 5(4), events located on
@@ -33,5 +33,4 @@ pub mod standard_flat;
 pub mod standard_sphere;
 
 pub use kelvin_voigt_sphere::SphereModel;
-pub use mdr::ELEMENTS as MDR_ELEMENTS;
 pub use scaled::{ScaledImpact, ScaledPoint};

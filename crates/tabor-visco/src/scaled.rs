@@ -71,10 +71,15 @@ pub(crate) struct PhaseEnd<const N: usize> {
     pub cost: Cost,
 }
 
+/// Dense-output points per accepted step that [`run_phase`] records, equidistant
+/// in the step (the last at its end).
+pub(crate) const SAMPLES_PER_STEP: usize = 4;
+
 /// Integrates `y' = f(t, y)` from `(t0, y0)` until the event function `g` crosses
 /// zero in `direction` (located on the dense output), at the latest at `t_max`
-/// (then an error: the phase did not end). With `record`, every accepted step adds
-/// `samples_per_step` dense-output points.
+/// (then an error: the phase did not end). With `record`, the start and then, for
+/// every accepted step (the last one cut at the event), [`SAMPLES_PER_STEP`]
+/// dense-output points.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn run_phase<F, G, const N: usize>(
     f: &mut F,
@@ -90,7 +95,6 @@ where
     F: FnMut(f64, &[f64; N]) -> [f64; N],
     G: FnMut(f64, &[f64; N]) -> f64,
 {
-    const SAMPLES_PER_STEP: usize = 4;
     let mut stepper = DormandPrince::new(f, t0, y0, t_max, tol)?;
     let mut g_prev = g(t0, &y0);
     if let Some(rec) = record.as_deref_mut() {

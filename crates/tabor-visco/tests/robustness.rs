@@ -81,9 +81,35 @@ proptest! {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 16, ..ProptestConfig::default() })]
     #[test]
-    fn mdr_models_never_panic(a in any(), b in any()) {
+    fn mdr_models_never_panic(a in any(), b in any(), t in any()) {
         check_eps(standard_sphere::restitution(a, b));
         check_eps(kelvin_maxwell_sphere::restitution(a, b));
+        check_eps(standard_sphere::solve(a, b, t).map(|s| s.restitution));
+        check_eps(kelvin_maxwell_sphere::solve(a, b, t).map(|s| s.restitution));
+    }
+
+    /// Valid parameters (log-uniform over the accepted ranges, any tolerance):
+    /// a finite result, never an integration failure.
+    #[test]
+    fn mdr_models_solve_their_whole_range(
+        log_beta in -5.0..4.0f64,
+        log_delta in -8.0..3.0f64,
+        log_tol in -15.0..-0.4f64,
+    ) {
+        let (b, d, t) = (10f64.powf(log_beta), 10f64.powf(log_delta), 10f64.powf(log_tol));
+        for r in [standard_sphere::solve(b, d, t), kelvin_maxwell_sphere::solve(b, d, t)] {
+            match r {
+                Ok(s) => {
+                    prop_assert!((0.0..=1.0).contains(&s.restitution));
+                    prop_assert!(s.contact_time.is_finite() && s.contact_time > 0.0);
+                    prop_assert!(s.max_overlap.is_finite() && s.max_overlap > 0.0);
+                }
+                Err(Error::InvalidParameter { parameter, .. }) => {
+                    prop_assert_eq!(parameter, "viscous_parameter");
+                }
+                Err(e) => prop_assert!(false, "β {b}, δ {d}, tol {t}: {e}"),
+            }
+        }
     }
 }
 

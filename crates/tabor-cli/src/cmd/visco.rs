@@ -147,7 +147,7 @@ fn model_name(m: Model) -> &'static str {
 /// Runs `tabor visco`.
 pub fn run(args: &Args) -> Result<(), String> {
     let name = model_name(args.model);
-    // checked here: `tol.max(1e-10)` below would turn a NaN tolerance into 1e-10
+    // checked here so that a bad --tolerance names the flag for every model
     let tol =
         tabor_restitution::validate::tolerance("tolerance", args.tolerance).map_err(message)?;
     let mut out = Visco {
@@ -209,10 +209,10 @@ pub fn run(args: &Args) -> Result<(), String> {
             Some(s)
         }
         Model::StandardSphere => {
-            Some(standard_sphere::solve(beta()?, delta()?, tol.max(1e-10)).map_err(message)?)
+            Some(standard_sphere::solve(beta()?, delta()?, tol).map_err(message)?)
         }
         Model::KelvinMaxwellSphere => {
-            Some(kelvin_maxwell_sphere::solve(beta()?, delta()?, tol.max(1e-10)).map_err(message)?)
+            Some(kelvin_maxwell_sphere::solve(beta()?, delta()?, tol).map_err(message)?)
         }
         Model::CompressibleFlat => {
             let nu = need(args.poisson_ratio, "--poisson-ratio", name)?;
