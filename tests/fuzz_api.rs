@@ -1264,7 +1264,13 @@ macro_rules! fuzz_tests {
                 let cases = env_cases(100_000).max(1);
                 if $variants > 1 {
                     for v in 0..$variants {
+                        let start = std::time::Instant::now();
                         $group(cases, Some(v));
+                        eprintln!(
+                            "{} variant {v}: {cases} cases in {:.1?}",
+                            stringify!($group),
+                            start.elapsed()
+                        );
                     }
                 } else {
                     $group(cases, None);
