@@ -11,6 +11,9 @@
 //! - [`special`]: Gamma and Beta functions (from `statrs`), the incomplete beta
 //!   function `B(x; a, b)` of seed 000 eqs. (5.11), (5.17) and the Gamma-function
 //!   ratios `β(n)`, `β(n, k)` of the power-law contact solutions;
+//! - [`ode`] and [`rosenbrock`]: adaptive integrators for small ODE systems with
+//!   dense output and event location, explicit (Dormand-Prince 5(4)) and, for stiff
+//!   systems, L-stable (Rosenbrock RODAS4);
 //! - [`chebyshev`]: Chebyshev interpolation (single and piecewise) for precomputed
 //!   fast tiers of expensive smooth functions;
 //! - [`Cost`]: evaluations and iterations that callers accumulate, so the library can
@@ -26,6 +29,7 @@ mod error;
 pub mod ode;
 pub mod quadrature;
 pub mod root_finding;
+pub mod rosenbrock;
 pub mod special;
 
 pub use cost::Cost;

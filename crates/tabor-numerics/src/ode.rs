@@ -109,7 +109,7 @@ impl OdeTolerance {
         self
     }
 
-    fn validate(&self) -> Result<()> {
+    pub(crate) fn validate(&self) -> Result<()> {
         let check = |name: &'static str, v: f64| {
             if v.is_finite() && v >= 0.0 {
                 Ok(())
@@ -156,7 +156,7 @@ impl OdeTolerance {
         Ok(())
     }
 
-    fn relative_effective(&self) -> f64 {
+    pub(crate) fn relative_effective(&self) -> f64 {
         self.relative.max(1e-15)
     }
 }

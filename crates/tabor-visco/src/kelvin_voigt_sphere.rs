@@ -18,12 +18,18 @@
 //! The rigorous restitution force is never smaller than Kuwabara-Kono's
 //! (`(2/3)(1+y)^(3/2) ≥ 2/3 + y` for y = τ̂ẋ/x), which is why Kuwabara-Kono slightly
 //! underestimates ε (seed, Fig. 5.4).
+//!
+//! Heavy damping (δ → 1e3): the velocity relaxes after the turning point to the
+//! creep velocity, and the force vanishes on the way (see [`crate::damping_law`],
+//! of which Kuwabara-Kono is the case β = 1/2, γ = c); the rigorous restitution
+//! ends at `z = x + τ̂ẋ = 0`, i.e. ε → x*/τ̂ = 15x*/(8c), 3/2 of Kuwabara-Kono's
+//! (5/4)x*/c. The restitution is integrated with the reduced force (resp. z) as a
+//! state, so the end of contact is a state crossing zero and not a cancellation of
+//! two nearly equal terms, with a pure relative error control.
 
-use crate::scaled::{
-    ode_tolerance, positive_up_to, restitution_from_rebound, run_phase, ScaledImpact, ScaledPoint,
-};
+use crate::hertz_damped::{self, Outcome, Restitution};
+use crate::scaled::{positive_up_to, ScaledImpact, ScaledPoint};
 use serde::Serialize;
-use tabor_numerics::ode::EventDirection;
 use tabor_numerics::root_finding::{brent, RootTolerance};
 use tabor_numerics::special::beta;
 use tabor_restitution::{validate, Error, Result};
@@ -117,7 +123,12 @@ pub fn restitution(viscous_parameter: f64, model: SphereModel) -> Result<f64> {
 
 /// The impact of a sphere on a Kelvin-Voigt half-space in the scaled variables of
 /// (5.74) (module docs), integrated by Dormand-Prince 5(4) with relative tolerance
-/// `tolerance` ∈ [1e-15, 0.5].
+/// `tolerance` ∈ [1e-15, 0.5] (above 1e-3 tightened to 1e-3). ε, x_max and T_S are
+/// accurate to about the tolerance relative to themselves over the whole range of
+/// δ, also where ε is tiny (δ = 1e3: ε = 2.18e-6 Kuwabara-Kono, 3.27e-6 rigorous,
+/// which tend to `(5/4) x*/c` and `15 x*/(8c)`, c = 8 (15/64)^{3/5} δ); a few
+/// thousand right-hand-side evaluations at most (module docs of the crate's
+/// engine, README).
 ///
 /// Seed 000, eqs. (5.64)-(5.68), (5.74).
 pub fn solve(viscous_parameter: f64, model: SphereModel, tolerance: f64) -> Result<ScaledImpact> {
@@ -138,10 +149,24 @@ pub fn trajectory(
     Ok(points)
 }
 
-/// The viscous parameter δ at which the model gives the restitution `restitution`
-/// ∈ (0, 1) (Brent on ε(δ), which decreases monotonically).
+/// The viscous parameter δ at which the model gives the restitution `restitution`,
+/// to a relative accuracy of about `max(tolerance, 1e-12)` (Brent on ln δ).
 ///
-/// Seed 000, eq. (5.68) and Table 5.1 (models scaled to a measured ε_z).
+/// The root function is `logit ε(δ) − logit ε_target` with `logit ε = ln ε − ln(1 − ε)`,
+/// ε from the rebound speed and 1 − ε from the dissipated energy, both accurate
+/// relative to themselves: so the answer is accurate at both ends, ε → 1 (δ → 0,
+/// where (5.71) `1 − ε ≈ s δ`, s = (32/5) B(3/5, 3/2) (15/64)^{3/5} ≈ 3.38) and
+/// ε → 0. The bracket starts at the first-order estimate `(1 − ε)/s` for ε ≥ 1/2,
+/// else at the overdamped estimate (δ from `ε ≈ (5/4) (3/(2c))^{2/3}/c`,
+/// c = 8 (15/64)^{3/5} δ; see [`crate::damping_law::overdamped_restitution`]), and
+/// is widened by factors of 2.
+///
+/// Accepted restitution: `ε(δ_max) < restitution < 1` with δ_max =
+/// [`MAX_VISCOUS_PARAMETER`], i.e. above ≈ 2.18e-6 (Kuwabara-Kono) or ≈ 3.27e-6
+/// (rigorous); a smaller one would need δ > 1e3 and is answered with
+/// [`Error::InvalidParameter`] naming `restitution`.
+///
+/// Seed 000, eqs. (5.68), (5.71) and Table 5.1 (models scaled to a measured ε_z).
 pub fn viscous_parameter_for_restitution(
     restitution: f64,
     model: SphereModel,
@@ -156,37 +181,116 @@ pub fn viscous_parameter_for_restitution(
         ));
     }
     let tol = validate::tolerance("tolerance", tolerance)?;
-    let inner = (tol * 1e-2).max(1e-13);
+    let inner = (0.1 * tol).max(1e-13);
+    // The forward solutions carry relative errors ~1e-13 at best: no point in
+    // asking for more than 1e-12 in ln δ.
+    let accuracy = tol.max(1e-12);
+    let logit_target = target.ln() - (1.0 - target).ln();
     let mut failure = None;
-    let mut f = |ln_delta: f64| match solve(ln_delta.exp(), model, inner) {
-        Ok(s) => s.restitution - target,
-        Err(e) => {
-            failure.get_or_insert(e);
-            f64::NAN
+    let mut memo: Vec<(f64, f64)> = Vec::new();
+    // h(ln δ) = logit ε(δ) − logit ε_target, decreasing.
+    let mut h = |ln_delta: f64| {
+        if let Some(&(_, v)) = memo.iter().find(|(u, _)| *u == ln_delta) {
+            return v;
         }
+        let v = match solve_with_loss(
+            ln_delta.exp().min(MAX_VISCOUS_PARAMETER),
+            model,
+            inner,
+            None,
+        ) {
+            // |dh/d ln δ| ≳ 1 everywhere (→ 1 as ε → 1, 5/3 as ε → 0) and the
+            // noise of h is a few `inner`: |h| ≤ `accuracy` is a root to the
+            // tolerance and ends the search (Brent, converging from one side, would
+            // otherwise bisect down from the far end of the bracket).
+            Ok(o) => match o.impact.restitution.ln() - o.loss.ln() - logit_target {
+                v if v.abs() <= accuracy => 0.0,
+                v => v,
+            },
+            Err(e) => {
+                failure.get_or_insert(e);
+                f64::NAN
+            }
+        };
+        memo.push((ln_delta, v));
+        v
     };
-    let root = brent(
-        &mut f,
-        (1e-6_f64).ln(),
-        MAX_VISCOUS_PARAMETER.ln(),
-        RootTolerance::absolute(tol),
-    );
+    let ln_max = MAX_VISCOUS_PARAMETER.ln();
+    let slope = 32.0 / 5.0 * beta(0.6, 1.5)? * (15.0_f64 / 64.0).powf(0.6);
+    let first_order = ((1.0 - target) / slope).ln();
+    // ε ≈ (5/4) (3/(2c))^{2/3} / c  ⇒  c = ((5/4) (3/2)^{2/3} / ε)^{3/5}.
+    let c = (1.25 * 1.5_f64.powf(2.0 / 3.0) / target).powf(0.6);
+    let overdamped = (c / damping_coefficient(1.0)).ln();
+    let guess = if target >= 0.5 {
+        first_order
+    } else {
+        overdamped
+    }
+    .min(ln_max);
+    let step = std::f64::consts::LN_2;
+    let (mut lo, mut hi) = (guess, guess);
+    let h0 = h(guess);
+    if h0.is_nan() {
+        return Err(failure.unwrap_or_else(|| no_bracket(target)));
+    }
+    if h0 > 0.0 {
+        // ε too large: more damping.
+        loop {
+            if hi >= ln_max {
+                return Err(Error::invalid(
+                    "restitution",
+                    target,
+                    "must exceed ε(δ = 1e3) (≈ 2.18e-6 Kuwabara-Kono, ≈ 3.27e-6 rigorous): \
+                     a smaller restitution needs a viscous parameter above its maximum 1e3",
+                ));
+            }
+            lo = hi;
+            hi = (hi + step).min(ln_max);
+            let v = h(hi);
+            if v.is_nan() {
+                return Err(failure.unwrap_or_else(|| no_bracket(target)));
+            }
+            if v <= 0.0 {
+                break;
+            }
+        }
+    } else {
+        // ε too small: less damping (terminates: 1 − ε ∝ δ as δ → 0).
+        loop {
+            hi = lo;
+            lo -= step;
+            let v = h(lo);
+            if v.is_nan() {
+                return Err(failure.unwrap_or_else(|| no_bracket(target)));
+            }
+            if v >= 0.0 || lo < f64::MIN_POSITIVE.ln() {
+                break;
+            }
+        }
+    }
+    let root = brent(&mut h, lo, hi, RootTolerance::absolute(accuracy));
     if let Some(e) = failure {
         return Err(e);
     }
-    Ok(root?.value.exp())
+    Ok(root?.value.exp().min(MAX_VISCOUS_PARAMETER))
+}
+
+fn no_bracket(target: f64) -> Error {
+    Error::Model {
+        model: "Kelvin-Voigt sphere",
+        message: format!("no viscous parameter found for the restitution {target:e}"),
+    }
 }
 
 type Record<'a> = Option<&'a mut Vec<ScaledPoint>>;
-/// A restitution-phase force F̂(y, c, τ̂).
-type PhaseForce = fn(&[f64; 2], f64, f64) -> f64;
 
-fn integrate(
+/// The impact with the loss 1 − ε accurate relative to itself.
+pub(crate) fn solve_with_loss(
     viscous_parameter: f64,
     model: SphereModel,
     tolerance: f64,
     record: Record<'_>,
-) -> Result<ScaledImpact> {
+) -> Result<Outcome> {
     let delta = positive_up_to(
         "viscous_parameter",
         viscous_parameter,
@@ -194,81 +298,20 @@ fn integrate(
         REQUIREMENT,
     )?;
     let c = damping_coefficient(delta);
-    let tau = 8.0 * c / 15.0;
-    let tol = ode_tolerance(tolerance, 0.05)?;
-    let kk_force = move |y: &[f64; 2]| {
-        let x = y[0].max(0.0);
-        x.sqrt() * (1.25 * x + c * y[1])
+    let law = match model {
+        SphereModel::KuwabaraKono => Restitution::Damped,
+        SphereModel::Rigorous => Restitution::Rigorous {
+            tau: 8.0 * c / 15.0,
+        },
     };
-    let rig_force = move |y: &[f64; 2]| 1.25 * (y[0] + tau * y[1]).max(0.0).powf(1.5);
-    let mut raw: Vec<(f64, [f64; 2])> = Vec::new();
-    let want = record.is_some();
-    // Compression (5.66) until the turning point ẋ = 0.
-    let mut f1 = |_t: f64, y: &[f64; 2]| [y[1], -kk_force(y)];
-    let t_max = 1e3 * (1.0 + tau);
-    let first = run_phase(
-        &mut f1,
-        &mut |_t: f64, y: &[f64; 2]| y[1],
-        EventDirection::Falling,
-        0.0,
-        [0.0, 1.0],
-        t_max,
-        tol,
-        want.then_some(&mut raw),
-    )?;
-    let max_overlap = first.y[0];
-    let (second, forces): (_, PhaseForce) = match model {
-        SphereModel::KuwabaraKono => {
-            let mut f2 = |_t: f64, y: &[f64; 2]| [y[1], -kk_force(y)];
-            let end = run_phase(
-                &mut f2,
-                &mut |_t: f64, y: &[f64; 2]| 1.25 * y[0] + c * y[1],
-                EventDirection::Falling,
-                first.t,
-                first.y,
-                first.t + t_max,
-                tol,
-                want.then_some(&mut raw),
-            )?;
-            (end, |y, c, _| {
-                let x = y[0].max(0.0);
-                x.sqrt() * (1.25 * x + c * y[1])
-            })
-        }
-        SphereModel::Rigorous => {
-            let mut f2 = |_t: f64, y: &[f64; 2]| [y[1], -rig_force(y)];
-            let end = run_phase(
-                &mut f2,
-                &mut |_t: f64, y: &[f64; 2]| y[0] + tau * y[1],
-                EventDirection::Falling,
-                first.t,
-                first.y,
-                first.t + t_max,
-                tol,
-                want.then_some(&mut raw),
-            )?;
-            (end, |y, _, tau| {
-                1.25 * (y[0] + tau * y[1]).max(0.0).powf(1.5)
-            })
-        }
-    };
-    if let Some(points) = record {
-        let split = first.t;
-        points.extend(raw.iter().map(|&(t, y)| ScaledPoint {
-            time: t,
-            overlap: y[0],
-            overlap_rate: y[1],
-            force: if t <= split {
-                kk_force(&y)
-            } else {
-                forces(&y, c, tau).max(0.0)
-            },
-        }));
-    }
-    Ok(ScaledImpact {
-        restitution: restitution_from_rebound(-second.y[1])?,
-        contact_time: second.t,
-        max_overlap,
-        cost: first.cost + second.cost,
-    })
+    hertz_damped::solve(0.5, c, law, tolerance, record)
+}
+
+fn integrate(
+    viscous_parameter: f64,
+    model: SphereModel,
+    tolerance: f64,
+    record: Record<'_>,
+) -> Result<ScaledImpact> {
+    Ok(solve_with_loss(viscous_parameter, model, tolerance, record)?.impact)
 }

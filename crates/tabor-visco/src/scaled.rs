@@ -3,7 +3,8 @@
 //! `tabor_numerics::ode`.
 
 use serde::Serialize;
-use tabor_numerics::ode::{DormandPrince, EventDirection, OdeTolerance};
+use tabor_numerics::ode::{DormandPrince, EventDirection, EventPoint, OdeTolerance};
+use tabor_numerics::rosenbrock::{Jacobian, Rosenbrock, Scheme};
 use tabor_numerics::Cost;
 use tabor_restitution::{validate, Error, Result};
 
@@ -75,11 +76,80 @@ pub(crate) struct PhaseEnd<const N: usize> {
 /// in the step (the last at its end).
 pub(crate) const SAMPLES_PER_STEP: usize = 4;
 
-/// Integrates `y' = f(t, y)` from `(t0, y0)` until the event function `g` crosses
-/// zero in `direction` (located on the dense output), at the latest at `t_max`
-/// (then an error: the phase did not end). With `record`, the start and then, for
-/// every accepted step (the last one cut at the event), [`SAMPLES_PER_STEP`]
-/// dense-output points.
+/// The integrator of a phase.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Method {
+    /// Dormand-Prince 5(4) (`tabor_numerics::ode`).
+    Explicit,
+    /// The L-stable Rosenbrock method Rodas5P (`tabor_numerics::rosenbrock`) with a
+    /// Jacobian by differences, for phases whose relaxation rates far exceed the
+    /// inverse time scale of the motion (the explicit method is then limited by
+    /// stability, not accuracy).
+    Stiff(Jacobian),
+}
+
+/// What [`run_phase_with`] needs of a stepper.
+trait Stepper<const N: usize> {
+    fn advance<F>(&mut self, f: &mut F, t_limit: f64) -> tabor_numerics::Result<()>
+    where
+        F: FnMut(f64, &[f64; N]) -> [f64; N];
+    fn now(&self) -> (f64, [f64; N]);
+    fn step_start(&self) -> f64;
+    fn dense(&self, t: f64) -> [f64; N];
+    fn event<G>(
+        &self,
+        g: G,
+        direction: EventDirection,
+        before: f64,
+        after: f64,
+    ) -> tabor_numerics::Result<Option<(EventPoint<N>, Cost)>>
+    where
+        G: FnMut(f64, &[f64; N]) -> f64;
+    fn spent(&self) -> Cost;
+}
+
+macro_rules! stepper {
+    ($t:ident) => {
+        impl<const N: usize> Stepper<N> for $t<N> {
+            fn advance<F>(&mut self, f: &mut F, t_limit: f64) -> tabor_numerics::Result<()>
+            where
+                F: FnMut(f64, &[f64; N]) -> [f64; N],
+            {
+                self.step(f, t_limit)
+            }
+            fn now(&self) -> (f64, [f64; N]) {
+                (self.t(), self.y())
+            }
+            fn step_start(&self) -> f64 {
+                self.previous_t()
+            }
+            fn dense(&self, t: f64) -> [f64; N] {
+                self.dense_output(t)
+            }
+            fn event<G>(
+                &self,
+                g: G,
+                direction: EventDirection,
+                before: f64,
+                after: f64,
+            ) -> tabor_numerics::Result<Option<(EventPoint<N>, Cost)>>
+            where
+                G: FnMut(f64, &[f64; N]) -> f64,
+            {
+                self.locate_event(g, direction, before, after, 0.0)
+            }
+            fn spent(&self) -> Cost {
+                self.cost()
+            }
+        }
+    };
+}
+stepper!(DormandPrince);
+stepper!(Rosenbrock);
+
+/// Integrates `y' = f(t, y)` from `(t0, y0)` with Dormand-Prince 5(4) until the
+/// event function `g` crosses zero in `direction`: [`run_phase_with`] with
+/// [`Method::Explicit`].
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn run_phase<F, G, const N: usize>(
     f: &mut F,
@@ -89,34 +159,94 @@ pub(crate) fn run_phase<F, G, const N: usize>(
     y0: [f64; N],
     t_max: f64,
     tol: OdeTolerance,
-    mut record: Option<&mut Vec<(f64, [f64; N])>>,
+    record: Option<&mut Vec<(f64, [f64; N])>>,
 ) -> Result<PhaseEnd<N>>
 where
     F: FnMut(f64, &[f64; N]) -> [f64; N],
     G: FnMut(f64, &[f64; N]) -> f64,
 {
-    let mut stepper = DormandPrince::new(f, t0, y0, t_max, tol)?;
+    run_phase_with(
+        Method::Explicit,
+        f,
+        g,
+        direction,
+        t0,
+        y0,
+        t_max,
+        tol,
+        record,
+    )
+}
+
+/// Integrates `y' = f(t, y)` from `(t0, y0)` with `method` until the event function
+/// `g` crosses zero in `direction` (located on the dense output), at the latest at
+/// `t_max` (then an error: the phase did not end). With `record`, the start and
+/// then, for every accepted step (the last one cut at the event),
+/// [`SAMPLES_PER_STEP`] dense-output points.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn run_phase_with<F, G, const N: usize>(
+    method: Method,
+    f: &mut F,
+    g: &mut G,
+    direction: EventDirection,
+    t0: f64,
+    y0: [f64; N],
+    t_max: f64,
+    tol: OdeTolerance,
+    record: Option<&mut Vec<(f64, [f64; N])>>,
+) -> Result<PhaseEnd<N>>
+where
+    F: FnMut(f64, &[f64; N]) -> [f64; N],
+    G: FnMut(f64, &[f64; N]) -> f64,
+{
+    match method {
+        Method::Explicit => {
+            let stepper = DormandPrince::new(f, t0, y0, t_max, tol)?;
+            drive(stepper, f, g, direction, (t0, y0), t_max, record)
+        }
+        Method::Stiff(jacobian) => {
+            let stepper = Rosenbrock::new(f, t0, y0, t_max, tol, jacobian, Scheme::Rodas5P)?;
+            drive(stepper, f, g, direction, (t0, y0), t_max, record)
+        }
+    }
+}
+
+fn drive<S, F, G, const N: usize>(
+    mut stepper: S,
+    f: &mut F,
+    g: &mut G,
+    direction: EventDirection,
+    (t0, y0): (f64, [f64; N]),
+    t_max: f64,
+    mut record: Option<&mut Vec<(f64, [f64; N])>>,
+) -> Result<PhaseEnd<N>>
+where
+    S: Stepper<N>,
+    F: FnMut(f64, &[f64; N]) -> [f64; N],
+    G: FnMut(f64, &[f64; N]) -> f64,
+{
     let mut g_prev = g(t0, &y0);
     if let Some(rec) = record.as_deref_mut() {
         rec.push((t0, y0));
     }
-    while stepper.t() < t_max {
-        stepper.step(f, t_max)?;
-        let g_new = g(stepper.t(), &stepper.y());
-        let hit = stepper.locate_event(&mut *g, direction, g_prev, g_new, 0.0)?;
-        let t_end = hit.as_ref().map_or(stepper.t(), |(p, _)| p.t);
+    while stepper.now().0 < t_max {
+        stepper.advance(f, t_max)?;
+        let (t, y) = stepper.now();
+        let g_new = g(t, &y);
+        let hit = stepper.event(&mut *g, direction, g_prev, g_new)?;
+        let t_end = hit.as_ref().map_or(t, |(p, _)| p.t);
         if let Some(rec) = record.as_deref_mut() {
-            let (a, b) = (stepper.previous_t(), t_end);
+            let (a, b) = (stepper.step_start(), t_end);
             for i in 1..=SAMPLES_PER_STEP {
                 let s = a + (b - a) * i as f64 / SAMPLES_PER_STEP as f64;
-                rec.push((s, stepper.dense_output(s)));
+                rec.push((s, stepper.dense(s)));
             }
         }
         if let Some((point, cost)) = hit {
             return Ok(PhaseEnd {
                 t: point.t,
                 y: point.y,
-                cost: stepper.cost() + cost,
+                cost: stepper.spent() + cost,
             });
         }
         g_prev = g_new;
@@ -125,7 +255,7 @@ where
         model: "viscoelastic impact",
         message: format!(
             "the contact did not end within the scaled time {t_max:e} (cost {} evaluations)",
-            stepper.cost().evaluations
+            stepper.spent().evaluations
         ),
     })
 }

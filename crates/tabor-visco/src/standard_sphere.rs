@@ -17,10 +17,11 @@ use tabor_restitution::{validate, Error, Result};
 /// Largest viscous parameter δ accepted.
 pub const MAX_VISCOUS_PARAMETER: f64 = 1e3;
 /// Smallest scaled relaxation time τ̂ = β (64/15)^(2/5) δ. The internal variables
-/// relax on τ̂ and the integration is explicit: at this limit it takes ≈ 5e5
-/// right-hand-side evaluations (≈ 60-90 ms), ten times that per decade below.
-/// There the medium is within O(β) of the Kelvin-Voigt limit (β → 0 with δ fixed;
-/// ≈ 1e-6 in ε at the boundary), which [`crate::kelvin_voigt_sphere`] solves.
+/// relax on τ̂; below τ̂ = 2e-3 the integration is by the L-stable Rodas5P, which
+/// takes ≈ 1.3e3-3.9e3 right-hand-side evaluations (≤ 0.5 ms) at this limit (the
+/// explicit method needed ≈ 5e5). There the medium is within O(β) of the
+/// Kelvin-Voigt limit (β → 0 with δ fixed; ≈ 1e-6 in ε at the boundary), which
+/// [`crate::kelvin_voigt_sphere`] solves.
 pub const MIN_RELAXATION_TIME: f64 = 1e-5;
 
 fn medium(beta: f64, delta: f64) -> Result<ScaledMedium> {

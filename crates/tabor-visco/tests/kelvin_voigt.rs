@@ -202,10 +202,17 @@ fn sphere_physical_front_uses_delta() {
         let delta = 50.0 * (0.02 * v / (0.05_f64.powi(2) * 1e18)).powf(0.2);
         assert!((model.viscous_parameter(v).unwrap() - delta).abs() < 1e-12 * delta);
         let out = impact(&model, v).unwrap();
-        // The physical front integrates at 1e-9: same value as the core at 1e-9, and
-        // within 1e-6 of the core at its default 1e-10.
-        let core = kelvin_voigt_sphere::solve(delta, SphereModel::Rigorous, 1e-9).unwrap();
-        assert!((out.restitution - core.restitution).abs() < 1e-12);
+        // The physical front integrates at 1e-9: same value as the core at 1e-9 (with
+        // the front's δ: a change of δ in the last bit may change the adaptive step
+        // sequence and ε by ~1e-11), and within 1e-6 of the core at its default 1e-10.
+        let front_delta = model.viscous_parameter(v).unwrap();
+        let core = kelvin_voigt_sphere::solve(front_delta, SphereModel::Rigorous, 1e-9).unwrap();
+        assert!(
+            (out.restitution - core.restitution).abs() < 1e-12,
+            "{} vs {}",
+            out.restitution,
+            core.restitution
+        );
         let fine = kelvin_voigt_sphere::restitution(delta, SphereModel::Rigorous).unwrap();
         assert!(
             (out.restitution - fine).abs() < 1e-6,

@@ -113,6 +113,67 @@ proptest! {
     }
 }
 
+proptest! {
+    /// The damping law (5.72) over its whole accepted range (β ∈ [0, 3/2],
+    /// γ ∈ (0, 1e3], any tolerance): a finite result, never an integration failure.
+    #[test]
+    fn damping_law_solves_its_whole_range(
+        beta in 0.0..=1.5f64,
+        log_gamma in -300.0..3.0f64,
+        log_tol in -15.0..-0.302f64,
+    ) {
+        let (g, t) = (10f64.powf(log_gamma), 10f64.powf(log_tol));
+        match damping_law::solve(beta, g, t) {
+            Ok(s) => {
+                prop_assert!(s.restitution > 0.0 && s.restitution <= 1.0);
+                prop_assert!(s.contact_time.is_finite() && s.contact_time > 0.0);
+                prop_assert!(s.max_overlap.is_finite() && s.max_overlap > 0.0);
+                prop_assert!(s.cost.evaluations < 200_000);
+            }
+            Err(e) => prop_assert!(false, "β {beta}, γ {g}, tol {t}: {e}"),
+        }
+    }
+
+    /// The Kelvin-Voigt sphere over δ ∈ (0, 1e3], both models, any tolerance.
+    #[test]
+    fn kelvin_voigt_sphere_solves_its_whole_range(
+        log_delta in -300.0..3.0f64,
+        log_tol in -15.0..-0.302f64,
+    ) {
+        let (d, t) = (10f64.powf(log_delta), 10f64.powf(log_tol));
+        for model in [SphereModel::KuwabaraKono, SphereModel::Rigorous] {
+            match kelvin_voigt_sphere::solve(d, model, t) {
+                Ok(s) => {
+                    prop_assert!(s.restitution > 0.0 && s.restitution <= 1.0);
+                    prop_assert!(s.contact_time.is_finite() && s.contact_time > 0.0);
+                    prop_assert!(s.cost.evaluations < 200_000);
+                }
+                Err(e) => prop_assert!(false, "{model:?} δ {d}, tol {t}: {e}"),
+            }
+        }
+    }
+
+    /// The inverse over its accepted range (ε(δ_max) < ε < 1: log-uniform towards
+    /// both ends): a δ in (0, 1e3], never an integration failure.
+    #[test]
+    fn inverse_covers_its_whole_range(
+        u in 0.0..1.0f64,
+        near_one in proptest::bool::ANY,
+        log_tol in -15.0..-0.302f64,
+    ) {
+        let t = 10f64.powf(log_tol);
+        // log-uniform in (3.3e-6, 1) or 1 − ε log-uniform in (1e-16, 1)
+        let eps = if near_one { 1.0 - 10f64.powf(-16.0 * u) } else { 10f64.powf(-5.48 * u) };
+        prop_assume!(eps > 3.3e-6 && eps < 1.0);
+        for model in [SphereModel::KuwabaraKono, SphereModel::Rigorous] {
+            match kelvin_voigt_sphere::viscous_parameter_for_restitution(eps, model, t) {
+                Ok(d) => prop_assert!(d > 0.0 && d <= 1e3, "{d}"),
+                Err(e) => prop_assert!(false, "{model:?} ε {eps}, tol {t}: {e}"),
+            }
+        }
+    }
+}
+
 #[test]
 fn errors_name_the_parameter() {
     let cases: Vec<(tabor_restitution::Result<f64>, &str)> = vec![
@@ -139,6 +200,18 @@ fn errors_name_the_parameter() {
         ),
         (damping_law::restitution(2.0, 1.0), "damping_exponent"),
         (damping_law::restitution(0.5, 0.0), "damping"),
+        (
+            damping_law::restitution(0.5, 1e3 * (1.0 + 1e-15)),
+            "damping",
+        ),
+        (
+            kelvin_voigt_sphere::viscous_parameter_for_restitution(
+                1e-6,
+                SphereModel::KuwabaraKono,
+                1e-8,
+            ),
+            "restitution",
+        ),
         (
             kelvin_voigt_sphere::solve(0.1, SphereModel::Rigorous, 0.0).map(|s| s.restitution),
             "tolerance",

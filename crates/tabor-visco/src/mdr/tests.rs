@@ -200,7 +200,14 @@ fn error_tracks_the_tolerance() {
         let exact = solve(&m, 1e-13).unwrap();
         let mut line = format!("{label} β {b:e} δ {d:e}: ε {:.10}", exact.restitution);
         for (i, tol) in [1e-4, 1e-6, 1e-8].into_iter().enumerate() {
-            let (s, route) = solve_with(&m, tol * RECORD_TOLERANCE_FACTOR, tol, false).unwrap();
+            let (s, route) = solve_with(
+                &m,
+                tol * RECORD_TOLERANCE_FACTOR,
+                tol,
+                false,
+                method_for(&m),
+            )
+            .unwrap();
             assert_eq!(route, Route::Edge);
             let de = (s.restitution - exact.restitution).abs() / tol;
             let dx = (s.max_overlap - exact.max_overlap).abs() / tol;
@@ -256,8 +263,8 @@ fn costs_far_fewer_evaluations_than_the_discrete_mdr() {
 fn stiff_limit_matches_the_discrete_mdr_and_kelvin_voigt() {
     // τ̂ at the smallest accepted value: the discrete model (200 elements) and, as
     // β → 0, the rigorous Kelvin-Voigt sphere (difference O(β δ)). Observed:
-    // |Δε| ≈ 4e-9 against the discrete model, 1.1e-6 against Kelvin-Voigt,
-    // ≈ 530 000 evaluations.
+    // |Δε| ≈ 2e-8 against the discrete model, 1.1e-6 against Kelvin-Voigt,
+    // ≈ 2 300 evaluations (Rodas5P; the explicit integration took ≈ 530 000).
     use crate::standard_sphere::MIN_RELAXATION_TIME;
     big_stack(|| {
         let b = 1e-4;
@@ -276,7 +283,7 @@ fn stiff_limit_matches_the_discrete_mdr_and_kelvin_voigt() {
         );
         assert!((r.restitution - c.restitution).abs() < 1e-7);
         assert!((kv - c.restitution).abs() < 1e-5);
-        assert!(c.cost.evaluations < 1_000_000);
+        assert!(c.cost.evaluations < 10_000, "{}", c.cost.evaluations);
     });
 }
 
@@ -284,9 +291,9 @@ fn stiff_limit_matches_the_discrete_mdr_and_kelvin_voigt() {
 fn time_route_agrees_with_the_edge_route() {
     // The fallback (restitution in time to the end) against the default route.
     for (label, b, d, m) in grid() {
-        let (e, route) = solve_with(&m, 1e-11, 1e-10, false).unwrap();
+        let (e, route) = solve_with(&m, 1e-11, 1e-10, false, method_for(&m)).unwrap();
         assert_eq!(route, Route::Edge);
-        let (t, route) = solve_with(&m, 1e-11, 1e-10, true).unwrap();
+        let (t, route) = solve_with(&m, 1e-11, 1e-10, true, method_for(&m)).unwrap();
         assert_eq!(route, Route::Time);
         assert!(
             (e.restitution - t.restitution).abs() < 1e-7,
@@ -305,4 +312,39 @@ fn loose_tolerances_are_tightened() {
     assert_eq!(loose, capped);
     let tight = solve(&m, 1e-12).unwrap();
     assert!((loose.restitution - tight.restitution).abs() < LOOSEST_TOLERANCE);
+}
+
+#[test]
+fn stiff_and_explicit_integrations_agree() {
+    // Below τ̂ = 2e-3 the phases are integrated by Rodas5P; where the explicit
+    // integration is still affordable (τ̂ ≥ 1e-4) both agree to the tolerance
+    // (1e-9: |Δε|, |Δx_max| ≤ 4e-9), and Rodas5P is cheaper at τ̂ = 1e-4
+    // (asserted twice; observed 2.7-40 times, the least for the heavily damped
+    // β = 1e-5, δ = 5.6).
+    let tol = 1e-9;
+    let mut worst: f64 = 0.0;
+    for tau in [1e-4, 1e-3, 5e-3] {
+        for b in [1e-5, 1e-3, 0.1, 10.0] {
+            let d = tau / (b * relaxation_factor());
+            if d > crate::standard_sphere::MAX_VISCOUS_PARAMETER {
+                continue;
+            }
+            let m = standard(b, d);
+            let stiff = Method::Stiff(Jacobian::NonAutonomous);
+            let (s, _) = solve_with(&m, 0.1 * tol, tol, false, stiff).unwrap();
+            let (e, _) = solve_with(&m, 0.1 * tol, tol, false, Method::Explicit).unwrap();
+            let de = (s.restitution - e.restitution).abs();
+            let dx = (s.max_overlap - e.max_overlap).abs();
+            println!(
+                "τ̂ {tau:e} β {b:e}: ε {:.10}, Δε {de:.1e}, Δx_max {dx:.1e}; evaluations {} (explicit {})",
+                s.restitution, s.cost.evaluations, e.cost.evaluations
+            );
+            assert!(de <= 4.0 * tol && dx <= 4.0 * tol, "τ̂ {tau} β {b}");
+            if tau == 1e-4 {
+                assert!(2 * s.cost.evaluations < e.cost.evaluations, "τ̂ {tau} β {b}");
+            }
+            worst = worst.max(de).max(dx);
+        }
+    }
+    println!("largest difference {worst:.1e}");
 }
