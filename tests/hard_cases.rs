@@ -464,6 +464,44 @@ fn regression_maugis_extremes() {
     assert_invalid(trace_impact(1.0, 1e300, 10), "max_depth");
     assert_invalid(trace_impact(1.0, 1.0, usize::MAX), "points");
     assert!(trace_impact(1.0, 1.0, 10).unwrap().len() > 10);
+    // F_n d_n finite but W · F_n d_n overflows (full fuzzing run): an error, not ∞
+    let m = tabor::maugis::MaugisDugdaleImpact::new(
+        42177358242.0135,
+        8.060477340906638e238,
+        0.004544629103630278,
+        1e3,
+        1.0,
+    )
+    .unwrap();
+    assert!(m.scales().energy.is_finite());
+    assert!(matches!(
+        m.energy_loss_joules(),
+        Err(tabor::restitution::Error::Model { .. })
+    ));
+}
+
+#[test]
+fn regression_elastic_power_of_an_overflowing_coefficient() {
+    // force coefficient ~4.5e307 and exponent ~39 at a tiny overlap: ∞ · 0 gave NaN
+    // (full fuzzing run); the true values underflow to 0
+    let c = tabor::elastic::ElasticContact::graded_power_law(
+        2071957.633209267,
+        0.0,
+        1.0355009754632e-8,
+        0.026359350830031367,
+    )
+    .unwrap();
+    let d = 2.5808374769343658e-18;
+    for f in [c.force(d), c.stiffness(d), c.stored_energy(d)] {
+        assert_eq!(f, 0.0);
+    }
+    // and at an overlap where the product is representable, the direct value
+    let h = tabor::elastic::ElasticContact::hertz(1e9, 1e-3).unwrap();
+    let d: f64 = 1e-6;
+    let f = 4.0 / 3.0 * 1e9 * 1e-3f64.sqrt() * d.powf(1.5);
+    assert!((h.force(d) / f - 1.0).abs() < 1e-14);
+    assert!((h.stiffness(d) / (1.5 * f / d) - 1.0).abs() < 1e-14);
+    assert!((h.stored_energy(d) / (f * d / 2.5) - 1.0).abs() < 1e-14);
 }
 
 #[test]

@@ -230,7 +230,7 @@ impl ElasticContact {
     /// potential behind (5.28).
     pub fn force(&self, overlap: f64) -> f64 {
         if overlap > 0.0 {
-            self.force_coefficient * overlap.powf(self.force_exponent)
+            power_term(&[self.force_coefficient], self.force_exponent, overlap)
         } else if overlap <= 0.0 {
             0.0
         } else {
@@ -242,7 +242,11 @@ impl ElasticContact {
     /// homogeneous media it equals 2E* a).
     pub fn stiffness(&self, overlap: f64) -> f64 {
         if overlap > 0.0 {
-            self.force_coefficient * self.force_exponent * overlap.powf(self.force_exponent - 1.0)
+            power_term(
+                &[self.force_coefficient, self.force_exponent],
+                self.force_exponent - 1.0,
+                overlap,
+            )
         } else if overlap <= 0.0 {
             0.0
         } else {
@@ -276,7 +280,7 @@ impl ElasticContact {
     pub fn stored_energy(&self, overlap: f64) -> f64 {
         if overlap > 0.0 {
             let q1 = self.force_exponent + 1.0;
-            self.force_coefficient * overlap.powf(q1) / q1
+            power_term(&[self.force_coefficient, 1.0 / q1], q1, overlap)
         } else if overlap <= 0.0 {
             0.0
         } else {
@@ -310,4 +314,17 @@ fn gradation(parameter: &'static str, k: f64) -> Result<f64> {
         1.0,
         "the gradation exponent must satisfy -1 < k < 1",
     )
+}
+
+/// `Π factors · x^p` for positive factors and x > 0, without the NaN of an
+/// overflowing factor times an underflowing power (∞ · 0): where the direct
+/// product is not a finite non-zero number it is evaluated through logarithms,
+/// which rounds to the correct 0 or ∞.
+fn power_term(factors: &[f64], p: f64, x: f64) -> f64 {
+    let direct = factors.iter().product::<f64>() * x.powf(p);
+    if direct.is_finite() && direct != 0.0 {
+        direct
+    } else {
+        (factors.iter().map(|f| f.ln()).sum::<f64>() + p * x.ln()).exp()
+    }
 }
