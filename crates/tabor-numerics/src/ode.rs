@@ -156,6 +156,11 @@ impl OdeTolerance {
         Ok(())
     }
 
+    /// The error scale of a component that was `a` before and `b` after a step.
+    pub(crate) fn error_scale(&self, a: f64, b: f64) -> f64 {
+        self.absolute + self.relative_effective() * a.abs().max(b.abs())
+    }
+
     pub(crate) fn relative_effective(&self) -> f64 {
         self.relative.max(1e-15)
     }
@@ -260,7 +265,7 @@ fn axpy<const N: usize>(y: &[f64; N], h: f64, terms: &[(f64, &[f64; N])]) -> [f6
     out
 }
 
-fn first_non_finite<const N: usize>(v: &[f64; N]) -> Option<f64> {
+pub(crate) fn first_non_finite<const N: usize>(v: &[f64; N]) -> Option<f64> {
     v.iter().copied().find(|x| !x.is_finite())
 }
 
@@ -303,18 +308,7 @@ impl<const N: usize> DormandPrince<N> {
     where
         F: FnMut(f64, &[f64; N]) -> [f64; N],
     {
-        finite("t", t)?;
-        for &v in &y {
-            finite("y", v)?;
-        }
-        let span = t_hint - t;
-        if !(span.is_finite() && span > 0.0) {
-            return Err(NumericsError::InvalidArgument {
-                name: "t_hint",
-                value: t_hint,
-                requirement: "must be finite and later than the current time",
-            });
-        }
+        let span = restart_span(t, &y, t_hint)?;
         self.t = t;
         self.t_old = t;
         self.y = y;
@@ -343,7 +337,7 @@ impl<const N: usize> DormandPrince<N> {
     }
 
     fn scale(&self, a: f64, b: f64) -> f64 {
-        self.tol.absolute + self.tol.relative_effective() * a.abs().max(b.abs())
+        self.tol.error_scale(a, b)
     }
 
     /// Hairer's `HINIT`: a first step from the sizes of y, f and an estimate of y''.
@@ -598,50 +592,11 @@ impl<const N: usize> DormandPrince<N> {
     where
         G: FnMut(f64, &[f64; N]) -> f64,
     {
-        if !direction.is_crossing(g_before, g_after) {
-            return Ok(None);
-        }
-        if g_after == 0.0 {
-            return Ok(Some((
-                EventPoint {
-                    t: self.t,
-                    y: self.y,
-                },
-                Cost::ZERO,
-            )));
-        }
-        let (a, b) = (self.t_old, self.t);
-        let tol = RootTolerance {
-            absolute: time_tolerance.max(0.0),
-            relative: 4.0 * f64::EPSILON,
-            max_iterations: 200,
-        };
-        let root = brent(
-            |s| {
-                if s <= a {
-                    g_before
-                } else if s >= b {
-                    g_after
-                } else {
-                    g(s, &self.dense_output(s))
-                }
-            },
-            a,
-            b,
-            tol,
-        )?;
-        let t = root.value;
-        Ok(Some((
-            EventPoint {
-                t,
-                y: self.dense_output(t),
-            },
-            root.cost(),
-        )))
+        locate_event_in_step(self, &mut g, direction, g_before, g_after, time_tolerance)
     }
 }
 
-fn finite(name: &'static str, v: f64) -> Result<f64> {
+pub(crate) fn finite(name: &'static str, v: f64) -> Result<f64> {
     if v.is_finite() {
         Ok(v)
     } else {
@@ -693,31 +648,160 @@ where
     G: FnMut(f64, &[f64; N]) -> f64,
 {
     finite("t_end", t_end)?;
-    let mut stepper = DormandPrince::new(&mut f, t0, y0, t_end, tol)?;
+    let stepper = DormandPrince::new(&mut f, t0, y0, t_end, tol)?;
+    drive_until_event(stepper, &mut f, &mut g, direction, t0, y0, t_end)
+}
+
+/// Checks a (re)start at `(t, y)` aiming at `t_hint`; returns `t_hint − t`.
+pub(crate) fn restart_span<const N: usize>(t: f64, y: &[f64; N], t_hint: f64) -> Result<f64> {
+    finite("t", t)?;
+    for &v in y {
+        finite("y", v)?;
+    }
+    let span = t_hint - t;
+    if !(span.is_finite() && span > 0.0) {
+        return Err(NumericsError::InvalidArgument {
+            name: "t_hint",
+            value: t_hint,
+            requirement: "must be finite and later than the current time",
+        });
+    }
+    Ok(span)
+}
+
+/// A one-step integrator with a dense output on its last accepted step
+/// ([`DormandPrince`], [`crate::rosenbrock::Rosenbrock`]): what event location
+/// ([`locate_event_in_step`]) and phase drivers built on either method need.
+pub trait DenseStepper<const N: usize> {
+    /// Current time and state.
+    fn current(&self) -> (f64, [f64; N]);
+    /// Start of the last accepted step.
+    fn step_start(&self) -> f64;
+    /// The dense output on the last accepted step.
+    fn dense(&self, t: f64) -> [f64; N];
+    /// One accepted step, not beyond `t_limit`.
+    fn advance<F>(&mut self, f: &mut F, t_limit: f64) -> Result<()>
+    where
+        F: FnMut(f64, &[f64; N]) -> [f64; N];
+    /// Accepted and rejected steps.
+    fn step_counts(&self) -> (u64, u64);
+    /// Evaluations of f and steps so far.
+    fn spent(&self) -> Cost;
+}
+
+impl<const N: usize> DenseStepper<N> for DormandPrince<N> {
+    fn current(&self) -> (f64, [f64; N]) {
+        (self.t, self.y)
+    }
+    fn step_start(&self) -> f64 {
+        self.t_old
+    }
+    fn dense(&self, t: f64) -> [f64; N] {
+        self.dense_output(t)
+    }
+    fn advance<F>(&mut self, f: &mut F, t_limit: f64) -> Result<()>
+    where
+        F: FnMut(f64, &[f64; N]) -> [f64; N],
+    {
+        self.step(f, t_limit)
+    }
+    fn step_counts(&self) -> (u64, u64) {
+        self.steps()
+    }
+    fn spent(&self) -> Cost {
+        self.cost()
+    }
+}
+
+/// The crossing of `g` in `direction` on the last accepted step of `stepper`,
+/// located by Brent's method on the dense output to `time_tolerance` (absolute,
+/// in t), with the evaluations of `g` spent; `None` when the step has none.
+pub fn locate_event_in_step<S, G, const N: usize>(
+    stepper: &S,
+    g: &mut G,
+    direction: EventDirection,
+    g_before: f64,
+    g_after: f64,
+    time_tolerance: f64,
+) -> Result<Option<(EventPoint<N>, Cost)>>
+where
+    S: DenseStepper<N>,
+    G: FnMut(f64, &[f64; N]) -> f64,
+{
+    if !direction.is_crossing(g_before, g_after) {
+        return Ok(None);
+    }
+    let (b, y_b) = stepper.current();
+    if g_after == 0.0 {
+        return Ok(Some((EventPoint { t: b, y: y_b }, Cost::ZERO)));
+    }
+    let a = stepper.step_start();
+    let tol = RootTolerance {
+        absolute: time_tolerance.max(0.0),
+        relative: 4.0 * f64::EPSILON,
+        max_iterations: 200,
+    };
+    let root = brent(
+        |s| {
+            if s <= a {
+                g_before
+            } else if s >= b {
+                g_after
+            } else {
+                g(s, &stepper.dense(s))
+            }
+        },
+        a,
+        b,
+        tol,
+    )?;
+    let t = root.value;
+    Ok(Some((
+        EventPoint {
+            t,
+            y: stepper.dense(t),
+        },
+        root.cost(),
+    )))
+}
+
+/// Steps `stepper` (started at `(t0, y0)`) until `g` crosses zero in `direction`
+/// or `t_end` is reached: the body of both `solve_until_event` functions.
+pub(crate) fn drive_until_event<S, F, G, const N: usize>(
+    mut stepper: S,
+    f: &mut F,
+    g: &mut G,
+    direction: EventDirection,
+    t0: f64,
+    y0: [f64; N],
+    t_end: f64,
+) -> Result<OdeSolution<N>>
+where
+    S: DenseStepper<N>,
+    F: FnMut(f64, &[f64; N]) -> [f64; N],
+    G: FnMut(f64, &[f64; N]) -> f64,
+{
     let mut g_prev = g(t0, &y0);
-    while stepper.t() < t_end {
-        stepper.step(&mut f, t_end)?;
-        let g_new = g(stepper.t(), &stepper.y());
-        if let Some((hit, _)) = stepper.locate_event(&mut g, direction, g_prev, g_new, 0.0)? {
-            let (accepted, rejected) = stepper.steps();
-            return Ok(OdeSolution {
-                t: hit.t,
-                y: hit.y,
-                event_found: true,
-                accepted_steps: accepted,
-                rejected_steps: rejected,
-                cost: stepper.cost(),
-            });
+    let solution = |stepper: &S, t: f64, y: [f64; N], event_found: bool| {
+        let (accepted, rejected) = stepper.step_counts();
+        OdeSolution {
+            t,
+            y,
+            event_found,
+            accepted_steps: accepted,
+            rejected_steps: rejected,
+            cost: stepper.spent(),
+        }
+    };
+    while stepper.current().0 < t_end {
+        stepper.advance(f, t_end)?;
+        let (t, y) = stepper.current();
+        let g_new = g(t, &y);
+        if let Some((hit, _)) = locate_event_in_step(&stepper, g, direction, g_prev, g_new, 0.0)? {
+            return Ok(solution(&stepper, hit.t, hit.y, true));
         }
         g_prev = g_new;
     }
-    let (accepted, rejected) = stepper.steps();
-    Ok(OdeSolution {
-        t: stepper.t(),
-        y: stepper.y(),
-        event_found: false,
-        accepted_steps: accepted,
-        rejected_steps: rejected,
-        cost: stepper.cost(),
-    })
+    let (t, y) = stepper.current();
+    Ok(solution(&stepper, t, y, false))
 }

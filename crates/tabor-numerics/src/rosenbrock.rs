@@ -38,8 +38,10 @@
 
 #![allow(clippy::needless_range_loop)] // component loops over small fixed arrays
 
-use crate::ode::{EventDirection, EventPoint, OdeSolution, OdeTolerance};
-use crate::root_finding::{brent, RootTolerance};
+use crate::ode::{
+    drive_until_event, finite, first_non_finite, locate_event_in_step, restart_span, DenseStepper,
+    EventDirection, EventPoint, OdeSolution, OdeTolerance,
+};
 use crate::{Cost, NumericsError, Result};
 
 /// A Rosenbrock method in the W-transformed form used by `RODAS` and Julia's
@@ -470,22 +472,6 @@ fn lu_solve<const N: usize>(lu: &Matrix<N>, perm: &[usize; N], b: &[f64; N]) -> 
     x
 }
 
-fn finite(name: &'static str, v: f64) -> Result<f64> {
-    if v.is_finite() {
-        Ok(v)
-    } else {
-        Err(NumericsError::InvalidArgument {
-            name,
-            value: v,
-            requirement: "must be finite",
-        })
-    }
-}
-
-fn first_non_finite<const N: usize>(v: &[f64; N]) -> Option<f64> {
-    v.iter().copied().find(|x| !x.is_finite())
-}
-
 /// A Rosenbrock stepper ([`Scheme`]): integrates `y' = f(t, y)` one accepted step
 /// at a time, forwards in time.
 ///
@@ -567,18 +553,7 @@ impl<const N: usize> Rosenbrock<N> {
     where
         F: FnMut(f64, &[f64; N]) -> [f64; N],
     {
-        finite("t", t)?;
-        for &v in &y {
-            finite("y", v)?;
-        }
-        let span = t_hint - t;
-        if !(span.is_finite() && span > 0.0) {
-            return Err(NumericsError::InvalidArgument {
-                name: "t_hint",
-                value: t_hint,
-                requirement: "must be finite and later than the current time",
-            });
-        }
+        let span = restart_span(t, &y, t_hint)?;
         self.t = t;
         self.t_old = t;
         self.y = y;
@@ -610,7 +585,7 @@ impl<const N: usize> Rosenbrock<N> {
     }
 
     fn scale(&self, a: f64, b: f64) -> f64 {
-        self.tol.absolute + self.tol.relative_effective() * a.abs().max(b.abs())
+        self.tol.error_scale(a, b)
     }
 
     /// A first step from the sizes of y and f (the first guess of Hairer's `HINIT`),
@@ -921,46 +896,7 @@ impl<const N: usize> Rosenbrock<N> {
     where
         G: FnMut(f64, &[f64; N]) -> f64,
     {
-        if !direction.is_crossing(g_before, g_after) {
-            return Ok(None);
-        }
-        if g_after == 0.0 {
-            return Ok(Some((
-                EventPoint {
-                    t: self.t,
-                    y: self.y,
-                },
-                Cost::ZERO,
-            )));
-        }
-        let (a, b) = (self.t_old, self.t);
-        let tol = RootTolerance {
-            absolute: time_tolerance.max(0.0),
-            relative: 4.0 * f64::EPSILON,
-            max_iterations: 200,
-        };
-        let root = brent(
-            |s| {
-                if s <= a {
-                    g_before
-                } else if s >= b {
-                    g_after
-                } else {
-                    g(s, &self.dense_output(s))
-                }
-            },
-            a,
-            b,
-            tol,
-        )?;
-        let t = root.value;
-        Ok(Some((
-            EventPoint {
-                t,
-                y: self.dense_output(t),
-            },
-            root.cost(),
-        )))
+        locate_event_in_step(self, &mut g, direction, g_before, g_after, time_tolerance)
     }
 }
 
@@ -983,33 +919,8 @@ where
     G: FnMut(f64, &[f64; N]) -> f64,
 {
     finite("t_end", t_end)?;
-    let mut stepper = Rosenbrock::new(&mut f, t0, y0, t_end, tol, jacobian, Scheme::Rodas5P)?;
-    let mut g_prev = g(t0, &y0);
-    while stepper.t() < t_end {
-        stepper.step(&mut f, t_end)?;
-        let g_new = g(stepper.t(), &stepper.y());
-        if let Some((hit, _)) = stepper.locate_event(&mut g, direction, g_prev, g_new, 0.0)? {
-            let (accepted, rejected) = stepper.steps();
-            return Ok(OdeSolution {
-                t: hit.t,
-                y: hit.y,
-                event_found: true,
-                accepted_steps: accepted,
-                rejected_steps: rejected,
-                cost: stepper.cost(),
-            });
-        }
-        g_prev = g_new;
-    }
-    let (accepted, rejected) = stepper.steps();
-    Ok(OdeSolution {
-        t: stepper.t(),
-        y: stepper.y(),
-        event_found: false,
-        accepted_steps: accepted,
-        rejected_steps: rejected,
-        cost: stepper.cost(),
-    })
+    let stepper = Rosenbrock::new(&mut f, t0, y0, t_end, tol, jacobian, Scheme::Rodas5P)?;
+    drive_until_event(stepper, &mut f, &mut g, direction, t0, y0, t_end)
 }
 
 /// Integrates `y' = f(t, y)` from `(t0, y0)` to `t_end` > `t0` with Rodas5P.
@@ -1034,4 +945,28 @@ where
         tol,
         jacobian,
     )
+}
+
+impl<const N: usize> DenseStepper<N> for Rosenbrock<N> {
+    fn current(&self) -> (f64, [f64; N]) {
+        (self.t, self.y)
+    }
+    fn step_start(&self) -> f64 {
+        self.t_old
+    }
+    fn dense(&self, t: f64) -> [f64; N] {
+        self.dense_output(t)
+    }
+    fn advance<F>(&mut self, f: &mut F, t_limit: f64) -> Result<()>
+    where
+        F: FnMut(f64, &[f64; N]) -> [f64; N],
+    {
+        self.step(f, t_limit)
+    }
+    fn step_counts(&self) -> (u64, u64) {
+        self.steps()
+    }
+    fn spent(&self) -> Cost {
+        self.cost()
+    }
 }

@@ -3,7 +3,9 @@
 //! `tabor_numerics::ode`.
 
 use serde::Serialize;
-use tabor_numerics::ode::{DormandPrince, EventDirection, EventPoint, OdeTolerance};
+use tabor_numerics::ode::{
+    locate_event_in_step, DenseStepper, DormandPrince, EventDirection, OdeTolerance,
+};
 use tabor_numerics::rosenbrock::{Jacobian, Rosenbrock, Scheme};
 use tabor_numerics::Cost;
 use tabor_restitution::{validate, Error, Result};
@@ -88,65 +90,6 @@ pub(crate) enum Method {
     Stiff(Jacobian),
 }
 
-/// What [`run_phase_with`] needs of a stepper.
-trait Stepper<const N: usize> {
-    fn advance<F>(&mut self, f: &mut F, t_limit: f64) -> tabor_numerics::Result<()>
-    where
-        F: FnMut(f64, &[f64; N]) -> [f64; N];
-    fn now(&self) -> (f64, [f64; N]);
-    fn step_start(&self) -> f64;
-    fn dense(&self, t: f64) -> [f64; N];
-    fn event<G>(
-        &self,
-        g: G,
-        direction: EventDirection,
-        before: f64,
-        after: f64,
-    ) -> tabor_numerics::Result<Option<(EventPoint<N>, Cost)>>
-    where
-        G: FnMut(f64, &[f64; N]) -> f64;
-    fn spent(&self) -> Cost;
-}
-
-macro_rules! stepper {
-    ($t:ident) => {
-        impl<const N: usize> Stepper<N> for $t<N> {
-            fn advance<F>(&mut self, f: &mut F, t_limit: f64) -> tabor_numerics::Result<()>
-            where
-                F: FnMut(f64, &[f64; N]) -> [f64; N],
-            {
-                self.step(f, t_limit)
-            }
-            fn now(&self) -> (f64, [f64; N]) {
-                (self.t(), self.y())
-            }
-            fn step_start(&self) -> f64 {
-                self.previous_t()
-            }
-            fn dense(&self, t: f64) -> [f64; N] {
-                self.dense_output(t)
-            }
-            fn event<G>(
-                &self,
-                g: G,
-                direction: EventDirection,
-                before: f64,
-                after: f64,
-            ) -> tabor_numerics::Result<Option<(EventPoint<N>, Cost)>>
-            where
-                G: FnMut(f64, &[f64; N]) -> f64,
-            {
-                self.locate_event(g, direction, before, after, 0.0)
-            }
-            fn spent(&self) -> Cost {
-                self.cost()
-            }
-        }
-    };
-}
-stepper!(DormandPrince);
-stepper!(Rosenbrock);
-
 /// Integrates `y' = f(t, y)` from `(t0, y0)` with Dormand-Prince 5(4) until the
 /// event function `g` crosses zero in `direction`: [`run_phase_with`] with
 /// [`Method::Explicit`].
@@ -221,7 +164,7 @@ fn drive<S, F, G, const N: usize>(
     mut record: Option<&mut Vec<(f64, [f64; N])>>,
 ) -> Result<PhaseEnd<N>>
 where
-    S: Stepper<N>,
+    S: DenseStepper<N>,
     F: FnMut(f64, &[f64; N]) -> [f64; N],
     G: FnMut(f64, &[f64; N]) -> f64,
 {
@@ -229,11 +172,11 @@ where
     if let Some(rec) = record.as_deref_mut() {
         rec.push((t0, y0));
     }
-    while stepper.now().0 < t_max {
+    while stepper.current().0 < t_max {
         stepper.advance(f, t_max)?;
-        let (t, y) = stepper.now();
+        let (t, y) = stepper.current();
         let g_new = g(t, &y);
-        let hit = stepper.event(&mut *g, direction, g_prev, g_new)?;
+        let hit = locate_event_in_step(&stepper, &mut *g, direction, g_prev, g_new, 0.0)?;
         let t_end = hit.as_ref().map_or(t, |(p, _)| p.t);
         if let Some(rec) = record.as_deref_mut() {
             let (a, b) = (stepper.step_start(), t_end);
