@@ -90,29 +90,7 @@ pub struct NormalizedLoss {
     pub cost: Cost,
 }
 
-/// A finite output, else an error naming the model and the quantity.
-pub(crate) fn finite_output(model: &'static str, quantity: &str, value: f64) -> Result<f64> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(Error::Model {
-            model,
-            message: format!("the {quantity} is not representable ({value}) for these parameters"),
-        })
-    }
-}
-
-/// A finite output > 0 (a scale), else an error.
-pub(crate) fn positive_output(model: &'static str, quantity: &str, value: f64) -> Result<f64> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(Error::Model {
-            model,
-            message: format!("the {quantity} under- or overflows ({value:e}) for these parameters"),
-        })
-    }
-}
+pub(crate) use tabor_restitution::validate::{finite_output, positive_output};
 
 /// The quadrature tolerance used for a requested relative tolerance: the
 /// Clenshaw-Curtis error estimate cannot go below a few ulps.

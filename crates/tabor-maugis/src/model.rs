@@ -2,7 +2,7 @@
 
 use crate::impact::{normalized_loss, NormalizedLoss};
 use crate::units::{tabor_parameter_from_cohesive_stress, tabor_parameter_from_range, Scales};
-use tabor_restitution::{validate, EnergyLoss, Error, ImpactModel, Result};
+use tabor_restitution::{validate, EnergyLoss, ImpactModel, Result};
 
 /// A Maugis-Dugdale adhesive impact in SI units: effective modulus E*, effective
 /// radius R, work of adhesion Δγ, Tabor parameter Λ, effective mass m, and the
@@ -104,27 +104,17 @@ impl MaugisDugdaleImpact {
 
     /// The adhesive loss |ΔU_kin| in joules, seed 000 eq. (5.43).
     pub fn energy_loss_joules(&self) -> Result<f64> {
-        in_joules(
+        // F_n d_n is finite, but W · F_n d_n may overflow: an error, not ∞
+        validate::finite_output(
+            MODEL,
             "energy loss",
-            self.normalized_loss()?.loss,
-            self.scales.energy,
+            self.normalized_loss()?.loss * self.scales.energy,
         )
     }
 }
 
-/// A normalized quantity times the energy scale F_n d_n; a product that overflows
-/// (F_n d_n near f64::MAX) is an error, not ∞.
-fn in_joules(quantity: &str, normalized: f64, energy: f64) -> Result<f64> {
-    let joules = normalized * energy;
-    if joules.is_finite() {
-        Ok(joules)
-    } else {
-        Err(Error::Model {
-            model: "Maugis-Dugdale impact",
-            message: format!("the {quantity} is not representable ({joules}) for these parameters"),
-        })
-    }
-}
+/// The model name in output errors.
+const MODEL: &str = "Maugis-Dugdale impact";
 
 impl ImpactModel for MaugisDugdaleImpact {
     fn name(&self) -> String {
@@ -137,8 +127,12 @@ impl ImpactModel for MaugisDugdaleImpact {
         validate::positive("impact_speed", impact_speed)?;
         let w = self.normalized_loss()?;
         Ok(EnergyLoss {
-            joules: in_joules("energy loss", w.loss, self.scales.energy)?,
-            error_estimate: in_joules("error estimate", w.error_estimate, self.scales.energy)?,
+            joules: validate::finite_output(MODEL, "energy loss", w.loss * self.scales.energy)?,
+            error_estimate: validate::finite_output(
+                MODEL,
+                "error estimate",
+                w.error_estimate * self.scales.energy,
+            )?,
             branch: w.method.to_string(),
             cost: w.cost,
         })

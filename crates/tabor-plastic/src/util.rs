@@ -1,32 +1,6 @@
 //! Output checks and small helpers shared by the models.
 
-use tabor_restitution::{Error, Result};
-
-/// A computed value that must be finite.
-pub(crate) fn finite_output(model: &'static str, what: &str, value: f64) -> Result<f64> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(Error::Model {
-            model,
-            message: format!("{what} is not finite ({value:e}): inputs out of range"),
-        })
-    }
-}
-
-/// A computed value that must be finite and > 0.
-pub(crate) fn positive_output(model: &'static str, what: &str, value: f64) -> Result<f64> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(Error::Model {
-            model,
-            message: format!(
-                "{what} = {value:e} is not finite and positive: inputs out of the representable range"
-            ),
-        })
-    }
-}
+pub(crate) use tabor_restitution::validate::{finite_output, positive_output};
 
 /// A cubic Hermite segment on `[0, L]`: `p(t) = y0 + m0 t + c2 t² + c3 t³` with
 /// `p(0) = y0`, `p'(0) = m0`, `p(L) = y1`, `p'(L) = m1`.

@@ -1,6 +1,10 @@
 //! Input checks shared by all models. Each returns the value when it is valid and an
 //! [`Error::InvalidParameter`] naming the parameter and its value otherwise, so that
 //! NaN, infinities, zeros and negative values never reach a formula.
+//!
+//! And the output checks ([`finite_output`], [`positive_output`]): a computed value
+//! that overflows or underflows for valid but extreme inputs becomes an
+//! [`Error::Model`] naming the model and the quantity, never a NaN or ∞ result.
 
 use crate::{Error, Result};
 
@@ -65,5 +69,31 @@ pub fn tolerance(parameter: &'static str, value: f64) -> Result<f64> {
         Ok(value)
     } else {
         Err(Error::invalid(parameter, value, "must lie in [1e-15, 0.5]"))
+    }
+}
+
+/// A computed value that must be finite, else an [`Error::Model`] naming `model`
+/// and the `quantity`.
+pub fn finite_output(model: &'static str, quantity: &str, value: f64) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::Model {
+            model,
+            message: format!("the {quantity} is not representable ({value}) for these parameters"),
+        })
+    }
+}
+
+/// A computed value that must be finite and > 0 (a scale), else an
+/// [`Error::Model`] naming `model` and the `quantity`.
+pub fn positive_output(model: &'static str, quantity: &str, value: f64) -> Result<f64> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::Model {
+            model,
+            message: format!("the {quantity} under- or overflows ({value:e}) for these parameters"),
+        })
     }
 }
