@@ -145,33 +145,58 @@ fn extend<const N: usize>(
     }));
 }
 
-/// The problem: exponent, damping, tolerance, what to record.
-struct Problem<'a> {
+/// The law (5.72): exponent β and scaled damping γ.
+#[derive(Clone, Copy)]
+struct Law {
     beta: f64,
     gamma: f64,
+}
+
+impl Law {
+    /// `F = (5/4) x^{3/2} + γ x^β ẋ`.
+    fn force(self, x: f64, v: f64) -> f64 {
+        1.25 * pow(x, 1.5) + self.gamma * pow(x, self.beta) * v
+    }
+
+    /// `(ẋ, −F, D')` for the state (x, ẋ).
+    fn damped(self, x: f64, v: f64) -> [f64; 3] {
+        let damping = self.gamma * pow(x, self.beta);
+        [v, -1.25 * pow(x, 1.5) - damping * v, damping * v * v]
+    }
+
+    /// `F/x^β`, computed directly.
+    fn reduced_force(self, x: f64, v: f64) -> f64 {
+        1.25 * pow(x, 1.5 - self.beta) + self.gamma * v
+    }
+}
+
+/// The problem: the law, tolerance, what to record.
+struct Problem<'a> {
+    law: Law,
     tol: OdeTolerance,
     record: Option<&'a mut Vec<ScaledPoint>>,
 }
 
 impl Problem<'_> {
-    /// The law (5.72): `(ẋ, −F, D')` for the state (x, ẋ).
-    fn damped(&self, x: f64, v: f64) -> [f64; 3] {
-        let damping = self.gamma * pow(x, self.beta);
-        [v, -1.25 * pow(x, 1.5) - damping * v, damping * v * v]
-    }
-
-    /// `F/x^β` of the law (5.72), computed directly.
-    fn reduced_force(&self, x: f64, v: f64) -> f64 {
-        1.25 * pow(x, 1.5 - self.beta) + self.gamma * v
-    }
-
-    /// The law (5.72) in the state (x, ẋ, E) from `start` until F = 0 or x = 0.
-    fn direct(&mut self, start: (f64, [f64; 3]), t_end: f64) -> Result<PhaseEnd<3>> {
+    /// One phase from `start` until `g` falls through zero, recording the states
+    /// with their forces `force(y)` when a trajectory is wanted.
+    fn phase<F, G, const N: usize>(
+        &mut self,
+        mut f: F,
+        mut g: G,
+        start: (f64, [f64; N]),
+        t_end: f64,
+        force: impl Fn(&[f64; N]) -> f64,
+    ) -> Result<PhaseEnd<N>>
+    where
+        F: FnMut(f64, &[f64; N]) -> [f64; N],
+        G: FnMut(f64, &[f64; N]) -> f64,
+    {
         let mut raw = Vec::new();
         let want = self.record.is_some();
         let end = run_phase(
-            &mut |_t: f64, y: &[f64; 3]| self.damped(y[0], y[1]),
-            &mut |_t: f64, y: &[f64; 3]| self.reduced_force(y[0], y[1]).min(y[0]),
+            &mut f,
+            &mut g,
             EventDirection::Falling,
             start.0,
             start.1,
@@ -180,12 +205,33 @@ impl Problem<'_> {
             want.then_some(&mut raw),
         )?;
         if let Some(points) = self.record.as_deref_mut() {
-            let (b, g) = (self.beta, self.gamma);
-            extend(points, &raw, |y| {
-                1.25 * pow(y[0], 1.5) + g * pow(y[0], b) * y[1]
-            });
+            extend(points, &raw, force);
         }
         Ok(end)
+    }
+
+    /// Compression in the state (x, ẋ, E) from first contact to ẋ = 0.
+    fn direct_until_turning(&mut self, offset: f64, t_max: f64) -> Result<PhaseEnd<3>> {
+        let law = self.law;
+        self.phase(
+            |_t: f64, y: &[f64; 3]| law.damped(y[0], y[1]),
+            |_t: f64, y: &[f64; 3]| y[1],
+            (0.0, [0.0, 1.0, offset]),
+            t_max,
+            |y| law.force(y[0], y[1]),
+        )
+    }
+
+    /// The law (5.72) in the state (x, ẋ, E) from `start` until F = 0 or x = 0.
+    fn direct(&mut self, start: (f64, [f64; 3]), t_end: f64) -> Result<PhaseEnd<3>> {
+        let law = self.law;
+        self.phase(
+            |_t: f64, y: &[f64; 3]| law.damped(y[0], y[1]),
+            |_t: f64, y: &[f64; 3]| law.reduced_force(y[0], y[1]).min(y[0]),
+            start,
+            t_end,
+            |y| law.force(y[0], y[1]),
+        )
     }
 }
 
@@ -208,8 +254,7 @@ pub(crate) fn solve(
     let x_inf = ((beta + 1.0) / gamma).powf(1.0 / (beta + 1.0));
     let t_max = 1e4 * (1.0 + gamma);
     let mut p = Problem {
-        beta,
-        gamma,
+        law: Law { beta, gamma },
         tol: first_step(tol, 1e-4 * x_inf.min(1.0)),
         record,
     };
@@ -255,42 +300,19 @@ pub(crate) fn solve(
 }
 
 impl Problem<'_> {
-    /// Compression in the state (x, ẋ, E) from first contact to ẋ = 0.
-    fn direct_until_turning(&mut self, offset: f64, t_max: f64) -> Result<PhaseEnd<3>> {
-        let mut raw = Vec::new();
-        let want = self.record.is_some();
-        let end = run_phase(
-            &mut |_t: f64, y: &[f64; 3]| self.damped(y[0], y[1]),
-            &mut |_t: f64, y: &[f64; 3]| y[1],
-            EventDirection::Falling,
-            0.0,
-            [0.0, 1.0, offset],
-            t_max,
-            self.tol,
-            want.then_some(&mut raw),
-        )?;
-        if let Some(points) = self.record.as_deref_mut() {
-            let (b, g) = (self.beta, self.gamma);
-            extend(points, &raw, |y| {
-                1.25 * pow(y[0], 1.5) + g * pow(y[0], b) * y[1]
-            });
-        }
-        Ok(end)
-    }
-
     /// Overdamped restitution in the state (x, ẋ, Q, E), `Q = φ + FLOOR φ*`, from
     /// the turning point until φ = 0 (returns `true`) or x = x*/2 (`false`; then
     /// the direct form takes over: the contact can end near x = 0, where φ' is
     /// singular for β > 1/2). For β = 3/2, `φ' = −γ x^β φ` never changes sign and
     /// the phase runs to x = 0 (`true`).
     fn overdamped(&mut self, start: (f64, [f64; 3]), t_end: f64) -> Result<(PhaseEnd<3>, bool)> {
-        let (beta, gamma) = (self.beta, self.gamma);
+        let Law { beta, gamma } = self.law;
         let x_star = start.1[0];
         let source = 1.25 * (1.5 - beta);
         let phi_star = 1.25 * pow(x_star, 1.5 - beta);
         let floor = FLOOR * phi_star;
         let switch = if source > 0.0 { 0.5 * x_star } else { 0.0 };
-        let mut f = |_t: f64, y: &[f64; 4]| {
+        let f = |_t: f64, y: &[f64; 4]| {
             let xb = pow(y[0], beta);
             let phi = y[2] - floor;
             // (d/dt)(5/4) x^{3/2−β}: regular for x ≥ x*/2; 0 in trial stages
@@ -307,28 +329,20 @@ impl Problem<'_> {
                 gamma * xb * y[1] * y[1],
             ]
         };
-        let mut g = |_t: f64, y: &[f64; 4]| {
+        let g = |_t: f64, y: &[f64; 4]| {
             if source > 0.0 {
                 (y[2] - floor).min(y[0] - switch)
             } else {
                 y[0]
             }
         };
-        let mut raw = Vec::new();
-        let want = self.record.is_some();
-        let end = run_phase(
-            &mut f,
-            &mut g,
-            EventDirection::Falling,
-            start.0,
-            [x_star, 0.0, phi_star + floor, start.1[2]],
+        let end = self.phase(
+            f,
+            g,
+            (start.0, [x_star, 0.0, phi_star + floor, start.1[2]]),
             t_end,
-            self.tol,
-            want.then_some(&mut raw),
+            |y| pow(y[0], beta) * (y[2] - floor),
         )?;
-        if let Some(points) = self.record.as_deref_mut() {
-            extend(points, &raw, |y| pow(y[0], beta) * (y[2] - floor));
-        }
         let phi = end.y[2] - floor;
         let done = switch == 0.0 || phi <= end.y[0] - switch;
         Ok((
@@ -346,7 +360,7 @@ impl Problem<'_> {
     /// the end is not the difference of x and −τ̂ẋ, ≈ x* each for large τ̂, which
     /// put the contact time off by ~tol·τ̂).
     fn rigorous(&mut self, tau: f64, start: (f64, [f64; 3]), t_end: f64) -> Result<PhaseEnd<3>> {
-        let mut f = |_t: f64, y: &[f64; 4]| {
+        let f = |_t: f64, y: &[f64; 4]| {
             let (x, v) = (y[0].max(0.0), y[1]);
             let force = 1.25 * pow(y[2], 1.5);
             // x^{3/2} − z^{3/2} = x^{3/2} (1 − (1 + u)^{3/2}), u = τ̂ẋ/x ∈ [−1, 0]
@@ -360,21 +374,13 @@ impl Problem<'_> {
             [v, -force, v - tau * force, -1.25 * excess * v]
         };
         let x_star = start.1[0];
-        let mut raw = Vec::new();
-        let want = self.record.is_some();
-        let end = run_phase(
-            &mut f,
-            &mut |_t: f64, y: &[f64; 4]| y[2],
-            EventDirection::Falling,
-            start.0,
-            [x_star, 0.0, x_star, start.1[2]],
+        let end = self.phase(
+            f,
+            |_t: f64, y: &[f64; 4]| y[2],
+            (start.0, [x_star, 0.0, x_star, start.1[2]]),
             t_end,
-            self.tol,
-            want.then_some(&mut raw),
+            |y| 1.25 * pow(y[2], 1.5),
         )?;
-        if let Some(points) = self.record.as_deref_mut() {
-            extend(points, &raw, |y| 1.25 * pow(y[2], 1.5));
-        }
         Ok(PhaseEnd {
             t: end.t,
             y: [end.y[0], end.y[1], end.y[3]],
