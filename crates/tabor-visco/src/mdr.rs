@@ -133,6 +133,14 @@ pub(crate) struct ScaledMedium {
     pub tau0: f64,
 }
 
+impl ScaledMedium {
+    /// The line load at the centre, `q(ξ = 0) = x + V + τ̂0 ẋ`, in the restitution
+    /// state (x, ẋ, V, U): positive while any element is in contact.
+    fn centre_load(&self, y: &[f64; 4]) -> f64 {
+        y[0] + y[2] + self.tau0 * y[1]
+    }
+}
+
 /// F̂ = FORCE · ∫_0^a q dξ.
 const FORCE: f64 = 15.0 / 8.0;
 /// The compression is integrated at this fraction of the requested tolerance.
@@ -284,6 +292,11 @@ impl Restitution<'_> {
     /// The compression parameter p ∈ [0, p*] of the element at the contact edge:
     /// the root of the line load (falling in p), by Newton's method safeguarded by
     /// bisection (Numerical Recipes' `rtsafe`). Returns p and the record there.
+    ///
+    /// Written out rather than `tabor_numerics::root_finding::newton_safeguarded`:
+    /// it runs inside every right-hand-side evaluation, where the signs at both ends
+    /// are known (q(0) = centre load > 0, q(p*) from the caller), so the two end
+    /// evaluations and the typed errors of the general routine would only add cost.
     fn edge(&mut self, t: f64, centre: f64) -> (f64, [f64; 5]) {
         let p_star = self.record.end;
         let (q_end, _, c_end) = self.line_load(t, centre, p_star);
@@ -339,7 +352,7 @@ impl Restitution<'_> {
 
     /// Phase 1, in time, state (x, ẋ, V, U): F̂ (edge by root search).
     fn force(&mut self, t: f64, y: &[f64; 4]) -> f64 {
-        let centre = y[0] + y[2] + self.m.tau0 * y[1];
+        let centre = self.m.centre_load(y);
         if centre.is_nan() {
             return f64::NAN;
         }
@@ -358,7 +371,7 @@ impl Restitution<'_> {
 
     /// The edge parameter at time t in state y (phase 1's event function).
     fn edge_of(&mut self, t: f64, y: &[f64; 4]) -> f64 {
-        let centre = y[0] + y[2] + self.m.tau0 * y[1];
+        let centre = self.m.centre_load(y);
         if centre.is_nan() {
             return f64::NAN;
         }
@@ -474,7 +487,6 @@ fn solve_with(
         hint: record.steps() - 1,
     });
     let mut f2 = |t: f64, y: &[f64; 4]| phase.borrow_mut().rhs_time(t, y);
-    let centre = |_t: f64, y: &[f64; 4]| y[0] + y[2] + m.tau0 * y[1];
     // Phase 1: in time, edge by root search, until the edge parameter falls to
     // SWITCH · p*.
     let p_switch = SWITCH * first.t;
@@ -519,7 +531,7 @@ fn solve_with(
             let end = run_phase_with(
                 method,
                 &mut f2,
-                &mut |t: f64, y: &[f64; 4]| centre(t, y),
+                &mut |_t: f64, y: &[f64; 4]| m.centre_load(y),
                 EventDirection::Falling,
                 second.t,
                 second.y,
