@@ -443,8 +443,8 @@ fn select<'a>(
                 (true, Some(a)) => (a.yield_velocity(), "adhesive yield onset (5.111)"),
                 _ => (p.yield_velocity(), "yield onset v_Y (5.103)"),
             };
-            let (used, reason, loss) = match speed {
-                Some(v) if v <= onset.0 => (
+            let (used, reason, loss) = match (speed, kinetic) {
+                (Some(v), _) if v <= onset.0 => (
                     false,
                     format!(
                         "impact speed {v:.4e} m/s does not exceed the {} {:.4e} m/s",
@@ -452,15 +452,15 @@ fn select<'a>(
                     ),
                     None,
                 ),
-                Some(v) => (
+                (Some(v), Some(k)) => (
                     true,
                     format!(
                         "impact speed {v:.4e} m/s exceeds the {} {:.4e} m/s",
                         onset.1, onset.0
                     ),
-                    Some(loss_at(p, v)?.min(0.5 * scene.effective_mass * v * v)),
+                    Some(loss_at(p, v)?.min(k)),
                 ),
-                None => (
+                _ => (
                     true,
                     format!("yield stress given ({} {:.4e} m/s)", onset.1, onset.0),
                     None,
