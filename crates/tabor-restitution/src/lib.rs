@@ -16,6 +16,7 @@
 //! input validation every model uses ([`validate`]).
 
 pub mod checks;
+pub mod combine;
 pub mod effective;
 mod error;
 mod model;
@@ -23,6 +24,7 @@ mod outcome;
 pub mod validate;
 
 pub use checks::Warning;
+pub use combine::LossSum;
 pub use effective::ElasticMaterial;
 pub use error::Error;
 pub use model::{EnergyLoss, ImpactModel};

@@ -56,20 +56,28 @@ pub trait ImpactModel {
     }
 }
 
-impl<M: ImpactModel + ?Sized> ImpactModel for &M {
-    fn name(&self) -> String {
-        (**self).name()
-    }
-    fn effective_mass(&self) -> f64 {
-        (**self).effective_mass()
-    }
-    fn energy_loss(&self, impact_speed: f64) -> Result<EnergyLoss> {
-        (**self).energy_loss(impact_speed)
-    }
-    fn loss_is_speed_independent(&self) -> bool {
-        (**self).loss_is_speed_independent()
-    }
-    fn speed_scale(&self) -> f64 {
-        (**self).speed_scale()
-    }
+macro_rules! forward_impact_model {
+    ($($t:ty),*) => {$(
+        impl<M: ImpactModel + ?Sized> ImpactModel for $t {
+            fn name(&self) -> String {
+                (**self).name()
+            }
+            fn effective_mass(&self) -> f64 {
+                (**self).effective_mass()
+            }
+            fn energy_loss(&self, impact_speed: f64) -> Result<EnergyLoss> {
+                (**self).energy_loss(impact_speed)
+            }
+            fn loss_is_speed_independent(&self) -> bool {
+                (**self).loss_is_speed_independent()
+            }
+            fn speed_scale(&self) -> f64 {
+                (**self).speed_scale()
+            }
+        }
+    )*};
 }
+
+// A borrowed, boxed or shared model is a model: `Box<dyn ImpactModel>` works wherever
+// a concrete model does.
+forward_impact_model!(&M, Box<M>, std::sync::Arc<M>);

@@ -14,6 +14,7 @@ use tabor_restitution::{
 };
 
 /// ΔU = c + k·(m v²/2): constant adhesive part plus a fixed fraction of the energy.
+#[derive(Debug)]
 struct AffineLoss {
     mass: f64,
     constant: f64,
@@ -250,4 +251,62 @@ proptest! {
             prop_assert_eq!(out.energy_loss, kinetic);
         }
     }
+}
+
+/// The loss sum of two affine losses is the affine loss with summed constants and
+/// fractions (a closed form), boxed or borrowed; its sticking velocity is then
+/// √(2c/(m(1 − k))) from ε² = 1 − 2ΔU/(m v²) = 0.
+#[test]
+fn loss_sum_adds_affine_losses() {
+    use tabor_restitution::LossSum;
+    let a = AffineLoss {
+        mass: 2e-3,
+        constant: 3e-6,
+        fraction: 0.1,
+    };
+    let b = AffineLoss {
+        mass: 2e-3,
+        constant: 1e-6,
+        fraction: 0.25,
+    };
+    let parts: Vec<Box<dyn ImpactModel>> = vec![Box::new(a), Box::new(b)];
+    let sum = LossSum::new(parts).unwrap();
+    for v in [0.01, 0.3, 7.0] {
+        let expected = 4e-6 + 0.35 * 0.5 * 2e-3 * v * v;
+        assert_relative_eq!(
+            sum.energy_loss(v).unwrap().joules,
+            expected,
+            max_relative = 1e-15
+        );
+    }
+    assert!(!sum.loss_is_speed_independent());
+    let vc = sticking_velocity(&sum, 1e-13).unwrap();
+    assert_relative_eq!(
+        vc.speed,
+        (2.0_f64 * 4e-6 / (2e-3 * (1.0 - 0.35))).sqrt(),
+        max_relative = 1e-10
+    );
+    assert_eq!(sum.name(), "affine test loss + affine test loss");
+}
+
+#[test]
+fn loss_sum_refuses_no_parts_and_different_masses() {
+    use tabor_restitution::LossSum;
+    let none: Vec<AffineLoss> = Vec::new();
+    assert!(LossSum::new(none).is_err());
+    let e = LossSum::new(vec![
+        AffineLoss {
+            mass: 1.0,
+            constant: 0.0,
+            fraction: 0.0,
+        },
+        AffineLoss {
+            mass: 2.0,
+            constant: 0.0,
+            fraction: 0.0,
+        },
+    ])
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("different effective masses"), "{e}");
 }
