@@ -143,3 +143,21 @@ pub fn spaced(from: f64, to: f64, points: usize, log: bool) -> Result<Vec<f64>, 
         })
         .collect())
 }
+
+impl Scene {
+    /// The coefficient of restitution (5.37) at each of `speeds` (m/s), computed in
+    /// parallel on rayon's pool, by the same model and combination rule as
+    /// [`Scene::outcome_at`] at that speed. The first invalid speed or failing point
+    /// is returned with its index.
+    pub fn restitutions(&self, speeds: &[f64]) -> Result<Vec<f64>, (usize, SceneError)> {
+        speeds
+            .par_iter()
+            .enumerate()
+            .map(|(i, &v)| {
+                self.outcome_at(v)
+                    .map(|o| o.restitution)
+                    .map_err(|e| (i, e))
+            })
+            .collect()
+    }
+}
