@@ -127,6 +127,14 @@ pub fn sticking_velocity<M: ImpactModel + ?Sized>(
         let loss = model.energy_loss(scale)?;
         let joules = validate::non_negative("energy_loss", loss.joules)?;
         cost += loss.cost;
+        if joules == 0.0 {
+            // no loss at any speed: the bodies never stick (not "stick below 0 m/s")
+            return Ok(StickingVelocity {
+                speed: 0.0,
+                method: StickingMethod::NeverSticks,
+                cost,
+            });
+        }
         let speed = (2.0 * joules / m).sqrt();
         if !speed.is_finite() {
             return Err(Error::invalid(

@@ -143,6 +143,16 @@ fn never_and_always_sticking_models() {
     let vc = sticking_velocity(&model, 1e-10).unwrap();
     assert_eq!(vc.method, StickingMethod::NeverSticks);
     assert_eq!(vc.speed, 0.0);
+    // a lossless, speed-independent model (elastic contact) never sticks: before,
+    // the closed form (5.38) reported "sticks below 0 m/s"
+    let lossless = AffineLoss {
+        mass: 1.0,
+        constant: 0.0,
+        fraction: 0.0,
+    };
+    assert!(lossless.loss_is_speed_independent());
+    let vc = sticking_velocity(&lossless, 1e-10).unwrap();
+    assert_eq!(vc.method, StickingMethod::NeverSticks);
     let model = AffineLoss {
         mass: 1.0,
         constant: 1.0,
