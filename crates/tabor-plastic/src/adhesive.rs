@@ -19,21 +19,42 @@ use tabor_restitution::{
 
 const MODEL: &str = "adhesive interpolation";
 
-/// `Q̃`: fully plastic `F̂ = (Q̃/Φ) â²`. Seed 000, eq. (5.114).
-pub const ADHESIVE_PLASTIC_SLOPE: f64 = 3.5;
-/// `D̃`: fully plastic for `d̂ > D̃/Φ²`. Seed 000, eq. (5.114).
-pub const ADHESIVE_PLASTIC_ONSET: f64 = 400.0;
-/// `κ` of `Φ = κ (Δγ E*²/(σ_Y³ R))^(1/3)`, calibrated so that seed 000 eq. (5.126),
-/// `v_c²/v_Y² = 0.37 Φ⁵`, holds exactly with `v_c` of (5.38) and `v_Y` of (5.103):
-/// `κ = (K/0.37)^(1/5)`, `K = Û_JKR (3∛3/8) π^(5/3) / ((8/15)(4π/5)⁵)`.
-/// (`shared/spec/models.md`; the book's own definition (3.293) is not available.)
-pub const ADHESION_PARAMETER_FACTOR: f64 = 0.814_472_068_900_012_1;
+/// `2 · 1.2429`: the weak-adhesion limit of (5.111), `F̂_Y → 2·1.2429/Φ³` as Φ → 0.
+///
+/// Seed 000, eq. (5.111) (the coefficient of `1/Φ³`).
+pub const WEAK_ADHESION_YIELD_COEFFICIENT: f64 = 2.0 * 1.2429;
+
+/// `Q̃`: fully plastic `F̂ = (Q̃/Φ) â² = (2Q̃/(3Φ)) d̂`. Derived, not the seed's rounded
+/// `Q̃ ≈ 3.5`: as Φ → 0 the model in units of its yield onset is the interpolation
+/// model with `Q = 2Q̃/c^(1/3)`, `c` = [`WEAK_ADHESION_YIELD_COEFFICIENT`]; `Q̃ =
+/// (Q/2) c^(1/3)` with `Q = 5` ([`crate::DEFAULT_PLASTIC_SLOPE`]) gives 3.3865857.
+///
+/// Seed 000, eq. (5.114) (`Q̃ ≈ 3.5`).
+pub const ADHESIVE_PLASTIC_SLOPE: f64 = 3.386_585_697_520_309;
+/// `D̃`: fully plastic for `d̂ > D̃/Φ²`. Derived, not the seed's rounded `D̃ ≈ 400`:
+/// as Φ → 0 the onset in units of the yield depth `d̂_Y → 3 c^(2/3)/Φ²` is
+/// `D = D̃/(3 c^(2/3))`; `D̃ = 3 D c^(2/3)` with `D = 80`
+/// ([`crate::DEFAULT_PLASTIC_ONSET`]) gives 440.40817.
+///
+/// Seed 000, eq. (5.114) (`D̃ ≈ 400`).
+pub const ADHESIVE_PLASTIC_ONSET: f64 = 440.408_167_167_326_1;
+/// `κ` of `Φ = κ (Δγ E*²/(σ_Y³ R))^(1/3)`, derived so that the weak-adhesion yield
+/// load `c F_n/Φ³` ((5.111), `F_n = (3/2)πΔγR`) equals Thornton's Hertz yield load
+/// `F_Y = (4/3)E* R² (π p_Y/(2E*))³` of (5.102) exactly (`p_Y = 1.6 σ_Y`):
+/// `κ = (9c/(π² 1.6³))^(1/3) = 0.82101231`. With it (5.126) reads
+/// `v_c²/v_Y² = 0.35550 Φ⁵` (the seed's "≈ 0.37 Φ⁵"; `K/κ⁵` with
+/// `K = Û_JKR (3∛3/8) π^(5/3) / ((8/15)(4π/5)⁵)`, Û_JKR the normalized fixed-grip
+/// loss). The book's own definition (3.293) is not available.
+///
+/// Seed 000, the Φ of (5.111), (5.126) (`shared/spec/models.md`).
+pub const ADHESION_PARAMETER_FACTOR: f64 = 0.821_012_305_737_916_4;
 
 /// The adhesion parameter `Φ = κ (Δγ E*²/(σ_Y³ R))^(1/3)` from material data:
 /// effective modulus `E*` (Pa), effective radius `R` (m), yield stress `σ_Y` (Pa),
 /// work of adhesion `Δγ` (J/m²), all finite and > 0.
 ///
-/// Seed 000, the parameter Φ of (5.111) (the book's (3.293)), calibrated by (5.126).
+/// Seed 000, the parameter Φ of (5.111) (the book's (3.293)); κ =
+/// [`ADHESION_PARAMETER_FACTOR`] matches the weak-adhesion yield load to (5.102).
 pub fn adhesion_parameter(
     effective_modulus: f64,
     effective_radius: f64,
@@ -55,7 +76,8 @@ pub fn adhesion_parameter(
 /// Seed 000, eq. (5.111) (from ref. [51]).
 pub fn adhesive_yield_force(adhesion_parameter: f64) -> Result<f64> {
     let p = validate::positive("adhesion_parameter", adhesion_parameter)?;
-    let f = 2.0 * (0.111 * p - 0.8236 - 0.0636 / p + 0.0087 / (p * p) + 1.2429 / (p * p * p));
+    let f = 2.0 * (0.111 * p - 0.8236 - 0.0636 / p + 0.0087 / (p * p))
+        + WEAK_ADHESION_YIELD_COEFFICIENT / (p * p * p);
     finite_output(MODEL, "yield force", f)
 }
 
@@ -82,7 +104,9 @@ pub struct AdhesiveTurningPoint {
 }
 
 /// The adhesive interpolation model in normalized units, for one adhesion parameter
-/// Φ and the constants `Q̃`, `D̃`.
+/// Φ and the constants `Q̃`, `D̃` (by default [`ADHESIVE_PLASTIC_SLOPE`],
+/// [`ADHESIVE_PLASTIC_ONSET`], derived so that Φ → 0 gives the interpolation model
+/// with Q = 5, D = 80).
 ///
 /// Loading from first touch (`d̂ = 0`): JKR (`F̂ = â³ − 2â^(3/2)`,
 /// `d̂ = 3â² − 4â^(1/2)`) up to the yield state `(â_Y, d̂_Y, F̂_Y)` of
@@ -106,7 +130,8 @@ pub struct AdhesiveInterpolation {
 }
 
 impl AdhesiveInterpolation {
-    /// The model for adhesion parameter Φ (finite, > 0) with `Q̃ = 3.5`, `D̃ = 400`.
+    /// The model for adhesion parameter Φ (finite, > 0) with `Q̃` =
+    /// [`ADHESIVE_PLASTIC_SLOPE`] ≈ 3.387, `D̃` = [`ADHESIVE_PLASTIC_ONSET`] ≈ 440.4.
     ///
     /// Seed 000, eqs. (5.111)-(5.120).
     pub fn new(adhesion_parameter: f64) -> Result<Self> {

@@ -18,6 +18,8 @@
 //! - [`AdhesiveInterpolation`] (normalized) and [`AdhesiveInterpolationImpact`]
 //!   (SI): (5.111)-(5.126), JKR relations from `tabor_jkr::normalized`.
 //!
+//! [`YieldVelocity`]: the impact speed where yield begins, for every model above.
+//!
 //! [`materials`] holds the comparison cases of seed 000 Table 5.2 and seed 001 Table 3.
 //!
 //! ```
@@ -41,11 +43,12 @@ mod loading;
 pub mod materials;
 mod superposition;
 mod util;
+mod yield_velocity;
 
 pub use adhesive::{
     adhesion_parameter, adhesive_yield_force, AdhesiveForceLaw, AdhesiveInterpolation,
     AdhesiveInterpolationImpact, AdhesiveTurningPoint, ADHESION_PARAMETER_FACTOR,
-    ADHESIVE_PLASTIC_ONSET, ADHESIVE_PLASTIC_SLOPE,
+    ADHESIVE_PLASTIC_ONSET, ADHESIVE_PLASTIC_SLOPE, WEAK_ADHESION_YIELD_COEFFICIENT,
 };
 pub use contact::{PlasticContact, LIMITING_PRESSURE_RATIO};
 pub use dimensionless_fit::{Clamping, DimensionlessFit, FittedRestitution};
@@ -59,3 +62,4 @@ pub use loading::{
 pub use superposition::Superposition;
 pub use tabor_dynamics::SimulationSettings;
 pub use tabor_restitution::{EnergyLoss, Error, Result};
+pub use yield_velocity::YieldVelocity;

@@ -1,12 +1,14 @@
 //! Plasticity and adhesion by superposing their losses (seed 000, (5.109)-(5.110)).
 
-use crate::util::finite_output;
 use tabor_jkr::{JkrImpact, JkrSphere};
-use tabor_restitution::{EnergyLoss, Error, ImpactModel, Result};
+use tabor_restitution::{EnergyLoss, Error, ImpactModel, LossSum, Result};
 
 /// The superposition model: the kinetic energy lost is the plastic loss of any
 /// non-adhesive model `P` plus the elastic JKR adhesive loss (5.36) (fixed grip),
 /// i.e. `1 − ε² = (1 − ε_adh²) + (1 − ε_pl²)`, `ε = √(ε_pl² − v_c²/v0²)`.
+///
+/// The losses are added by `tabor_restitution::LossSum` (the one loss-summing
+/// combinator) over the two parts, borrowed per call.
 ///
 /// Seed 000, eqs. (5.109)-(5.110).
 #[derive(Clone, Debug)]
@@ -22,7 +24,17 @@ impl<P: ImpactModel> Superposition<P> {
     /// Seed 000, eq. (5.109).
     pub fn new(plastic: P, sphere: JkrSphere) -> Result<Self> {
         let adhesive = JkrImpact::new(sphere, plastic.effective_mass())?;
-        Ok(Superposition { plastic, adhesive })
+        let model = Superposition { plastic, adhesive };
+        model.parts()?;
+        Ok(model)
+    }
+
+    /// The two parts as a `LossSum` (plastic first: its speed scale is the sum's).
+    fn parts(&self) -> Result<LossSum<&dyn ImpactModel>> {
+        LossSum::new(vec![
+            &self.plastic as &dyn ImpactModel,
+            &self.adhesive as &dyn ImpactModel,
+        ])
     }
 
     /// The non-adhesive plastic model.
@@ -47,23 +59,19 @@ impl<P: ImpactModel> ImpactModel for Superposition<P> {
     fn effective_mass(&self) -> f64 {
         self.plastic.effective_mass()
     }
-    /// `|ΔU_pl(v0)| + |ΔU_JKR|`. Seed 000, eq. (5.109).
+    /// `|ΔU_pl(v0)| + |ΔU_JKR|` by `LossSum`. Seed 000, eq. (5.109).
     fn energy_loss(&self, impact_speed: f64) -> Result<EnergyLoss> {
-        let pl = self.plastic.energy_loss(impact_speed)?;
-        let adh = self.adhesive.adhesive_energy_loss()?;
-        let joules = finite_output("superposition", "energy loss", pl.joules + adh.joules)?;
+        let mut loss = self.parts()?.energy_loss(impact_speed)?;
+        // LossSum checked the sum is finite; the parts are non-negative losses.
+        let joules = loss.joules;
         if joules < 0.0 {
             return Err(Error::Model {
                 model: "superposition",
                 message: format!("negative energy loss {joules:e}"),
             });
         }
-        Ok(EnergyLoss {
-            joules,
-            error_estimate: pl.error_estimate + adh.error_estimate,
-            branch: format!("(5.109): {} + {}", pl.branch, adh.branch),
-            cost: pl.cost + adh.cost,
-        })
+        loss.branch = format!("(5.109): {}", loss.branch);
+        Ok(loss)
     }
     fn speed_scale(&self) -> f64 {
         self.plastic.speed_scale()
