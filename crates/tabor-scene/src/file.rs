@@ -258,3 +258,20 @@ pub fn locate(text: &str, format: Format, section: Option<&str>, key: &str) -> O
     }
     None
 }
+
+/// The 1-based line of the table `[section]` (TOML) or of the key `"section"`
+/// (JSON), for errors that concern a whole section.
+pub fn locate_section(text: &str, format: Format, section: &str) -> Option<usize> {
+    text.lines()
+        .position(|raw| {
+            let line = raw.trim();
+            match format {
+                Format::Toml => {
+                    line.starts_with('[')
+                        && line.trim_matches(|c| c == '[' || c == ']').trim() == section
+                }
+                Format::Json => line.contains(&format!("\"{section}\"")),
+            }
+        })
+        .map(|i| i + 1)
+}

@@ -26,13 +26,22 @@
 //! body, rigorous model) is used when a viscosity is given and its loss matters;
 //! combined with other losses it is added to them, with a warning.
 
-mod effects;
+mod combination;
 pub mod file;
+mod models;
+mod outcome;
 mod scene;
+mod select;
 mod sweep;
+mod visco_contact;
+mod viscous_adhesive;
 
-pub use effects::{Effect, Outcome};
+pub use combination::{
+    rule, AdhesionKind, Combination, EffectKind, EffectSet, PlasticityKind, Refusal, Rule,
+    ViscoKind,
+};
 pub use file::{Format, ParseError, SceneFile};
+pub use outcome::{Effect, Outcome};
 pub use scene::{
     Adhesion, AdhesionRange, AdhesivePlasticity, Body, PlasticityModel, Scene, SceneBuilder,
     SceneError, DEFAULT_ACCURACY,

@@ -2,8 +2,8 @@
 //! quantities every model needs.
 
 use crate::file::{
-    locate, parse, AdhesionFile, BodyFile, Format, GradationFile, ImpactFile, ParseError,
-    PlasticityFile, SceneFile,
+    locate, locate_section, parse, AdhesionFile, BodyFile, Format, GradationFile, ImpactFile,
+    ParseError, PlasticityFile, SceneFile,
 };
 use serde::Serialize;
 use std::fmt;
@@ -162,6 +162,8 @@ pub enum AdhesivePlasticity {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
     pub(crate) data: SceneFile,
+    /// The text the scene was read from, to locate errors found later.
+    source: Option<std::sync::Arc<(String, Format)>>,
     /// The scene's name (file stem or `name`).
     pub name: String,
     /// The impacting sphere.
@@ -217,9 +219,12 @@ fn body(section: &str, b: &BodyFile, is_target: bool) -> Result<Body, SceneError
         .transpose()?;
     let mass = match (b.mass, density, radius) {
         (Some(m), _, _) => Some(validate::positive("mass", m).map_err(in_field(section, "mass"))?),
-        (None, Some(rho), Some(r)) => {
-            Some(sphere_mass(r, rho).map_err(in_field(section, "density"))?)
-        }
+        (None, Some(rho), Some(r)) => Some(sphere_mass(r, rho).map_err(|_| {
+            SceneError::field(
+                format!("{section}.radius"),
+                format!("= {r:e} with density {rho:e} kg/m^3: the mass (4/3) pi R^3 rho = {:e} kg is not representable", 4.0 / 3.0 * std::f64::consts::PI * r * r * r * rho),
+            )
+        })?),
         (None, _, None) => None,
         (None, None, Some(_)) => {
             return Err(SceneError::field(
@@ -309,6 +314,25 @@ impl Scene {
             Some(a) => Some(adhesion(a, e, r)?),
         };
         let (plasticity, adhesive_plasticity) = plasticity(data.plasticity.as_ref())?;
+        if data.plasticity.is_some()
+            && sphere.yield_stress.is_none()
+            && target.yield_stress.is_none()
+        {
+            return Err(SceneError::field(
+                "plasticity",
+                "a [plasticity] section needs a yield_stress on the sphere or the target (Pa)",
+            ));
+        }
+        if let Some(a) = &adhesion {
+            if a.separation == SeparationRule::LoadControlled
+                && matches!(a.range, AdhesionRange::TaborParameter(_))
+            {
+                return Err(SceneError::field(
+                    "adhesion.separation",
+                    "\"load-controlled\" applies to JKR only (no range): a Maugis-Dugdale contact separates at its own instability; remove separation or the range",
+                ));
+            }
+        }
         let speed = match data.impact.as_ref().and_then(|i| i.speed) {
             None => None,
             Some(v) => Some(validate::positive("speed", v).map_err(in_field("impact", "speed"))?),
@@ -316,6 +340,7 @@ impl Scene {
         let name = data.name.clone().unwrap_or_else(|| "scene".into());
         Ok(Scene {
             data,
+            source: None,
             name,
             sphere,
             target,
@@ -334,19 +359,19 @@ impl Scene {
     /// (line of the offending key) where possible.
     pub fn from_str(text: &str, format: Format) -> Result<Scene, SceneError> {
         let data = parse(text, format)?;
-        Scene::from_data(data).map_err(|mut e| {
-            if e.line.is_none() {
-                if let Some(field) = &e.field {
-                    let (section, key) = match field.split_once('.') {
-                        Some((s, k)) if !s.is_empty() => (Some(s), k),
-                        _ => (None, field.trim_start_matches('.')),
-                    };
-                    let key = key.rsplit('.').next().unwrap_or(key);
-                    e.line = locate(text, format, section, key);
-                }
-            }
-            e
-        })
+        let source = std::sync::Arc::new((text.to_string(), format));
+        let mut scene = Scene::from_data(data).map_err(|e| located(&source, e))?;
+        scene.source = Some(source);
+        Ok(scene)
+    }
+
+    /// `e` with the line of its field in the scene text, when the scene was read
+    /// from a text and the error has a field but no line yet.
+    pub(crate) fn locate(&self, e: SceneError) -> SceneError {
+        match &self.source {
+            Some(source) => located(source, e),
+            None => e,
+        }
     }
 
     /// Reads and validates a scene file (`.json` is JSON, anything else TOML).
@@ -375,8 +400,9 @@ impl Scene {
     pub fn with_speed(&self, speed: f64) -> Result<Scene, SceneError> {
         let mut data = self.data.clone();
         data.impact.get_or_insert_with(ImpactFile::default).speed = Some(speed);
-        let mut s = Scene::from_data(data)?;
+        let mut s = Scene::from_data(data).map_err(|e| self.locate(e))?;
         s.name = self.name.clone();
+        s.source = self.source.clone();
         Ok(s)
     }
 
@@ -396,6 +422,15 @@ impl Scene {
         }
     }
 
+    /// The field of the yield stress that [`Scene::yield_stress`] uses.
+    pub fn yield_stress_field(&self) -> &'static str {
+        match (self.sphere.yield_stress, self.target.yield_stress) {
+            (Some(a), Some(b)) if a < b => "sphere.yield_stress",
+            (Some(_), None) => "sphere.yield_stress",
+            _ => "target.yield_stress",
+        }
+    }
+
     /// The Poisson's ratio of the plastic body (the target if it has a yield
     /// stress, else the sphere).
     pub fn plastic_poisson_ratio(&self) -> f64 {
@@ -406,11 +441,6 @@ impl Scene {
         }
     }
 
-    /// The viscosity of the viscoelastic body, when any.
-    pub fn viscosity(&self) -> Option<f64> {
-        self.target.viscosity.or(self.sphere.viscosity)
-    }
-
     /// The slowest elastic wave speed √(E/ρ) of the bodies whose density is known.
     pub fn wave_speed_body(&self) -> Option<(f64, f64)> {
         [&self.sphere, &self.target]
@@ -418,6 +448,23 @@ impl Scene {
             .filter_map(|b| b.density.map(|rho| (b.material.youngs_modulus(), rho)))
             .min_by(|a, b| (a.0 / a.1).total_cmp(&(b.0 / b.1)))
     }
+}
+
+/// `e` with the line of its field (or section) in `source`, when it has none.
+fn located(source: &(String, Format), mut e: SceneError) -> SceneError {
+    let (text, format) = (source.0.as_str(), source.1);
+    if e.line.is_none() {
+        if let Some(field) = &e.field {
+            let (section, key) = match field.split_once('.') {
+                Some((s, k)) if !s.is_empty() => (Some(s), k),
+                _ => (None, field.trim_start_matches('.')),
+            };
+            let key = key.rsplit('.').next().unwrap_or(key);
+            e.line =
+                locate(text, format, section, key).or_else(|| locate_section(text, format, field));
+        }
+    }
+    e
 }
 
 fn adhesion(a: &AdhesionFile, e: f64, r: f64) -> Result<Adhesion, SceneError> {

@@ -1,8 +1,9 @@
 //! Sweeps: the outcome of a scene over many values of one parameter, in parallel.
 
-use crate::effects::Outcome;
 use crate::file::AdhesionFile;
+use crate::outcome::Outcome;
 use crate::scene::{Scene, SceneError};
+use crate::select::Prepared;
 use rayon::prelude::*;
 use serde::Serialize;
 
@@ -74,7 +75,7 @@ impl Scene {
             }
             SweepParameter::YieldStress => data.target.yield_stress = Some(value),
         }
-        let mut s = Scene::from_data(data)?;
+        let mut s = Scene::from_data(data).map_err(|e| self.locate(e))?;
         s.name = self.name.clone();
         Ok(s)
     }
@@ -92,6 +93,21 @@ pub fn sweep<F>(
 where
     F: Fn() + Sync,
 {
+    if parameter == SweepParameter::Speed {
+        // one scene: its models and its sticking velocity are built once
+        let prepared = match Prepared::new(scene) {
+            Ok(p) => p,
+            Err(e) => return values.iter().map(|_| Err(e.clone())).collect(),
+        };
+        return values
+            .par_iter()
+            .map(|&v| {
+                let result = prepared.outcome_at(v);
+                on_point();
+                result
+            })
+            .collect();
+    }
     values
         .par_iter()
         .map(|&value| {
@@ -147,17 +163,14 @@ pub fn spaced(from: f64, to: f64, points: usize, log: bool) -> Result<Vec<f64>, 
 impl Scene {
     /// The coefficient of restitution (5.37) at each of `speeds` (m/s), computed in
     /// parallel on rayon's pool, by the same model and combination rule as
-    /// [`Scene::outcome_at`] at that speed. The first invalid speed or failing point
-    /// is returned with its index.
+    /// [`Scene::outcome_at`] at that speed (the models are built once). The first
+    /// invalid speed or failing point is returned with its index.
     pub fn restitutions(&self, speeds: &[f64]) -> Result<Vec<f64>, (usize, SceneError)> {
+        let prepared = Prepared::new(self).map_err(|e| (0, e))?;
         speeds
             .par_iter()
             .enumerate()
-            .map(|(i, &v)| {
-                self.outcome_at(v)
-                    .map(|o| o.restitution)
-                    .map_err(|e| (i, e))
-            })
+            .map(|(i, &v)| prepared.restitution(v).map_err(|e| (i, e)))
             .collect()
     }
 }
