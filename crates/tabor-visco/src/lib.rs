@@ -26,6 +26,7 @@
 //! restitution is always in [0, 1].
 
 pub mod compressible_flat;
+pub mod contact;
 pub mod damping_law;
 mod hertz_damped;
 pub mod kelvin_maxwell_sphere;
