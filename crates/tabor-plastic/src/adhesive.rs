@@ -143,7 +143,7 @@ impl AdhesiveInterpolation {
     }
 
     /// The model with explicit `Q̃` (> 0) and `D̃` (> 0). Fails when the elasto-plastic
-    /// range is empty (`d̂_0 ≤ max(d̂_Y, 0)`, Φ above about 9.3 for the defaults) or its
+    /// range is empty (`d̂_0 ≤ max(d̂_Y, 0)`, Φ above about 9.70 for the defaults) or its
     /// cubics do not increase monotonically.
     ///
     /// Seed 000, eqs. (5.111)-(5.120).
