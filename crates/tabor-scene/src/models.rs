@@ -291,20 +291,22 @@ fn build_plastic(scene: &Scene) -> Result<Option<Plastic>, SceneError> {
     }))
 }
 
-fn build_visco(scene: &Scene) -> Result<Option<Visco>, SceneError> {
-    crate::visco_contact::build(scene)
-}
-
 impl Models {
     /// Builds every model the scene's parameters call for.
     pub(crate) fn build(scene: &Scene) -> Result<Models, SceneError> {
         let adhesive = build_adhesive(scene)?;
         let plastic = build_plastic(scene)?;
-        let visco = build_visco(scene)?;
+        let (visco, visco_kind) = match crate::visco_contact::build(scene)? {
+            Ok(v) => {
+                let kind = v.as_ref().map(|v| v.kind);
+                (v, kind)
+            }
+            Err(kind) => (None, Some(kind)),
+        };
         let candidates = EffectSet {
             adhesion: adhesive.as_ref().map(|a| a.kind),
             plasticity: plastic.as_ref().map(Plastic::kind),
-            viscoelasticity: visco.as_ref().map(|v| v.kind),
+            viscoelasticity: visco_kind,
             graded: scene.target.gradation.is_some(),
             superposition_requested: scene.adhesive_plasticity == AdhesivePlasticity::Superposition,
         };

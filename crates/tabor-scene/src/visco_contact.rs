@@ -1,59 +1,74 @@
-//! The viscoelastic contact of the scene's two bodies (correspondence principle).
-//! Temporary: moves to `tabor_visco::contact`.
+//! The viscoelastic contact of the scene's two bodies, by the correspondence
+//! principle (`tabor_visco::contact`): the contact compliance is the sum of both
+//! bodies' (1 − ν²)/E(s).
 
 use crate::combination::ViscoKind;
-use crate::models::{err, Visco};
-use crate::scene::{Scene, SceneError};
-use tabor_visco::models::{KelvinVoigtSphere, MaxwellBranchSphere};
-use tabor_visco::SphereModel;
+use crate::models::Visco;
+use crate::scene::{Body, Scene, SceneError};
+use tabor_restitution::Error;
+use tabor_visco::contact::{Body as ViscoBody, ViscoelasticContact};
 
-pub(crate) fn build(scene: &Scene) -> Result<Option<Visco>, SceneError> {
-    let body = |b: &crate::scene::Body| (b.material.plane_strain_modulus(), b.viscosity);
-    let (ms, es) = body(&scene.sphere);
-    let (mt, et) = body(&scene.target);
-    let (r, m) = (scene.effective_radius, scene.effective_mass);
-    Ok(match (es, et) {
-        (None, None) => None,
-        (Some(eta), None) | (None, Some(eta)) => {
-            let (ma, mb) = if es.is_some() { (ms, mt) } else { (mt, ms) };
-            let (ga, gb) = (ma / 4.0, mb / 4.0);
-            let relaxed = ga * gb / (ga + gb);
-            let branch = gb * gb / (ga + gb);
-            let viscosity = eta * (gb / (ga + gb)).powi(2);
-            Some(Visco {
-                kind: ViscoKind::StandardMedium,
-                model: Box::new(
-                    MaxwellBranchSphere::standard(relaxed, branch, viscosity, r, m).map_err(err)?,
-                ),
-                kelvin_voigt: None,
-                why: format!("one Kelvin-Voigt body on an elastic one: a standard medium, G_inf = {relaxed:e} Pa, G1 = {branch:e} Pa, eta = {viscosity:e} Pa s"),
-            })
-        }
-        (Some(a), Some(b)) => {
-            let (ta, tb) = (4.0 * a / ms, 4.0 * b / mt);
-            let e = scene.effective_modulus;
-            if (ta - tb).abs() <= 1e-12 * ta.max(tb) {
-                let g = e / 4.0;
-                Some(Visco {
-                    kind: ViscoKind::KelvinVoigt,
-                    model: Box::new(
-                        KelvinVoigtSphere::new(g, g * ta, r, m, SphereModel::Rigorous)
-                            .map_err(err)?,
-                    ),
-                    kelvin_voigt: Some((e, e * ta)),
-                    why: format!("two Kelvin-Voigt bodies with equal relaxation times {ta:e} s: a Kelvin-Voigt contact"),
-                })
-            } else {
-                Some(Visco {
-                    kind: ViscoKind::TwoRelaxationTimes,
-                    model: Box::new(
-                        KelvinVoigtSphere::new(e / 4.0, e / 4.0 * ta, r, m, SphereModel::Rigorous)
-                            .map_err(err)?,
-                    ),
-                    kelvin_voigt: None,
-                    why: format!("relaxation times {ta:e} s and {tb:e} s"),
-                })
-            }
-        }
-    })
+fn body(section: &str, b: &Body) -> Result<ViscoBody, SceneError> {
+    ViscoBody::new(
+        b.material.youngs_modulus(),
+        b.material.poisson_ratio(),
+        b.viscosity,
+    )
+    .map_err(|e| SceneError::field(format!("{section}.viscosity"), e.to_string()))
+}
+
+/// The scene's viscoelastic contact model, `None` when neither body is viscous;
+/// `Err(ViscoKind::TwoRelaxationTimes)` inside for two viscous bodies with
+/// different relaxation times (the combination table refuses them).
+pub(crate) fn build(scene: &Scene) -> Result<Result<Option<Visco>, ViscoKind>, SceneError> {
+    if scene.sphere.viscosity.is_none() && scene.target.viscosity.is_none() {
+        return Ok(Ok(None));
+    }
+    let field = if scene.target.viscosity.is_some() {
+        "target.viscosity"
+    } else {
+        "sphere.viscosity"
+    };
+    let in_field = |e: Error| SceneError::field(field, e.to_string());
+    let contact = match ViscoelasticContact::of(
+        &body("sphere", &scene.sphere)?,
+        &body("target", &scene.target)?,
+    ) {
+        Ok(c) => c,
+        // two relaxation times (the only error of a valid pair of bodies)
+        Err(_) => return Ok(Err(ViscoKind::TwoRelaxationTimes)),
+    };
+    let (kind, kelvin_voigt, why) = match contact {
+        ViscoelasticContact::Elastic { .. } => return Ok(Ok(None)),
+        ViscoelasticContact::StandardMedium {
+            relaxed_modulus,
+            branch_modulus,
+            viscosity,
+        } => (
+            ViscoKind::StandardMedium,
+            None,
+            format!("one Kelvin-Voigt body on an elastic one: a standard medium (5.75) with G_inf = {relaxed_modulus:e} Pa, G1 = {branch_modulus:e} Pa, eta = {viscosity:e} Pa s (correspondence principle)"),
+        ),
+        ViscoelasticContact::KelvinVoigt {
+            shear_modulus,
+            viscosity,
+        } => (
+            ViscoKind::KelvinVoigt,
+            // E*(s) = 4 (G* + η* s)
+            Some((4.0 * shear_modulus, 4.0 * viscosity)),
+            format!("two Kelvin-Voigt bodies with equal relaxation times: a Kelvin-Voigt contact (5.64) with G* = {shear_modulus:e} Pa, eta* = {viscosity:e} Pa s (correspondence principle)"),
+        ),
+    };
+    let Some(model) = contact
+        .impact_model(scene.effective_radius, scene.effective_mass)
+        .map_err(in_field)?
+    else {
+        return Ok(Ok(None));
+    };
+    Ok(Ok(Some(Visco {
+        kind,
+        model,
+        kelvin_voigt,
+        why,
+    })))
 }

@@ -183,9 +183,30 @@ fn bundled_ice_scene_equals_the_jkr_crate() {
 fn bundled_viscoelastic_scene_equals_the_visco_crate() {
     let scene = load_scene("rubber_viscoelastic.toml");
     let o = scene.outcome().unwrap();
-    // incompressible Kelvin-Voigt half-space: G = E*/4
+    // Viscous rubber (Kelvin-Voigt) on elastic steel: a standard medium, whose
+    // parameters follow here from its limits rather than from the library's
+    // series-to-parallel algebra: relaxed G∞ = E*/4 (both springs in series),
+    // instantaneous G∞ + G1 = steel's M/4 (the dashpot is rigid at s → ∞), and the
+    // relaxation time η_a/(G_a + G_b) of the series element (its pole).
     let e = e_star(210e9, 0.3, 5e6, 0.5);
-    let direct = KelvinVoigtSphere::new(
+    let (g_rubber, g_steel) = (5e6 / (1.0 - 0.25) / 4.0, 210e9 / (1.0 - 0.09) / 4.0);
+    let relaxed = e / 4.0;
+    let branch = g_steel - relaxed;
+    let tau = 50.0 / (g_rubber + g_steel);
+    let direct = tabor_visco::contact::StandardMediumSphere::new(
+        relaxed,
+        branch,
+        branch * tau,
+        5e-3,
+        sphere_mass(5e-3, 7850.0),
+    )
+    .unwrap();
+    let d = impact(&direct, 1.0).unwrap();
+    assert_relative_eq!(o.restitution, d.restitution, max_relative = 1e-9);
+    assert_eq!(o.combination.rule, tabor_scene::Rule::Single);
+    // steel is 3e4 times stiffer than rubber: close to the Kelvin-Voigt half-space
+    // with G = E*/4 that a rigid ball would see
+    let kv = KelvinVoigtSphere::new(
         e / 4.0,
         50.0,
         5e-3,
@@ -193,8 +214,13 @@ fn bundled_viscoelastic_scene_equals_the_visco_crate() {
         SphereModel::Rigorous,
     )
     .unwrap();
-    let d = impact(&direct, 1.0).unwrap();
-    assert_relative_eq!(o.restitution, d.restitution, max_relative = 1e-12);
+    let k = impact(&kv, 1.0).unwrap();
+    assert!(
+        (o.restitution - k.restitution).abs() < 1e-3,
+        "{} vs {}",
+        o.restitution,
+        k.restitution
+    );
     assert!(effect(&o, "viscoelasticity").used);
     assert!(!effect(&o, "adhesion").used && !effect(&o, "plasticity").used);
     // 1 m/s on rubber is not small against its wave speed: (5.4) warns.

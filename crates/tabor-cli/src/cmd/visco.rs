@@ -119,7 +119,7 @@ fn message(e: Error) -> String {
             parameter,
             value,
             requirement,
-        } => format!("invalid {} = {value}: {requirement}", flag(parameter)),
+        } => format!("invalid {} = {value:e}: {requirement}", flag(parameter)),
         other => other.to_string(),
     }
 }
