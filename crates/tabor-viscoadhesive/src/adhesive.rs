@@ -1,0 +1,375 @@
+//! The elastic adhesive laws inside the model's viscous wrapper: `tabor-jkr`'s
+//! [`JkrForceLaw`] and `tabor-maugis`' [`MaugisDugdaleForceLaw`], each with its
+//! potential relative to separation ([`SeparationPotential`]), and the JKR
+//! contact radius solved once per overlap (force and radius share it) with a warm
+//! start.
+
+use crate::law::SeparationPotential;
+use std::cell::Cell;
+use std::sync::Arc;
+use tabor_dynamics::{BranchChange, ForceLaw};
+use tabor_jkr::{JkrForceLaw, JkrSphere, SeparationRule};
+use tabor_maugis::MaugisDugdaleForceLaw;
+use tabor_restitution::{Error, Result};
+
+/// `x_c = 3^(−1/3)`: the fixed-grip instability in `x = √â` (`dd̂/dx = 0`).
+const X_MIN: f64 = 0.693_361_274_350_634_8;
+
+/// The JKR sphere on its stable branch: every hook is `tabor-jkr`'s
+/// [`JkrForceLaw`]; force and contact radius come from the root `x = √â ≥ 3^(−1/3)`
+/// of `3x⁴ − 4x = d̂` (seed 000 eq. (5.34) normalized), solved once per overlap
+/// and warm-started from the previous root (`F̂ = x⁶ − 2x³`, (5.33)).
+#[derive(Clone, Debug)]
+struct JkrBranch {
+    law: JkrForceLaw,
+    contact_radius_unit: f64,
+    force_unit: f64,
+    depth_unit: f64,
+    energy_unit: f64,
+    /// P(â_sep) of [`jkr_potential`].
+    separation_potential: f64,
+    /// (d̂, x) of the last solve.
+    last: Cell<(f64, f64)>,
+}
+
+impl PartialEq for JkrBranch {
+    fn eq(&self, other: &Self) -> bool {
+        self.law == other.law
+    }
+}
+
+/// `P(â) = (6/5)â⁵ − 4â^(7/2) + 2â²`: `dP/dâ = F̂ dd̂/dâ`, so `F_n d_n [P(â) − P(â')]`
+/// is `∫ F dd` along the stable branch. Seed 000 eq. (5.35) without its constant.
+fn jkr_potential(x: f64) -> f64 {
+    let a = x * x;
+    let a2 = a * a;
+    1.2 * a2 * a2 * a - 4.0 * a2 * a * x + 2.0 * a2
+}
+
+impl JkrBranch {
+    fn new(sphere: &JkrSphere, rule: SeparationRule) -> Self {
+        let s = sphere.scales();
+        let x_sep = match rule {
+            SeparationRule::FixedGrip => X_MIN,
+            SeparationRule::LoadControlled => 1.0,
+        };
+        JkrBranch {
+            law: JkrForceLaw::new(*sphere, rule),
+            contact_radius_unit: s.contact_radius,
+            force_unit: s.force,
+            depth_unit: s.depth,
+            energy_unit: s.energy,
+            separation_potential: jkr_potential(x_sep),
+            last: Cell::new((f64::NAN, f64::NAN)),
+        }
+    }
+
+    /// `x = √â` at overlap d (clamped to the fixed-grip instability below it).
+    fn root(&self, overlap: f64) -> Result<f64> {
+        let d = overlap / self.depth_unit;
+        let (d_last, x_last) = self.last.get();
+        if d == d_last {
+            return Ok(x_last);
+        }
+        let x = jkr_root(d, x_last)?;
+        self.last.set((d, x));
+        Ok(x)
+    }
+}
+
+/// The stable root `x ≥ 3^(−1/3)` of `f(x) = 3x⁴ − 4x − d̂`, by Newton from
+/// `guess` (or from the cold start of `tabor-jkr`) inside a shrinking bracket
+/// (bisection when a step leaves it): f is increasing and convex there.
+fn jkr_root(d: f64, guess: f64) -> Result<f64> {
+    let d_min = 3.0 * X_MIN.powi(4) - 4.0 * X_MIN;
+    if !(d > d_min) {
+        if d.is_nan() {
+            return Err(Error::invalid("overlap", d, "must be finite"));
+        }
+        return Ok(X_MIN);
+    }
+    let mut lo = X_MIN;
+    let mut hi = 2.0 + (d.abs() / 2.0).powf(0.25);
+    let mut x = if guess.is_finite() && guess > lo && guess < hi {
+        guess
+    } else {
+        (1.0 + d.max(0.0) / 3.0).powf(0.25).clamp(lo, hi)
+    };
+    for _ in 0..200 {
+        let x3 = x * x * x;
+        let f = 3.0 * x3 * x - 4.0 * x - d;
+        if f == 0.0 {
+            return Ok(x);
+        }
+        if f > 0.0 {
+            hi = x;
+        } else {
+            lo = x;
+        }
+        let fp = 12.0 * x3 - 4.0;
+        let mut next = x - f / fp;
+        if !(next > lo && next < hi) {
+            next = 0.5 * (lo + hi);
+        }
+        let step = (next - x).abs();
+        x = next;
+        if step <= 2.0 * f64::EPSILON * x || hi - lo <= 2.0 * f64::EPSILON * x {
+            return Ok(x);
+        }
+    }
+    Err(Error::Model {
+        model: "JKR contact radius",
+        message: format!("no convergence at normalized depth {d:e}"),
+    })
+}
+
+/// A table of the Maugis-Dugdale potential `U(d) − U(d_pull-off)` along the
+/// equilibrium branch, from the snap-off depth to beyond the depth where it is 0
+/// again, by Gauss-Legendre panels in `s = √((d − d_po)/span)` (the force has a
+/// square-root singularity at the snap-off, smooth in s) and cubic Hermite
+/// interpolation (dU/ds = F dd/ds).
+#[derive(Debug, PartialEq)]
+pub(crate) struct PotentialTable {
+    pull_off: f64,
+    span: f64,
+    /// U at the nodes s_i = i/n (J).
+    values: Vec<f64>,
+    /// dU/ds at the nodes (J).
+    slopes: Vec<f64>,
+    /// F at the table's upper end (N, > 0).
+    end_force: f64,
+}
+
+const TABLE_PANELS: usize = 128;
+
+impl PotentialTable {
+    fn build(law: &MaugisDugdaleForceLaw, depth_unit: f64) -> Result<Self> {
+        // the law on its contact branch (after jump-in)
+        let mut on_branch = law.clone();
+        on_branch.begin_impact(1.0, 1.0)?;
+        let (jump_in, pull_off) = law.jump_in_and_pull_off_depths();
+        if on_branch.on_branch_end(jump_in, 1.0)? != BranchChange::Continue {
+            return Err(Error::Model {
+                model: "Maugis-Dugdale potential",
+                message: "the law does not continue after jump-in".into(),
+            });
+        }
+        let force = |d: f64| on_branch.force(d, 0.0);
+        let mut span = 4.0 * (jump_in - pull_off).max(depth_unit);
+        for _ in 0..60 {
+            let n = TABLE_PANELS;
+            let h = 1.0 / n as f64;
+            let slope =
+                |s: f64| -> Result<f64> { Ok(force(pull_off + span * s * s)? * 2.0 * span * s) };
+            let mut values = Vec::with_capacity(n + 1);
+            let mut slopes = Vec::with_capacity(n + 1);
+            values.push(0.0);
+            slopes.push(slope(0.0)?);
+            // 3-point Gauss-Legendre per panel
+            let g = (0.6f64).sqrt() * 0.5;
+            for i in 0..n {
+                let s0 = i as f64 * h;
+                let mid = s0 + 0.5 * h;
+                let panel = h / 18.0
+                    * (5.0 * slope(mid - g * h)? + 8.0 * slope(mid)? + 5.0 * slope(mid + g * h)?);
+                let last = values[i];
+                values.push(last + panel);
+                slopes.push(slope(s0 + h)?);
+            }
+            let end_force = force(pull_off + span)?;
+            if values[n] > 0.0 && end_force > 0.0 {
+                return Ok(PotentialTable {
+                    pull_off,
+                    span,
+                    values,
+                    slopes,
+                    end_force,
+                });
+            }
+            span *= 2.0;
+        }
+        Err(Error::Model {
+            model: "Maugis-Dugdale potential",
+            message: "the potential does not return to 0 along the branch".into(),
+        })
+    }
+
+    /// `U(d) − U(d_po)` (J); beyond the table the lower bound
+    /// `U_end + F_end (d − d_end)` (> 0; F grows along the branch), which is all
+    /// the sticking criterion needs there.
+    fn eval(&self, overlap: f64) -> f64 {
+        let n = TABLE_PANELS;
+        let rel = (overlap - self.pull_off) / self.span;
+        if !(rel > 0.0) {
+            return 0.0;
+        }
+        if rel >= 1.0 {
+            return self.values[n] + self.end_force * (overlap - self.pull_off - self.span);
+        }
+        let s = rel.sqrt() * n as f64;
+        let i = (s.floor() as usize).min(n - 1);
+        let t = s - i as f64;
+        let h = 1.0 / n as f64;
+        let (t2, t3) = (t * t, t * t * t);
+        (2.0 * t3 - 3.0 * t2 + 1.0) * self.values[i]
+            + (t3 - 2.0 * t2 + t) * h * self.slopes[i]
+            + (-2.0 * t3 + 3.0 * t2) * self.values[i + 1]
+            + (t3 - t2) * h * self.slopes[i + 1]
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+enum Kind {
+    Jkr(JkrBranch),
+    MaugisDugdale(MaugisDugdaleForceLaw, Arc<PotentialTable>),
+}
+
+/// The elastic adhesive force law inside the model's [`crate::ViscousDamping`]:
+/// the JKR sphere (seed 000 eqs. (5.33)-(5.34), every hook from `tabor-jkr`'s
+/// [`JkrForceLaw`]) or the Maugis-Dugdale sphere (`tabor-maugis`'
+/// [`MaugisDugdaleForceLaw`], seed 000 section 5.3.2), with its potential relative
+/// to separation ([`SeparationPotential`], README eq. (V4)).
+#[derive(Clone, Debug, PartialEq)]
+pub struct AdhesiveForceLaw {
+    kind: Kind,
+}
+
+impl AdhesiveForceLaw {
+    /// The JKR law of `sphere` with separation rule `rule`.
+    pub fn jkr(sphere: &JkrSphere, rule: SeparationRule) -> Self {
+        LawSpec::Jkr(*sphere, rule).build()
+    }
+
+    /// The Maugis-Dugdale law `law` whose depth scale is `d_n` (m); tabulates its
+    /// potential along the equilibrium branch (about 500 force evaluations).
+    pub fn maugis_dugdale(law: MaugisDugdaleForceLaw, depth_unit: f64) -> Result<Self> {
+        Ok(LawSpec::maugis_dugdale(law, depth_unit)?.build())
+    }
+}
+
+/// What an [`AdhesiveForceLaw`] is built from, without its per-simulation cache
+/// (so that a model holding it is `Sync`).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum LawSpec {
+    Jkr(JkrSphere, SeparationRule),
+    MaugisDugdale(MaugisDugdaleForceLaw, Arc<PotentialTable>),
+}
+
+impl LawSpec {
+    pub(crate) fn maugis_dugdale(law: MaugisDugdaleForceLaw, depth_unit: f64) -> Result<Self> {
+        let table = PotentialTable::build(&law, depth_unit)?;
+        Ok(LawSpec::MaugisDugdale(law, Arc::new(table)))
+    }
+
+    pub(crate) fn build(&self) -> AdhesiveForceLaw {
+        AdhesiveForceLaw {
+            kind: match self {
+                LawSpec::Jkr(sphere, rule) => Kind::Jkr(JkrBranch::new(sphere, *rule)),
+                LawSpec::MaugisDugdale(l, t) => Kind::MaugisDugdale(l.clone(), Arc::clone(t)),
+            },
+        }
+    }
+}
+
+macro_rules! delegate {
+    ($self:ident, $l:ident => $e:expr) => {
+        match &$self.kind {
+            Kind::Jkr(j) => {
+                let $l = &j.law;
+                $e
+            }
+            Kind::MaugisDugdale($l, _) => $e,
+        }
+    };
+}
+
+macro_rules! delegate_mut {
+    ($self:ident, $l:ident => $e:expr) => {
+        match &mut $self.kind {
+            Kind::Jkr(j) => {
+                let $l = &mut j.law;
+                $e
+            }
+            Kind::MaugisDugdale($l, _) => $e,
+        }
+    };
+}
+
+impl ForceLaw for AdhesiveForceLaw {
+    fn name(&self) -> String {
+        delegate!(self, l => l.name())
+    }
+    fn overlap_scale(&self, effective_mass: f64, impact_speed: f64) -> Result<f64> {
+        delegate!(self, l => l.overlap_scale(effective_mass, impact_speed))
+    }
+    fn begin_impact(&mut self, effective_mass: f64, impact_speed: f64) -> Result<()> {
+        delegate_mut!(self, l => l.begin_impact(effective_mass, impact_speed))
+    }
+    fn start_overlap(&self) -> f64 {
+        delegate!(self, l => l.start_overlap())
+    }
+    fn in_contact(&self) -> bool {
+        delegate!(self, l => l.in_contact())
+    }
+    /// JKR: `F = F_n (x⁶ − 2x³)`, seed 000 eq. (5.33); Maugis-Dugdale: the law's.
+    fn force(&self, overlap: f64, overlap_rate: f64) -> Result<f64> {
+        match &self.kind {
+            Kind::Jkr(j) => {
+                let x = j.root(overlap)?;
+                let x3 = x * x * x;
+                Ok((x3 * x3 - 2.0 * x3) * j.force_unit)
+            }
+            Kind::MaugisDugdale(l, _) => l.force(overlap, overlap_rate),
+        }
+    }
+    /// JKR: `a = a_c x²`, seed 000 eq. (5.34); Maugis-Dugdale: the law's.
+    fn contact_radius(&self, overlap: f64, overlap_rate: f64) -> Result<f64> {
+        match &self.kind {
+            Kind::Jkr(j) => {
+                let x = j.root(overlap)?;
+                Ok(x * x * j.contact_radius_unit)
+            }
+            Kind::MaugisDugdale(l, _) => l.contact_radius(overlap, overlap_rate),
+        }
+    }
+    fn branch_end(&self, overlap: f64, overlap_rate: f64) -> Result<f64> {
+        delegate!(self, l => l.branch_end(overlap, overlap_rate))
+    }
+    fn on_branch_end(&mut self, overlap: f64, overlap_rate: f64) -> Result<BranchChange> {
+        delegate_mut!(self, l => l.on_branch_end(overlap, overlap_rate))
+    }
+    fn on_max_compression(&mut self, overlap: f64) -> Result<BranchChange> {
+        delegate_mut!(self, l => l.on_max_compression(overlap))
+    }
+    fn on_min_compression(&mut self, overlap: f64) -> Result<BranchChange> {
+        delegate_mut!(self, l => l.on_min_compression(overlap))
+    }
+}
+
+impl SeparationPotential for AdhesiveForceLaw {
+    /// JKR: `F_n d_n [P(â) − P(â_sep)]` (seed 000 eq. (5.35)); Maugis-Dugdale: the
+    /// tabulated `∫_{d_po}^{d} F dd'`; `None` before the Maugis-Dugdale jump-in.
+    fn separation_potential(&self, overlap: f64) -> Result<Option<f64>> {
+        match &self.kind {
+            Kind::Jkr(j) => {
+                let x = j.root(overlap)?;
+                Ok(Some(
+                    (jkr_potential(x) - j.separation_potential) * j.energy_unit,
+                ))
+            }
+            Kind::MaugisDugdale(l, table) => Ok(l.in_contact().then(|| table.eval(overlap))),
+        }
+    }
+
+    /// JKR: `F_n d_n [P(â_sep) − P(4^(1/3))]` (the zero-force radius);
+    /// Maugis-Dugdale: `−min U` of the table.
+    fn well_depth(&self) -> Option<f64> {
+        Some(match &self.kind {
+            Kind::Jkr(j) => {
+                let x_eq = 4f64.cbrt().sqrt();
+                (j.separation_potential - jkr_potential(x_eq)) * j.energy_unit
+            }
+            Kind::MaugisDugdale(_, table) => -table.values.iter().copied().fold(0.0, f64::min),
+        })
+    }
+}

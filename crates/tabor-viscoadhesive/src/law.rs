@@ -1,0 +1,270 @@
+//! The viscous wrapper: any [`ForceLaw`] plus the Kuwabara-Kono viscous force of
+//! its own contact radius, and the energy criterion for sticking.
+
+use tabor_dynamics::{BranchChange, ForceLaw};
+use tabor_jkr::JkrForceLaw;
+use tabor_maugis::MaugisDugdaleForceLaw;
+use tabor_restitution::{validate, Error, Result};
+
+/// The potential of a conservative (elastic adhesive) force law on its current
+/// branch, relative to the point where it separates: what lets
+/// [`ViscousDamping`] recognise an impact that can no longer separate.
+///
+/// `U(d) − U(d_sep) = ∫_{d_sep}^{d} F(d') dd'` (J). On the branch that ends in
+/// separation the mechanical energy `½ m ḋ² + U(d) − U(d_sep)` is the kinetic
+/// energy the body would have left at the separation point; damping only lowers
+/// it (README eq. (V4)), so once it is ≤ 0 the body can never separate: it sticks.
+///
+/// The default returns `None` (no potential known): the wrapper then never sticks
+/// early, and an overdamped body that creeps into the equilibrium runs into the
+/// simulator's time limit (an error). `tabor-jkr`'s [`JkrForceLaw`] and
+/// `tabor-maugis`' [`MaugisDugdaleForceLaw`] use this default; the model's own
+/// [`crate::AdhesiveForceLaw`] knows the potential.
+pub trait SeparationPotential: ForceLaw {
+    /// `U(d) − U(d_sep)` (J) at overlap `overlap` (m) on the current branch, or
+    /// `None` when not known (or not on the branch that ends in separation).
+    fn separation_potential(&self, _overlap: f64) -> Result<Option<f64>> {
+        Ok(None)
+    }
+
+    /// The depth of the adhesive well below the separation point,
+    /// `U(d_sep) − min U ≥ 0` (J), or `None` when not known.
+    fn well_depth(&self) -> Option<f64> {
+        None
+    }
+}
+
+impl SeparationPotential for JkrForceLaw {}
+impl SeparationPotential for MaugisDugdaleForceLaw {}
+
+/// An inner force law plus the viscous force of a Kelvin-Voigt contact modulus
+/// `E*(s) = E* + η_c s` acting over the inner law's contact radius:
+///
+/// ```text
+/// F(d, ḋ) = F_inner(d, ḋ; history) + 2 η_c a_inner(d, ḋ) ḋ      (README, (V1))
+/// ```
+///
+/// For the Hertz law (`a = √(Rd)`) and an incompressible Kelvin-Voigt half-space
+/// (`E* = 4G`, `η_c = 4η`) this is exactly the Kuwabara-Kono force of seed 000
+/// eq. (5.66), `(16/3)G√R d^(3/2) + 8η√(Rd) ḋ`; the factor `2 a` is the
+/// incremental (flat-punch) stiffness `dF/dd = 2E*a` of a contact of radius `a`
+/// divided by `E*`, i.e. the number of method-of-dimensionality-reduction
+/// elements in contact, each moving with ḋ (README).
+///
+/// Conventions (README, "Conventions"):
+///
+/// - the viscous force acts only while [`ForceLaw::in_contact`] of the inner law
+///   is true (zero during the Maugis-Dugdale approach before jump-in) and is
+///   proportional to the inner law's [`ForceLaw::contact_radius`] (zero on the
+///   Maugis-Dugdale no-contact branch, where only the cohesive zone carries load);
+/// - every hook and branch is the inner law's: the bodies separate where the inner
+///   law separates (JKR snap-off `d_c` or the load-controlled `d = −d_n`,
+///   Maugis-Dugdale snap-off), stick where it sticks (by default when ḋ turns
+///   inward again before separation, [`ForceLaw::on_min_compression`]);
+/// - additionally, when the inner law knows its [`SeparationPotential`], the
+///   bodies stick as soon as `½ m ḋ² + U(d) − U(d_sep)` falls to 0 (an extra
+///   branch end): from there on they can never separate (README eq. (V4)). This
+///   ends the overdamped creep into the equilibrium, which never turns;
+/// - a total force that vanishes or turns tensile before separation does *not*
+///   end the contact: the adhesive contact still holds, and the viscous term keeps
+///   acting (as a tension while ḋ < 0). This is where the model differs from
+///   Kuwabara-Kono's restitution, which ends where the total force vanishes
+///   (README, "The Δγ → 0 limit").
+#[derive(Clone, Debug, PartialEq)]
+pub struct ViscousDamping<L> {
+    inner: L,
+    contact_viscosity: f64,
+    /// m (kg), set by `begin_impact`.
+    mass: f64,
+    /// length per energy for the energy branch end: L / (m v0²/2) (m/J).
+    length_per_energy: f64,
+    /// The impact starts in contact without the energy to separate: it sticks, at
+    /// the first turning point at the latest.
+    doomed: bool,
+}
+
+impl<L: SeparationPotential> ViscousDamping<L> {
+    /// Wraps `inner` with the viscous coefficient `η_c` (Pa s) of the contact
+    /// modulus `E*(s) = E* + η_c s` (finite, > 0; incompressible Kelvin-Voigt
+    /// half-space: `η_c = 4η`). Seed 000 eq. (5.66) with `8η = 2η_c`.
+    pub fn new(inner: L, contact_viscosity: f64) -> Result<Self> {
+        Ok(ViscousDamping {
+            inner,
+            contact_viscosity: validate::positive("contact_viscosity", contact_viscosity)?,
+            mass: f64::NAN,
+            length_per_energy: f64::NAN,
+            doomed: false,
+        })
+    }
+
+    /// `new` for an η_c validated before.
+    pub(crate) fn from_validated(inner: L, contact_viscosity: f64) -> Self {
+        ViscousDamping {
+            inner,
+            contact_viscosity,
+            mass: f64::NAN,
+            length_per_energy: f64::NAN,
+            doomed: false,
+        }
+    }
+
+    /// The inner (elastic adhesive) law.
+    pub fn inner(&self) -> &L {
+        &self.inner
+    }
+
+    /// The viscous coefficient η_c (Pa s) of `E*(s) = E* + η_c s`.
+    pub fn contact_viscosity(&self) -> f64 {
+        self.contact_viscosity
+    }
+
+    /// The viscous force `2 η_c a ḋ` (N, repulsive > 0) at overlap `overlap` (m)
+    /// and rate `overlap_rate` (m/s) on the current branch; 0 out of contact.
+    /// README eq. (V1), seed 000 eq. (5.66).
+    pub fn viscous_force(&self, overlap: f64, overlap_rate: f64) -> Result<f64> {
+        if !self.inner.in_contact() {
+            return Ok(0.0);
+        }
+        let a = self.inner.contact_radius(overlap, overlap_rate)?;
+        Ok(self.viscous_force_at(a, overlap_rate))
+    }
+
+    /// The kinetic energy the body would have left at the separation point
+    /// without further damping, `½ m ḋ² + U(d) − U(d_sep)` (J), README eq. (V4);
+    /// `None` out of contact, before [`ForceLaw::begin_impact`], or when the inner
+    /// law does not know its potential.
+    pub fn escape_energy(&self, overlap: f64, overlap_rate: f64) -> Result<Option<f64>> {
+        if !self.inner.in_contact() || self.mass.is_nan() {
+            return Ok(None);
+        }
+        Ok(self
+            .inner
+            .separation_potential(overlap)?
+            .map(|u| 0.5 * self.mass * overlap_rate * overlap_rate + u))
+    }
+
+    fn viscous_force_at(&self, contact_radius: f64, overlap_rate: f64) -> f64 {
+        2.0 * self.contact_viscosity * contact_radius.max(0.0) * overlap_rate
+    }
+
+    /// The energy criterion as a length (> 0 while the body can still separate).
+    fn energy_branch_end(&self, overlap: f64, overlap_rate: f64) -> Result<Option<f64>> {
+        if self.doomed {
+            return Ok(None);
+        }
+        Ok(self
+            .escape_energy(overlap, overlap_rate)?
+            .map(|e| e * self.length_per_energy))
+    }
+}
+
+impl<L: SeparationPotential> ForceLaw for ViscousDamping<L> {
+    fn name(&self) -> String {
+        format!(
+            "{} + viscous damping (eta_c = {:e} Pa s)",
+            self.inner.name(),
+            self.contact_viscosity
+        )
+    }
+
+    /// The inner law's scale (the elastic d_max or the adhesive depth scale):
+    /// damping only shortens the overlap.
+    fn overlap_scale(&self, effective_mass: f64, impact_speed: f64) -> Result<f64> {
+        self.inner.overlap_scale(effective_mass, impact_speed)
+    }
+
+    fn begin_impact(&mut self, effective_mass: f64, impact_speed: f64) -> Result<()> {
+        self.inner.begin_impact(effective_mass, impact_speed)?;
+        let m = validate::positive("effective_mass", effective_mass)?;
+        let v = validate::positive("impact_speed", impact_speed)?;
+        let scale = self.inner.overlap_scale(m, v)?;
+        self.mass = m;
+        self.length_per_energy = scale / (0.5 * m * v * v);
+        self.doomed = false;
+        let start = self.inner.start_overlap();
+        if let Some(e) = self.escape_energy(start, v)? {
+            // starts in contact inside the well (JKR below its elastic sticking
+            // velocity): a negative branch end at the start would be an error
+            self.doomed = e <= 0.0;
+        }
+        Ok(())
+    }
+
+    fn start_overlap(&self) -> f64 {
+        self.inner.start_overlap()
+    }
+
+    fn in_contact(&self) -> bool {
+        self.inner.in_contact()
+    }
+
+    /// `F_inner + 2 η_c a ḋ`, README eq. (V1) (seed 000 eq. (5.66) for Hertz).
+    fn force(&self, overlap: f64, overlap_rate: f64) -> Result<f64> {
+        let elastic = self.inner.force(overlap, overlap_rate)?;
+        if !self.inner.in_contact() {
+            return Ok(elastic);
+        }
+        let a = self.inner.contact_radius(overlap, overlap_rate)?;
+        let f = elastic + self.viscous_force_at(a, overlap_rate);
+        if f.is_finite() {
+            Ok(f)
+        } else {
+            Err(Error::Model {
+                model: "viscous damping",
+                message: format!(
+                    "the force is not representable ({f}) at d = {overlap:e} m, d' = \
+                     {overlap_rate:e} m/s"
+                ),
+            })
+        }
+    }
+
+    fn contact_radius(&self, overlap: f64, overlap_rate: f64) -> Result<f64> {
+        self.inner.contact_radius(overlap, overlap_rate)
+    }
+
+    /// The smaller of the inner law's branch end and the energy criterion
+    /// `(½ m ḋ² + U(d) − U(d_sep)) · L/(m v0²/2)` (README eq. (V4)).
+    fn branch_end(&self, overlap: f64, overlap_rate: f64) -> Result<f64> {
+        let g = self.inner.branch_end(overlap, overlap_rate)?;
+        Ok(match self.energy_branch_end(overlap, overlap_rate)? {
+            Some(e) => g.min(e),
+            None => g,
+        })
+    }
+
+    /// Stick when the energy criterion ended the branch; otherwise the inner
+    /// law's decision, turned into a stick when the branch it switched to
+    /// (Maugis-Dugdale jump-in) starts without the energy to separate.
+    fn on_branch_end(&mut self, overlap: f64, overlap_rate: f64) -> Result<BranchChange> {
+        let g = self.inner.branch_end(overlap, overlap_rate)?;
+        if let Some(e) = self.energy_branch_end(overlap, overlap_rate)? {
+            if e <= g {
+                return Ok(BranchChange::Stick);
+            }
+        }
+        let decision = self.inner.on_branch_end(overlap, overlap_rate)?;
+        if decision == BranchChange::Continue {
+            if let Some(e) = self.energy_branch_end(overlap, overlap_rate)? {
+                if e <= 0.0 {
+                    return Ok(BranchChange::Stick);
+                }
+            }
+        }
+        Ok(decision)
+    }
+
+    /// The inner law's decision; [`BranchChange::Stick`] when the impact started in
+    /// contact without the energy to separate (README eq. (V4)).
+    fn on_max_compression(&mut self, overlap: f64) -> Result<BranchChange> {
+        let decision = self.inner.on_max_compression(overlap)?;
+        if self.doomed && decision == BranchChange::Continue {
+            return Ok(BranchChange::Stick);
+        }
+        Ok(decision)
+    }
+
+    fn on_min_compression(&mut self, overlap: f64) -> Result<BranchChange> {
+        self.inner.on_min_compression(overlap)
+    }
+}
