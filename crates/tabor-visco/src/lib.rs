@@ -15,6 +15,7 @@
 //! | [`standard_sphere`] | standard medium, sphere (5.84)-(5.90) | β, δ | MDR with internal variables (5.88)-(5.89), continuum limit |
 //! | [`kelvin_maxwell_sphere`] | Kelvin-Maxwell, sphere (5.91)-(5.92) | β, δ | MDR, continuum limit |
 //! | [`compressible_flat`] | compressible Kelvin-Voigt, flat punch (5.93)-(5.100) | ν, D1, D2 | ODE |
+//! | [`contact`] | two bodies, either or both Kelvin-Voigt, by the correspondence principle: elastic, standard medium (5.75)/(5.84), Kelvin-Voigt (5.64) | M, η of each body | classification; standard-medium sphere over the whole range (Kelvin-Voigt limit, MDR, weak-branch first order) |
 //!
 //! Integrations use `tabor_numerics::ode` (Dormand-Prince 5(4)) and, where internal
 //! variables relax far faster than the motion (standard medium at small relaxation

@@ -166,6 +166,30 @@ fn equal_relaxation_times_are_kelvin_voigt() {
             "{x:?} vs {y:?}"
         );
     }
+    // Two steel balls with η = 50 Pa s each (τ ≈ 9e-10 s): δ ≈ 2.4e-5, and the loss
+    // is the first order (5.71), 1 − ε² = 2 s δ, s = (32/5) B(3/5, 3/2) (15/64)^{3/5},
+    // with δ = η* (R v0/(m² G*³))^{1/5} (5.68) computed here.
+    let st = steel(Some(50.0));
+    let c = ViscoelasticContact::of(&st, &st).unwrap();
+    let (g, eta_star) = match c {
+        ViscoelasticContact::KelvinVoigt {
+            shear_modulus,
+            viscosity,
+        } => (shear_modulus, viscosity),
+        _ => panic!("not Kelvin-Voigt: {c:?}"),
+    };
+    let (r, mass, v) = (5e-3, 0.5 * 0.033, 1.0);
+    let delta = eta_star * (r * v / (mass * mass * g * g * g)).powf(0.2);
+    let s = 6.4 * beta(0.6, 1.5).unwrap() * (15.0_f64 / 64.0).powf(0.6);
+    let model = c.impact_model(r, mass).unwrap().unwrap();
+    let loss = model.energy_loss(v).unwrap().joules / (0.5 * mass * v * v);
+    println!(
+        "steel-steel: δ = {delta:e}, 1 − ε² = {loss:e}, first order {:e}",
+        2.0 * s * delta
+    );
+    // Remainder: 1 − ε = sδ(1 − 2.7δ) (README) and 1 + ε = 2 − sδ: ≈ −4.4 δ relative.
+    let rel = loss / (2.0 * s * delta) - 1.0;
+    assert!(rel < 0.0 && rel > -6.0 * delta, "{rel:e}");
     // Different bodies with the same τ (M and η both doubled): still Kelvin-Voigt.
     let b = Body::from_contact_modulus(2.0 * m, Some(2.0 * eta)).unwrap();
     assert!(matches!(
@@ -417,4 +441,27 @@ fn invalid_input() {
     assert!(c.impact_model(1.0, f64::NAN).is_err());
     assert!(standard_medium_loss(f64::NAN, 1.0, 1e-9).is_err());
     assert!(weak_branch_loss_coefficient(0.0, 1e-9).is_err());
+}
+
+/// A stiff partner with a very viscous body is not the Kelvin-Voigt sphere when τ
+/// is not small against the contact time on the branch spring, T_1 ≈ 2.94 β^{2/5}
+/// (scaled): the body acts rigid and the impact bounces on the partner. β = 1e-5,
+/// δ = 1e3 (τ̂/T_1 ≈ 0.6): ε ≈ 0.49 against 3.3e-6 (Kelvin-Voigt); at β = 1e-8
+/// (τ̂/T_1 ≈ 0.01) the two agree.
+#[test]
+fn very_viscous_body_on_a_stiff_partner_bounces() {
+    let kv = kelvin_voigt_sphere::solve(1e3, SphereModel::Rigorous, 1e-12)
+        .unwrap()
+        .restitution;
+    let bounce = standard_medium_loss(1e-5, 1e3, 1e-9).unwrap();
+    assert_eq!(bounce.regime, StandardRegime::Mdr);
+    assert!(bounce.restitution > 0.4 && kv < 1e-5, "{bounce:?}, {kv}");
+    // More viscous, more rigid: ε rises with δ in this regime.
+    let less = standard_medium_loss(1e-5, 3e2, 1e-9).unwrap();
+    assert!(less.restitution < bounce.restitution);
+    let close = standard_medium_loss(1e-8, 1e3, 1e-9).unwrap();
+    assert!(
+        (close.restitution - kv).abs() < 1e-3 * kv,
+        "{close:?} vs {kv}"
+    );
 }
