@@ -465,3 +465,23 @@ fn very_viscous_body_on_a_stiff_partner_bounces() {
         "{close:?} vs {kv}"
     );
 }
+
+/// Vanishing viscosity: the Kelvin-Voigt limit hands over to the first order (5.71)
+/// below δ = 1e-30 (the integration underflows near 1e-300); the loss is `2sδ`
+/// on both sides, relative to itself, down to δ = 1e-300.
+#[test]
+fn vanishing_viscosity_keeps_a_relative_loss() {
+    let s = 6.4 * beta(0.6, 1.5).unwrap() * (15.0_f64 / 64.0).powf(0.6);
+    for d in [
+        1e-20,
+        1e-30 * (1.0 + 1e-9),
+        1e-30 * (1.0 - 1e-9),
+        1e-100,
+        1e-300,
+    ] {
+        let l = standard_medium_loss(1e-3, d, 1e-10).unwrap();
+        assert_eq!(l.regime, StandardRegime::KelvinVoigtLimit);
+        let rel = l.loss / (2.0 * s * d) - 1.0;
+        assert!(rel.abs() < 1e-8, "δ = {d:e}: {rel:e}");
+    }
+}
