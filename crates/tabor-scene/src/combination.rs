@@ -135,12 +135,13 @@ pub enum Rule {
     /// One effect: its own model, exact within the model.
     Single,
     /// Adhesion (JKR, fixed grip) + plasticity (interpolation model): the adhesive
-    /// interpolation model, seed 000 (5.111)-(5.126).
+    /// interpolation model, seed 000 (5.111)-(5.126), bounded below by the
+    /// superposition (5.109): max(L_AI, L_JKR + L_plastic).
     AdhesiveInterpolation,
     /// Adhesion with a range or the load-controlled rule + plasticity
-    /// (interpolation model): the scene's elastic adhesive loss plus the plastic
-    /// excess of the adhesive interpolation model over its own elastic (fixed-grip
-    /// JKR) loss; a coupled model of ours (crate README).
+    /// (interpolation model): the scene's elastic adhesive loss plus the plastic part
+    /// max(L_AI − L_JKR,fg, L_plastic) of the adhesive interpolation model; a coupled
+    /// model of ours (crate README).
     AdhesivePlasticExcess,
     /// Adhesion (JKR or Maugis-Dugdale) + viscoelasticity on a Kelvin-Voigt
     /// contact: the adhesive force plus the Kuwabara-Kono viscous force (5.66) with
@@ -170,9 +171,11 @@ impl Rule {
         match self {
             Rule::Elastic => "seed 000 (5.5)-(5.12): an elastic impact loses nothing",
             Rule::Single => "the effect's own model (exact reduction: no other effect is used)",
-            Rule::AdhesiveInterpolation => "seed 000 (5.111)-(5.126), constants in tabor-plastic's README",
+            Rule::AdhesiveInterpolation => {
+                "seed 000 (5.111)-(5.126) (constants in tabor-plastic's README), at least the superposition (5.109) (crates/tabor-scene/README.md)"
+            }
             Rule::AdhesivePlasticExcess => {
-                "tabor (crates/tabor-scene/README.md): elastic adhesive loss + plastic excess of (5.111)-(5.126)"
+                "tabor (crates/tabor-scene/README.md): elastic adhesive loss + the plastic part of (5.111)-(5.126), at least the non-adhesive plastic loss"
             }
             Rule::ViscousAdhesive => {
                 "tabor (crates/tabor-viscoadhesive/README.md): adhesive force + Kuwabara-Kono force (5.66) with the adhesive contact radius"
@@ -185,8 +188,8 @@ impl Rule {
 /// Why no model exists for a combination of effects.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Refusal {
-    /// The field to point at.
-    pub field: &'static str,
+    /// The effect whose parameter makes the combination impossible.
+    pub effect: EffectKind,
     /// The combination and why no model exists.
     pub message: String,
 }
@@ -211,19 +214,19 @@ pub fn rule(set: &EffectSet) -> Result<Rule, Refusal> {
     use ViscoKind::*;
     if set.graded && set.plasticity.is_some() {
         return Err(Refusal {
-            field: "plasticity",
+            effect: EffectKind::Plasticity,
             message: "plasticity on a graded target: no model exists (the plastic models of seed 000 section 5.5 and seed 001 assume a homogeneous half-space)".into(),
         });
     }
     if set.graded && set.viscoelasticity.is_some() {
         return Err(Refusal {
-            field: "target.viscosity",
+            effect: EffectKind::Viscoelasticity,
             message: "viscoelasticity with a graded target: no model exists (the viscoelastic models of seed 000 section 5.4 assume homogeneous bodies)".into(),
         });
     }
     if set.viscoelasticity == Some(TwoRelaxationTimes) {
         return Err(Refusal {
-            field: "target.viscosity",
+            effect: EffectKind::Viscoelasticity,
             message: "two viscous bodies with different relaxation times 4η/M: the contact is a four-parameter medium that no tabor model solves; give equal relaxation times, or drop the viscosity of the body whose relaxation time is negligible against the contact time".into(),
         });
     }

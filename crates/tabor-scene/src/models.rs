@@ -9,6 +9,7 @@ use tabor_dynamics::SimulationSettings;
 use tabor_elastic::{ElasticContact, ElasticImpact};
 use tabor_jkr::{GradedSphere, JkrImpact, JkrSphere, SeparationRule};
 use tabor_maugis::{normalized_loss, MaugisDugdaleImpact, LAMBDA_1};
+use tabor_plastic::YieldVelocity;
 use tabor_plastic::{
     AdhesiveInterpolationImpact, DimensionlessFit, Interpolation, JacksonGreen, JacksonGreenImpact,
     PlasticContact, PlasticImpact, Thornton,
@@ -54,22 +55,18 @@ pub(crate) enum Plastic {
     Fit(DimensionlessFit),
 }
 
+/// A plastic impact model with its yield onset.
+pub(crate) trait PlasticModel: ImpactModel + YieldVelocity + Send + Sync {}
+
+impl<T: ImpactModel + YieldVelocity + Send + Sync> PlasticModel for T {}
+
 impl Plastic {
-    pub(crate) fn model(&self) -> &(dyn ImpactModel + Send + Sync) {
+    pub(crate) fn model(&self) -> &dyn PlasticModel {
         match self {
             Plastic::Thornton(m) => m,
             Plastic::Interpolation(m) => m,
             Plastic::JacksonGreen(m) => m.as_ref(),
             Plastic::Fit(m) => m,
-        }
-    }
-
-    pub(crate) fn yield_velocity(&self) -> f64 {
-        match self {
-            Plastic::Thornton(m) => m.yield_velocity(),
-            Plastic::Interpolation(m) => m.yield_velocity(),
-            Plastic::JacksonGreen(m) => m.yield_velocity(),
-            Plastic::Fit(m) => m.yield_velocity(),
         }
     }
 
@@ -132,15 +129,19 @@ impl EffectFields {
         }
     }
 
-    /// An error of the model of `effect`, pointing at its field.
-    pub fn error(&self, effect: EffectKind, e: Error) -> SceneError {
-        let field = match effect {
+    /// The field of `effect`'s parameter.
+    pub fn field(&self, effect: EffectKind) -> &'static str {
+        match effect {
             EffectKind::Adhesion => self.adhesion,
             EffectKind::Plasticity => self.plasticity,
             EffectKind::Viscoelasticity => self.viscoelasticity,
-            EffectKind::Elasticity => return err(e),
-        };
-        SceneError::field(field, e.to_string())
+            EffectKind::Elasticity => "sphere.youngs_modulus",
+        }
+    }
+
+    /// An error of the model of `effect`, pointing at its field.
+    pub fn error(&self, effect: EffectKind, e: Error) -> SceneError {
+        SceneError::field(self.field(effect), e.to_string())
     }
 }
 
@@ -311,7 +312,8 @@ impl Models {
             superposition_requested: scene.adhesive_plasticity == AdhesivePlasticity::Superposition,
         };
         // every refusal is structural: the full set is the worst case
-        rule(&candidates).map_err(|r| SceneError::field(r.field, r.message))?;
+        let fields = EffectFields::of(scene);
+        rule(&candidates).map_err(|r| SceneError::field(fields.field(r.effect), r.message))?;
         let homogeneous_adhesion = adhesive
             .as_ref()
             .filter(|a| a.kind != AdhesionKind::GradedJkr)
@@ -387,7 +389,7 @@ impl Models {
             jkr_fixed_grip,
             visco,
             viscous_adhesive,
-            fields: EffectFields::of(scene),
+            fields,
             candidates,
         })
     }
@@ -409,7 +411,7 @@ impl Models {
     fn plastic_model(&self) -> Result<&(dyn ImpactModel + Send + Sync), SceneError> {
         self.plastic
             .as_ref()
-            .map(Plastic::model)
+            .map(|p| p.model() as &(dyn ImpactModel + Send + Sync))
             .ok_or_else(|| Self::missing("plastic"))
     }
 
@@ -437,13 +439,13 @@ impl Models {
                 .adhesive_interpolation
                 .as_ref()
                 .map(|a| (a.yield_velocity(), "adhesive yield onset (5.111)")),
-            _ => Some((plastic.yield_velocity(), "yield onset v_Y (5.103)")),
+            _ => Some((plastic.model().yield_velocity(), "yield onset v_Y (5.103)")),
         }
     }
 
     /// The loss of the effects `set` at `speed`, by the rule of the table.
     pub(crate) fn evaluate(&self, set: &EffectSet, speed: f64) -> Result<Evaluation, SceneError> {
-        let r = rule(set).map_err(|r| SceneError::field(r.field, r.message))?;
+        let r = rule(set).map_err(|r| SceneError::field(self.fields.field(r.effect), r.message))?;
         let f = self.fields;
         let single = |kind: EffectKind, model: &(dyn ImpactModel + Send + Sync)| {
             let loss = model.energy_loss(speed).map_err(|e| f.error(kind, e))?;
@@ -470,55 +472,58 @@ impl Models {
                     single(EffectKind::Viscoelasticity, self.visco_model()?)
                 }
             }
-            Rule::AdhesiveInterpolation => {
-                let ai = self.adhesive_interpolation()?;
-                let loss = ai
-                    .energy_loss(speed)
-                    .map_err(|e| f.error(EffectKind::Plasticity, e))?;
-                Ok(Evaluation {
-                    loss,
-                    model: ai.name(),
-                    rule: r,
-                    parts: vec![(EffectKind::Adhesion, None), (EffectKind::Plasticity, None)],
-                })
-            }
-            Rule::AdhesivePlasticExcess => {
+            Rule::AdhesiveInterpolation | Rule::AdhesivePlasticExcess => {
+                // L = L_adhesive + max(L_AI − L_JKR,fg, L_plastic): the elastic
+                // adhesive loss of the scene (its range, rule) plus the plastic part,
+                // the adhesive interpolation model's excess over its own elastic
+                // (fixed-grip JKR) loss, but never less than the non-adhesive plastic
+                // loss (the superposition (5.109) bounds it from below: the model's
+                // JKR unloading would otherwise let adhesion raise ε, tabor-plastic
+                // README). For fixed-grip JKR this is max(L_AI, superposition).
                 let ai = self.adhesive_interpolation()?;
                 let jkr = self
                     .jkr_fixed_grip
                     .as_ref()
                     .ok_or_else(|| Self::missing("fixed-grip JKR"))?;
                 let adhesive = self.adhesive_model()?;
-                let with_plasticity = ai
-                    .energy_loss(speed)
-                    .map_err(|e| f.error(EffectKind::Plasticity, e))?;
-                let elastic_part = jkr
-                    .energy_loss(speed)
-                    .map_err(|e| f.error(EffectKind::Adhesion, e))?;
-                let adh = adhesive
-                    .energy_loss(speed)
-                    .map_err(|e| f.error(EffectKind::Adhesion, e))?;
-                let excess = (with_plasticity.joules - elastic_part.joules).max(0.0);
+                let plastic = self.plastic_model()?;
+                let plastic_error = |e| f.error(EffectKind::Plasticity, e);
+                let adhesion_error = |e| f.error(EffectKind::Adhesion, e);
+                let coupled = ai.energy_loss(speed).map_err(plastic_error)?;
+                let elastic_part = jkr.energy_loss(speed).map_err(adhesion_error)?;
+                let adh = adhesive.energy_loss(speed).map_err(adhesion_error)?;
+                let pl = plastic.energy_loss(speed).map_err(plastic_error)?;
+                let excess = coupled.joules - elastic_part.joules;
+                let (plastic_part, which) = if excess >= pl.joules {
+                    (
+                        excess,
+                        format!(
+                            "plastic excess of {} over {}",
+                            coupled.branch, elastic_part.branch
+                        ),
+                    )
+                } else {
+                    (pl.joules, format!("{} (superposition bound)", pl.branch))
+                };
                 Ok(Evaluation {
                     loss: EnergyLoss {
-                        joules: adh.joules + excess,
+                        joules: adh.joules + plastic_part,
                         error_estimate: adh.error_estimate
-                            + with_plasticity.error_estimate
-                            + elastic_part.error_estimate,
-                        branch: format!(
-                            "{} + plastic excess of {} over {}",
-                            adh.branch, with_plasticity.branch, elastic_part.branch
-                        ),
-                        cost: adh.cost + with_plasticity.cost + elastic_part.cost,
+                            + coupled.error_estimate
+                            + elastic_part.error_estimate
+                            + pl.error_estimate,
+                        branch: format!("{} + {which}", adh.branch),
+                        cost: adh.cost + coupled.cost + elastic_part.cost + pl.cost,
                     },
                     model: format!(
-                        "{} + plastic excess of the adhesive interpolation model",
-                        adhesive.name()
+                        "{} + plastic part of the adhesive interpolation model (5.111)-(5.126), at least {}",
+                        adhesive.name(),
+                        plastic.name()
                     ),
                     rule: r,
                     parts: vec![
                         (EffectKind::Adhesion, Some(adh.joules)),
-                        (EffectKind::Plasticity, Some(excess)),
+                        (EffectKind::Plasticity, Some(plastic_part)),
                     ],
                 })
             }
