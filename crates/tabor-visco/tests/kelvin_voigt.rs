@@ -202,13 +202,14 @@ fn sphere_physical_front_uses_delta() {
         let delta = 50.0 * (0.02 * v / (0.05_f64.powi(2) * 1e18)).powf(0.2);
         assert!((model.viscous_parameter(v).unwrap() - delta).abs() < 1e-12 * delta);
         let out = impact(&model, v).unwrap();
-        // The physical front integrates at 1e-9: same value as the core at 1e-9 (with
-        // the front's δ: a change of δ in the last bit may change the adaptive step
-        // sequence and ε by ~1e-11), and within 1e-6 of the core at its default 1e-10.
+        // The physical front integrates at 1e-9 and takes the loss from the
+        // dissipated energy (1 − ε accurate relative to itself), the core's ε from the
+        // rebound speed: the two agree to the tolerance (3.4e-11 observed at v = 1),
+        // and within 1e-6 of the core at its default 1e-10.
         let front_delta = model.viscous_parameter(v).unwrap();
         let core = kelvin_voigt_sphere::solve(front_delta, SphereModel::Rigorous, 1e-9).unwrap();
         assert!(
-            (out.restitution - core.restitution).abs() < 1e-12,
+            (out.restitution - core.restitution).abs() < 1e-9,
             "{} vs {}",
             out.restitution,
             core.restitution
