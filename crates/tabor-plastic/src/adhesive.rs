@@ -73,7 +73,7 @@ pub fn adhesion_parameter(
 /// The adhesive yield force `F̂_Y(Φ) = 2(0.111Φ − 0.8236 − 0.0636/Φ + 0.0087/Φ² +
 /// 1.2429/Φ³)` (units of `F_n`, compression positive), for ν = 0.3.
 ///
-/// Seed 000, eq. (5.111) (from ref. [51]).
+/// Seed 000, eq. (5.111) (from ref. \[51\]).
 pub fn adhesive_yield_force(adhesion_parameter: f64) -> Result<f64> {
     let p = validate::positive("adhesion_parameter", adhesion_parameter)?;
     let f = 2.0 * (0.111 * p - 0.8236 - 0.0636 / p + 0.0087 / (p * p))
@@ -482,6 +482,11 @@ pub(crate) fn invert_jkr_depth(d: f64) -> Result<f64> {
 }
 
 /// The adhesive interpolation model in SI units: an [`ImpactModel`].
+///
+/// As Δγ → 0 its restitution tends to that of `PlasticImpact<Interpolation::default()>`
+/// (the derived `Q̃`, `D̃`, `κ`). It is not monotone in Δγ: for Φ below about 3 the
+/// JKR unloading (5.121)-(5.125) returns more energy than Hertz unloading, and ε lies
+/// above the non-adhesive value (by up to about 0.08; README).
 ///
 /// Seed 000, eqs. (5.111)-(5.126).
 #[derive(Clone, Debug)]

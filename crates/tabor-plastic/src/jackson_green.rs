@@ -1,5 +1,5 @@
 //! The FEM-based elasto-plastic sphere contact of Jackson and Green (the seed's
-//! "analytische Approximation von FEM-Lösungen", ref. [44]), solved as an impact by
+//! "analytische Approximation von FEM-Lösungen", ref. \[44\]), solved as an impact by
 //! integrating the equation of motion (`tabor-dynamics`).
 
 use crate::contact::PlasticContact;
@@ -22,7 +22,7 @@ pub const DEFAULT_HARDNESS_RATIO: f64 = 2.67;
 
 /// Jackson and Green's switch from Hertz to the FEM fit, `δ = d/d*_Y = 1.9`.
 ///
-/// Seed 000, section 5.5.1 (ref. [44]).
+/// Seed 000, section 5.5.1 (ref. \[44\]).
 pub const FIT_ONSET: f64 = 1.9;
 
 /// The Jackson-Green contact of an elastic-plastic sphere on a half-space
@@ -89,7 +89,7 @@ impl JacksonGreen {
 
     /// The same contact with hardness ratio `H/σ_Y` (finite, > 0).
     ///
-    /// Seed 000, section 5.5.1 (ref. [44]).
+    /// Seed 000, section 5.5.1 (ref. \[44\]).
     pub fn with_hardness_ratio(mut self, hardness_ratio: f64) -> Result<Self> {
         let h = validate::positive("hardness_ratio", hardness_ratio)?;
         if h > 1e6 {
@@ -101,7 +101,7 @@ impl JacksonGreen {
 
     /// The hardness ratio `H/σ_Y` in use.
     ///
-    /// Seed 000, section 5.5.1 (ref. [44]).
+    /// Seed 000, section 5.5.1 (ref. \[44\]).
     pub fn hardness_ratio(&self) -> f64 {
         self.hardness_ratio
     }
@@ -140,7 +140,7 @@ impl JacksonGreen {
 
     /// The loading force `F(d)` (N) at depth `d` (m, ≥ 0).
     ///
-    /// Seed 000, the FEM-based law of section 5.5.1 (ref. [44]); see the type docs.
+    /// Seed 000, the FEM-based law of section 5.5.1 (ref. \[44\]); see the type docs.
     pub fn loading_force(&self, depth: f64) -> Result<f64> {
         let d = validate::non_negative("depth", depth)?;
         finite_output(MODEL, "force", self.force_raw(d / self.critical_depth))
@@ -148,7 +148,7 @@ impl JacksonGreen {
 
     /// The contact radius `a(d)` (m) while loading, at depth `d` (m, ≥ 0).
     ///
-    /// Seed 000, section 5.5.1 (ref. [44]): `a = √(R d)(δ/1.9)^B` for δ ≥ 1.9, Hertz below.
+    /// Seed 000, section 5.5.1 (ref. \[44\]): `a = √(R d)(δ/1.9)^B` for δ ≥ 1.9, Hertz below.
     pub fn loading_contact_radius(&self, depth: f64) -> Result<f64> {
         let d = validate::non_negative("depth", depth)?;
         finite_output(MODEL, "contact radius", self.radius_raw(d))
@@ -183,7 +183,7 @@ impl JacksonGreen {
     /// The time-domain force law (loading, turning point, elastic unloading with the
     /// residual depth, separation at `F = 0`).
     ///
-    /// Seed 000, section 5.5.1 (ref. [44]).
+    /// Seed 000, section 5.5.1 (ref. \[44\]).
     pub fn force_law(&self) -> JacksonGreenLaw {
         JacksonGreenLaw {
             contact: *self,
@@ -250,7 +250,7 @@ enum Phase {
 /// fit branch, Hertzian unloading from the turning point through `(d_max, F_max)`
 /// to `d_res`, separation at `F = 0`.
 ///
-/// Seed 000, section 5.5.1 (ref. [44]).
+/// Seed 000, section 5.5.1 (ref. \[44\]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct JacksonGreenLaw {
     contact: JacksonGreen,
