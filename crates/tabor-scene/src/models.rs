@@ -101,7 +101,7 @@ pub(crate) struct Models {
     /// elastic part, for the adhesive-plastic excess).
     pub jkr_fixed_grip: Option<JkrImpact<JkrSphere>>,
     pub visco: Option<Visco>,
-    pub viscous_adhesive: Option<Box<dyn ImpactModel + Send + Sync>>,
+    pub viscous_adhesive: Option<tabor_viscoadhesive::ViscoadhesiveImpact>,
     /// The scene field each effect's model errors point at.
     pub fields: EffectFields,
     /// The effects whose parameters the scene gives.
@@ -117,7 +117,7 @@ pub(crate) struct EffectFields {
 }
 
 impl EffectFields {
-    fn of(scene: &Scene) -> Self {
+    pub(crate) fn of(scene: &Scene) -> Self {
         EffectFields {
             adhesion: "adhesion.work_of_adhesion",
             plasticity: scene.yield_stress_field(),

@@ -193,27 +193,18 @@ fn superposition_warning(prepared: &Prepared, selection: &Selection, speed: f64)
     }
 }
 
-fn viscous_adhesive_remark(
-    prepared: &Prepared,
-    selection: &Selection,
-    speed: f64,
-) -> Option<Warning> {
-    let models = &prepared.models;
-    let adhesive = models
-        .adhesive
+fn viscous_adhesive_remark(prepared: &Prepared, speed: f64) -> Option<Warning> {
+    let s = prepared
+        .models
+        .viscous_adhesive
         .as_ref()?
-        .model
-        .model()
-        .energy_loss(speed)
+        .superposition(speed)
         .ok()?;
-    let visco = models.visco.as_ref()?.model.energy_loss(speed).ok()?;
-    let coupled = selection.evaluation.loss.joules;
-    let sum = adhesive.joules + visco.joules;
     Some(Warning {
         code: "coupled-model",
         message: format!(
-            "adhesion + viscoelasticity by the coupled model (ours, tabor-viscoadhesive); the superposition (5.109) of the adhesive and viscoelastic losses would differ from it by {:+.3e} relative ({sum:e} J vs {coupled:e} J)",
-            sum / coupled - 1.0
+            "adhesion + viscoelasticity by the coupled model (ours, tabor-viscoadhesive); the superposition (5.109) of the adhesive and Kuwabara-Kono losses would differ from it by {:+.3e} of the kinetic energy (restitution {:.6} vs {:.6})",
+            -s.relative_difference, s.restitution_superposed, s.restitution_coupled
         ),
     })
 }
@@ -263,7 +254,7 @@ impl Prepared<'_> {
             warnings.push(superposition_warning(self, &selection, v));
         }
         if selection.evaluation.rule == Rule::ViscousAdhesive {
-            warnings.extend(viscous_adhesive_remark(self, &selection, v));
+            warnings.extend(viscous_adhesive_remark(self, v));
         }
         let effects = effect_list(self, &selection);
         let combination = selection.combination();

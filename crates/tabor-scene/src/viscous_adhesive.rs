@@ -7,7 +7,7 @@ use crate::models::{err, Adhesive, AdhesiveModel, Models};
 use crate::scene::{Scene, SceneError};
 use tabor_dynamics::ForceLaw;
 use tabor_jkr::SeparationRule;
-use tabor_restitution::{Error, ImpactModel};
+use tabor_restitution::Error;
 use tabor_viscoadhesive::{Adhesion, ViscoadhesiveImpact};
 
 /// The coupled model for the scene's adhesive model and the contact's viscous
@@ -16,7 +16,7 @@ pub(crate) fn build(
     scene: &Scene,
     adhesive: &Adhesive,
     contact_viscosity: f64,
-) -> Result<Box<dyn ImpactModel + Send + Sync>, SceneError> {
+) -> Result<ViscoadhesiveImpact, SceneError> {
     let adhesion = match (&adhesive.model, adhesive.kind) {
         (AdhesiveModel::Maugis(md), _) => Adhesion::MaugisDugdale {
             tabor_parameter: md.tabor_parameter(),
@@ -37,25 +37,31 @@ pub(crate) fn build(
         .adhesion
         .as_ref()
         .map_or(f64::NAN, |a| a.work_of_adhesion);
-    Ok(Box::new(
-        ViscoadhesiveImpact::new(
-            scene.effective_modulus,
-            scene.effective_radius,
-            scene.effective_mass,
-            work,
-            adhesion,
-            contact_viscosity,
-            scene.accuracy.max(1e-12),
+    ViscoadhesiveImpact::new(
+        scene.effective_modulus,
+        scene.effective_radius,
+        scene.effective_mass,
+        work,
+        adhesion,
+        contact_viscosity,
+        scene.accuracy.max(1e-12),
+    )
+    .map_err(|e| {
+        SceneError::field(
+            crate::models::EffectFields::of(scene)
+                .field(crate::combination::EffectKind::Viscoelasticity),
+            e.to_string(),
         )
-        .map_err(err)?,
-    ))
+    })
 }
 
 /// The coupled force law, for `Scene::simulate`.
 pub(crate) fn force_law(models: &Models) -> Result<Box<dyn ForceLaw>, SceneError> {
-    let _ = models;
-    Err(err(Error::Model {
-        model: "scene",
-        message: "no time-domain force law for the viscous-adhesive model yet".into(),
-    }))
+    match &models.viscous_adhesive {
+        Some(m) => Ok(Box::new(m.force_law())),
+        None => Err(err(Error::Model {
+            model: "scene",
+            message: "internal: the viscous-adhesive model was not built".into(),
+        })),
+    }
 }

@@ -558,3 +558,217 @@ fn errors_point_at_the_right_field_with_its_line() {
     assert!(e.to_string().len() < 400, "{e}");
     let _ = restitution_from_loss;
 }
+
+// ---------------------------------------------------------- bundled scenes
+
+fn bundled(name: &str) -> Scene {
+    let dir = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes");
+    Scene::from_path(&dir.join(name)).unwrap()
+}
+
+/// One classical Runge-Kutta step of ẍ = acc(x, ẋ).
+fn rk4(x: f64, u: f64, h: f64, acc: &dyn Fn(f64, f64) -> f64) -> (f64, f64) {
+    let k1 = (u, acc(x, u));
+    let k2 = (
+        u + 0.5 * h * k1.1,
+        acc(x + 0.5 * h * k1.0, u + 0.5 * h * k1.1),
+    );
+    let k3 = (
+        u + 0.5 * h * k2.1,
+        acc(x + 0.5 * h * k2.0, u + 0.5 * h * k2.1),
+    );
+    let k4 = (u + h * k3.1, acc(x + h * k3.0, u + h * k3.1));
+    (
+        x + h / 6.0 * (k1.0 + 2.0 * k2.0 + 2.0 * k3.0 + k4.0),
+        u + h / 6.0 * (k1.1 + 2.0 * k2.1 + 2.0 * k3.1 + k4.1),
+    )
+}
+
+/// Integrates ẍ = acc(x, ẋ) from (0, v0) with `steps` steps per `time_scale` until
+/// `end(x, ẋ)` (positive while in contact) falls to 0 while ẋ < 0; the last step is
+/// shortened by bisection to land on the end. Returns the rebound speed, or 0 when
+/// ẋ turns positive again (caught: sticks).
+fn rebound(
+    v0: f64,
+    time_scale: f64,
+    steps: usize,
+    acc: &dyn Fn(f64, f64) -> f64,
+    end: &dyn Fn(f64, f64) -> f64,
+) -> f64 {
+    let h = time_scale / steps as f64;
+    let (mut x, mut u) = (0.0, v0);
+    let mut turned = false;
+    for _ in 0..100 * steps {
+        let (xn, un) = rk4(x, u, h, acc);
+        if un < 0.0 {
+            turned = true;
+        }
+        if turned && un > 0.0 {
+            return 0.0;
+        }
+        if turned && end(xn, un) <= 0.0 {
+            let (mut lo, mut hi) = (0.0, h);
+            for _ in 0..200 {
+                let mid = 0.5 * (lo + hi);
+                let (xm, um) = rk4(x, u, mid, acc);
+                if end(xm, um) > 0.0 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            return -rk4(x, u, hi, acc).1;
+        }
+        (x, u) = (xn, un);
+    }
+    panic!("no end of contact");
+}
+
+#[test]
+fn bundled_viscoadhesive_scene_against_a_direct_integration() {
+    // JKR (fixed grip) + the Kuwabara-Kono force 2 η_c a ḋ with the JKR contact
+    // radius, integrated here with RK4; JKR written out: d(a) = a²/R − √(2πΔγa/E*),
+    // F(a) = 4E*a³/(3R) − √(8πΔγE*a³), snap-off at dd/da = 0.
+    let s = bundled("polymer_grains_viscoadhesive.toml");
+    let (r, dg) = (2.5e-6, 0.04);
+    let m_body = 2e6 / (1.0 - 0.49 * 0.49);
+    let e = m_body / 2.0;
+    let tau = 4.0 * 2e-4 / m_body;
+    let eta_c = e * tau;
+    let m = mass(5e-6, 970.0) / 2.0;
+    let d_of = |a: f64| a * a / r - (2.0 * PI * dg * a / e).sqrt();
+    let f_of = |a: f64| 4.0 * e * a.powi(3) / (3.0 * r) - (8.0 * PI * dg * e * a.powi(3)).sqrt();
+    let a_c = (PI * dg * r * r / (8.0 * e)).cbrt();
+    let d_c = d_of(a_c);
+    let a_of = |d: f64| {
+        // the stable branch a ≥ a_c, where d(a) increases: bisection
+        let (mut lo, mut hi) = (a_c, a_c.max((r * d.abs()).sqrt()) * 4.0 + a_c);
+        while d_of(hi) < d {
+            hi *= 2.0;
+        }
+        for _ in 0..100 {
+            let mid = 0.5 * (lo + hi);
+            if d_of(mid) < d {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    let acc = |d: f64, u: f64| {
+        let a = a_of(d.max(d_c));
+        -(f_of(a) + 2.0 * eta_c * a * u) / m
+    };
+    let end = |d: f64, _u: f64| d - d_c;
+    for v0 in [1.0, 1.5, 3.0] {
+        // time scale: the Hertz contact time of this contact, 2.87 (m²/(R E*² v0))^(1/5)
+        let t = 2.87 * (m * m / (r * e * e * v0)).powf(0.2);
+        let eps = rebound(v0, t, 20_000, &acc, &end) / v0;
+        let o = s.outcome_at(v0).unwrap();
+        assert_eq!(o.combination.rule, Rule::ViscousAdhesive);
+        assert!(
+            (o.restitution - eps).abs() < 2e-6,
+            "v0 = {v0}: {} vs {eps}",
+            o.restitution
+        );
+    }
+    // and it sticks below the sticking velocity, like the integration
+    let vc = s.sticking_velocity().unwrap().unwrap();
+    let t = 2.87 * (m * m / (r * e * e * vc)).powf(0.2);
+    assert_eq!(rebound(0.95 * vc, t, 20_000, &acc, &end), 0.0);
+    assert!(rebound(1.05 * vc, t, 20_000, &acc, &end) > 0.0);
+    let o = s.outcome().unwrap();
+    assert!(
+        o.warnings.iter().any(|w| w.code == "coupled-model"),
+        "{:?}",
+        o.warnings
+    );
+    // the time-domain trajectory of the same model
+    let (sim, o) = s
+        .simulate(1.5, &tabor_dynamics::SimulationSettings::default())
+        .unwrap();
+    assert_relative_eq!(sim.restitution, o.restitution, max_relative = 1e-5);
+}
+
+#[test]
+fn bundled_rubber_balls_against_a_direct_integration() {
+    // two identical Kelvin-Voigt balls: G = E*/4 with E* = M/2, η = G τ, τ = 4η_body/M;
+    // rigorous model (5.64)-(5.67) integrated here: compression with the
+    // Kuwabara-Kono force, restitution with F = (16/3) G √R (d + τ ḋ)^(3/2) until
+    // d + τ ḋ = 0
+    let s = bundled("rubber_balls.toml");
+    let m_body = 5e6 / (1.0 - 0.49 * 0.49);
+    let g = m_body / 2.0 / 4.0;
+    let tau = 4.0 * 20.0 / m_body;
+    let (r, m, v0): (f64, f64, f64) = (2.5e-3, mass(5e-3, 1100.0) / 2.0, 0.5);
+    let acc = |d: f64, u: f64| {
+        let d = d.max(0.0);
+        if u > 0.0 {
+            -(16.0 / 3.0 * g * r.sqrt() * d.powf(1.5) + 8.0 * g * tau * (r * d).sqrt() * u) / m
+        } else {
+            -(16.0 / 3.0 * g * r.sqrt() * (d + tau * u).max(0.0).powf(1.5)) / m
+        }
+    };
+    let end = |d: f64, u: f64| d + tau * u;
+    let t = 2.87 * (m * m / (r * (4.0 * g).powi(2) * v0)).powf(0.2);
+    let eps = rebound(v0, t, 50_000, &acc, &end) / v0;
+    let o = s.outcome().unwrap();
+    assert!(
+        (o.restitution - eps).abs() < 1e-6,
+        "{} vs {eps}",
+        o.restitution
+    );
+    assert_eq!(o.sticking_velocity, None);
+}
+
+#[test]
+fn bundled_range_plastic_scene_below_and_above_the_yield_onset() {
+    let s = bundled("silica_maugis_plastic.toml");
+    // below the onset: the Maugis-Dugdale impact, integrated in the time domain
+    // (tabor-dynamics, an independent path from the closed form (5.44))
+    let (sim, o) = s
+        .simulate(0.05, &tabor_dynamics::SimulationSettings::default())
+        .unwrap();
+    assert_eq!(o.combination.rule, Rule::Single);
+    assert_relative_eq!(sim.restitution, o.restitution, max_relative = 1e-6);
+    // the sticking velocity is Maugis-Dugdale's (0.0104 m/s), not JKR's (0.0866)
+    assert!((o.sticking_velocity.unwrap() - 0.0106).abs() < 2e-4);
+    // above it: the excess rule, continuous in the speed through the onset
+    let hi = s.outcome_at(4.0).unwrap();
+    assert_eq!(hi.combination.rule, Rule::AdhesivePlasticExcess);
+    assert!(
+        hi.restitution < 1.0 && hi.restitution > 0.5,
+        "{}",
+        hi.restitution
+    );
+}
+
+#[test]
+fn viscous_adhesive_cell_tends_to_its_limits() {
+    // η → 0: the elastic adhesive model; (the Δγ → 0 limit, the Kuwabara-Kono
+    // sphere, is tested in tabor-viscoadhesive)
+    let text = std::fs::read_to_string(
+        std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+            .join("../../examples/scenes/polymer_grains_viscoadhesive.toml"),
+    )
+    .unwrap();
+    let weak = Scene::from_str(
+        &text.replace("viscosity = 2e-4", "viscosity = 2e-12"),
+        Format::Toml,
+    )
+    .unwrap();
+    let o = weak.outcome_at(1.5).unwrap();
+    let e = e_star(2e6, 0.49, 2e6, 0.49);
+    let jkr = JkrImpact::new(
+        JkrSphere::new(e, 2.5e-6, 0.04).unwrap(),
+        mass(5e-6, 970.0) / 2.0,
+    )
+    .unwrap();
+    assert!(
+        (o.restitution - impact(&jkr, 1.5).unwrap().restitution).abs() < 1e-6,
+        "{} {}",
+        o.restitution,
+        o.model
+    );
+}

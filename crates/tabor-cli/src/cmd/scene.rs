@@ -55,6 +55,21 @@ pub fn impact(args: &ImpactArgs) -> Result<(), String> {
     }
     println!("model             {}", o.model);
     println!("branch            {}", o.branch);
+    println!(
+        "combination       {} of {} ({})",
+        o.combination.rule.as_str(),
+        if o.combination.effects.is_empty() {
+            "no dissipative effect".to_string()
+        } else {
+            o.combination
+                .effects
+                .iter()
+                .map(|e| e.as_str())
+                .collect::<Vec<_>>()
+                .join(" + ")
+        },
+        o.combination.source
+    );
     println!("effects");
     for e in &o.effects {
         let loss = e
