@@ -140,7 +140,7 @@ pub(crate) struct PotentialTable {
     end_force: f64,
 }
 
-const TABLE_PANELS: usize = 128;
+const TABLE_PANELS: usize = 512;
 
 impl PotentialTable {
     fn build(law: &MaugisDugdaleForceLaw, depth_unit: f64) -> Result<Self> {
@@ -371,5 +371,83 @@ impl SeparationPotential for AdhesiveForceLaw {
             }
             Kind::MaugisDugdale(_, table) => -table.values.iter().copied().fold(0.0, f64::min),
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+    use tabor_maugis::MaugisDugdaleImpact;
+    use tabor_restitution::ImpactModel;
+
+    const E: f64 = 2.78e10;
+    const R: f64 = 0.5e-6;
+    const DG: f64 = 0.05;
+
+    #[test]
+    fn the_cached_jkr_branch_equals_tabor_jkr_force_law() {
+        let sphere = JkrSphere::new(E, R, DG).unwrap();
+        for rule in [SeparationRule::FixedGrip, SeparationRule::LoadControlled] {
+            let ours = AdhesiveForceLaw::jkr(&sphere, rule);
+            let theirs = JkrForceLaw::new(sphere, rule);
+            let d_n = sphere.scales().depth;
+            // a warm-started sequence up and down the branch, and cold jumps
+            let mut depths: Vec<f64> = (0..200).map(|i| d_n * (-2.2 + 0.05 * i as f64)).collect();
+            depths.extend([
+                1e4 * d_n,
+                -1.0 * d_n,
+                1e-3 * d_n,
+                -2.0800838 * d_n,
+                1e8 * d_n,
+            ]);
+            for d in depths {
+                let (f1, f2) = (ours.force(d, 0.0).unwrap(), theirs.force(d, 0.0).unwrap());
+                let (a1, a2) = (
+                    ours.contact_radius(d, 0.0).unwrap(),
+                    theirs.contact_radius(d, 0.0).unwrap(),
+                );
+                let fs = sphere.scales().force;
+                assert!(
+                    (f1 - f2).abs() <= 1e-12 * fs.max(f2.abs()),
+                    "F at {d:e}: {f1} vs {f2}"
+                );
+                assert!((a1 - a2).abs() <= 1e-12 * a2, "a at {d:e}: {a1} vs {a2}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_jkr_potential_at_first_touch_is_minus_the_adhesive_loss() {
+        // U(0) − U(d_sep) = −|ΔU| of (5.36) (fixed grip) / its quadrature (load control)
+        let sphere = JkrSphere::new(E, R, DG).unwrap();
+        for rule in [SeparationRule::FixedGrip, SeparationRule::LoadControlled] {
+            let law = AdhesiveForceLaw::jkr(&sphere, rule);
+            let u = law.separation_potential(0.0).unwrap().unwrap();
+            let loss = tabor_jkr::JkrImpact::new(sphere, 1e-15)
+                .unwrap()
+                .with_separation(rule)
+                .energy_loss(1.0)
+                .unwrap()
+                .joules;
+            assert!((u + loss).abs() <= 1e-12 * loss, "{rule}: {u} vs {loss}");
+        }
+    }
+
+    #[test]
+    fn the_maugis_dugdale_table_gives_minus_the_adhesive_loss_at_jump_in() {
+        for lambda in [0.2, 0.3, 0.5, 0.6, 1.0, 3.0] {
+            let md = MaugisDugdaleImpact::new(E, R, DG, lambda, 1e-15).unwrap();
+            let law = MaugisDugdaleForceLaw::new(&md).unwrap();
+            let (jump_in, _) = law.jump_in_and_pull_off_depths();
+            let table = PotentialTable::build(&law, md.scales().depth).unwrap();
+            let loss = md.energy_loss_joules().unwrap();
+            let u = table.eval(jump_in);
+            println!("Lambda {lambda}: {:e}", (u + loss) / loss);
+            assert!(
+                (u + loss).abs() <= 1e-7 * loss,
+                "Lambda {lambda}: {u} vs {loss}"
+            );
+        }
     }
 }
