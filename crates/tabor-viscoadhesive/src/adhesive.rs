@@ -82,10 +82,10 @@ impl JkrBranch {
 /// (bisection when a step leaves it): f is increasing and convex there.
 fn jkr_root(d: f64, guess: f64) -> Result<f64> {
     let d_min = 3.0 * X_MIN.powi(4) - 4.0 * X_MIN;
-    if !(d > d_min) {
-        if d.is_nan() {
-            return Err(Error::invalid("overlap", d, "must be finite"));
-        }
+    if d.is_nan() {
+        return Err(Error::invalid("overlap", d, "must be finite"));
+    }
+    if d <= d_min {
         return Ok(X_MIN);
     }
     let mut lo = X_MIN;
@@ -200,7 +200,7 @@ impl PotentialTable {
     fn eval(&self, overlap: f64) -> f64 {
         let n = TABLE_PANELS;
         let rel = (overlap - self.pull_off) / self.span;
-        if !(rel > 0.0) {
+        if rel.is_nan() || rel <= 0.0 {
             return 0.0;
         }
         if rel >= 1.0 {
@@ -394,13 +394,7 @@ mod tests {
             let d_n = sphere.scales().depth;
             // a warm-started sequence up and down the branch, and cold jumps
             let mut depths: Vec<f64> = (0..200).map(|i| d_n * (-2.2 + 0.05 * i as f64)).collect();
-            depths.extend([
-                1e4 * d_n,
-                -1.0 * d_n,
-                1e-3 * d_n,
-                -2.0800838 * d_n,
-                1e8 * d_n,
-            ]);
+            depths.extend([1e4 * d_n, -d_n, 1e-3 * d_n, -2.0800838 * d_n, 1e8 * d_n]);
             for d in depths {
                 let (f1, f2) = (ours.force(d, 0.0).unwrap(), theirs.force(d, 0.0).unwrap());
                 let (a1, a2) = (

@@ -189,7 +189,7 @@ impl ViscoadhesiveImpact {
         let d_max = (15.0 * self.effective_mass * v * v
             / (16.0 * self.effective_modulus * self.effective_radius.sqrt()))
         .powf(0.4);
-        if !(d_max <= self.effective_radius) {
+        if d_max.is_nan() || d_max > self.effective_radius {
             return Err(Error::Model {
                 model: MODEL,
                 message: format!(
