@@ -18,7 +18,11 @@
 //! - [`plastic`]: elasto-plastic impact with and without adhesion;
 //! - [`scene`]: scenes — describe a collision once, compute only the effects it
 //!   calls for (the main entry point);
-//! - [`visco`]: viscoelastic impact (Kelvin-Voigt, standard, Kelvin-Maxwell media).
+//! - [`visco`]: viscoelastic impact (Kelvin-Voigt, standard, Kelvin-Maxwell media);
+//! - [`viscoadhesive`]: adhesion (JKR or Maugis-Dugdale) with Kuwabara-Kono viscous
+//!   damping.
+//!
+//! [`VERSION`] is the version of this package, which every workspace crate shares.
 
 pub use tabor_dynamics as dynamics;
 pub use tabor_elastic as elastic;
@@ -30,3 +34,7 @@ pub use tabor_plastic as plastic;
 pub use tabor_restitution as restitution;
 pub use tabor_scene as scene;
 pub use tabor_visco as visco;
+pub use tabor_viscoadhesive as viscoadhesive;
+
+/// The tabor version (every workspace crate has this version).
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");

@@ -2,17 +2,20 @@
 //!
 //! One module per subcommand in `cmd/`; each parses its own arguments, calls the
 //! library and prints either a human-readable table or, with `--json`, one JSON
-//! object. Bad input ends with one line on stderr and exit code 2.
+//! object. Bad input ends with one line on stderr and exit code 2; a reader that
+//! closes stdout early (`tabor … | head -1`) ends the program quietly with exit
+//! code 0. Output conventions: `output.rs` and the crate README.
 
 mod cmd;
 mod output;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, Parser, Subcommand};
+use output::Failure;
 use std::process::ExitCode;
 
 /// Adhesive impact of elastic spheres: energy loss, restitution, sticking velocity.
 #[derive(Parser)]
-#[command(name = "tabor", version, about, long_about = None)]
+#[command(name = "tabor", version = output::VERSION, about, long_about = None)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -40,6 +43,8 @@ enum Command {
     Sticking(cmd::scene::StickingArgs),
     /// Simulate a scene's impact in the time domain.
     Trajectory(cmd::scene::TrajectoryArgs),
+    /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
+    Completions(cmd::completions::Args),
 }
 
 fn main() -> ExitCode {
@@ -55,10 +60,11 @@ fn main() -> ExitCode {
         Command::Sweep(args) => cmd::scene::sweep(&args),
         Command::Sticking(args) => cmd::scene::sticking(&args),
         Command::Trajectory(args) => cmd::scene::trajectory(&args),
+        Command::Completions(args) => cmd::completions::run(&args, &mut Cli::command()),
     };
     match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
+        Ok(()) | Err(Failure::ClosedPipe) => ExitCode::SUCCESS,
+        Err(Failure::Message(e)) => {
             eprintln!("error: {e}");
             ExitCode::from(2)
         }

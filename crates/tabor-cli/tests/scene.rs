@@ -117,7 +117,7 @@ fn sweep_writes_csv() {
     );
     let text = std::fs::read_to_string(&csv).unwrap();
     assert_eq!(text.lines().count(), 31);
-    assert!(text.starts_with("speed,restitution,sticks"));
+    assert!(text.starts_with("speed_m_per_s,restitution,sticks"));
     let out = tabor(&[
         "sweep",
         &scene("silica.toml"),

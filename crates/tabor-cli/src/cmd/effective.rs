@@ -1,12 +1,12 @@
 //! `tabor effective`: the effective properties of a collision of a sphere with a
 //! second sphere or a flat half-space.
 
-use crate::output::{print_json, print_table};
+use crate::output::{print_json, print_table, stdout, Outcome};
 use serde::Serialize;
-use tabor_restitution::effective::{
+use tabor::restitution::effective::{
     effective_modulus, effective_radius, reduced_mass, sphere_mass,
 };
-use tabor_restitution::ElasticMaterial;
+use tabor::restitution::ElasticMaterial;
 
 /// Arguments of `tabor effective`.
 #[derive(clap::Args)]
@@ -58,8 +58,10 @@ struct Effective {
 }
 
 /// Runs `tabor effective`.
-pub fn run(args: &Args) -> Result<(), String> {
-    let err = |e: tabor_restitution::Error| e.to_string();
+pub fn run(args: &Args) -> Outcome {
+    // The library names the parameter (`youngs_modulus`, `radius`, …); the flags
+    // differ between the two bodies, so the shared flag table is not used here.
+    let err = |e: tabor::restitution::Error| e.to_string();
     let sphere = ElasticMaterial::new(args.youngs_modulus, args.poisson_ratio).map_err(err)?;
     let target = if args.rigid_target {
         ElasticMaterial::rigid()
@@ -95,11 +97,15 @@ pub fn run(args: &Args) -> Result<(), String> {
     if args.json {
         print_json(&out)
     } else {
-        print_table(&[
-            ("effective_modulus", out.effective_modulus, "Pa"),
-            ("effective_radius", out.effective_radius, "m"),
-            ("effective_mass", out.effective_mass, "kg"),
-        ]);
-        Ok(())
+        let mut stdout = stdout();
+        print_table(
+            &mut stdout,
+            &[
+                ("effective_modulus", out.effective_modulus, "Pa"),
+                ("effective_radius", out.effective_radius, "m"),
+                ("effective_mass", out.effective_mass, "kg"),
+            ],
+        )?;
+        stdout.finish()
     }
 }

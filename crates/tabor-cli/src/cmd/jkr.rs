@@ -2,10 +2,11 @@
 //! adhesive energy loss, the sticking velocity and, for a given impact speed, the
 //! maximum contact radius and the coefficient of restitution.
 
-use crate::output::{print_json, print_table};
+use crate::output::{message, print_json, print_table, stdout, Outcome};
 use serde::Serialize;
-use tabor_jkr::{AdhesiveContact, JkrImpact, JkrSphere, SeparationRule};
-use tabor_restitution::{impact, sticking_velocity, Error};
+use std::io::Write;
+use tabor::jkr::{AdhesiveContact, JkrImpact, JkrSphere, SeparationRule};
+use tabor::restitution::{impact, sticking_velocity};
 
 /// Where contact breaks on the way out.
 #[derive(Clone, Copy, Debug, clap::ValueEnum)]
@@ -78,32 +79,8 @@ struct Jkr {
     evaluations: u64,
 }
 
-/// The library's parameter names in the spelling of this subcommand's flags.
-fn flag(parameter: &str) -> &str {
-    match parameter {
-        "effective_modulus" => "--modulus",
-        "effective_radius" => "--radius",
-        "work_of_adhesion" => "--work-of-adhesion",
-        "effective_mass" | "mass" => "--mass",
-        "impact_speed" => "--speed",
-        "tolerance" => "--tolerance",
-        other => other,
-    }
-}
-
-fn message(e: Error) -> String {
-    match e {
-        Error::InvalidParameter {
-            parameter,
-            value,
-            requirement,
-        } => format!("invalid {} = {value:e}: {requirement}", flag(parameter)),
-        other => other.to_string(),
-    }
-}
-
 /// Runs `tabor jkr`.
-pub fn run(args: &Args) -> Result<(), String> {
+pub fn run(args: &Args) -> Outcome {
     let rule = match args.separation {
         Separation::FixedGrip => SeparationRule::FixedGrip,
         Separation::LoadControlled => SeparationRule::LoadControlled,
@@ -127,7 +104,7 @@ pub fn run(args: &Args) -> Result<(), String> {
         None => (None, None),
     };
     let out = Jkr {
-        model: tabor_restitution::ImpactModel::name(&model),
+        model: tabor::restitution::ImpactModel::name(&model),
         branch: loss.branch.clone(),
         separation: rule.as_str(),
         energy_loss: loss.joules,
@@ -145,8 +122,9 @@ pub fn run(args: &Args) -> Result<(), String> {
     if args.json {
         return print_json(&out);
     }
-    println!("model   {}", out.model);
-    println!("branch  {}", out.branch);
+    let mut stdout = stdout();
+    writeln!(stdout, "model   {}", out.model)?;
+    writeln!(stdout, "branch  {}", out.branch)?;
     let mut rows = vec![
         ("energy_loss", out.energy_loss, "J"),
         ("energy_loss_error", out.energy_loss_error, "J"),
@@ -169,6 +147,6 @@ pub fn run(args: &Args) -> Result<(), String> {
         rows.push(("max_contact_radius", a, "m"));
         rows.push(("restitution", e, ""));
     }
-    print_table(&rows);
-    Ok(())
+    print_table(&mut stdout, &rows)?;
+    stdout.finish()
 }

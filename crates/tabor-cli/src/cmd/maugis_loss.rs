@@ -1,20 +1,36 @@
 //! `tabor maugis-loss`: the Maugis-Dugdale adhesive loss W(Λ) (seed 000 eq. (5.43),
 //! Fig. 5.2) as a tab-separated table.
 
+use crate::output::{message, number, print_json_array, stdout, Outcome, VERSION};
 use serde::Serialize;
-use tabor_maugis::{jkr_normalized_loss, loss_over_jkr_fast, normalized_loss, TaborCase};
+use tabor::maugis::units::{tabor_parameter_from_maugis, tabor_parameter_from_tabor_mu};
+use tabor::maugis::{jkr_normalized_loss, loss_over_jkr_fast, normalized_loss, TaborCase};
 
 /// Arguments of `tabor maugis-loss`.
 #[derive(clap::Args)]
 #[command(
-    after_help = "Columns: lambda (the seed's Tabor parameter Λ = d_n/h), case (1, 2 or 3), \
-loss (|ΔU_kin| in units of F_n d_n), loss_over_jkr (|ΔU_kin|/|ΔU_JKR|), all with 16 significant digits.\n\
-Examples:\n  tabor maugis-loss --lambda 0.3 --lambda 4\n  tabor maugis-loss --from 0.01 --to 100 --points 50 --log"
+    after_help = "Three ways to give the Tabor parameter, each repeatable and mixable:\n  \
+--lambda            the seed's Λ = d_n/h (the column `lambda`)\n  \
+--maugis-parameter  Maugis' λ = 2σ0 (R/(πΔγK²))^(1/3), K = 4E*/3; Λ = 0.6861 λ\n  \
+--tabor-mu          Tabor's μ = (RΔγ²/(E*² z0³))^(1/3), through the Dugdale equivalence \
+λ ≈ 1.157 μ (an approximation)\n\
+The range --from/--to/--points is over Λ.\n\n\
+Columns (tab-separated, written with the csv crate): lambda (Λ), case (1, 2 or 3), \
+loss (|ΔU_kin| in units of F_n d_n), loss_over_jkr (|ΔU_kin|/|ΔU_JKR|), tabor_version; \
+numbers in shortest round-trip form (they read back as the same f64).\n\
+Examples:\n  tabor maugis-loss --lambda 0.3 --lambda 4\n  tabor maugis-loss --maugis-parameter 1\n  \
+tabor maugis-loss --from 0.01 --to 100 --points 50 --log"
 )]
 pub struct Args {
-    /// A Tabor parameter Λ (repeatable)
+    /// A Tabor parameter Λ = d_n/h, the seed's (repeatable)
     #[arg(long = "lambda", allow_negative_numbers = true)]
     lambdas: Vec<f64>,
+    /// Maugis' parameter λ (repeatable); converted to Λ = 0.6861 λ
+    #[arg(long = "maugis-parameter", allow_negative_numbers = true)]
+    maugis_parameters: Vec<f64>,
+    /// Tabor's μ (repeatable); converted to Λ through λ ≈ 1.157 μ
+    #[arg(long = "tabor-mu", allow_negative_numbers = true)]
+    tabor_mus: Vec<f64>,
     /// Start of a range of Λ
     #[arg(long, allow_negative_numbers = true, requires_all = ["to", "points"])]
     from: Option<f64>,
@@ -53,6 +69,12 @@ struct Row {
 
 fn lambdas(args: &Args) -> Result<Vec<f64>, String> {
     let mut out = args.lambdas.clone();
+    for &l in &args.maugis_parameters {
+        out.push(tabor_parameter_from_maugis(l).map_err(message)?);
+    }
+    for &mu in &args.tabor_mus {
+        out.push(tabor_parameter_from_tabor_mu(mu).map_err(message)?);
+    }
     if let (Some(from), Some(to), Some(points)) = (args.from, args.to, args.points) {
         if !(2..=MAX_POINTS).contains(&points) {
             return Err(format!(
@@ -74,47 +96,60 @@ fn lambdas(args: &Args) -> Result<Vec<f64>, String> {
         }
     }
     if out.is_empty() {
-        return Err("give at least one --lambda, or --from/--to/--points".into());
+        return Err("give at least one --lambda, --maugis-parameter or --tabor-mu, or --from/--to/--points".into());
     }
     Ok(out)
 }
 
-/// Runs `tabor maugis-loss`.
-pub fn run(args: &Args) -> Result<(), String> {
-    let mut rows = Vec::new();
-    for lambda in lambdas(args)? {
-        let row = if args.fast {
-            let r = loss_over_jkr_fast(lambda).map_err(|e| e.to_string())?;
-            Row {
-                lambda,
-                case: TaborCase::of(lambda).number(),
-                loss: r * jkr_normalized_loss(),
-                loss_over_jkr: r,
-                error_estimate: None,
-                method: "fast tier (Chebyshev interpolant, relative error < 1e-10)",
-            }
-        } else {
-            let w = normalized_loss(lambda, args.tolerance).map_err(|e| e.to_string())?;
-            Row {
-                lambda,
-                case: w.case.number(),
-                loss: w.loss,
-                loss_over_jkr: w.loss_over_jkr,
-                error_estimate: Some(w.error_estimate),
-                method: w.method,
-            }
-        };
-        rows.push(row);
-    }
+fn row(args: &Args, lambda: f64) -> Result<Row, String> {
+    Ok(if args.fast {
+        let r = loss_over_jkr_fast(lambda).map_err(|e| e.to_string())?;
+        Row {
+            lambda,
+            case: TaborCase::of(lambda).number(),
+            loss: r * jkr_normalized_loss(),
+            loss_over_jkr: r,
+            error_estimate: None,
+            method: "fast tier (Chebyshev interpolant, relative error < 1e-10)",
+        }
+    } else {
+        let w = normalized_loss(lambda, args.tolerance).map_err(|e| e.to_string())?;
+        Row {
+            lambda,
+            case: w.case.number(),
+            loss: w.loss,
+            loss_over_jkr: w.loss_over_jkr,
+            error_estimate: Some(w.error_estimate),
+            method: w.method,
+        }
+    })
+}
+
+/// Runs `tabor maugis-loss`. The table is written row by row as it is computed,
+/// so a reader that stops early (`| head`) ends the computation.
+pub fn run(args: &Args) -> Outcome {
+    let lambdas = lambdas(args)?;
     if args.json {
-        return crate::output::print_json(&rows);
+        let rows = lambdas
+            .iter()
+            .map(|&l| row(args, l))
+            .collect::<Result<Vec<_>, _>>()?;
+        return print_json_array(&rows);
     }
-    println!("lambda\tcase\tloss\tloss_over_jkr");
-    for r in rows {
-        println!(
-            "{:.15e}\t{}\t{:.15e}\t{:.15e}",
-            r.lambda, r.case, r.loss, r.loss_over_jkr
-        );
+    let mut table = csv::WriterBuilder::new()
+        .delimiter(b'\t')
+        .from_writer(stdout());
+    table.write_record(["lambda", "case", "loss", "loss_over_jkr", "tabor_version"])?;
+    for lambda in lambdas {
+        let r = row(args, lambda)?;
+        table.write_record([
+            number(r.lambda),
+            r.case.to_string(),
+            number(r.loss),
+            number(r.loss_over_jkr),
+            VERSION.to_string(),
+        ])?;
     }
+    table.flush()?;
     Ok(())
 }

@@ -1,5 +1,6 @@
 //! One module per subcommand.
 
+pub mod completions;
 pub mod effective;
 pub mod jkr;
 pub mod maugis_loss;

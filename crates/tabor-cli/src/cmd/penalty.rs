@@ -3,11 +3,12 @@
 //! Lankarani-Nikravesh or Flores law for a nominal restitution, and the restitution
 //! the law actually achieves in a simulated impact.
 
-use crate::output::{print_json, print_table};
+use crate::output::{message, print_json, print_table, stdout, Outcome};
 use serde::Serialize;
-use tabor_penalty::{
+use std::io::Write;
+use tabor::penalty::{
     characteristic_loss_speed, exact_damping_factor, simulate_impact, ContactCharacteristic,
-    DampedPowerLaw, DampingModel, Error, ForceLaw, ImpactSimulation, SimulationSettings,
+    DampedPowerLaw, DampingModel, ForceLaw, ImpactSimulation, SimulationSettings,
 };
 
 /// Which penalty law.
@@ -88,29 +89,6 @@ struct Penalty {
     energy_error: f64,
 }
 
-fn flag(parameter: &str) -> &str {
-    match parameter {
-        "restitution" => "--restitution",
-        "stiffness" => "--stiffness",
-        "exponent" => "--exponent",
-        "rounding" => "--rounding",
-        "effective_mass" | "mass" => "--mass",
-        "impact_speed" => "--speed",
-        other => other,
-    }
-}
-
-fn message(e: Error) -> String {
-    match e {
-        Error::InvalidParameter {
-            parameter,
-            value,
-            requirement,
-        } => format!("invalid {} = {value:e}: {requirement}", flag(parameter)),
-        other => other.to_string(),
-    }
-}
-
 fn simulate<L: ForceLaw>(law: &mut L, args: &Args) -> Result<ImpactSimulation, String> {
     let settings = SimulationSettings {
         record_trajectory: false,
@@ -120,7 +98,7 @@ fn simulate<L: ForceLaw>(law: &mut L, args: &Args) -> Result<ImpactSimulation, S
 }
 
 /// Runs `tabor penalty`.
-pub fn run(args: &Args) -> Result<(), String> {
+pub fn run(args: &Args) -> Outcome {
     let e = args.restitution;
     let out = match args.law {
         Law::Characteristic => {
@@ -128,7 +106,8 @@ pub fn run(args: &Args) -> Result<(), String> {
                 if n != 1.0 {
                     return Err(format!(
                         "invalid --exponent = {n}: the seed-002 characteristic is linear (n = 1)"
-                    ));
+                    )
+                    .into());
                 }
             }
             let big_v = characteristic_loss_speed(e, args.speed).map_err(message)?;
@@ -192,7 +171,8 @@ pub fn run(args: &Args) -> Result<(), String> {
     if args.json {
         return print_json(&out);
     }
-    println!("law  {}", out.law);
+    let mut stdout = stdout();
+    writeln!(stdout, "law  {}", out.law)?;
     let mut rows = vec![
         ("nominal_restitution", out.nominal_restitution, ""),
         ("achieved_restitution", out.achieved_restitution, ""),
@@ -220,6 +200,6 @@ pub fn run(args: &Args) -> Result<(), String> {
     if let Some(t) = out.contact_time {
         rows.push(("contact_time", t, "s"));
     }
-    print_table(&rows);
-    Ok(())
+    print_table(&mut stdout, &rows)?;
+    stdout.finish()
 }

@@ -2,14 +2,15 @@
 //! sections 5.5-5.6, (5.101)-(5.126); seed 001, eqs. (12), (18), (19)): energy loss,
 //! restitution, yield velocity and, for the adhesive models, sticking velocity.
 
-use crate::output::{print_json, print_table};
+use crate::output::{message, print_json, print_table, stdout, Outcome};
 use serde::Serialize;
-use tabor_jkr::JkrSphere;
-use tabor_plastic::{
+use std::io::Write;
+use tabor::jkr::JkrSphere;
+use tabor::plastic::{
     AdhesiveInterpolationImpact, Clamping, DimensionlessFit, Interpolation, JacksonGreen,
     PlasticContact, PlasticImpact, SimulationSettings, Superposition, Thornton,
 };
-use tabor_restitution::{impact, sticking_velocity, EnergyLoss, Error, ImpactModel};
+use tabor::restitution::{impact, sticking_velocity, EnergyLoss, ImpactModel};
 
 /// A boxed model, so that the superposition can wrap whichever one was chosen.
 struct Boxed(Box<dyn ImpactModel>);
@@ -21,7 +22,7 @@ impl ImpactModel for Boxed {
     fn effective_mass(&self) -> f64 {
         self.0.effective_mass()
     }
-    fn energy_loss(&self, impact_speed: f64) -> tabor_restitution::Result<EnergyLoss> {
+    fn energy_loss(&self, impact_speed: f64) -> tabor::restitution::Result<EnergyLoss> {
         self.0.energy_loss(impact_speed)
     }
     fn loss_is_speed_independent(&self) -> bool {
@@ -140,33 +141,6 @@ struct Plastic {
     warnings: Vec<String>,
 }
 
-/// The library's parameter names in the spelling of this subcommand's flags.
-fn flag(parameter: &str) -> &str {
-    match parameter {
-        "effective_modulus" => "--modulus",
-        "effective_radius" => "--radius",
-        "effective_mass" | "mass" => "--mass",
-        "yield_stress" => "--yield-stress",
-        "impact_speed" => "--speed",
-        "poisson_ratio" => "--poisson-ratio",
-        "density" => "--density",
-        "work_of_adhesion" => "--work-of-adhesion",
-        "adhesion_parameter" => "--adhesion-parameter",
-        other => other,
-    }
-}
-
-fn message(e: Error) -> String {
-    match e {
-        Error::InvalidParameter {
-            parameter,
-            value,
-            requirement,
-        } => format!("invalid {} = {value:e}: {requirement}", flag(parameter)),
-        other => other.to_string(),
-    }
-}
-
 fn required(value: Option<f64>, name: &str, model: &str) -> Result<f64, String> {
     value.ok_or_else(|| format!("missing {name}: required by --model {model}"))
 }
@@ -226,7 +200,7 @@ fn non_adhesive(args: &Args, which: PlasticModel) -> Result<NonAdhesive, String>
 }
 
 /// Runs `tabor plastic`.
-pub fn run(args: &Args) -> Result<(), String> {
+pub fn run(args: &Args) -> Outcome {
     let mut warnings = Vec::new();
     let mut sticking = None;
     let mut elastic_sticking = None;
@@ -343,8 +317,9 @@ pub fn run(args: &Args) -> Result<(), String> {
     if args.json {
         return print_json(&out);
     }
-    println!("model   {}", out.model);
-    println!("branch  {}", out.branch);
+    let mut stdout = stdout();
+    writeln!(stdout, "model   {}", out.model)?;
+    writeln!(stdout, "branch  {}", out.branch)?;
     let mut rows = vec![
         ("impact_speed", out.impact_speed, "m/s"),
         ("restitution", out.restitution, ""),
@@ -360,9 +335,9 @@ pub fn run(args: &Args) -> Result<(), String> {
     if let Some(p) = out.adhesion_parameter {
         rows.push(("adhesion_parameter", p, ""));
     }
-    print_table(&rows);
+    print_table(&mut stdout, &rows)?;
     for w in &out.warnings {
-        println!("warning: {w}");
+        writeln!(stdout, "warning: {w}")?;
     }
-    Ok(())
+    stdout.finish()
 }

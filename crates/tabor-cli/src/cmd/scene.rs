@@ -1,13 +1,13 @@
 //! The scene subcommands: `impact`, `sweep`, `sticking`, `trajectory`. A scene is a
 //! TOML or JSON file (format: `examples/scenes/README.md`).
 
-use crate::output::print_json;
+use crate::output::{number, optional, print_json, stdout, Failure, Outcome, VERSION};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use tabor_dynamics::SimulationSettings;
-use tabor_scene::{spaced, Scene, SweepParameter};
+use tabor::dynamics::SimulationSettings;
+use tabor::scene::{spaced, Scene, SweepParameter};
 
 fn load(path: &Path) -> Result<Scene, String> {
     Scene::from_path(path).map_err(|e| format!("{}: {e}", path.display()))
@@ -27,7 +27,7 @@ pub struct ImpactArgs {
 }
 
 /// Runs `tabor impact`.
-pub fn impact(args: &ImpactArgs) -> Result<(), String> {
+pub fn impact(args: &ImpactArgs) -> Outcome {
     let scene = load(&args.scene)?;
     let outcome = match args.speed {
         Some(v) => scene.outcome_at(v),
@@ -38,24 +38,27 @@ pub fn impact(args: &ImpactArgs) -> Result<(), String> {
         return print_json(&outcome);
     }
     let o = &outcome;
-    println!("scene             {}", o.scene);
-    println!("impact speed      {:.6e} m/s", o.impact_speed);
-    println!("restitution       {:.12}", o.restitution);
-    println!("sticks            {}", o.sticks);
+    let mut out = stdout();
+    writeln!(out, "scene             {}", o.scene)?;
+    writeln!(out, "impact speed      {:e} m/s", o.impact_speed)?;
+    writeln!(out, "restitution       {}", o.restitution)?;
+    writeln!(out, "sticks            {}", o.sticks)?;
     match o.sticking_velocity {
-        Some(v) => println!("sticking velocity {v:.6e} m/s"),
-        None => println!("sticking velocity none (the bodies never stick)"),
+        Some(v) => writeln!(out, "sticking velocity {v:e} m/s")?,
+        None => writeln!(out, "sticking velocity none (the bodies never stick)")?,
     }
-    println!(
-        "energy loss       {:.6e} J of {:.6e} J",
+    writeln!(
+        out,
+        "energy loss       {:e} J of {:e} J",
         o.energy_loss, o.kinetic_energy
-    );
+    )?;
     if let Some(l) = o.tabor_parameter {
-        println!("Tabor parameter   {l:.6e}");
+        writeln!(out, "Tabor parameter   {l:e}")?;
     }
-    println!("model             {}", o.model);
-    println!("branch            {}", o.branch);
-    println!(
+    writeln!(out, "model             {}", o.model)?;
+    writeln!(out, "branch            {}", o.branch)?;
+    writeln!(
+        out,
         "combination       {} of {} ({})",
         o.combination.rule.as_str(),
         if o.combination.effects.is_empty() {
@@ -69,33 +72,39 @@ pub fn impact(args: &ImpactArgs) -> Result<(), String> {
                 .join(" + ")
         },
         o.combination.source
-    );
-    println!("effects");
+    )?;
+    writeln!(out, "effects")?;
     for e in &o.effects {
         let loss = e
             .energy_loss
-            .map_or(String::new(), |l| format!(" [{l:.3e} J]"));
-        println!(
+            .map_or(String::new(), |l| format!(" [{l:e} J]"));
+        writeln!(
+            out,
             "  {:<16} {:<5} {}{loss}",
             e.name,
             if e.used { "used" } else { "skip" },
             e.reason
-        );
+        )?;
     }
-    println!(
+    writeln!(
+        out,
         "accuracy          {:.1e} (error estimate {:.1e} J, {} evaluations)",
         o.accuracy, o.energy_loss_error, o.cost.evaluations
-    );
+    )?;
     for w in &o.warnings {
-        println!("warning [{}]: {}", w.code, w.message);
+        writeln!(out, "warning [{}]: {}", w.code, w.message)?;
     }
-    Ok(())
+    out.finish()
 }
 
 /// Arguments of `tabor sweep`.
 #[derive(clap::Args)]
 #[command(
-    after_help = "Example: tabor sweep examples/scenes/silica.toml --speed 0.01:1:200 --log --out silica.csv"
+    after_help = "CSV columns: the swept parameter with its unit (speed_m_per_s, sphere_radius_m, \
+work_of_adhesion_j_per_m2, tabor_parameter, yield_stress_pa), restitution, sticks, energy_loss_j, \
+sticking_velocity_m_per_s (empty: never sticks), model, tabor_version. Numbers in shortest \
+round-trip form.\n\
+Example: tabor sweep examples/scenes/silica.toml --speed 0.01:1:200 --log --out silica.csv"
 )]
 pub struct SweepArgs {
     /// The scene file (.toml or .json)
@@ -112,9 +121,9 @@ pub struct SweepArgs {
     /// Space the points logarithmically
     #[arg(long)]
     log: bool,
-    /// The CSV file to write
+    /// The CSV file to write; default: stdout
     #[arg(long)]
-    out: PathBuf,
+    out: Option<PathBuf>,
 }
 
 fn range(text: &str, log: bool) -> Result<Vec<f64>, String> {
@@ -129,8 +138,39 @@ fn range(text: &str, log: bool) -> Result<Vec<f64>, String> {
     spaced(from, to, points, log).map_err(|e| e.to_string())
 }
 
+/// The CSV column of a swept parameter: its name with its SI unit.
+fn column(parameter: SweepParameter) -> String {
+    match parameter.name() {
+        "speed" => "speed_m_per_s".into(),
+        "sphere-radius" => "sphere_radius_m".into(),
+        "work-of-adhesion" => "work_of_adhesion_j_per_m2".into(),
+        "tabor-parameter" => "tabor_parameter".into(),
+        "yield-stress" => "yield_stress_pa".into(),
+        other => other.replace('-', "_"),
+    }
+}
+
+/// Where a CSV goes: a file or stdout.
+fn csv_target(path: Option<&Path>) -> Result<Box<dyn Write>, String> {
+    Ok(match path {
+        Some(p) => Box::new(
+            std::fs::File::create(p).map_err(|e| format!("cannot write {}: {e}", p.display()))?,
+        ),
+        None => Box::new(stdout()),
+    })
+}
+
+/// Turns a CSV write error into the subcommand's failure: a file error names the
+/// file; on stdout a closed pipe is the quiet end.
+fn csv_failure(path: Option<&Path>) -> impl Fn(csv::Error) -> Failure + '_ {
+    move |e| match path {
+        Some(p) => format!("cannot write {}: {e}", p.display()).into(),
+        None => e.into(),
+    }
+}
+
 /// Runs `tabor sweep`.
-pub fn sweep(args: &SweepArgs) -> Result<(), String> {
+pub fn sweep(args: &SweepArgs) -> Outcome {
     let scene = load(&args.scene)?;
     let (parameter, values) = match (&args.speed, &args.parameter, &args.values) {
         (Some(s), None, _) => (SweepParameter::Speed, range(s, args.log)?),
@@ -153,34 +193,42 @@ pub fn sweep(args: &SweepArgs) -> Result<(), String> {
     if let Ok(style) = ProgressStyle::with_template("{bar:40} {pos}/{len} points, {eta} left") {
         bar.set_style(style);
     }
-    let results = tabor_scene::sweep(&scene, parameter, &values, || bar.inc(1));
+    let results = tabor::scene::sweep(&scene, parameter, &values, || bar.inc(1));
     bar.finish_and_clear();
-    let file = std::fs::File::create(&args.out)
-        .map_err(|e| format!("cannot write {}: {e}", args.out.display()))?;
-    let mut csv = std::io::BufWriter::new(file);
-    let io = |e: std::io::Error| format!("cannot write {}: {e}", args.out.display());
-    writeln!(
-        csv,
-        "{},restitution,sticks,energy_loss_j,sticking_velocity_m_per_s,model",
-        parameter.name().replace('-', "_")
-    )
-    .map_err(io)?;
+    // Every point must succeed before anything is written (as before: no partial file).
+    let mut outcomes = Vec::with_capacity(values.len());
     for (value, result) in values.iter().zip(results) {
-        let o = result.map_err(|e| format!("{} = {value:e}: {e}", parameter.name()))?;
-        writeln!(
-            csv,
-            "{value:.12e},{:.15e},{},{:.12e},{},\"{}\"",
-            o.restitution,
-            o.sticks,
-            o.energy_loss,
-            o.sticking_velocity
-                .map_or(String::new(), |v| format!("{v:.12e}")),
-            o.model.replace('"', "'")
-        )
-        .map_err(io)?;
+        outcomes.push(result.map_err(|e| format!("{} = {value:e}: {e}", parameter.name()))?);
     }
-    csv.flush().map_err(io)?;
-    eprintln!("wrote {} points to {}", values.len(), args.out.display());
+    let path = args.out.as_deref();
+    let fail = csv_failure(path);
+    let mut csv = csv::Writer::from_writer(csv_target(path)?);
+    csv.write_record([
+        column(parameter).as_str(),
+        "restitution",
+        "sticks",
+        "energy_loss_j",
+        "sticking_velocity_m_per_s",
+        "model",
+        "tabor_version",
+    ])
+    .map_err(&fail)?;
+    for (value, o) in values.iter().zip(&outcomes) {
+        csv.write_record([
+            number(*value),
+            number(o.restitution),
+            o.sticks.to_string(),
+            number(o.energy_loss),
+            optional(o.sticking_velocity),
+            o.model.clone(),
+            VERSION.to_string(),
+        ])
+        .map_err(&fail)?;
+    }
+    csv.flush().map_err(|e| fail(e.into()))?;
+    if let Some(p) = path {
+        eprintln!("wrote {} points to {}", values.len(), p.display());
+    }
     Ok(())
 }
 
@@ -202,7 +250,7 @@ struct Sticking {
 }
 
 /// Runs `tabor sticking`.
-pub fn sticking(args: &StickingArgs) -> Result<(), String> {
+pub fn sticking(args: &StickingArgs) -> Outcome {
     let scene = load(&args.scene)?;
     let v = scene
         .sticking_velocity()
@@ -215,11 +263,12 @@ pub fn sticking(args: &StickingArgs) -> Result<(), String> {
     if args.json {
         return print_json(&out);
     }
+    let mut out = stdout();
     match v {
-        Some(v) => println!("sticking velocity {v:.12e} m/s"),
-        None => println!("the bodies never stick"),
+        Some(v) => writeln!(out, "sticking velocity {v:e} m/s")?,
+        None => writeln!(out, "the bodies never stick")?,
     }
-    Ok(())
+    out.finish()
 }
 
 /// Arguments of `tabor trajectory`.
@@ -230,7 +279,8 @@ pub struct TrajectoryArgs {
     /// Impact speed (m/s); default: the scene's [impact] speed
     #[arg(long, allow_negative_numbers = true)]
     speed: Option<f64>,
-    /// Write the trajectory (t, d, ḋ, F, a) as CSV here
+    /// Write the trajectory as CSV here (columns time_s, overlap_m,
+    /// overlap_rate_m_per_s, force_n, contact_radius_m, tabor_version)
     #[arg(long)]
     out: Option<PathBuf>,
     /// Requested relative accuracy of the simulated outcome
@@ -258,7 +308,7 @@ struct Trajectory {
 }
 
 /// Runs `tabor trajectory`.
-pub fn trajectory(args: &TrajectoryArgs) -> Result<(), String> {
+pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
     let scene = load(&args.scene)?;
     let speed = args
         .speed
@@ -271,22 +321,29 @@ pub fn trajectory(args: &TrajectoryArgs) -> Result<(), String> {
         .simulate(speed, &settings)
         .map_err(|e| format!("{}: {e}", args.scene.display()))?;
     if let Some(path) = &args.out {
-        let io = |e: std::io::Error| format!("cannot write {}: {e}", path.display());
-        let mut csv = std::io::BufWriter::new(std::fs::File::create(path).map_err(io)?);
-        writeln!(
-            csv,
-            "time_s,overlap_m,overlap_rate_m_per_s,force_n,contact_radius_m"
-        )
-        .map_err(io)?;
+        let fail = csv_failure(Some(path));
+        let mut csv = csv::Writer::from_writer(csv_target(Some(path))?);
+        csv.write_record([
+            "time_s",
+            "overlap_m",
+            "overlap_rate_m_per_s",
+            "force_n",
+            "contact_radius_m",
+            "tabor_version",
+        ])
+        .map_err(&fail)?;
         for p in &sim.trajectory {
-            writeln!(
-                csv,
-                "{:.12e},{:.12e},{:.12e},{:.12e},{:.12e}",
-                p.time, p.overlap, p.overlap_rate, p.force, p.contact_radius
-            )
-            .map_err(io)?;
+            csv.write_record([
+                number(p.time),
+                number(p.overlap),
+                number(p.overlap_rate),
+                number(p.force),
+                number(p.contact_radius),
+                VERSION.to_string(),
+            ])
+            .map_err(&fail)?;
         }
-        csv.flush().map_err(io)?;
+        csv.flush().map_err(|e| fail(e.into()))?;
     }
     let out = Trajectory {
         scene: scene.name.clone(),
@@ -305,13 +362,14 @@ pub fn trajectory(args: &TrajectoryArgs) -> Result<(), String> {
     if args.json {
         return print_json(&out);
     }
-    println!("law                  {}", out.law);
-    println!("restitution          {:.12} (simulated)", out.restitution);
-    println!("restitution_analytic {:.12}", out.restitution_analytic);
+    let mut stdout = stdout();
+    writeln!(stdout, "law                  {}", out.law)?;
+    writeln!(stdout, "restitution          {} (simulated)", out.restitution)?;
+    writeln!(stdout, "restitution_analytic {}", out.restitution_analytic)?;
     match out.contact_time {
-        Some(t) => println!("contact time         {t:.6e} s"),
-        None => println!("contact time         - (the bodies stick)"),
+        Some(t) => writeln!(stdout, "contact time         {t:e} s")?,
+        None => writeln!(stdout, "contact time         - (the bodies stick)")?,
     }
-    println!("energy bookkeeping   {:.1e}", out.energy_error);
-    Ok(())
+    writeln!(stdout, "energy bookkeeping   {:.1e}", out.energy_error)?;
+    stdout.finish()
 }

@@ -2,10 +2,10 @@
 //! the coefficient of restitution as a function of each model's dimensionless
 //! parameters.
 
-use crate::output::{print_json, print_table};
+use crate::output::{message, print_json, print_table, stdout, Outcome};
 use serde::Serialize;
-use tabor_restitution::Error;
-use tabor_visco::{
+use std::io::Write;
+use tabor::visco::{
     compressible_flat, damping_law, kelvin_maxwell_sphere, kelvin_voigt_flat, kelvin_voigt_sphere,
     standard_flat, standard_sphere, SphereModel,
 };
@@ -98,32 +98,6 @@ struct Visco {
     evaluations: u64,
 }
 
-fn flag(parameter: &str) -> &str {
-    match parameter {
-        "damping_ratio" | "shear_damping_ratio" => "--damping-ratio",
-        "viscous_parameter" => "--viscous-parameter",
-        "modulus_ratio" => "--modulus-ratio",
-        "damping" => "--damping",
-        "damping_exponent" => "--damping-exponent",
-        "alpha" => "--alpha",
-        "poisson_ratio" => "--poisson-ratio",
-        "bulk_damping_ratio" => "--bulk-damping-ratio",
-        "tolerance" => "--tolerance",
-        other => other,
-    }
-}
-
-fn message(e: Error) -> String {
-    match e {
-        Error::InvalidParameter {
-            parameter,
-            value,
-            requirement,
-        } => format!("invalid {} = {value:e}: {requirement}", flag(parameter)),
-        other => other.to_string(),
-    }
-}
-
 fn need(value: Option<f64>, name: &str, model: &str) -> Result<f64, String> {
     value.ok_or_else(|| format!("missing {name}: the model {model} needs it"))
 }
@@ -145,11 +119,11 @@ fn model_name(m: Model) -> &'static str {
 }
 
 /// Runs `tabor visco`.
-pub fn run(args: &Args) -> Result<(), String> {
+pub fn run(args: &Args) -> Outcome {
     let name = model_name(args.model);
     // checked here so that a bad --tolerance names the flag for every model
     let tol =
-        tabor_restitution::validate::tolerance("tolerance", args.tolerance).map_err(message)?;
+        tabor::restitution::validate::tolerance("tolerance", args.tolerance).map_err(message)?;
     let mut out = Visco {
         model: name,
         restitution: 0.0,
@@ -234,7 +208,8 @@ pub fn run(args: &Args) -> Result<(), String> {
     if args.json {
         return print_json(&out);
     }
-    println!("model   {}", out.model);
+    let mut stdout = stdout();
+    writeln!(stdout, "model   {}", out.model)?;
     let mut rows = vec![("restitution", out.restitution, "")];
     let optional = [
         ("contact_time", out.contact_time),
@@ -254,6 +229,6 @@ pub fn run(args: &Args) -> Result<(), String> {
             rows.push((k, v, "(scaled)"));
         }
     }
-    print_table(&rows);
-    Ok(())
+    print_table(&mut stdout, &rows)?;
+    stdout.finish()
 }
