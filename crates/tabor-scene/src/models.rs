@@ -422,25 +422,93 @@ impl Models {
             .ok_or_else(|| Self::missing("viscoelastic"))
     }
 
-    fn adhesive_interpolation(&self) -> Result<&AdhesiveInterpolationImpact, SceneError> {
-        self.adhesive_interpolation
-            .as_ref()
-            .ok_or_else(|| Self::missing("adhesive interpolation"))
-    }
-
     /// The speed above which plasticity enters for the effects `set` (the adhesive
     /// yield onset (5.111) when the rule is built on the adhesive interpolation
     /// model, else v_Y (5.103) of the plastic model).
     pub(crate) fn yield_onset(&self, set: &EffectSet) -> Option<(f64, &'static str)> {
         let plastic = self.plastic.as_ref()?;
         set.plasticity?;
-        match rule(&set.without(EffectKind::Viscoelasticity)) {
-            Ok(Rule::AdhesiveInterpolation | Rule::AdhesivePlasticExcess) => self
-                .adhesive_interpolation
-                .as_ref()
-                .map(|a| (a.yield_velocity(), "adhesive yield onset (5.111)")),
-            _ => Some((plastic.model().yield_velocity(), "yield onset v_Y (5.103)")),
+        let v_y = plastic.model().yield_velocity();
+        match self.coupled_plastic_part(set) {
+            // the plastic part max(L_AI − L_JKR, L_plastic) starts at the earlier of
+            // the two onsets
+            Some(ai) if ai.yield_velocity() < v_y => {
+                Some((ai.yield_velocity(), "adhesive yield onset (5.111)"))
+            }
+            _ => Some((v_y, "yield onset v_Y (5.103)")),
         }
+    }
+
+    /// The adhesive interpolation model, when the plastic part of `set` comes from
+    /// it (adhesion + the interpolation model, no superposition requested).
+    fn coupled_plastic_part(&self, set: &EffectSet) -> Option<&AdhesiveInterpolationImpact> {
+        match rule(&set.without(EffectKind::Viscoelasticity)) {
+            Ok(Rule::AdhesiveInterpolation | Rule::AdhesivePlasticExcess) => {
+                self.adhesive_interpolation.as_ref()
+            }
+            _ => None,
+        }
+    }
+
+    /// The plastic part of the loss of `set` at `speed`: with adhesion and the
+    /// interpolation model, the adhesive interpolation model's excess over its own
+    /// elastic (fixed-grip JKR) loss, but at least the non-adhesive plastic loss
+    /// (the superposition (5.109) bounds it from below: the model's JKR unloading
+    /// would otherwise let adhesion raise ε, tabor-plastic README); otherwise the
+    /// plastic model's loss. 0 at the yield onset, so adding it last keeps every
+    /// combination continuous there.
+    fn plastic_part(
+        &self,
+        set: &EffectSet,
+        speed: f64,
+    ) -> Result<(EnergyLoss, String), SceneError> {
+        let f = self.fields;
+        let plastic_error = |e| f.error(EffectKind::Plasticity, e);
+        let plastic = self.plastic_model()?;
+        let pl = plastic.energy_loss(speed).map_err(plastic_error)?;
+        let Some(ai) = self.coupled_plastic_part(set) else {
+            return Ok((pl, plastic.name()));
+        };
+        let jkr = self
+            .jkr_fixed_grip
+            .as_ref()
+            .ok_or_else(|| Self::missing("fixed-grip JKR"))?;
+        let coupled = ai.energy_loss(speed).map_err(plastic_error)?;
+        let elastic_part = jkr
+            .energy_loss(speed)
+            .map_err(|e| f.error(EffectKind::Adhesion, e))?;
+        let excess = coupled.joules - elastic_part.joules;
+        let name = format!(
+            "plastic part of the adhesive interpolation model (5.111)-(5.126), at least {}",
+            plastic.name()
+        );
+        let cost = coupled.cost + elastic_part.cost + pl.cost;
+        let error_estimate =
+            coupled.error_estimate + elastic_part.error_estimate + pl.error_estimate;
+        Ok(if excess >= pl.joules {
+            (
+                EnergyLoss {
+                    joules: excess,
+                    error_estimate,
+                    branch: format!(
+                        "plastic excess of {} over {}",
+                        coupled.branch, elastic_part.branch
+                    ),
+                    cost,
+                },
+                name,
+            )
+        } else {
+            (
+                EnergyLoss {
+                    joules: pl.joules,
+                    error_estimate,
+                    branch: format!("{} (superposition bound)", pl.branch),
+                    cost,
+                },
+                name,
+            )
+        })
     }
 
     /// The loss of the effects `set` at `speed`, by the rule of the table.
@@ -472,61 +540,6 @@ impl Models {
                     single(EffectKind::Viscoelasticity, self.visco_model()?)
                 }
             }
-            Rule::AdhesiveInterpolation | Rule::AdhesivePlasticExcess => {
-                // L = L_adhesive + max(L_AI − L_JKR,fg, L_plastic): the elastic
-                // adhesive loss of the scene (its range, rule) plus the plastic part,
-                // the adhesive interpolation model's excess over its own elastic
-                // (fixed-grip JKR) loss, but never less than the non-adhesive plastic
-                // loss (the superposition (5.109) bounds it from below: the model's
-                // JKR unloading would otherwise let adhesion raise ε, tabor-plastic
-                // README). For fixed-grip JKR this is max(L_AI, superposition).
-                let ai = self.adhesive_interpolation()?;
-                let jkr = self
-                    .jkr_fixed_grip
-                    .as_ref()
-                    .ok_or_else(|| Self::missing("fixed-grip JKR"))?;
-                let adhesive = self.adhesive_model()?;
-                let plastic = self.plastic_model()?;
-                let plastic_error = |e| f.error(EffectKind::Plasticity, e);
-                let adhesion_error = |e| f.error(EffectKind::Adhesion, e);
-                let coupled = ai.energy_loss(speed).map_err(plastic_error)?;
-                let elastic_part = jkr.energy_loss(speed).map_err(adhesion_error)?;
-                let adh = adhesive.energy_loss(speed).map_err(adhesion_error)?;
-                let pl = plastic.energy_loss(speed).map_err(plastic_error)?;
-                let excess = coupled.joules - elastic_part.joules;
-                let (plastic_part, which) = if excess >= pl.joules {
-                    (
-                        excess,
-                        format!(
-                            "plastic excess of {} over {}",
-                            coupled.branch, elastic_part.branch
-                        ),
-                    )
-                } else {
-                    (pl.joules, format!("{} (superposition bound)", pl.branch))
-                };
-                Ok(Evaluation {
-                    loss: EnergyLoss {
-                        joules: adh.joules + plastic_part,
-                        error_estimate: adh.error_estimate
-                            + coupled.error_estimate
-                            + elastic_part.error_estimate
-                            + pl.error_estimate,
-                        branch: format!("{} + {which}", adh.branch),
-                        cost: adh.cost + coupled.cost + elastic_part.cost + pl.cost,
-                    },
-                    model: format!(
-                        "{} + plastic part of the adhesive interpolation model (5.111)-(5.126), at least {}",
-                        adhesive.name(),
-                        plastic.name()
-                    ),
-                    rule: r,
-                    parts: vec![
-                        (EffectKind::Adhesion, Some(adh.joules)),
-                        (EffectKind::Plasticity, Some(plastic_part)),
-                    ],
-                })
-            }
             Rule::ViscousAdhesive => {
                 let m = self
                     .viscous_adhesive
@@ -545,32 +558,59 @@ impl Models {
                     ],
                 })
             }
-            Rule::Superposition => {
-                let (mut inner, extra): (
-                    Evaluation,
-                    (EffectKind, &(dyn ImpactModel + Send + Sync)),
-                ) = if set.viscoelasticity.is_some() {
-                    (
-                        self.evaluate(&set.without(EffectKind::Viscoelasticity), speed)?,
-                        (EffectKind::Viscoelasticity, self.visco_model()?),
-                    )
-                } else {
+            Rule::AdhesiveInterpolation | Rule::AdhesivePlasticExcess | Rule::Superposition => {
+                let kinetic = 0.5 * self.mass * speed * speed;
+                // Which effect comes last, and how it adds:
+                // - adhesion and plasticity alone: the plastic part is added to the
+                //   adhesive loss (5.109) (0 at the yield onset);
+                // - with viscoelasticity, the last effect acts on the energy the others
+                //   leave, ΔU = ΔU_rest + ΔU_last (1 − ΔU_rest/U): a fraction of the
+                //   kinetic energy, never making bodies stick that the others let
+                //   go (without adhesion they never stick); the last effect is
+                //   plasticity when the rest is the coupled adhesion + Kelvin-Voigt
+                //   model (so the rule is continuous at the yield onset), else the
+                //   viscoelastic loss.
+                let coupled_rest = set.adhesion.is_some()
+                    && set.viscoelasticity == Some(crate::combination::ViscoKind::KelvinVoigt);
+                let (mut inner, (kind, extra, name), as_fraction) = if set.plasticity.is_some()
+                    && (set.viscoelasticity.is_none() || coupled_rest)
+                {
+                    let (l, name) = self.plastic_part(set, speed)?;
                     (
                         self.evaluate(&set.without(EffectKind::Plasticity), speed)?,
-                        (EffectKind::Plasticity, self.plastic_model()?),
+                        (EffectKind::Plasticity, l, name),
+                        set.viscoelasticity.is_some(),
+                    )
+                } else {
+                    let visco = self.visco_model()?;
+                    (
+                        self.evaluate(&set.without(EffectKind::Viscoelasticity), speed)?,
+                        (
+                            EffectKind::Viscoelasticity,
+                            visco
+                                .energy_loss(speed)
+                                .map_err(|e| f.error(EffectKind::Viscoelasticity, e))?,
+                            visco.name(),
+                        ),
+                        true,
                     )
                 };
-                let l = extra
-                    .1
-                    .energy_loss(speed)
-                    .map_err(|e| f.error(extra.0, e))?;
-                inner.loss.joules += l.joules;
-                inner.loss.error_estimate += l.error_estimate;
-                inner.loss.cost += l.cost;
-                inner.loss.branch = format!("(5.109): {} + {}", inner.loss.branch, l.branch);
-                inner.model = format!("{} + {}", inner.model, extra.1.name());
+                let share = if as_fraction {
+                    extra.joules * (1.0 - inner.loss.joules / kinetic).max(0.0)
+                } else {
+                    extra.joules
+                };
+                inner.loss.joules += share;
+                inner.loss.error_estimate += extra.error_estimate;
+                inner.loss.cost += extra.cost;
+                inner.loss.branch = if as_fraction {
+                    format!("{} + (1 - rest/U) x {}", inner.loss.branch, extra.branch)
+                } else {
+                    format!("{} + {}", inner.loss.branch, extra.branch)
+                };
+                inner.model = format!("{} + {name}", inner.model);
                 inner.rule = r;
-                inner.parts.push((extra.0, Some(l.joules)));
+                inner.parts.push((kind, Some(share)));
                 Ok(inner)
             }
         }

@@ -303,6 +303,14 @@ impl Scene {
         Prepared::new(self)?.outcome_at(speed)
     }
 
+    /// The combination (rule and effects used) that answers at impact speed `speed`
+    /// (m/s), without computing the outcome's sticking velocity.
+    pub fn combination_at(&self, speed: f64) -> Result<Combination, SceneError> {
+        let v = tabor_restitution::validate::positive("speed", speed)
+            .map_err(|e| SceneError::field("impact.speed", e.to_string()))?;
+        Ok(Prepared::new(self)?.select(v)?.combination())
+    }
+
     /// The sticking velocity (m/s) of the scene's model (the root of ε(v) = 0 of the
     /// model that answers at each speed), or `None` when the bodies never stick.
     pub fn sticking_velocity(&self) -> Result<Option<f64>, SceneError> {

@@ -1,0 +1,323 @@
+//! Property tests over the combination space: random scenes drawing subsets of the
+//! effects (adhesion JKR / load-controlled / Maugis-Dugdale, plasticity of each
+//! model, viscosity on the sphere, the target or both). For every scene:
+//!
+//! - ε ∈ [0, 1] and the loss is at most the kinetic energy;
+//! - `sticks` ⇔ v < v_stick;
+//! - continuity at every threshold where the model that answers changes: found by
+//!   bisection on the combination between two speeds (yield onset, negligible
+//!   effects), and at Λ1, Λ2 and the JKR stand-in switch in Λ;
+//! - ε never rises when the work of adhesion, a viscosity or the cohesive stress
+//!   grows at fixed everything else.
+//!
+//! The number of cases follows `PROPTEST_CASES` (64 in CI; the opt-in fuzzing run
+//! uses 1e5, README).
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use proptest::prelude::*;
+use tabor_maugis::{LAMBDA_1, LAMBDA_2};
+use tabor_scene::{Combination, Format, Scene, SceneError, SweepParameter};
+
+/// A random scene as TOML pieces.
+#[derive(Clone, Debug)]
+struct Spec {
+    radius: f64,
+    density: f64,
+    modulus: f64,
+    poisson: f64,
+    target_sphere: bool,
+    target_modulus: f64,
+    target_poisson: f64,
+    work_of_adhesion: Option<f64>,
+    range: Option<f64>,
+    load_controlled: bool,
+    yield_stress: Option<f64>,
+    plastic_model: &'static str,
+    superposition: bool,
+    sphere_viscosity: Option<f64>,
+    target_viscosity: Option<f64>,
+    accuracy: f64,
+}
+
+fn contact_modulus(e: f64, nu: f64) -> f64 {
+    e / (1.0 - nu * nu)
+}
+
+impl Spec {
+    fn toml(&self) -> String {
+        let mut s = format!(
+            "accuracy = {:e}\n[sphere]\nradius = {:e}\ndensity = {:e}\nyoungs_modulus = {:e}\npoisson_ratio = {}\n",
+            self.accuracy, self.radius, self.density, self.modulus, self.poisson
+        );
+        if let Some(eta) = self.sphere_viscosity {
+            s += &format!("viscosity = {eta:e}\n");
+        }
+        s += &format!(
+            "[target]\nyoungs_modulus = {:e}\npoisson_ratio = {}\ndensity = {:e}\n",
+            self.target_modulus, self.target_poisson, self.density
+        );
+        if self.target_sphere {
+            s += &format!("radius = {:e}\n", self.radius);
+        }
+        if let Some(sy) = self.yield_stress {
+            s += &format!("yield_stress = {sy:e}\n");
+        }
+        if let Some(eta) = self.target_viscosity {
+            s += &format!("viscosity = {eta:e}\n");
+        }
+        if let Some(w) = self.work_of_adhesion {
+            s += &format!("[adhesion]\nwork_of_adhesion = {w:e}\n");
+            if let Some(h) = self.range {
+                s += &format!("range = {h:e}\n");
+            } else if self.load_controlled {
+                s += "separation = \"load-controlled\"\n";
+            }
+        }
+        if self.yield_stress.is_some() {
+            s += &format!("[plasticity]\nmodel = \"{}\"\n", self.plastic_model);
+            if self.superposition {
+                s += "adhesive_model = \"superposition\"\n";
+            }
+        }
+        s
+    }
+
+    fn scene(&self) -> Result<Scene, SceneError> {
+        Scene::from_str(&self.toml(), Format::Toml)
+    }
+}
+
+fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
+    (lo.log10()..hi.log10()).prop_map(|x| 10f64.powf(x))
+}
+
+fn spec() -> impl Strategy<Value = Spec> {
+    (
+        (
+            log_uniform(1e-6, 1e-3),
+            log_uniform(900.0, 8000.0),
+            log_uniform(1e7, 3e11),
+            0.0..0.49f64,
+            any::<bool>(),
+            log_uniform(1e7, 3e11),
+            0.0..0.49f64,
+        ),
+        (
+            prop::option::of(log_uniform(1e-3, 0.5)),
+            prop::option::of(log_uniform(0.05e-9, 5e-9)),
+            any::<bool>(),
+        ),
+        (
+            prop::option::of(log_uniform(3e-3, 3e-2)),
+            prop::sample::select(vec!["auto", "thornton", "interpolation"]),
+            prop::bool::weighted(0.2),
+        ),
+        (0u8..4, log_uniform(1e-6, 1e-1)),
+        prop::sample::select(vec![1e-10, 1e-8, 1e-6]),
+    )
+        .prop_map(
+            |(
+                (radius, density, modulus, poisson, target_sphere, target_modulus, target_poisson),
+                (work_of_adhesion, range, load_controlled),
+                (yield_ratio, plastic_model, superposition),
+                (viscous, tau),
+                accuracy,
+            )| {
+                // viscosity from a relaxation time τ = 4η/M: 0 none, 1 sphere,
+                // 2 target, 3 both with the same τ (a Kelvin-Voigt contact)
+                let ms = contact_modulus(modulus, poisson);
+                let mt = contact_modulus(target_modulus, target_poisson);
+                let (sphere_viscosity, target_viscosity) = match viscous {
+                    1 => (Some(tau * ms / 4.0 * 1e-3), None),
+                    2 => (None, Some(tau * mt / 4.0 * 1e-3)),
+                    3 => (Some(tau * ms / 4.0 * 1e-3), Some(tau * mt / 4.0 * 1e-3)),
+                    _ => (None, None),
+                };
+                Spec {
+                    radius,
+                    density,
+                    modulus,
+                    poisson,
+                    target_sphere,
+                    target_modulus,
+                    target_poisson,
+                    work_of_adhesion,
+                    range: if work_of_adhesion.is_some() {
+                        range
+                    } else {
+                        None
+                    },
+                    load_controlled: load_controlled && range.is_none(),
+                    yield_stress: yield_ratio.map(|r| r * modulus.min(target_modulus)),
+                    plastic_model,
+                    superposition,
+                    sphere_viscosity,
+                    target_viscosity,
+                    accuracy,
+                }
+            },
+        )
+}
+
+/// ε at `v`, or `None` where the models refuse the parameters (a typed error with
+/// a field is fine: the property tests check the answers that are given).
+fn restitution(scene: &Scene, v: f64) -> Option<f64> {
+    match scene.restitutions(&[v]) {
+        Ok(e) => Some(e[0]),
+        Err((_, e)) => {
+            assert!(!e.message.is_empty() && !e.message.contains("NaN"), "{e}");
+            None
+        }
+    }
+}
+
+fn signature(c: &Combination) -> (tabor_scene::Rule, Vec<tabor_scene::EffectKind>) {
+    (c.rule, c.effects.clone())
+}
+
+/// The jump of 1 − ε² (the loss over the kinetic energy) across x, by `eps_at`.
+fn jump(x: f64, eps_at: &dyn Fn(f64) -> Option<f64>) -> Option<f64> {
+    let lo = eps_at(x * (1.0 - 1e-9))?;
+    let hi = eps_at(x * (1.0 + 1e-9))?;
+    Some(((1.0 - lo * lo) - (1.0 - hi * hi)).abs())
+}
+
+/// A change of the model that answers, bisected between speeds a < b whose
+/// combinations differ.
+fn threshold(scene: &Scene, mut a: f64, mut b: f64) -> Option<f64> {
+    let sa = signature(&scene.combination_at(a).ok()?);
+    for _ in 0..60 {
+        let mid = (a * b).sqrt();
+        if signature(&scene.combination_at(mid).ok()?) == sa {
+            a = mid;
+        } else {
+            b = mid;
+        }
+        if b / a - 1.0 < 1e-12 {
+            break;
+        }
+    }
+    Some((a * b).sqrt())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    })]
+
+    #[test]
+    fn answers_agree_with_themselves(spec in spec(), speed in log_uniform(1e-3, 30.0)) {
+        let Ok(scene) = spec.scene() else { return Ok(()) };
+        let Ok(o) = scene.outcome_at(speed) else { return Ok(()) };
+        prop_assert!((0.0..=1.0).contains(&o.restitution), "{}", o.restitution);
+        prop_assert!(o.energy_loss <= o.kinetic_energy * (1.0 + 1e-12));
+        match o.sticking_velocity {
+            None => prop_assert!(!o.sticks),
+            Some(vc) => {
+                if (speed / vc - 1.0).abs() > 1e-6 {
+                    prop_assert_eq!(o.sticks, speed < vc, "v = {}, v_c = {}", speed, vc);
+                }
+            }
+        }
+        // the shares of a sum add up to the model's loss
+        let shares: Vec<f64> = o.effects.iter().filter_map(|e| e.energy_loss).collect();
+        if o.effects.iter().filter(|e| e.used).all(|e| e.energy_loss.is_some()) && !o.sticks {
+            let sum: f64 = shares.iter().sum();
+            prop_assert!((sum - o.energy_loss).abs() <= 1e-9 * o.kinetic_energy, "{} vs {}", sum, o.energy_loss);
+        }
+    }
+
+    #[test]
+    fn continuous_where_the_model_changes(spec in spec(), speed in log_uniform(1e-3, 30.0)) {
+        let Ok(scene) = spec.scene() else { return Ok(()) };
+        let eps = |v: f64| restitution(&scene, v);
+        let (a, b) = (speed, speed * 3.0);
+        let (Ok(ca), Ok(cb)) = (scene.combination_at(a), scene.combination_at(b)) else { return Ok(()) };
+        if signature(&ca) != signature(&cb) {
+            if let Some(x) = threshold(&scene, a, b) {
+                if let Some(j) = jump(x, &eps) {
+                    // a dropped effect changes the loss by < accuracy × kinetic energy;
+                    // the yield onsets are C¹ joins
+                    prop_assert!(j <= 3.0 * spec.accuracy + 1e-8, "jump {} at v = {} ({:?} -> {:?})", j, x, ca, cb);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn continuous_at_lambda_1_lambda_2_and_the_jkr_stand_in(spec in spec(), speed in log_uniform(1e-3, 30.0)) {
+        let Some(_) = spec.work_of_adhesion else { return Ok(()) };
+        let Ok(scene) = spec.scene() else { return Ok(()) };
+        let eps_of_lambda = |l: f64| {
+            scene
+                .with_parameter(SweepParameter::TaborParameter, l)
+                .ok()
+                .and_then(|s| restitution(&s, speed))
+        };
+        for l in [LAMBDA_1, LAMBDA_2] {
+            if let Some(j) = jump(l, &eps_of_lambda) {
+                prop_assert!(j <= 1e-8, "jump {} at Lambda = {}", j, l);
+            }
+        }
+        // the JKR stand-in: where the adhesive model's name changes, in Λ
+        let model = |l: f64| {
+            scene
+                .with_parameter(SweepParameter::TaborParameter, l)
+                .ok()
+                .and_then(|s| s.outcome_at(speed).ok())
+                .map(|o| o.model.contains("Maugis"))
+        };
+        let (mut lo, mut hi) = (10.0f64, 1e9f64);
+        if let (Some(true), Some(false)) = (model(lo), model(hi)) {
+            for _ in 0..40 {
+                let mid = (lo * hi).sqrt();
+                match model(mid) {
+                    Some(true) => lo = mid,
+                    Some(false) => hi = mid,
+                    None => return Ok(()),
+                }
+            }
+            if let Some(j) = jump((lo * hi).sqrt(), &eps_of_lambda) {
+                prop_assert!(j <= 3.0 * spec.accuracy + 1e-8, "jump {} at the stand-in Lambda = {}", j, (lo * hi).sqrt());
+            }
+        }
+    }
+
+    #[test]
+    fn restitution_never_rises_with_adhesion_viscosity_or_cohesive_stress(
+        spec in spec(),
+        speed in log_uniform(1e-3, 30.0),
+        factor in 1.01..3.0f64,
+    ) {
+        let Ok(scene) = spec.scene() else { return Ok(()) };
+        let Some(e0) = restitution(&scene, speed) else { return Ok(()) };
+        // numerical models answer to the requested accuracy
+        let slack = 10.0 * spec.accuracy + 1e-9;
+        let mut grown = Vec::new();
+        if let Some(w) = spec.work_of_adhesion {
+            // at fixed range h: Λ and the loss grow with Δγ
+            grown.push(("work of adhesion", Spec { work_of_adhesion: Some(w * factor), ..spec.clone() }));
+        }
+        if let Some(h) = spec.range {
+            // σ0 = Δγ/h grows as h shrinks at fixed Δγ
+            grown.push(("cohesive stress", Spec { range: Some(h / factor), ..spec.clone() }));
+        }
+        // Only a Kelvin-Voigt contact loses more with more viscosity: a viscous body on
+        // an elastic one (a standard medium) turns rigid as η → ∞ and the partner's
+        // elasticity returns the energy (test below).
+        if spec.sphere_viscosity.is_some() && spec.target_viscosity.is_some() {
+            grown.push(("viscosity (both bodies, same relaxation time: a Kelvin-Voigt contact)", Spec {
+                sphere_viscosity: spec.sphere_viscosity.map(|e| e * factor),
+                target_viscosity: spec.target_viscosity.map(|e| e * factor),
+                ..spec.clone()
+            }));
+        }
+        for (what, s) in grown {
+            let Ok(scene) = s.scene() else { continue };
+            if let Some(e1) = restitution(&scene, speed) {
+                prop_assert!(e1 <= e0 + slack, "{} x{}: {} -> {}\n{}", what, factor, e0, e1, s.toml());
+            }
+        }
+    }
+}
