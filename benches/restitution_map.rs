@@ -11,7 +11,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use rayon::prelude::*;
 use std::hint::black_box;
 use tabor::jkr::{JkrImpact, JkrSphere};
-use tabor::maugis::units::Scales;
+use tabor::maugis::units::JkrScales;
 use tabor::maugis::{jkr_normalized_loss, loss_over_jkr_fast, prepare_fast_tier};
 use tabor::restitution::{impact, restitution_from_loss};
 
@@ -44,7 +44,7 @@ fn jkr_point(r1: f64, v: f64) -> f64 {
 
 fn maugis_point(r1: f64, v: f64) -> f64 {
     let (e_star, r, m) = pair(r1);
-    let scales = Scales::new(e_star, r, DG).unwrap();
+    let scales = JkrScales::new(e_star, r, DG).unwrap();
     let lambda = scales.depth / RANGE;
     let loss = loss_over_jkr_fast(lambda).unwrap() * jkr_normalized_loss() * scales.energy;
     restitution_from_loss(loss, m, v).unwrap()

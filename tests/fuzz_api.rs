@@ -541,7 +541,7 @@ fn maugis_group(cases: u32, only: Option<u8>) {
                 &[lambda, s],
                 &trace_impact(lambda, s, points),
             )?;
-            check("Scales::new", &[e, r, w], &Scales::new(e, r, w))?;
+            check("JkrScales::new", &[e, r, w], &JkrScales::new(e, r, w))?;
             check(
                 "tabor_parameter_from_cohesive_stress",
                 &[s, w, e, r],

@@ -26,6 +26,58 @@ pub struct JkrScales {
     pub energy: f64,
 }
 
+impl JkrScales {
+    /// The scales for effective modulus `E*` (Pa), effective radius `R` (m) and work
+    /// of adhesion `Δγ` (J/m²), all finite and > 0: `a_c = (9πΔγR²/(8E*))^(1/3)`,
+    /// `F_n = (3/2)πΔγR`, `d_n = a_c²/(3R)`, `F_n d_n`.
+    ///
+    /// Seed 000, eq. (5.43) (the units of the force-controlled critical state of
+    /// (5.33)-(5.34)). Fails when a scale under- or overflows. The JKR sphere and the
+    /// Maugis-Dugdale model (`tabor-maugis`) share these scales.
+    pub fn new(
+        effective_modulus: f64,
+        effective_radius: f64,
+        work_of_adhesion: f64,
+    ) -> Result<Self> {
+        Self::for_model(
+            "JKR scales",
+            effective_modulus,
+            effective_radius,
+            work_of_adhesion,
+        )
+    }
+
+    /// [`JkrScales::new`], naming `model` in the error when a scale is not
+    /// representable.
+    fn for_model(
+        model: &'static str,
+        effective_modulus: f64,
+        effective_radius: f64,
+        work_of_adhesion: f64,
+    ) -> Result<Self> {
+        let e = validate::positive("effective_modulus", effective_modulus)?;
+        let r = validate::positive("effective_radius", effective_radius)?;
+        let dg = validate::positive("work_of_adhesion", work_of_adhesion)?;
+        // a_c = (9π/8 · Δγ/E)^(1/3) R^(2/3), ordered to avoid intermediate overflow:
+        // only the ratio Δγ/E and cube roots are formed, never Δγ·R/E.
+        let rc = r.cbrt();
+        let a_c = positive_output(
+            model,
+            "contact radius scale a_c",
+            (9.0 * PI / 8.0 * (dg / e)).cbrt() * rc * rc,
+        )?;
+        let f_n = positive_output(model, "force scale F_n", 1.5 * PI * dg * r)?;
+        let d_n = positive_output(model, "depth scale d_n", a_c * (a_c / (3.0 * r)))?;
+        let energy = positive_output(model, "energy scale F_n d_n", f_n * d_n)?;
+        Ok(JkrScales {
+            contact_radius: a_c,
+            force: f_n,
+            depth: d_n,
+            energy,
+        })
+    }
+}
+
 /// A parabolic JKR contact: a sphere of effective radius `R` on a half-space, effective
 /// modulus `E*`, work of adhesion `Δγ`. Seed 000, eqs. (5.33)-(5.38).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -47,29 +99,13 @@ impl JkrSphere {
         effective_radius: f64,
         work_of_adhesion: f64,
     ) -> Result<Self> {
-        let e = validate::positive("effective_modulus", effective_modulus)?;
-        let r = validate::positive("effective_radius", effective_radius)?;
-        let dg = validate::positive("work_of_adhesion", work_of_adhesion)?;
-        // a_c = (9π/8 · Δγ/E)^(1/3) R^(2/3), ordered to avoid intermediate overflow.
-        let rc = r.cbrt();
-        let a_c = positive_output(
-            MODEL,
-            "contact radius scale a_c",
-            (9.0 * PI / 8.0 * (dg / e)).cbrt() * rc * rc,
-        )?;
-        let f_n = positive_output(MODEL, "force scale F_n", 1.5 * PI * dg * r)?;
-        let d_n = positive_output(MODEL, "depth scale d_n", a_c * (a_c / (3.0 * r)))?;
-        let energy = positive_output(MODEL, "energy scale F_n d_n", f_n * d_n)?;
+        let scales =
+            JkrScales::for_model(MODEL, effective_modulus, effective_radius, work_of_adhesion)?;
         Ok(JkrSphere {
-            modulus: e,
-            radius: r,
-            work_of_adhesion: dg,
-            scales: JkrScales {
-                contact_radius: a_c,
-                force: f_n,
-                depth: d_n,
-                energy,
-            },
+            modulus: effective_modulus,
+            radius: effective_radius,
+            work_of_adhesion,
+            scales,
         })
     }
 

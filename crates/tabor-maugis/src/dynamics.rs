@@ -3,7 +3,7 @@
 use crate::impact::{impact_path, ImpactPath};
 use crate::model::MaugisDugdaleImpact;
 use crate::trace::equilibrium_state_on;
-use crate::units::Scales;
+use crate::units::JkrScales;
 use tabor_dynamics::{BranchChange, ForceLaw};
 use tabor_numerics::Cost;
 use tabor_restitution::{validate, Result};
@@ -17,7 +17,7 @@ use tabor_restitution::{validate, Result};
 /// displacement-controlled instability) with the speed it has there.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MaugisDugdaleForceLaw {
-    scales: Scales,
+    scales: JkrScales,
     path: ImpactPath,
     approaching: bool,
 }

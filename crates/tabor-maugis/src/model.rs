@@ -1,7 +1,7 @@
 //! The physical-unit front: a Maugis-Dugdale impact as a [`tabor_restitution::ImpactModel`].
 
 use crate::impact::{normalized_loss, NormalizedLoss};
-use crate::units::{tabor_parameter_from_cohesive_stress, tabor_parameter_from_range, Scales};
+use crate::units::{tabor_parameter_from_cohesive_stress, tabor_parameter_from_range, JkrScales};
 use tabor_restitution::{validate, EnergyLoss, ImpactModel, Result};
 
 /// A Maugis-Dugdale adhesive impact in SI units: effective modulus E*, effective
@@ -12,7 +12,7 @@ use tabor_restitution::{validate, EnergyLoss, ImpactModel, Result};
 /// impact speed, so the sticking velocity is the closed form (5.38).
 #[derive(Clone, Debug, PartialEq)]
 pub struct MaugisDugdaleImpact {
-    scales: Scales,
+    scales: JkrScales,
     tabor_parameter: f64,
     effective_mass: f64,
     tolerance: f64,
@@ -28,7 +28,7 @@ impl MaugisDugdaleImpact {
         effective_mass: f64,
     ) -> Result<Self> {
         Ok(MaugisDugdaleImpact {
-            scales: Scales::new(effective_modulus, effective_radius, work_of_adhesion)?,
+            scales: JkrScales::new(effective_modulus, effective_radius, work_of_adhesion)?,
             tabor_parameter: validate::positive("tabor_parameter", tabor_parameter)?,
             effective_mass: validate::positive("effective_mass", effective_mass)?,
             tolerance: 1e-12,
@@ -93,7 +93,7 @@ impl MaugisDugdaleImpact {
     }
 
     /// The scales a_c, F_n, d_n, F_n d_n.
-    pub fn scales(&self) -> Scales {
+    pub fn scales(&self) -> JkrScales {
         self.scales
     }
 

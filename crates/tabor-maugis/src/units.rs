@@ -1,60 +1,12 @@
 //! Physical scales of the normalization and conversions into the Tabor parameter Λ.
 
 use crate::impact::check_lambda;
-use serde::Serialize;
-use std::f64::consts::PI;
 use tabor_restitution::{validate, Error, Result};
 
 /// The JKR force-controlled critical state that normalizes the Maugis-Dugdale
-/// solution (`maugis-dugdale.md`, "Scales").
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Scales {
-    /// `a_c = (9πΔγR²/(8E*))^(1/3)` (m).
-    pub contact_radius: f64,
-    /// `F_n = (3/2)πΔγR` (N).
-    pub force: f64,
-    /// `d_n = a_c²/(3R)` (m).
-    pub depth: f64,
-    /// `F_n d_n` (J), the unit of the normalized loss.
-    pub energy: f64,
-}
-
-impl Scales {
-    /// The scales for effective modulus E* (Pa), effective radius R (m) and work of
-    /// adhesion Δγ (J/m²).
-    pub fn new(
-        effective_modulus: f64,
-        effective_radius: f64,
-        work_of_adhesion: f64,
-    ) -> Result<Self> {
-        let e = validate::positive("effective_modulus", effective_modulus)?;
-        let r = validate::positive("effective_radius", effective_radius)?;
-        let w = validate::positive("work_of_adhesion", work_of_adhesion)?;
-        let a_c = (9.0 * PI * w * r / (8.0 * e)).cbrt() * r.cbrt();
-        let force = 1.5 * PI * w * r;
-        let depth = a_c * (a_c / (3.0 * r));
-        let energy = force * depth;
-        for (name, v) in [
-            ("contact radius scale a_c", a_c),
-            ("depth scale d_n", depth),
-            ("energy scale F_n d_n", energy),
-        ] {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(tabor_restitution::Error::invalid(
-                    name,
-                    v,
-                    "the inputs give a scale that underflows or overflows",
-                ));
-            }
-        }
-        Ok(Scales {
-            contact_radius: a_c,
-            force,
-            depth,
-            energy,
-        })
-    }
-}
+/// solution (seed 000 eq. (5.43); scales `a_c`, `F_n`, `d_n`, `F_n d_n`): the same
+/// type as the JKR sphere's, built by [`JkrScales::new`].
+pub use tabor_jkr::JkrScales;
 
 /// `Λ = π (9/4)^(1/3) / 6 ≈ 0.6861` times Maugis' λ.
 pub const LAMBDA_PER_MAUGIS_PARAMETER: f64 = 0.686_108_492_583_778_5;
@@ -73,7 +25,7 @@ pub fn tabor_parameter_from_cohesive_stress(
     effective_radius: f64,
 ) -> Result<f64> {
     let s0 = validate::positive("cohesive_stress", cohesive_stress)?;
-    let scales = Scales::new(effective_modulus, effective_radius, work_of_adhesion)?;
+    let scales = JkrScales::new(effective_modulus, effective_radius, work_of_adhesion)?;
     // σ0 a_c²/(3RΔγ) = σ0 d_n / Δγ = d_n / h
     check_lambda(s0 * scales.depth / work_of_adhesion)
 }
@@ -87,7 +39,7 @@ pub fn tabor_parameter_from_range(
     effective_radius: f64,
 ) -> Result<f64> {
     let h = validate::positive("range", range)?;
-    let scales = Scales::new(effective_modulus, effective_radius, work_of_adhesion)?;
+    let scales = JkrScales::new(effective_modulus, effective_radius, work_of_adhesion)?;
     check_lambda(scales.depth / h)
 }
 

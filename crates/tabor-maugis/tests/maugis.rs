@@ -11,7 +11,7 @@ use tabor_maugis::branch::{
 };
 use tabor_maugis::units::{
     maugis_parameter, tabor_parameter_from_cohesive_stress, tabor_parameter_from_maugis,
-    tabor_parameter_from_range, tabor_parameter_from_tabor_mu, Scales,
+    tabor_parameter_from_range, tabor_parameter_from_tabor_mu, JkrScales,
 };
 use tabor_maugis::*;
 use tabor_numerics::quadrature::integrate_smooth;
@@ -307,7 +307,7 @@ fn conversions_into_lambda_agree() {
 #[test]
 fn scales_match_the_spec() {
     let (e, r, w) = (2e9, 5e-6, 0.1);
-    let s = Scales::new(e, r, w).unwrap();
+    let s = JkrScales::new(e, r, w).unwrap();
     let energy = 3.0 * 3f64.cbrt() / 8.0 * (r.powi(4) * (PI * w).powi(5) / (e * e)).cbrt();
     assert_relative_eq!(s.energy, energy, max_relative = 1e-14);
     assert_relative_eq!(s.force, 1.5 * PI * w * r, max_relative = 1e-15);
