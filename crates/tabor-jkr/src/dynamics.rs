@@ -4,8 +4,6 @@ use crate::common::SeparationRule;
 use crate::normalized;
 use crate::sphere::JkrSphere;
 use tabor_dynamics::{BranchChange, ForceLaw};
-use tabor_numerics::root_finding::newton_safeguarded;
-use tabor_numerics::RootTolerance;
 use tabor_restitution::{validate, Result};
 
 /// The JKR sphere (seed 000 eqs. (5.33)-(5.34)) as a force law `F(d)` for the
@@ -15,16 +13,13 @@ use tabor_restitution::{validate, Result};
 /// `d = −3^(2/3) d_n`; load-controlled: `d = −d_n`, where `F = −(3/2)πΔγR`).
 ///
 /// The contact radius at depth d is the root `x = √â ≥ 3^(−1/3)` of
-/// `3x⁴ − 4x = d̂` (the stable branch), by safeguarded Newton.
+/// `3x⁴ − 4x = d̂` (the stable branch), [`normalized::sqrt_contact_radius_at_depth`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct JkrForceLaw {
     sphere: JkrSphere,
     rule: SeparationRule,
     separation_depth: f64,
 }
-
-/// `x_c = 3^(−1/3)`: the fixed-grip instability in `x = √â`.
-const X_MIN: f64 = 0.693_361_274_350_634_8;
 
 impl JkrForceLaw {
     /// The force law of `sphere` with separation rule `rule`.
@@ -46,29 +41,6 @@ impl JkrForceLaw {
     pub fn separation_depth(&self) -> f64 {
         self.separation_depth
     }
-
-    /// `√â` on the stable branch at normalized depth `d̂` (clamped to the fixed-grip
-    /// instability below it).
-    fn root_contact_radius(&self, depth_hat: f64) -> Result<f64> {
-        let d_min = 3.0 * X_MIN.powi(4) - 4.0 * X_MIN;
-        if depth_hat <= d_min {
-            return Ok(X_MIN);
-        }
-        let hi = 2.0 + (depth_hat.abs() / 2.0).powf(0.25);
-        let root = newton_safeguarded(
-            |x| {
-                (
-                    3.0 * x.powi(4) - 4.0 * x - depth_hat,
-                    12.0 * x.powi(3) - 4.0,
-                )
-            },
-            X_MIN,
-            hi,
-            (1.0 + depth_hat.max(0.0) / 3.0).powf(0.25).clamp(X_MIN, hi),
-            RootTolerance::relative(1e-15),
-        )?;
-        Ok(root.value)
-    }
 }
 
 impl ForceLaw for JkrForceLaw {
@@ -89,14 +61,14 @@ impl ForceLaw for JkrForceLaw {
 
     fn force(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
         let s = self.sphere.scales();
-        let x = self.root_contact_radius(overlap / s.depth)?;
+        let x = normalized::sqrt_contact_radius_at_depth(overlap / s.depth)?;
         let a = x * x;
         Ok((a * a * a - 2.0 * a * x) * s.force)
     }
 
     fn contact_radius(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
         let s = self.sphere.scales();
-        let x = self.root_contact_radius(overlap / s.depth)?;
+        let x = normalized::sqrt_contact_radius_at_depth(overlap / s.depth)?;
         Ok(x * x * s.contact_radius)
     }
 

@@ -14,7 +14,8 @@ use crate::common::{
     finite_output, loss_by_quadrature, solve_energy_balance, Balance, ContactState,
     MaxContactRadius, NormalizedLoss, SeparationRule,
 };
-use tabor_numerics::Cost;
+use tabor_numerics::root_finding::newton_safeguarded;
+use tabor_numerics::{Cost, RootTolerance};
 use tabor_restitution::{validate, Result};
 
 const MODEL: &str = "JKR sphere";
@@ -60,6 +61,45 @@ pub fn critical_state(rule: SeparationRule) -> ContactState {
         depth: depth_hat(a),
         force: force_hat(a),
     }
+}
+
+/// The contact radius `â ≥ (1/3)^(2/3)` on the stable branch at depth `d̂` (finite),
+/// clamped to the fixed-grip instability `â = (1/3)^(2/3)` for `d̂ ≤ −3^(2/3)`.
+///
+/// Seed 000, eq. (5.34) divided by `d_n`, inverted: with `x = √â`, the root
+/// `x ≥ 3^(−1/3)` of the quartic `3x⁴ − 4x = d̂` (see [`sqrt_contact_radius_at_depth`]).
+pub fn contact_radius_at_depth(depth: f64) -> Result<f64> {
+    let x = sqrt_contact_radius_at_depth(depth)?;
+    Ok(x * x)
+}
+
+/// `x = √â ≥ 3^(−1/3)` on the stable branch at depth `d̂` (finite): the root of the
+/// quartic `3x⁴ − 4x = d̂`, by Newton's method safeguarded by bisection in
+/// `[3^(−1/3), 3/2 + (d̂⁺/3)^(1/4)]` to a relative 4ε; clamped to `3^(−1/3)` (the
+/// fixed-grip instability) for `d̂ ≤ −3^(2/3)`.
+///
+/// Seed 000, eq. (5.34) divided by `d_n`, inverted. The one quartic inversion of the
+/// workspace: [`crate::JkrForceLaw`] and `tabor-plastic`'s JKR unloading use it.
+pub fn sqrt_contact_radius_at_depth(depth: f64) -> Result<f64> {
+    let d = validate::finite("depth", depth)?;
+    if d <= depth_hat(separation_radius(SeparationRule::FixedGrip)) {
+        return Ok(SQRT_FIXED_GRIP_RADIUS);
+    }
+    let upper = 1.5 + (d.max(0.0) / 3.0).powf(0.25);
+    let start = (1.0 + d.max(0.0) / 3.0)
+        .powf(0.25)
+        .clamp(SQRT_FIXED_GRIP_RADIUS, upper);
+    let root = newton_safeguarded(
+        |x| {
+            let x3 = x * x * x;
+            (3.0 * x3 * x - 4.0 * x - d, 12.0 * x3 - 4.0)
+        },
+        SQRT_FIXED_GRIP_RADIUS,
+        upper,
+        start,
+        RootTolerance::relative(4.0 * f64::EPSILON),
+    )?;
+    Ok(root.value)
 }
 
 /// The kinetic energy it takes to reach the maximum contact radius `â_max`, the right
@@ -131,6 +171,8 @@ pub(crate) fn fixed_grip_loss() -> f64 {
     0.1 * (1.0 + 864f64.cbrt()) * 8.0 / (3.0 * 3f64.cbrt())
 }
 
+/// `√â` at the fixed-grip instability, `3^(−1/3)`.
+const SQRT_FIXED_GRIP_RADIUS: f64 = 0.693_361_274_350_634_8;
 /// `â0 = (4/3)^(2/3)`.
 const FIRST_TOUCH_RADIUS: f64 = 1.211_413_728_554_759_7;
 /// `â` of zero force, `4^(1/3)`.
@@ -176,6 +218,7 @@ mod tests {
         assert!((LOADING_OFFSET - 1.2 * (4.0f64 / 3.0).powf(4.0 / 3.0)).abs() < eps);
         let fg = separation_radius(SeparationRule::FixedGrip);
         assert!((fg - (1.0f64 / 3.0).powf(2.0 / 3.0)).abs() < eps);
+        assert!((SQRT_FIXED_GRIP_RADIUS - 3f64.powf(-1.0 / 3.0)).abs() < eps);
         assert!(depth_hat(FIRST_TOUCH_RADIUS).abs() < 16.0 * eps);
         assert!(force_hat(ZERO_FORCE_RADIUS).abs() < 8.0 * eps);
     }

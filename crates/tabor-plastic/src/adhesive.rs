@@ -12,7 +12,7 @@ use serde::Serialize;
 use tabor_dynamics::{BranchChange, ForceLaw};
 use tabor_jkr::normalized as jkr;
 use tabor_jkr::{ContactState, JkrImpact, JkrScales, JkrSphere, SeparationRule};
-use tabor_numerics::root_finding::{brent, newton_safeguarded, RootTolerance};
+use tabor_numerics::root_finding::{brent, RootTolerance};
 use tabor_restitution::{
     restitution_from_loss, sticking_velocity, validate, EnergyLoss, Error, ImpactModel, Result,
 };
@@ -294,7 +294,7 @@ impl AdhesiveInterpolation {
     pub fn loading_work(&self, depth: f64) -> Result<f64> {
         let d = validate::non_negative("depth", depth)?;
         let w = if d <= self.yield_state.depth {
-            jkr::kinetic_energy_to_reach(invert_jkr_depth(d)?)?
+            jkr::kinetic_energy_to_reach(jkr::contact_radius_at_depth(d)?)?
         } else if d <= self.onset_depth {
             self.cubic_work(d)
         } else {
@@ -307,7 +307,7 @@ impl AdhesiveInterpolation {
     pub(crate) fn loading_state(&self, d: f64) -> Result<ContactState> {
         let y = self.yield_state;
         let (a, f) = if d <= y.depth {
-            let a = invert_jkr_depth(d)?;
+            let a = jkr::contact_radius_at_depth(d)?;
             (a, jkr::force(a)?)
         } else if d <= self.onset_depth {
             let t = d - y.depth;
@@ -451,34 +451,12 @@ impl JkrUnloading {
 
     /// `(â, F̂)` at depth `d̂` on the unloading branch (clamped at the instability).
     fn state(&self, d: f64) -> Result<(f64, f64)> {
-        let scaled = invert_jkr_depth((d - self.residual) / self.rho.cbrt())?;
+        let scaled = jkr::contact_radius_at_depth((d - self.residual) / self.rho.cbrt())?;
         Ok((
             scaled * self.rho.powf(2.0 / 3.0),
             self.rho * jkr::force(scaled)?,
         ))
     }
-}
-
-/// The stable JKR branch `â ≥ (1/3)^(2/3)` at depth `d̂` (clamped to the fixed-grip
-/// instability below `d̂ = −3^(2/3)`): Newton in `u = √â` on `3u⁴ − 4u = d̂`.
-pub(crate) fn invert_jkr_depth(d: f64) -> Result<f64> {
-    let critical = jkr::critical_state(SeparationRule::FixedGrip);
-    if d <= critical.depth {
-        return Ok(critical.contact_radius);
-    }
-    let u_lo = critical.contact_radius.sqrt();
-    let u_hi = 1.5 + (d.max(0.0) / 3.0).powf(0.25);
-    let root = newton_safeguarded(
-        |u| {
-            let u3 = u * u * u;
-            (3.0 * u3 * u - 4.0 * u - d, 12.0 * u3 - 4.0)
-        },
-        u_lo,
-        u_hi,
-        u_hi.min((d.max(0.0) / 3.0).powf(0.25).max(1.1)),
-        RootTolerance::relative(4.0 * f64::EPSILON),
-    )?;
-    Ok(root.value * root.value)
 }
 
 /// The adhesive interpolation model in SI units: an [`ImpactModel`].
