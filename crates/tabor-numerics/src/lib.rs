@@ -11,9 +11,10 @@
 //! - [`special`]: Gamma and Beta functions (from `statrs`), the incomplete beta
 //!   function `B(x; a, b)` of seed 000 eqs. (5.11), (5.17) and the Gamma-function
 //!   ratios `β(n)`, `β(n, k)` of the power-law contact solutions;
-//! - [`ode`] and [`rosenbrock`]: adaptive integrators for small ODE systems with
-//!   dense output and event location, explicit (Dormand-Prince 5(4)) and, for stiff
-//!   systems, L-stable (Rosenbrock RODAS4);
+//! - [`ode`]: adaptive integrators for small ODE systems with dense output and
+//!   event location, explicit (Dormand-Prince 5(4)) and, in [`rosenbrock`] (also
+//!   reachable as `ode::rosenbrock`), L-stable for stiff systems (Rodas5P by
+//!   default, RODAS4 on request), all run by one driver ([`ode::drive`]);
 //! - [`chebyshev`]: Chebyshev interpolation (single and piecewise) for precomputed
 //!   fast tiers of expensive smooth functions;
 //! - [`Cost`]: evaluations and iterations that callers accumulate, so the library can
@@ -29,8 +30,9 @@ mod error;
 pub mod ode;
 pub mod quadrature;
 pub mod root_finding;
-pub mod rosenbrock;
 pub mod special;
+
+pub use ode::rosenbrock;
 
 pub use cost::Cost;
 pub use error::NumericsError;

@@ -1,0 +1,575 @@
+//! Adaptive integrators for small ODE systems `y' = f(t, y)`, `y ∈ ℝᴺ`, with dense
+//! output and event location. This module holds what every method shares; the
+//! methods live in their own modules:
+//!
+//! - [`DormandPrince`] (module `dormand_prince`): explicit Runge-Kutta 5(4) with a
+//!   4th-order dense output, for non-stiff systems; [`solve`] and
+//!   [`solve_until_event`] integrate with it;
+//! - [`rosenbrock`]: the L-stable Rosenbrock methods Rodas5P (default) and RODAS4,
+//!   for stiff systems.
+//!
+//! Shared here:
+//!
+//! - [`OdeTolerance`]: the error norm, tolerances and step limits of every method;
+//! - [`EventDirection`], [`EventPoint`] and [`locate_event_in_step`]: the sign
+//!   changes of a user function `g(t, y)`, located on the dense output of the last
+//!   step with Brent's method ([`crate::root_finding::brent`]), so locating them
+//!   costs no evaluations of `f`;
+//! - [`DenseStepper`]: the interface of a one-step integrator with dense output;
+//! - [`drive`]: the one step-and-locate-event loop, with an observer called after
+//!   every accepted step (to record a trajectory or watch the state); every solver
+//!   and phase integration in the workspace is built on it;
+//! - [`OdeSolution`], [`Integration`]: what a driver returns.
+//!
+//! The state is a fixed-size array `[f64; N]` (no allocation per step).
+
+#![allow(clippy::needless_range_loop)] // component loops over small fixed arrays
+
+mod dormand_prince;
+pub mod rosenbrock;
+
+pub use dormand_prince::{solve, solve_until_event, DormandPrince};
+
+use crate::root_finding::{brent, RootTolerance};
+use crate::{Cost, NumericsError, Result};
+
+/// Accuracy and limits of an integration. A step is accepted when the embedded
+/// error estimate satisfies `|err_i| ≤ absolute + relative · max(|y_i|, |y_i,new|)`
+/// in the root-mean-square norm over the components.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OdeTolerance {
+    /// Relative tolerance (≥ 1e-15 after raising; must be finite and ≥ 0).
+    pub relative: f64,
+    /// Absolute tolerance (finite, ≥ 0; relative and absolute may not both be 0).
+    pub absolute: f64,
+    /// Limit on the number of steps (accepted plus rejected).
+    pub max_steps: u64,
+    /// Largest step allowed (> 0, may be infinite).
+    pub max_step: f64,
+    /// First trial step; `None` chooses it automatically (Hairer's `HINIT`).
+    pub initial_step: Option<f64>,
+}
+
+impl OdeTolerance {
+    /// Relative tolerance `relative`, absolute tolerance `absolute`, at most one
+    /// million steps, no step limit, automatic first step.
+    pub fn new(relative: f64, absolute: f64) -> Self {
+        OdeTolerance {
+            relative,
+            absolute,
+            max_steps: 1_000_000,
+            max_step: f64::INFINITY,
+            initial_step: None,
+        }
+    }
+
+    /// The same tolerance with a largest step `max_step`.
+    pub fn with_max_step(mut self, max_step: f64) -> Self {
+        self.max_step = max_step;
+        self
+    }
+
+    /// The same tolerance with at most `max_steps` steps.
+    pub fn with_max_steps(mut self, max_steps: u64) -> Self {
+        self.max_steps = max_steps;
+        self
+    }
+
+    pub(crate) fn validate(&self) -> Result<()> {
+        let check = |name: &'static str, v: f64| {
+            if v.is_finite() && v >= 0.0 {
+                Ok(())
+            } else {
+                Err(NumericsError::InvalidArgument {
+                    name,
+                    value: v,
+                    requirement: "must be finite and >= 0",
+                })
+            }
+        };
+        check("relative tolerance", self.relative)?;
+        check("absolute tolerance", self.absolute)?;
+        if self.relative == 0.0 && self.absolute == 0.0 {
+            return Err(NumericsError::InvalidArgument {
+                name: "absolute tolerance",
+                value: 0.0,
+                requirement: "relative and absolute tolerance may not both be 0",
+            });
+        }
+        if self.max_step.is_nan() || self.max_step <= 0.0 {
+            return Err(NumericsError::InvalidArgument {
+                name: "max_step",
+                value: self.max_step,
+                requirement: "must be > 0",
+            });
+        }
+        if self.max_steps == 0 {
+            return Err(NumericsError::InvalidArgument {
+                name: "max_steps",
+                value: 0.0,
+                requirement: "must be at least 1",
+            });
+        }
+        if let Some(h) = self.initial_step {
+            if !(h.is_finite() && h > 0.0) {
+                return Err(NumericsError::InvalidArgument {
+                    name: "initial_step",
+                    value: h,
+                    requirement: "must be finite and > 0",
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// The error scale of a component that was `a` before and `b` after a step.
+    pub(crate) fn error_scale(&self, a: f64, b: f64) -> f64 {
+        self.absolute + self.relative_effective() * a.abs().max(b.abs())
+    }
+
+    pub(crate) fn relative_effective(&self) -> f64 {
+        self.relative.max(1e-15)
+    }
+}
+
+impl Default for OdeTolerance {
+    /// `relative = 1e-10`, `absolute = 1e-12`.
+    fn default() -> Self {
+        OdeTolerance::new(1e-10, 1e-12)
+    }
+}
+
+/// Which sign changes of an event function count.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EventDirection {
+    /// From `g > 0` to `g ≤ 0`.
+    Falling,
+    /// From `g < 0` to `g ≥ 0`.
+    Rising,
+    /// Either of the two.
+    Either,
+}
+
+impl EventDirection {
+    /// True when going from `before` to `after` is a crossing in this direction.
+    /// A value that starts at exactly 0 never triggers, so an integration restarted
+    /// at an event does not find the same event again.
+    pub fn is_crossing(self, before: f64, after: f64) -> bool {
+        let falling = before > 0.0 && after <= 0.0;
+        let rising = before < 0.0 && after >= 0.0;
+        match self {
+            EventDirection::Falling => falling,
+            EventDirection::Rising => rising,
+            EventDirection::Either => falling || rising,
+        }
+    }
+}
+
+/// A located event: where the event function changed sign.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EventPoint<const N: usize> {
+    /// Time of the sign change.
+    pub t: f64,
+    /// State there (from the dense output).
+    pub y: [f64; N],
+}
+
+/// The result of a driver ([`solve`], [`solve_until_event`], [`drive`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OdeSolution<const N: usize> {
+    /// Where the integration stopped: the final time, or the event time.
+    pub t: f64,
+    /// State at `t`.
+    pub y: [f64; N],
+    /// True when an event stopped the integration.
+    pub event_found: bool,
+    /// Accepted steps.
+    pub accepted_steps: u64,
+    /// Rejected steps.
+    pub rejected_steps: u64,
+    /// Right-hand-side evaluations (`evaluations`) and steps (`iterations`).
+    pub cost: Cost,
+}
+
+/// A one-step integrator with a dense output on its last accepted step
+/// ([`DormandPrince`], [`rosenbrock::Rosenbrock`]): what event location
+/// ([`locate_event_in_step`]) and the driver ([`drive`]) need.
+pub trait DenseStepper<const N: usize> {
+    /// Current time and state.
+    fn current(&self) -> (f64, [f64; N]);
+    /// Start of the last accepted step.
+    fn step_start(&self) -> f64;
+    /// The dense output on the last accepted step.
+    fn dense(&self, t: f64) -> [f64; N];
+    /// One accepted step, not beyond `t_limit`.
+    fn advance<F>(&mut self, f: &mut F, t_limit: f64) -> Result<()>
+    where
+        F: FnMut(f64, &[f64; N]) -> [f64; N];
+    /// Accepted and rejected steps.
+    fn step_counts(&self) -> (u64, u64);
+    /// Evaluations of f and steps so far.
+    fn spent(&self) -> Cost;
+}
+
+/// The crossing of `g` in `direction` on the last accepted step of `stepper`,
+/// located by Brent's method on the dense output to `time_tolerance` (absolute,
+/// in t), with the evaluations of `g` spent; `None` when the step has none.
+pub fn locate_event_in_step<S, G, const N: usize>(
+    stepper: &S,
+    g: &mut G,
+    direction: EventDirection,
+    g_before: f64,
+    g_after: f64,
+    time_tolerance: f64,
+) -> Result<Option<(EventPoint<N>, Cost)>>
+where
+    S: DenseStepper<N>,
+    G: FnMut(f64, &[f64; N]) -> f64,
+{
+    if !direction.is_crossing(g_before, g_after) {
+        return Ok(None);
+    }
+    let (b, y_b) = stepper.current();
+    if g_after == 0.0 {
+        return Ok(Some((EventPoint { t: b, y: y_b }, Cost::ZERO)));
+    }
+    let a = stepper.step_start();
+    let tol = RootTolerance {
+        absolute: time_tolerance.max(0.0),
+        relative: 4.0 * f64::EPSILON,
+        max_iterations: 200,
+    };
+    let root = brent(
+        |s| {
+            if s <= a {
+                g_before
+            } else if s >= b {
+                g_after
+            } else {
+                g(s, &stepper.dense(s))
+            }
+        },
+        a,
+        b,
+        tol,
+    )?;
+    let t = root.value;
+    Ok(Some((
+        EventPoint {
+            t,
+            y: stepper.dense(t),
+        },
+        root.cost(),
+    )))
+}
+
+/// What [`drive`] returns: the solution and what locating the event cost.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Integration<const N: usize> {
+    /// Where the integration stopped, the steps taken and the evaluations of f
+    /// (`solution.cost`).
+    pub solution: OdeSolution<N>,
+    /// Evaluations of the event function on the dense output and Brent iterations
+    /// spent locating the event ([`Cost::ZERO`] when none was found).
+    pub event_cost: Cost,
+}
+
+/// The step-and-locate-event loop: advances `stepper` from its current point until
+/// the event function `g(t, y)` crosses zero in `direction` (located on the dense
+/// output of the step to a few ulps of t), or until `t_end` when it does not.
+///
+/// After every accepted step, `observer(stepper, stop)` is called with the stepper
+/// (its last step, dense output and current state) and the time `stop` where the
+/// integration ends within that step: the step's end, or the event time on the step
+/// that contains the event. Use it to record a trajectory (sample
+/// [`DenseStepper::dense`] on `[step_start, stop]`) or to watch the state at the step
+/// ends; pass `&mut |_: &S, _: f64| {}` when nothing is to be observed.
+///
+/// Every solver of this module ([`solve_until_event`],
+/// [`rosenbrock::solve_until_event`]) and every phase integration built on them is
+/// this loop. `g` is evaluated once at the start, once per step end, and on the
+/// dense output of the step that contains the crossing.
+pub fn drive<S, F, G, O, const N: usize>(
+    stepper: &mut S,
+    f: &mut F,
+    g: &mut G,
+    direction: EventDirection,
+    t_end: f64,
+    observer: &mut O,
+) -> Result<Integration<N>>
+where
+    S: DenseStepper<N>,
+    F: FnMut(f64, &[f64; N]) -> [f64; N],
+    G: FnMut(f64, &[f64; N]) -> f64,
+    O: FnMut(&S, f64),
+{
+    let (t0, y0) = stepper.current();
+    let mut g_prev = g(t0, &y0);
+    while stepper.current().0 < t_end {
+        stepper.advance(f, t_end)?;
+        let (t, y) = stepper.current();
+        let g_new = g(t, &y);
+        let hit = locate_event_in_step(stepper, g, direction, g_prev, g_new, 0.0)?;
+        observer(stepper, hit.as_ref().map_or(t, |(p, _)| p.t));
+        if let Some((point, event_cost)) = hit {
+            return Ok(Integration {
+                solution: solution_of(stepper, point.t, point.y, true),
+                event_cost,
+            });
+        }
+        g_prev = g_new;
+    }
+    let (t, y) = stepper.current();
+    Ok(Integration {
+        solution: solution_of(stepper, t, y, false),
+        event_cost: Cost::ZERO,
+    })
+}
+
+fn solution_of<S: DenseStepper<N>, const N: usize>(
+    stepper: &S,
+    t: f64,
+    y: [f64; N],
+    event_found: bool,
+) -> OdeSolution<N> {
+    let (accepted, rejected) = stepper.step_counts();
+    OdeSolution {
+        t,
+        y,
+        event_found,
+        accepted_steps: accepted,
+        rejected_steps: rejected,
+        cost: stepper.spent(),
+    }
+}
+
+/// An event function that never crosses: [`drive`] then integrates to `t_end`.
+pub(crate) fn no_event<const N: usize>(_: f64, _: &[f64; N]) -> f64 {
+    1.0
+}
+
+/// The names a method gives its step failures ([`StepperCore::trial_step`]).
+pub(crate) struct FailureNames {
+    pub(crate) step_limit: &'static str,
+    pub(crate) underflow: &'static str,
+}
+
+/// The state every one-step method keeps: the current point, the start and length
+/// of the last accepted step, the proposed step size and the counters. The methods
+/// add their own controller memory and dense-output coefficients.
+#[derive(Clone, Debug)]
+pub(crate) struct StepperCore<const N: usize> {
+    pub(crate) tol: OdeTolerance,
+    /// Current time and state (end of the last accepted step).
+    pub(crate) t: f64,
+    pub(crate) y: [f64; N],
+    /// Start of the last accepted step.
+    pub(crate) t_old: f64,
+    /// Proposed next step size.
+    pub(crate) h: f64,
+    /// Length of the last accepted step (0 before the first).
+    pub(crate) h_last: f64,
+    pub(crate) last_rejected: bool,
+    pub(crate) accepted: u64,
+    pub(crate) rejected: u64,
+    pub(crate) evaluations: u64,
+}
+
+impl<const N: usize> StepperCore<N> {
+    /// Validates `tol` and starts at `(t0, y0)` (the method then restarts there).
+    pub(crate) fn new(tol: OdeTolerance, t0: f64, y0: [f64; N]) -> Result<Self> {
+        tol.validate()?;
+        Ok(StepperCore {
+            tol,
+            t: t0,
+            y: y0,
+            t_old: t0,
+            h: 0.0,
+            h_last: 0.0,
+            last_rejected: false,
+            accepted: 0,
+            rejected: 0,
+            evaluations: 0,
+        })
+    }
+
+    /// Checks a (re)start at `(t, y)` aiming at `t_hint`, moves there and forgets
+    /// the last step; returns the span `t_hint − t`.
+    pub(crate) fn restart(&mut self, t: f64, y: [f64; N], t_hint: f64) -> Result<f64> {
+        finite("t", t)?;
+        for &v in &y {
+            finite("y", v)?;
+        }
+        let span = t_hint - t;
+        if !(span.is_finite() && span > 0.0) {
+            return Err(NumericsError::InvalidArgument {
+                name: "t_hint",
+                value: t_hint,
+                requirement: "must be finite and later than the current time",
+            });
+        }
+        self.t = t;
+        self.t_old = t;
+        self.y = y;
+        self.h_last = 0.0;
+        self.last_rejected = false;
+        Ok(span)
+    }
+
+    /// `f(t, y)`, counted.
+    pub(crate) fn eval<F>(&mut self, f: &mut F, t: f64, y: &[f64; N]) -> [f64; N]
+    where
+        F: FnMut(f64, &[f64; N]) -> [f64; N],
+    {
+        self.evaluations += 1;
+        f(t, y)
+    }
+
+    /// `f(t, y)` at the current point, counted; an error if it is not finite.
+    pub(crate) fn eval_current<F>(&mut self, f: &mut F) -> Result<[f64; N]>
+    where
+        F: FnMut(f64, &[f64; N]) -> [f64; N],
+    {
+        let (t, y) = (self.t, self.y);
+        let dy = self.eval(f, t, &y);
+        match first_non_finite(&dy) {
+            Some(bad) => Err(NumericsError::NonFinite { at: t, value: bad }),
+            None => Ok(dy),
+        }
+    }
+
+    /// The error scale of a component that was `a` before and `b` after a step.
+    pub(crate) fn scale(&self, a: f64, b: f64) -> f64 {
+        self.tol.error_scale(a, b)
+    }
+
+    /// The largest first step after a restart spanning `span`.
+    pub(crate) fn first_step_limit(&self, span: f64) -> f64 {
+        self.tol.max_step.min(span)
+    }
+
+    /// The first guess of Hairer's `HINIT` from the sizes of y and `dy = f(t, y)`:
+    /// `0.01 ‖y‖/‖f‖`, or 1e-6 when either is tiny; with `‖f‖²·N` (`dnf`) for the
+    /// second stage of `HINIT`.
+    pub(crate) fn first_guess(&self, dy: &[f64; N]) -> (f64, f64) {
+        let mut dnf = 0.0;
+        let mut dny = 0.0;
+        for i in 0..N {
+            let sk = self.scale(self.y[i], self.y[i]);
+            dnf += (dy[i] / sk).powi(2);
+            dny += (self.y[i] / sk).powi(2);
+        }
+        let h = if dnf <= 1e-10 || dny <= 1e-10 {
+            1e-6
+        } else {
+            (dny / dnf).sqrt() * 0.01
+        };
+        (h, dnf)
+    }
+
+    /// Checks the target of a step.
+    pub(crate) fn check_limit(&self, t_limit: f64) -> Result<()> {
+        if t_limit.is_finite() && t_limit > self.t {
+            Ok(())
+        } else {
+            Err(NumericsError::InvalidArgument {
+                name: "t_limit",
+                value: t_limit,
+                requirement: "must be finite and later than the current time",
+            })
+        }
+    }
+
+    /// The size of the next trial step towards `t_limit` and whether it is the last
+    /// one (it then reaches `t_limit` exactly). Errors when the step limit is
+    /// reached, or when the step underflows (`h` below 16 ε |t`|; then the first
+    /// non-finite value met, if any, is reported).
+    pub(crate) fn trial_step(
+        &self,
+        t_limit: f64,
+        non_finite: Option<(f64, f64)>,
+        names: &FailureNames,
+    ) -> Result<(f64, bool)> {
+        if self.accepted + self.rejected >= self.tol.max_steps {
+            return Err(NumericsError::NoConvergence {
+                method: names.step_limit,
+                iterations: self.accepted + self.rejected,
+                estimate: self.t,
+                error: self.h,
+            });
+        }
+        let remaining = t_limit - self.t;
+        let mut h = self.h.min(self.tol.max_step);
+        let last = h >= remaining * (1.0 - 4.0 * f64::EPSILON);
+        if last {
+            h = remaining;
+        }
+        let h_min = 16.0 * f64::EPSILON * self.t.abs().max(f64::MIN_POSITIVE);
+        if h <= h_min && !last {
+            return Err(match non_finite {
+                Some((at, value)) => NumericsError::NonFinite { at, value },
+                None => NumericsError::NoConvergence {
+                    method: names.underflow,
+                    iterations: self.accepted + self.rejected,
+                    estimate: self.t,
+                    error: h,
+                },
+            });
+        }
+        Ok((h, last))
+    }
+
+    /// Counts a rejected trial step and proposes `h_next`.
+    pub(crate) fn reject(&mut self, h_next: f64) {
+        self.rejected += 1;
+        self.h = h_next;
+        self.last_rejected = true;
+    }
+
+    /// Accepts a step of size `h` to `(t_new, y_new)` and proposes `h_proposed` for
+    /// the next one (not larger than `h` right after a rejection).
+    pub(crate) fn accept(&mut self, h: f64, t_new: f64, y_new: [f64; N], h_proposed: f64) {
+        let h_new = if self.last_rejected {
+            h_proposed.min(h)
+        } else {
+            h_proposed
+        };
+        self.t_old = self.t;
+        self.h_last = t_new - self.t;
+        self.t = t_new;
+        self.y = y_new;
+        self.h = h_new.min(self.tol.max_step);
+        self.accepted += 1;
+        self.last_rejected = false;
+    }
+
+    /// The position `θ ∈ [0, 1]` of `t` in the last accepted step, or `None` before
+    /// the first step (the dense output is then the current state).
+    pub(crate) fn theta(&self, t: f64) -> Option<f64> {
+        (self.h_last > 0.0).then(|| (t - self.t_old) / self.h_last)
+    }
+
+    pub(crate) fn steps(&self) -> (u64, u64) {
+        (self.accepted, self.rejected)
+    }
+
+    pub(crate) fn cost(&self) -> Cost {
+        Cost::new(self.evaluations, self.accepted + self.rejected)
+    }
+}
+
+pub(crate) fn first_non_finite<const N: usize>(v: &[f64; N]) -> Option<f64> {
+    v.iter().copied().find(|x| !x.is_finite())
+}
+
+pub(crate) fn finite(name: &'static str, v: f64) -> Result<f64> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(NumericsError::InvalidArgument {
+            name,
+            value: v,
+            requirement: "must be finite",
+        })
+    }
+}
