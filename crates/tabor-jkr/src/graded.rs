@@ -9,7 +9,7 @@ use crate::impact::AdhesiveContact;
 use crate::relations::{Relations, Scales};
 use std::f64::consts::PI;
 use tabor_numerics::Cost;
-use tabor_restitution::{validate, EnergyLoss, Error, Result};
+use tabor_restitution::{validate, EnergyLoss, Result};
 
 const MODEL: &str = "JKR graded medium";
 
@@ -201,37 +201,24 @@ impl AdhesiveContact for GradedSphere {
 
     /// Seed 000, eqs. (5.49)-(5.50), solved for `a_max` by Brent's method.
     fn max_contact_radius(&self, kinetic_energy: f64, tolerance: f64) -> Result<MaxContactRadius> {
-        let k = validate::positive("kinetic_energy", kinetic_energy)?;
-        let tol = validate::tolerance("tolerance", tolerance)?;
-        let k_hat = k / self.scales.energy;
-        if !(k_hat.is_finite() && k_hat > 0.0) {
-            return Err(Error::invalid(
-                "kinetic_energy",
-                k,
-                "is not representable in the contact's energy units",
-            ));
-        }
         let core = self.core;
         let offset = (self.ln_delta_u0() - self.scales.energy.ln()).exp();
-        let mut m = solve_energy_balance(
-            Balance {
-                work: |x| {
-                    finite_output(MODEL, "kinetic energy", self.kinetic_to_reach_hat(x))
-                        .map(|w| (w, Cost::ZERO))
-                },
-                slope: |x| core.work_integrand(x),
-                zero_force_radius: core.zero_force_radius(),
-                upper_guess: core.upper_guess(k_hat),
-                offset,
-            },
-            k_hat,
-            tol,
-        )?;
-        m.contact_radius = finite_output(
-            MODEL,
-            "maximum contact radius",
-            m.contact_radius * self.scales.contact_radius,
-        )?;
-        Ok(m)
+        self.scales
+            .max_contact_radius(MODEL, kinetic_energy, tolerance, |k_hat, tol| {
+                solve_energy_balance(
+                    Balance {
+                        work: |x| {
+                            finite_output(MODEL, "kinetic energy", self.kinetic_to_reach_hat(x))
+                                .map(|w| (w, Cost::ZERO))
+                        },
+                        slope: |x| core.work_integrand(x),
+                        zero_force_radius: core.zero_force_radius(),
+                        upper_guess: core.upper_guess(k_hat),
+                        offset,
+                    },
+                    k_hat,
+                    tol,
+                )
+            })
     }
 }

@@ -179,44 +179,33 @@ impl AdhesiveContact for PowerLawProfile {
     /// residual is relative to `m v0²/2` plus the depth of the adhesive well (the work
     /// from first touch to zero force).
     fn max_contact_radius(&self, kinetic_energy: f64, tolerance: f64) -> Result<MaxContactRadius> {
-        let k = validate::positive("kinetic_energy", kinetic_energy)?;
-        let tol = validate::tolerance("tolerance", tolerance)?;
-        let k_hat = k / self.scales.energy;
-        if !(k_hat.is_finite() && k_hat > 0.0) {
-            return Err(Error::invalid(
-                "kinetic_energy",
-                k,
-                "is not representable in the contact's energy units",
-            ));
-        }
         let core = self.core;
-        let integrand = |y: f64| core.work_integrand(y);
-        // The depth of the adhesive well, from first touch to zero force: the energy the
-        // residual is measured against (with the kinetic energy), since the work passes
-        // through it on the way to a_max.
-        let zero_force = core.zero_force_radius();
-        let (well, mut cost) = work_by_quadrature(integrand, 1.0, zero_force, 0.0, 0.1 * tol)?;
-        let offset = (-well).max(f64::MIN_POSITIVE);
-        let scale = k_hat + offset;
-        let mut m = solve_energy_balance(
-            Balance {
-                work: |x| work_by_quadrature(integrand, 1.0, x, scale, 0.1 * tol),
-                slope: integrand,
-                zero_force_radius: zero_force,
-                upper_guess: core.upper_guess(k_hat),
-                offset,
-            },
-            k_hat,
-            tol,
-        )?;
-        cost += m.cost;
-        m.cost = cost;
-        m.contact_radius = finite_output(
-            MODEL,
-            "maximum contact radius",
-            m.contact_radius * self.scales.contact_radius,
-        )?;
-        Ok(m)
+        self.scales
+            .max_contact_radius(MODEL, kinetic_energy, tolerance, |k_hat, tol| {
+                let integrand = |y: f64| core.work_integrand(y);
+                // The depth of the adhesive well, from first touch to zero force: the
+                // energy the residual is measured against (with the kinetic energy),
+                // since the work passes through it on the way to a_max.
+                let zero_force = core.zero_force_radius();
+                let (well, mut cost) =
+                    work_by_quadrature(integrand, 1.0, zero_force, 0.0, 0.1 * tol)?;
+                let offset = (-well).max(f64::MIN_POSITIVE);
+                let scale = k_hat + offset;
+                let mut m = solve_energy_balance(
+                    Balance {
+                        work: |x| work_by_quadrature(integrand, 1.0, x, scale, 0.1 * tol),
+                        slope: integrand,
+                        zero_force_radius: zero_force,
+                        upper_guess: core.upper_guess(k_hat),
+                        offset,
+                    },
+                    k_hat,
+                    tol,
+                )?;
+                cost += m.cost;
+                m.cost = cost;
+                Ok(m)
+            })
     }
 }
 

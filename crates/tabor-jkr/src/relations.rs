@@ -21,8 +21,10 @@
 //! load-controlled point `dF̂/dx = 0` is `x^(p−q) = (κ+q)/p`; zero force is
 //! `x^(p−q) = 1/c`. Energies are in units of `F* D`.
 
-use crate::common::{positive_output, ContactState, SeparationRule};
-use tabor_restitution::Result;
+use crate::common::{
+    finite_output, positive_output, ContactState, MaxContactRadius, SeparationRule,
+};
+use tabor_restitution::{validate, Error, Result};
 
 /// Exponents of the normalized relations (p > q required).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -127,5 +129,41 @@ impl Scales {
             depth: s.depth * self.depth,
             force: s.force * self.force,
         }
+    }
+
+    /// The maximum contact radius (m) reached with `kinetic_energy` (J, > 0): checks
+    /// the inputs, hands the normalized kinetic energy `K̂ = K/(F* D)` and the
+    /// relative `tolerance` (in [1e-15, 0.5]) to `solve`, which solves the normalized
+    /// energy balance, and turns its `x_max` into meters (`a_max = x_max a0`).
+    ///
+    /// Seed 000, eqs. (5.35), (5.49): the prologue and epilogue every MDR contact
+    /// shares; `model` names the contact in errors.
+    pub fn max_contact_radius<S>(
+        &self,
+        model: &'static str,
+        kinetic_energy: f64,
+        tolerance: f64,
+        solve: S,
+    ) -> Result<MaxContactRadius>
+    where
+        S: FnOnce(f64, f64) -> Result<MaxContactRadius>,
+    {
+        let k = validate::positive("kinetic_energy", kinetic_energy)?;
+        let tol = validate::tolerance("tolerance", tolerance)?;
+        let k_hat = k / self.energy;
+        if !(k_hat.is_finite() && k_hat > 0.0) {
+            return Err(Error::invalid(
+                "kinetic_energy",
+                k,
+                "is not representable in the contact's energy units",
+            ));
+        }
+        let mut m = solve(k_hat, tol)?;
+        m.contact_radius = finite_output(
+            model,
+            "maximum contact radius",
+            m.contact_radius * self.contact_radius,
+        )?;
+        Ok(m)
     }
 }
