@@ -46,9 +46,10 @@ impl std::fmt::Display for SeparationRule {
 /// (negative when separated by adhesion) and force `F` (positive in compression).
 ///
 /// In physical units (m, m, N) from the contact types, in their normalized units
-/// from [`crate::normalized`].
+/// from [`crate::normalized`]. (The Maugis-Dugdale states of `tabor-maugis`, which
+/// also carry the cohesive zone, are `ContactBranchState` and `PathState`.)
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct ContactState {
+pub struct JkrContactState {
     /// Contact radius a.
     pub contact_radius: f64,
     /// Indentation depth d.
@@ -79,7 +80,7 @@ pub struct MaxContactRadius {
 /// scale), with its error estimate and cost. The physical shells turn it into a
 /// [`tabor_restitution::EnergyLoss`].
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct NormalizedLoss {
+pub struct JkrNormalizedLoss {
     /// |ΔU_kin| in units of the model's energy scale (≥ 0).
     pub value: f64,
     /// Estimated absolute error of `value` (0 for closed forms).
@@ -127,14 +128,14 @@ pub(crate) fn loss_by_quadrature<F: Fn(f64) -> f64>(
     x_end: f64,
     tolerance: f64,
     branch: &'static str,
-) -> Result<NormalizedLoss> {
+) -> Result<JkrNormalizedLoss> {
     let integral = integrate_powers(
         integrand,
         x_start,
         x_end,
         QuadTolerance::relative(quad_relative(tolerance)),
     )?;
-    Ok(NormalizedLoss {
+    Ok(JkrNormalizedLoss {
         value: integral.value,
         error_estimate: integral.error_estimate,
         branch,
@@ -263,7 +264,7 @@ where
     })
 }
 
-impl NormalizedLoss {
+impl JkrNormalizedLoss {
     /// The loss in joules for the energy scale `energy` (`F_n d_n` or the contact's
     /// own scale), with its error estimate, branch and cost; non-finite products are
     /// errors naming `model`.

@@ -2,7 +2,7 @@
 //! (seed 000, section 5.3.3).
 
 use crate::common::{
-    finite_output, loss_by_quadrature, solve_energy_balance, Balance, ContactState,
+    finite_output, loss_by_quadrature, solve_energy_balance, Balance, JkrContactState,
     MaxContactRadius, SeparationRule,
 };
 use crate::impact::AdhesiveContact;
@@ -158,13 +158,13 @@ impl AdhesiveContact for GradedSphere {
     }
 
     /// First touch `d = 0`: `a0 = ((1+k)R √(2πΔγ/c_N))^(2/(3+k))`.
-    fn first_touch(&self) -> Result<ContactState> {
+    fn first_touch(&self) -> Result<JkrContactState> {
         Ok(self.scales.physical_state(self.core.state(1.0)))
     }
 
     /// Fixed grip `dd/da = 0`: `a = a0 ((1−k)/4)^(2/(3+k))`; load-controlled
     /// `dF/da = 0`: `a = a0 ((3+k)/4)^(2/(3+k))`.
-    fn critical_state(&self, rule: SeparationRule) -> Result<ContactState> {
+    fn critical_state(&self, rule: SeparationRule) -> Result<JkrContactState> {
         let x = self.core.separation_radius(rule);
         Ok(self.scales.physical_state(self.core.state(x)))
     }

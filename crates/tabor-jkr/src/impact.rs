@@ -1,7 +1,7 @@
 //! The impact: a contact, an effective mass and a separation rule, as an
 //! [`ImpactModel`].
 
-use crate::common::{finite_output, ContactState, MaxContactRadius, SeparationRule};
+use crate::common::{finite_output, JkrContactState, MaxContactRadius, SeparationRule};
 use tabor_restitution::{validate, EnergyLoss, ImpactModel, Result};
 
 /// The relative tolerance [`JkrImpact`] uses unless told otherwise.
@@ -24,10 +24,10 @@ pub trait AdhesiveContact: sealed::Sealed {
 
     /// The state at first touch, `d = 0`, where the contact radius jumps to `a0`
     /// (seed 000, lower limit of (5.35)-(5.36)).
-    fn first_touch(&self) -> Result<ContactState>;
+    fn first_touch(&self) -> Result<JkrContactState>;
 
     /// The state where contact breaks under `rule` (seed 000, upper limit of (5.36)).
-    fn critical_state(&self, rule: SeparationRule) -> Result<ContactState>;
+    fn critical_state(&self, rule: SeparationRule) -> Result<JkrContactState>;
 
     /// The energy scale of the contact's normalized units (J).
     fn energy_scale(&self) -> f64;

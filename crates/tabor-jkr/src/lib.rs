@@ -53,7 +53,7 @@ mod power_law;
 mod relations;
 mod sphere;
 
-pub use common::{ContactState, MaxContactRadius, NormalizedLoss, SeparationRule};
+pub use common::{JkrContactState, JkrNormalizedLoss, MaxContactRadius, SeparationRule};
 pub use dynamics::JkrForceLaw;
 pub use graded::GradedSphere;
 pub use impact::{AdhesiveContact, JkrImpact, DEFAULT_TOLERANCE};

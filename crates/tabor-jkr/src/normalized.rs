@@ -11,8 +11,8 @@
 //! physical shell around them.
 
 use crate::common::{
-    finite_output, loss_by_quadrature, solve_energy_balance, Balance, ContactState,
-    MaxContactRadius, NormalizedLoss, SeparationRule,
+    finite_output, loss_by_quadrature, solve_energy_balance, Balance, JkrContactState,
+    JkrNormalizedLoss, MaxContactRadius, SeparationRule,
 };
 use tabor_numerics::root_finding::newton_safeguarded;
 use tabor_numerics::{Cost, RootTolerance};
@@ -40,9 +40,9 @@ pub fn depth(contact_radius: f64) -> Result<f64> {
 /// `F̂ = −8/9` (i.e. −(4/3)πΔγR).
 ///
 /// Seed 000, the lower limit `a_0` of (5.35)-(5.36) (the seed's (3.57)).
-pub fn first_touch() -> ContactState {
+pub fn first_touch() -> JkrContactState {
     let a = FIRST_TOUCH_RADIUS;
-    ContactState {
+    JkrContactState {
         contact_radius: a,
         depth: 0.0,
         force: force_hat(a),
@@ -54,9 +54,9 @@ pub fn first_touch() -> ContactState {
 ///
 /// Seed 000, upper limit `a_c^WS` of (5.36) (the seed's (3.60)) for fixed grip; the
 /// force-controlled critical state (the normalization point) for load control.
-pub fn critical_state(rule: SeparationRule) -> ContactState {
+pub fn critical_state(rule: SeparationRule) -> JkrContactState {
     let a = separation_radius(rule);
-    ContactState {
+    JkrContactState {
         contact_radius: a,
         depth: depth_hat(a),
         force: force_hat(a),
@@ -146,10 +146,10 @@ pub fn max_contact_radius(kinetic_energy: f64, tolerance: f64) -> Result<MaxCont
 /// the seed; the integral `∫ F̂ (dd̂/dâ) dâ` of (5.36) from `â0` to `â = 1`, by
 /// adaptive Clenshaw-Curtis to the relative `tolerance` (in [1e-15, 0.5]), with its
 /// error estimate and cost (≈ 0.9610).
-pub fn energy_loss(rule: SeparationRule, tolerance: f64) -> Result<NormalizedLoss> {
+pub fn energy_loss(rule: SeparationRule, tolerance: f64) -> Result<JkrNormalizedLoss> {
     let tol = validate::tolerance("tolerance", tolerance)?;
     match rule {
-        SeparationRule::FixedGrip => Ok(NormalizedLoss {
+        SeparationRule::FixedGrip => Ok(JkrNormalizedLoss {
             value: fixed_grip_loss(),
             error_estimate: 0.0,
             branch: "JKR sphere, fixed grip: closed form (5.36)",

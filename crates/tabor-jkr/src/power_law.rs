@@ -2,7 +2,7 @@
 
 use crate::common::{
     finite_output, loss_by_quadrature, solve_energy_balance, work_by_quadrature, Balance,
-    ContactState, MaxContactRadius, SeparationRule,
+    JkrContactState, MaxContactRadius, SeparationRule,
 };
 use crate::impact::AdhesiveContact;
 use crate::relations::{Relations, Scales};
@@ -134,14 +134,14 @@ impl AdhesiveContact for PowerLawProfile {
     }
 
     /// First touch `d = 0`: `a0 = (√(2πΔγ/E*)/(βA))^(1/(n−1/2))`.
-    fn first_touch(&self) -> Result<ContactState> {
+    fn first_touch(&self) -> Result<JkrContactState> {
         Ok(self.scales.physical_state(self.core.state(1.0)))
     }
 
     /// Fixed grip: `dd/da = 0`, `a = a0 (1/(2n))^(2/(2n−1))`. Load-controlled:
     /// `dF/da = 0`, `a = a0 (3/(2n))^(2/(2n−1))`, which lies below first touch only
     /// for n > 3/2 (else an error naming `profile_exponent`).
-    fn critical_state(&self, rule: SeparationRule) -> Result<ContactState> {
+    fn critical_state(&self, rule: SeparationRule) -> Result<JkrContactState> {
         let x = self.separation_radius(rule)?;
         Ok(self.scales.physical_state(self.core.state(x)))
     }

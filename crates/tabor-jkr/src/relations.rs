@@ -22,7 +22,7 @@
 //! `x^(p−q) = 1/c`. Energies are in units of `F* D`.
 
 use crate::common::{
-    finite_output, positive_output, ContactState, MaxContactRadius, SeparationRule,
+    finite_output, positive_output, JkrContactState, MaxContactRadius, SeparationRule,
 };
 use tabor_restitution::{validate, Error, Result};
 
@@ -112,8 +112,8 @@ impl Relations {
     }
 
     /// The normalized state at `x`.
-    pub fn state(&self, x: f64) -> ContactState {
-        ContactState {
+    pub fn state(&self, x: f64) -> JkrContactState {
+        JkrContactState {
             contact_radius: x,
             depth: self.depth(x),
             force: self.force(x),
@@ -123,8 +123,8 @@ impl Relations {
 
 impl Scales {
     /// A normalized state in physical units.
-    pub fn physical_state(&self, s: ContactState) -> ContactState {
-        ContactState {
+    pub fn physical_state(&self, s: JkrContactState) -> JkrContactState {
+        JkrContactState {
             contact_radius: s.contact_radius * self.contact_radius,
             depth: s.depth * self.depth,
             force: s.force * self.force,

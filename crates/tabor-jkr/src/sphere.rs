@@ -1,7 +1,7 @@
 //! The JKR sphere in physical units: a thin shell over [`crate::normalized`].
 
 use crate::common::{
-    finite_output, positive_output, ContactState, MaxContactRadius, SeparationRule,
+    finite_output, positive_output, JkrContactState, MaxContactRadius, SeparationRule,
 };
 use crate::impact::AdhesiveContact;
 use crate::normalized;
@@ -148,8 +148,8 @@ impl JkrSphere {
         finite_output(MODEL, "depth", d)
     }
 
-    fn physical_state(&self, s: ContactState) -> ContactState {
-        ContactState {
+    fn physical_state(&self, s: JkrContactState) -> JkrContactState {
+        JkrContactState {
             contact_radius: s.contact_radius * self.scales.contact_radius,
             depth: s.depth * self.scales.depth,
             force: s.force * self.scales.force,
@@ -164,13 +164,13 @@ impl AdhesiveContact for JkrSphere {
 
     /// First touch: `d = 0`, `a0 = (2πΔγR²/E*)^(1/3)`, `F = −(4/3)πΔγR`.
     /// Seed 000, lower limit of (5.35)-(5.36).
-    fn first_touch(&self) -> Result<ContactState> {
+    fn first_touch(&self) -> Result<JkrContactState> {
         Ok(self.physical_state(normalized::first_touch()))
     }
 
     /// Separation: fixed grip `F = −(5/6)πΔγR`, `d = −3^(2/3) d_n`; load-controlled
     /// `F = −(3/2)πΔγR`, `a = a_c`, `d = −d_n`. Seed 000, (5.36) and its `d_c^WS`.
-    fn critical_state(&self, rule: SeparationRule) -> Result<ContactState> {
+    fn critical_state(&self, rule: SeparationRule) -> Result<JkrContactState> {
         Ok(self.physical_state(normalized::critical_state(rule)))
     }
 

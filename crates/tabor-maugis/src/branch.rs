@@ -81,9 +81,11 @@ fn q_of_theta_with(theta: f64, sin: f64, cos: f64) -> f64 {
     }
 }
 
-/// An equilibrium state on the contact branch (â > 0), all quantities normalized.
+/// An equilibrium state on the contact branch (â > 0), all quantities normalized; the
+/// branch parameter θ and the slope dd̂/dθ along it included (the states on the other
+/// branch are [`NoContactState`]; the JKR contacts' state is `tabor_jkr::JkrContactState`).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ContactState {
+pub struct ContactBranchState {
     /// θ = arccos(â/b̂).
     pub theta: f64,
     /// Contact radius â = a/a_c.
@@ -103,7 +105,7 @@ pub struct ContactState {
 /// Gap condition, depth and force of `maugis-dugdale.md` (the MD solution of seed
 /// 000 section 3.3.3, used by eqs. (5.43), (5.45)): `b̂` is the positive root of the
 /// quadratic in b̂, taken in the cancellation-free form `2/(β + √(β² + 4α))`.
-pub fn contact_state(lambda: f64, theta: f64) -> ContactState {
+pub fn contact_state(lambda: f64, theta: f64) -> ContactBranchState {
     let (s, c) = theta.sin_cos();
     let p = p_of_theta_with(theta, s, c);
     let q = q_of_theta_with(theta, s, c);
@@ -122,7 +124,7 @@ pub fn contact_state(lambda: f64, theta: f64) -> ContactState {
     // d̂ = 3 b̂² cos²θ − (16Λ/π) b̂ sin θ
     let depth_slope =
         6.0 * b * db * c * c - 6.0 * b * b * c * s - 16.0 * lambda / PI * (db * s + b * c);
-    ContactState {
+    ContactBranchState {
         theta,
         contact_radius: a,
         cohesive_radius: b,

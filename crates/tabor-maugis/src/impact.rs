@@ -264,7 +264,7 @@ pub(crate) fn theta_at_depth(
 
 /// The adhesive energy loss of a Maugis-Dugdale impact in units of `F_n d_n`.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct NormalizedLoss {
+pub struct MaugisNormalizedLoss {
     /// The Tabor parameter Λ.
     pub lambda: f64,
     /// The case (1, 2 or 3).
@@ -290,7 +290,7 @@ pub struct NormalizedLoss {
 /// `2¹⁹Λ⁵(K − 1)²(3K² + 2K + 1)/(3⁴π⁸)` so that it stays accurate as K → 1; case 3
 /// quadrature (5.43), and for Λ ≥ [`LAMBDA_JKR_LIMIT`] the JKR loss (5.36), which
 /// equals it to double precision there.
-pub fn normalized_loss(lambda: f64, tolerance: f64) -> Result<NormalizedLoss> {
+pub fn normalized_loss(lambda: f64, tolerance: f64) -> Result<MaugisNormalizedLoss> {
     let lambda = check_lambda(lambda)?;
     let tol = validate::tolerance("tolerance", tolerance)?;
     let case = TaborCase::of(lambda);
@@ -349,7 +349,7 @@ pub fn normalized_loss(lambda: f64, tolerance: f64) -> Result<NormalizedLoss> {
             )
         }
     };
-    Ok(NormalizedLoss {
+    Ok(MaugisNormalizedLoss {
         lambda,
         case,
         loss,

@@ -28,7 +28,7 @@ pub mod units;
 pub use dynamics::MaugisDugdaleForceLaw;
 pub use fast::{fast_tier_pieces, loss_over_jkr_fast, prepare_fast_tier, FAST_TIER_RELATIVE_ERROR};
 pub use impact::{
-    impact_path, jkr_normalized_loss, normalized_loss, ImpactPath, NormalizedLoss, PathState,
+    impact_path, jkr_normalized_loss, normalized_loss, ImpactPath, MaugisNormalizedLoss, PathState,
     TaborCase, LAMBDA_1, LAMBDA_2, LAMBDA_JKR_LIMIT,
 };
 pub use model::MaugisDugdaleImpact;

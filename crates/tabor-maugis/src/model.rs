@@ -1,6 +1,6 @@
 //! The physical-unit front: a Maugis-Dugdale impact as a [`tabor_restitution::ImpactModel`].
 
-use crate::impact::{normalized_loss, NormalizedLoss};
+use crate::impact::{normalized_loss, MaugisNormalizedLoss};
 use crate::units::{tabor_parameter_from_cohesive_stress, tabor_parameter_from_range, JkrScales};
 use tabor_restitution::{validate, EnergyLoss, ImpactModel, Result};
 
@@ -98,7 +98,7 @@ impl MaugisDugdaleImpact {
     }
 
     /// The normalized loss W(Λ) with its case, error estimate and cost.
-    pub fn normalized_loss(&self) -> Result<NormalizedLoss> {
+    pub fn normalized_loss(&self) -> Result<MaugisNormalizedLoss> {
         normalized_loss(self.tabor_parameter, self.tolerance)
     }
 

@@ -11,7 +11,7 @@ use crate::util::{exceeds, finite_output, positive_output, Hermite};
 use serde::Serialize;
 use tabor_dynamics::{BranchChange, ForceLaw};
 use tabor_jkr::normalized as jkr;
-use tabor_jkr::{ContactState, JkrImpact, JkrScales, JkrSphere, SeparationRule};
+use tabor_jkr::{JkrContactState, JkrImpact, JkrScales, JkrSphere, SeparationRule};
 use tabor_numerics::root_finding::{brent, RootTolerance};
 use tabor_restitution::{
     restitution_from_loss, sticking_velocity, validate, EnergyLoss, Error, ImpactModel, Result,
@@ -121,7 +121,7 @@ pub struct AdhesiveInterpolation {
     phi: f64,
     plastic_slope: f64,
     plastic_onset: f64,
-    yield_state: ContactState,
+    yield_state: JkrContactState,
     onset_depth: f64,
     force: Hermite,
     radius: Hermite,
@@ -223,7 +223,7 @@ impl AdhesiveInterpolation {
             phi,
             plastic_slope: q,
             plastic_onset: dd,
-            yield_state: ContactState {
+            yield_state: JkrContactState {
                 contact_radius: a_y,
                 depth: d_y,
                 force: f_y,
@@ -248,7 +248,7 @@ impl AdhesiveInterpolation {
     /// The yield state `(â_Y, d̂_Y, F̂_Y)` on the JKR branch.
     ///
     /// Seed 000, eqs. (5.111)-(5.113).
-    pub fn yield_state(&self) -> ContactState {
+    pub fn yield_state(&self) -> JkrContactState {
         self.yield_state
     }
 
@@ -304,7 +304,7 @@ impl AdhesiveInterpolation {
     }
 
     /// State on the loading curve at `d̂` (≥ 0, or slightly below for the simulator).
-    pub(crate) fn loading_state(&self, d: f64) -> Result<ContactState> {
+    pub(crate) fn loading_state(&self, d: f64) -> Result<JkrContactState> {
         let y = self.yield_state;
         let (a, f) = if d <= y.depth {
             let a = jkr::contact_radius_at_depth(d)?;
@@ -318,7 +318,7 @@ impl AdhesiveInterpolation {
                 2.0 * self.plastic_slope * d / (3.0 * self.phi),
             )
         };
-        Ok(ContactState {
+        Ok(JkrContactState {
             contact_radius: a,
             depth: d,
             force: f,
@@ -347,10 +347,10 @@ impl AdhesiveInterpolation {
         Ok(self.max_state(k)?.depth)
     }
 
-    fn max_state(&self, k: f64) -> Result<ContactState> {
+    fn max_state(&self, k: f64) -> Result<JkrContactState> {
         let d = if k <= self.work_at_yield {
             let a = jkr::max_contact_radius(k, 1e-14)?.contact_radius;
-            return Ok(ContactState {
+            return Ok(JkrContactState {
                 contact_radius: a,
                 depth: jkr::depth(a)?,
                 force: jkr::force(a)?,
@@ -436,7 +436,7 @@ struct JkrUnloading {
 impl JkrUnloading {
     /// `ρ` from continuity of the force, `F̂ = â³/ρ − 2â^(3/2)` (corrected (5.123));
     /// `d̂_res` (5.124): `d̂ − d̂_res = ρ^(1/3) d̂_JKR(â/ρ^(2/3))`; separation (5.125).
-    fn from_turning_point(s: ContactState) -> Result<Self> {
+    fn from_turning_point(s: JkrContactState) -> Result<Self> {
         let a = s.contact_radius;
         let rho = positive_output(MODEL, "R_p/R", a * a * a / (s.force + 2.0 * a * a.sqrt()))?;
         let scaled = a / rho.powf(2.0 / 3.0);
