@@ -1,7 +1,6 @@
-//! The force-law interface of the simulator, and its implementation for the
-//! elastic contacts of `tabor-elastic`.
+//! The force-law interface of the simulator (every contact model implements it in
+//! its own crate: `tabor-elastic`, `tabor-jkr`, `tabor-maugis`, `tabor-plastic`, ...).
 
-use tabor_elastic::{ElasticContact, ElasticImpact};
 use tabor_restitution::Result;
 
 /// What the motion does after a hook ([`ForceLaw::on_branch_end`],
@@ -155,27 +154,5 @@ impl<L: ForceLaw + ?Sized> ForceLaw for &mut L {
     }
     fn on_min_compression(&mut self, d: f64) -> Result<BranchChange> {
         (**self).on_min_compression(d)
-    }
-}
-
-/// The elastic contacts of `tabor-elastic` (Hertz (5.5), power-law indenter
-/// (5.15), graded media (5.20), (5.28)): one conservative branch, `F = K d^q` for
-/// d > 0 and 0 otherwise, separation at d = 0.
-impl ForceLaw for ElasticContact {
-    fn name(&self) -> String {
-        ElasticContact::name(self)
-    }
-
-    /// d_max of the closed form, seed 000 eqs. (5.8), (5.16), (5.21), (5.28).
-    fn overlap_scale(&self, effective_mass: f64, impact_speed: f64) -> Result<f64> {
-        ElasticImpact::new(*self, effective_mass)?.max_overlap(impact_speed)
-    }
-
-    fn force(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
-        Ok(ElasticContact::force(self, overlap))
-    }
-
-    fn contact_radius(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
-        Ok(ElasticContact::contact_radius(self, overlap))
     }
 }

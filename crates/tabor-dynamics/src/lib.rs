@@ -7,8 +7,10 @@
 //!
 //! - [`ForceLaw`]: the contact law, as branches with hooks at located events
 //!   (turning points, branch ends) where history may change, so that adhesive
-//!   (JKR, Maugis-Dugdale) and plastic laws plug in; implemented here for the
-//!   elastic contacts of `tabor-elastic`.
+//!   (JKR, Maugis-Dugdale) and plastic laws plug in; every model implements it in its
+//!   own crate (`tabor-elastic`, `tabor-jkr`, `tabor-maugis`, `tabor-plastic`, ...), so
+//!   this crate stands on `tabor-restitution` and `tabor-numerics` only, below every
+//!   model.
 //! - [`simulate_impact`]: Dormand-Prince 5(4) with event location
 //!   (`tabor_numerics::ode`), energy bookkeeping (the contact work integrated with
 //!   the motion), a trajectory record and an [`ImpactSimulation`] outcome.

@@ -1,7 +1,8 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
-//! Simulated elastic impacts against the closed forms of seed 000 section 5.2
-//! (computed by tabor-elastic through the incomplete beta function, an independent
-//! path from the Runge-Kutta integration).
+//! Simulated elastic impacts (`tabor-dynamics`, moved here with the `ForceLaw`
+//! implementation) against the closed forms of seed 000 section 5.2 (computed by
+//! tabor-elastic through the incomplete beta function, an independent path from the
+//! Runge-Kutta integration).
 
 use proptest::prelude::*;
 use tabor_dynamics::{
