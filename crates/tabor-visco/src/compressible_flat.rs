@@ -14,10 +14,7 @@
 //! `8a(G∞ d̃ + η ḋ̃)`, the flat-punch stiffness `8aG(3K+G)/(3K+4G)` with the
 //! correspondence principle).
 
-use crate::scaled::{
-    ode_tolerance, positive_up_to, restitution_from_rebound, run_phase, ScaledImpact,
-};
-use tabor_numerics::ode::EventDirection;
+use crate::scaled::{flat_punch_impact, ode_tolerance, positive_up_to, Method, ScaledImpact};
 use tabor_restitution::{validate, Error, Result};
 
 /// Largest damping ratios D1, D2 accepted.
@@ -141,30 +138,11 @@ pub fn solve(
         [y[1], -y[2] - 2.0 * d1 * w, w]
     };
     let t_max = 1e4 * (1.0 + d1 + d2);
-    let first = run_phase(
-        &mut f,
-        &mut |_t: f64, y: &[f64; 3]| y[1],
-        EventDirection::Falling,
-        0.0,
-        [0.0, 1.0, 0.0],
-        t_max,
-        tol,
-        None,
-    )?;
-    let second = run_phase(
+    flat_punch_impact(
+        Method::Explicit,
         &mut f,
         &mut |_t: f64, y: &[f64; 3]| y[2] + 2.0 * d1 * aux_rate(y),
-        EventDirection::Falling,
-        first.t,
-        first.y,
-        first.t + t_max,
+        t_max,
         tol,
-        None,
-    )?;
-    Ok(ScaledImpact {
-        restitution: restitution_from_rebound(-second.y[1])?,
-        contact_time: second.t,
-        max_overlap: first.y[0],
-        cost: first.cost + second.cost,
-    })
+    )
 }

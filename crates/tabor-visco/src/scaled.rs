@@ -1,11 +1,9 @@
 //! What every scaled (dimensionless) impact solution reports, the input checks of
-//! the dimensionless parameters, and the event-driven phase integration on top of
-//! `tabor_numerics::ode`.
+//! the dimensionless parameters, the event-driven phase integration on top of the
+//! driver of `tabor_numerics::ode`, and the two-phase run of the flat-punch models.
 
 use serde::Serialize;
-use tabor_numerics::ode::{
-    locate_event_in_step, DenseStepper, DormandPrince, EventDirection, OdeTolerance,
-};
+use tabor_numerics::ode::{drive, DenseStepper, DormandPrince, EventDirection, OdeTolerance};
 use tabor_numerics::rosenbrock::{Jacobian, Rosenbrock, Scheme};
 use tabor_numerics::Cost;
 use tabor_restitution::{validate, Error, Result};
@@ -144,22 +142,23 @@ where
 {
     match method {
         Method::Explicit => {
-            let stepper = DormandPrince::new(f, t0, y0, t_max, tol)?;
-            drive(stepper, f, g, direction, (t0, y0), t_max, record)
+            let mut stepper = DormandPrince::new(f, t0, y0, t_max, tol)?;
+            phase(&mut stepper, f, g, direction, t_max, record)
         }
         Method::Stiff(jacobian) => {
-            let stepper = Rosenbrock::new(f, t0, y0, t_max, tol, jacobian, Scheme::Rodas5P)?;
-            drive(stepper, f, g, direction, (t0, y0), t_max, record)
+            let mut stepper = Rosenbrock::new(f, t0, y0, t_max, tol, jacobian, Scheme::Rodas5P)?;
+            phase(&mut stepper, f, g, direction, t_max, record)
         }
     }
 }
 
-fn drive<S, F, G, const N: usize>(
-    mut stepper: S,
+/// One phase on `stepper`: the driver of `tabor_numerics::ode`, its observer
+/// sampling the dense output into `record`.
+fn phase<S, F, G, const N: usize>(
+    stepper: &mut S,
     f: &mut F,
     g: &mut G,
     direction: EventDirection,
-    (t0, y0): (f64, [f64; N]),
     t_max: f64,
     mut record: Option<&mut Vec<(f64, [f64; N])>>,
 ) -> Result<PhaseEnd<N>>
@@ -168,37 +167,81 @@ where
     F: FnMut(f64, &[f64; N]) -> [f64; N],
     G: FnMut(f64, &[f64; N]) -> f64,
 {
-    let mut g_prev = g(t0, &y0);
     if let Some(rec) = record.as_deref_mut() {
-        rec.push((t0, y0));
+        rec.push(stepper.current());
     }
-    while stepper.current().0 < t_max {
-        stepper.advance(f, t_max)?;
-        let (t, y) = stepper.current();
-        let g_new = g(t, &y);
-        let hit = locate_event_in_step(&stepper, &mut *g, direction, g_prev, g_new, 0.0)?;
-        let t_end = hit.as_ref().map_or(t, |(p, _)| p.t);
+    let mut sample = |s: &S, stop: f64| {
         if let Some(rec) = record.as_deref_mut() {
-            let (a, b) = (stepper.step_start(), t_end);
+            let a = s.step_start();
             for i in 1..=SAMPLES_PER_STEP {
-                let s = a + (b - a) * i as f64 / SAMPLES_PER_STEP as f64;
-                rec.push((s, stepper.dense(s)));
+                let t = a + (stop - a) * i as f64 / SAMPLES_PER_STEP as f64;
+                rec.push((t, s.dense(t)));
             }
         }
-        if let Some((point, cost)) = hit {
-            return Ok(PhaseEnd {
-                t: point.t,
-                y: point.y,
-                cost: stepper.spent() + cost,
-            });
-        }
-        g_prev = g_new;
+    };
+    let run = drive(stepper, f, g, direction, t_max, &mut sample)?;
+    let end = run.solution;
+    if !end.event_found {
+        return Err(Error::Model {
+            model: "viscoelastic impact",
+            message: format!(
+                "the contact did not end within the scaled time {t_max:e} (cost {} evaluations)",
+                end.cost.evaluations
+            ),
+        });
     }
-    Err(Error::Model {
-        model: "viscoelastic impact",
-        message: format!(
-            "the contact did not end within the scaled time {t_max:e} (cost {} evaluations)",
-            stepper.spent().evaluations
-        ),
+    Ok(PhaseEnd {
+        t: end.t,
+        y: end.y,
+        cost: end.cost + run.event_cost,
+    })
+}
+
+/// The impact of a flat punch in two phases, each ending where a quantity falls
+/// through zero: compression from first contact (x = 0, ẋ = 1, internal
+/// variables 0 at t = 0) until ẋ = 0, then restitution until the normal force
+/// `force(t, y)` vanishes. The state is (x, ẋ, internal variables…); each phase may
+/// last `t_max`. Restitution is the rebound speed −ẋ at the end, the largest
+/// indentation is x at the turning point.
+pub(crate) fn flat_punch_impact<F, P, const N: usize>(
+    method: Method,
+    f: &mut F,
+    force: &mut P,
+    t_max: f64,
+    tol: OdeTolerance,
+) -> Result<ScaledImpact>
+where
+    F: FnMut(f64, &[f64; N]) -> [f64; N],
+    P: FnMut(f64, &[f64; N]) -> f64,
+{
+    let mut y0 = [0.0; N];
+    y0[1] = 1.0;
+    let first = run_phase_with(
+        method,
+        f,
+        &mut |_t: f64, y: &[f64; N]| y[1],
+        EventDirection::Falling,
+        0.0,
+        y0,
+        t_max,
+        tol,
+        None,
+    )?;
+    let second = run_phase_with(
+        method,
+        f,
+        force,
+        EventDirection::Falling,
+        first.t,
+        first.y,
+        first.t + t_max,
+        tol,
+        None,
+    )?;
+    Ok(ScaledImpact {
+        restitution: restitution_from_rebound(-second.y[1])?,
+        contact_time: second.t,
+        max_overlap: first.y[0],
+        cost: first.cost + second.cost,
     })
 }

@@ -14,10 +14,7 @@
 //! `8G1 a d̃` (the (5.79) it leads to confirms this).
 
 use crate::kelvin_voigt_flat;
-use crate::scaled::{
-    ode_tolerance, positive_up_to, restitution_from_rebound, run_phase_with, Method, ScaledImpact,
-};
-use tabor_numerics::ode::EventDirection;
+use crate::scaled::{flat_punch_impact, ode_tolerance, positive_up_to, Method, ScaledImpact};
 use tabor_numerics::rosenbrock::Jacobian;
 use tabor_restitution::{validate, Error, Result};
 
@@ -112,34 +109,13 @@ pub fn solve(modulus_ratio: f64, viscous_parameter: f64, tolerance: f64) -> Resu
     };
     let mut f = |_t: f64, y: &[f64; 3]| [y[1], -y[0] - y[2] / b, y[1] - y[2] / relax];
     let t_max = 1e4 * (1.0 + d);
-    let first = run_phase_with(
-        method,
-        &mut f,
-        &mut |_t: f64, y: &[f64; 3]| y[1],
-        EventDirection::Falling,
-        0.0,
-        [0.0, 1.0, 0.0],
-        t_max,
-        tol,
-        None,
-    )?;
-    let second = run_phase_with(
+    flat_punch_impact(
         method,
         &mut f,
         &mut |_t: f64, y: &[f64; 3]| y[0] + y[2] / b,
-        EventDirection::Falling,
-        first.t,
-        first.y,
-        first.t + t_max,
+        t_max,
         tol,
-        None,
-    )?;
-    Ok(ScaledImpact {
-        restitution: restitution_from_rebound(-second.y[1])?,
-        contact_time: second.t,
-        max_overlap: first.y[0],
-        cost: first.cost + second.cost,
-    })
+    )
 }
 
 /// The damping ratio of the equivalent Kelvin-Voigt medium,

@@ -1,7 +1,8 @@
 //! The discrete MDR of the seed (the crate's former solver), kept as an
 //! independent reference for the tests: `S − 2` elements at the midpoints ξ_k of a
 //! uniform grid on [0, L], each with its own internal variable; state
-//! (x, ẋ, ũ_1 … ũ_n), one Dormand-Prince integration per phase.
+//! (x, ẋ, ũ_1 … ũ_n), one Dormand-Prince integration per phase (the driver of
+//! `tabor_numerics::ode`).
 //!
 //! Element k carries `q_k = (x − ξ_k²) + ũ_k/β + τ̂0 ẋ` (5.89)/(5.91) and obeys
 //! `ũ_k' = ẋ − ũ_k/τ̂` (5.88) while in contact; `F̂ = (15/16) · 2Δξ · Σ q_k` over the
@@ -15,7 +16,7 @@
 
 use super::ScaledMedium;
 use crate::scaled::ode_tolerance;
-use tabor_numerics::ode::{DormandPrince, EventDirection};
+use tabor_numerics::ode::{drive, DormandPrince, EventDirection};
 use tabor_restitution::{Error, Result};
 
 /// What the discrete model gives.
@@ -99,29 +100,24 @@ pub(crate) fn solve<const S: usize>(
     // Compression: until ẋ = 0.
     let mut f1 = |_t: f64, y: &[f64; S]| grid.rhs(m, y, false);
     let mut stepper = DormandPrince::new(&mut f1, 0.0, y0, t_max, tol)?;
-    let mut g_prev = 1.0;
-    let turn = loop {
-        stepper.step(&mut f1, t_max)?;
-        let g = stepper.y()[1];
-        if let Some((p, _)) = stepper.locate_event(
-            |_t: f64, y: &[f64; S]| y[1],
-            EventDirection::Falling,
-            g_prev,
-            g,
-            0.0,
-        )? {
-            break p;
-        }
-        g_prev = g;
-        if stepper.t() >= t_max {
-            return Err(Error::Model {
-                model: "discrete MDR",
-                message: "no turning point".into(),
-            });
-        }
-    };
-    let mut evaluations = stepper.cost().evaluations;
-    // Restitution: until no element is in contact.
+    let turn = drive(
+        &mut stepper,
+        &mut f1,
+        &mut |_t: f64, y: &[f64; S]| y[1],
+        EventDirection::Falling,
+        t_max,
+        &mut |_: &DormandPrince<S>, _: f64| {},
+    )?
+    .solution;
+    if !turn.event_found {
+        return Err(Error::Model {
+            model: "discrete MDR",
+            message: "no turning point".into(),
+        });
+    }
+    let mut evaluations = turn.cost.evaluations;
+    // Restitution: until no element is in contact; the observer counts the
+    // elements in contact again at a step end after having left.
     let mut f2 = |_t: f64, y: &[f64; S]| grid.rhs(m, y, true);
     let t_end = turn.t + t_max;
     let mut stepper = DormandPrince::new(&mut f2, turn.t, turn.y, t_end, tol)?;
@@ -130,10 +126,8 @@ pub(crate) fn solve<const S: usize>(
         .collect();
     let mut left = vec![false; S - 2];
     let mut renewed_contacts = 0;
-    let mut g_prev = grid.contact_indicator(m, &turn.y);
-    let end = loop {
-        stepper.step(&mut f2, t_end)?;
-        let y = stepper.y();
+    let mut watch_contacts = |s: &DormandPrince<S>, _: f64| {
+        let y = s.y();
         for (i, k) in (2..S).enumerate() {
             let now = grid.in_contact(m, &y, k, true);
             if contact[i] && !now {
@@ -143,25 +137,23 @@ pub(crate) fn solve<const S: usize>(
             }
             contact[i] = now;
         }
-        let g = grid.contact_indicator(m, &y);
-        if let Some((p, _)) = stepper.locate_event(
-            |_t: f64, y: &[f64; S]| grid.contact_indicator(m, y),
-            EventDirection::Falling,
-            g_prev,
-            g,
-            0.0,
-        )? {
-            break p;
-        }
-        g_prev = g;
-        if stepper.t() >= t_end {
-            return Err(Error::Model {
-                model: "discrete MDR",
-                message: "the contact did not end".into(),
-            });
-        }
     };
-    evaluations += stepper.cost().evaluations;
+    let end = drive(
+        &mut stepper,
+        &mut f2,
+        &mut |_t: f64, y: &[f64; S]| grid.contact_indicator(m, y),
+        EventDirection::Falling,
+        t_end,
+        &mut watch_contacts,
+    )?
+    .solution;
+    if !end.event_found {
+        return Err(Error::Model {
+            model: "discrete MDR",
+            message: "the contact did not end".into(),
+        });
+    }
+    evaluations += end.cost.evaluations;
     Ok(Discrete {
         restitution: -end.y[1],
         contact_time: end.t,
