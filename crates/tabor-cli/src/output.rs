@@ -232,7 +232,13 @@ mod tests {
 
     #[test]
     fn numbers_round_trip() {
-        for x in [0.1, 1.0 / 3.0, 6.02214076e23, -2.2250738585072014e-308, 5e-324] {
+        for x in [
+            0.1,
+            1.0 / 3.0,
+            6.02214076e23,
+            -2.2250738585072014e-308,
+            5e-324,
+        ] {
             assert_eq!(number(x).parse::<f64>().ok(), Some(x));
             assert_eq!(format!("{x:e}").parse::<f64>().ok(), Some(x));
         }

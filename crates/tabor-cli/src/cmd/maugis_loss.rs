@@ -67,7 +67,9 @@ struct Row {
     method: &'static str,
 }
 
-fn lambdas(args: &Args) -> Result<Vec<f64>, String> {
+/// The values of Λ: first the explicit ones (`--lambda`, `--maugis-parameter`,
+/// `--tabor-mu`, in this order), then the range; and how many are explicit.
+fn lambdas(args: &Args) -> Result<(Vec<f64>, usize), String> {
     let mut out = args.lambdas.clone();
     for &l in &args.maugis_parameters {
         out.push(tabor_parameter_from_maugis(l).map_err(message)?);
@@ -75,6 +77,7 @@ fn lambdas(args: &Args) -> Result<Vec<f64>, String> {
     for &mu in &args.tabor_mus {
         out.push(tabor_parameter_from_tabor_mu(mu).map_err(message)?);
     }
+    let explicit = out.len();
     if let (Some(from), Some(to), Some(points)) = (args.from, args.to, args.points) {
         if !(2..=MAX_POINTS).contains(&points) {
             return Err(format!(
@@ -96,14 +99,18 @@ fn lambdas(args: &Args) -> Result<Vec<f64>, String> {
         }
     }
     if out.is_empty() {
-        return Err("give at least one --lambda, --maugis-parameter or --tabor-mu, or --from/--to/--points".into());
+        return Err(
+            "give at least one --lambda, --maugis-parameter or --tabor-mu, \
+             or --from/--to/--points"
+                .into(),
+        );
     }
-    Ok(out)
+    Ok((out, explicit))
 }
 
 fn row(args: &Args, lambda: f64) -> Result<Row, String> {
     Ok(if args.fast {
-        let r = loss_over_jkr_fast(lambda).map_err(|e| e.to_string())?;
+        let r = loss_over_jkr_fast(lambda).map_err(message)?;
         Row {
             lambda,
             case: TaborCase::of(lambda).number(),
@@ -113,7 +120,7 @@ fn row(args: &Args, lambda: f64) -> Result<Row, String> {
             method: "fast tier (Chebyshev interpolant, relative error < 1e-10)",
         }
     } else {
-        let w = normalized_loss(lambda, args.tolerance).map_err(|e| e.to_string())?;
+        let w = normalized_loss(lambda, args.tolerance).map_err(message)?;
         Row {
             lambda,
             case: w.case.number(),
@@ -126,9 +133,19 @@ fn row(args: &Args, lambda: f64) -> Result<Row, String> {
 }
 
 /// Runs `tabor maugis-loss`. The table is written row by row as it is computed,
-/// so a reader that stops early (`| head`) ends the computation.
+/// so a reader that stops early (`| head`) ends the computation. Bad input still
+/// prints nothing on stdout: the explicit values and the ends of the range (every
+/// point of a range lies between its ends) are evaluated before the first line.
 pub fn run(args: &Args) -> Outcome {
-    let lambdas = lambdas(args)?;
+    let (lambdas, explicit) = lambdas(args)?;
+    if !args.json {
+        let mut checked = lambdas[..explicit].to_vec();
+        checked.extend(lambdas[explicit..].first());
+        checked.extend(lambdas[explicit..].last());
+        for lambda in checked {
+            row(args, lambda)?;
+        }
+    }
     if args.json {
         let rows = lambdas
             .iter()

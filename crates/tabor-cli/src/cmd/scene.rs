@@ -364,7 +364,11 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
     }
     let mut stdout = stdout();
     writeln!(stdout, "law                  {}", out.law)?;
-    writeln!(stdout, "restitution          {} (simulated)", out.restitution)?;
+    writeln!(
+        stdout,
+        "restitution          {} (simulated)",
+        out.restitution
+    )?;
     writeln!(stdout, "restitution_analytic {}", out.restitution_analytic)?;
     match out.contact_time {
         Some(t) => writeln!(stdout, "contact time         {t:e} s")?,
