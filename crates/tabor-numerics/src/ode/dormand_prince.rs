@@ -18,8 +18,8 @@
 #![allow(clippy::needless_range_loop)] // component loops over small fixed arrays
 
 use super::{
-    drive, finite, first_non_finite, locate_event_in_step, no_event, DenseStepper,
-    EventDirection, EventPoint, FailureNames, OdeSolution, OdeTolerance, StepperCore,
+    drive, finite, first_non_finite, locate_event_in_step, no_event, DenseStepper, EventDirection,
+    EventPoint, FailureNames, OdeSolution, OdeTolerance, StepperCore,
 };
 use crate::{Cost, Result};
 
@@ -233,10 +233,7 @@ impl<const N: usize> DormandPrince<N> {
             let t = self.core.t;
             let t_new = if last { t_limit } else { t + h };
             let (k, y_new) = self.stages(f, h, t_new);
-            let stage_bad = k[1..]
-                .iter()
-                .chain([&y_new])
-                .find_map(|v| first_non_finite(v));
+            let stage_bad = k[1..].iter().chain([&y_new]).find_map(first_non_finite);
             if let Some(bad) = stage_bad {
                 // A trial step into a region where f is not finite: shrink and retry.
                 non_finite.get_or_insert((t + h, bad));

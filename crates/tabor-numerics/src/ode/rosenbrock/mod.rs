@@ -50,8 +50,8 @@ mod tableau;
 pub use lu::Matrix;
 
 use super::{
-    drive, finite, first_non_finite, locate_event_in_step, no_event, DenseStepper,
-    EventDirection, EventPoint, FailureNames, OdeSolution, OdeTolerance, StepperCore,
+    drive, finite, first_non_finite, locate_event_in_step, no_event, DenseStepper, EventDirection,
+    EventPoint, FailureNames, OdeSolution, OdeTolerance, StepperCore,
 };
 use crate::{Cost, Result};
 use lu::Lu;
