@@ -1,23 +1,14 @@
-//! The adhesive interpolation model: JKR loading to the adhesive yield onset, cubic
-//! elasto-plastic interpolation, fully plastic law; JKR unloading with the radius
-//! `R_p` and residual depth `d_res`; separation at the displacement-controlled
-//! instability. Seed 000, eqs. (5.111)-(5.126).
-//!
-//! Normalized core in the units of the JKR force-controlled critical state (`a_c`,
-//! `F_n`, `d_n`, energies in `F_n d_n`; `shared/spec/maugis-dugdale.md`), force
-//! positive in compression. The JKR relations are those of `tabor_jkr::normalized`.
+//! The normalized core of the adhesive interpolation model (units of the JKR
+//! force-controlled critical state): the yield fit, the loading curve, the turning
+//! point and the JKR unloading. Seed 000, eqs. (5.111)-(5.125).
 
+use super::MODEL;
 use crate::util::{exceeds, finite_output, positive_output, Hermite};
 use serde::Serialize;
-use tabor_dynamics::{BranchChange, ForceLaw};
 use tabor_jkr::normalized as jkr;
-use tabor_jkr::{JkrContactState, JkrImpact, JkrScales, JkrSphere, SeparationRule};
+use tabor_jkr::{JkrContactState, SeparationRule};
 use tabor_numerics::root_finding::{brent, RootTolerance};
-use tabor_restitution::{
-    restitution_from_loss, sticking_velocity, validate, EnergyLoss, Error, ImpactModel, Result,
-};
-
-const MODEL: &str = "adhesive interpolation";
+use tabor_restitution::{restitution_from_loss, validate, Error, Result};
 
 /// `2 · 1.2429`: the weak-adhesion limit of (5.111), `F̂_Y → 2·1.2429/Φ³` as Φ → 0.
 ///
@@ -427,16 +418,19 @@ impl AdhesiveInterpolation {
 
 /// JKR unloading with radius `R_p = ρ R` (normalized): (5.121)-(5.125).
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct JkrUnloading {
-    rho: f64,
-    residual: f64,
-    separation: f64,
+pub(super) struct JkrUnloading {
+    /// `ρ = R_p/R`.
+    pub(super) rho: f64,
+    /// `d̂_res`.
+    pub(super) residual: f64,
+    /// `d̂` where contact breaks.
+    pub(super) separation: f64,
 }
 
 impl JkrUnloading {
     /// `ρ` from continuity of the force, `F̂ = â³/ρ − 2â^(3/2)` (corrected (5.123));
     /// `d̂_res` (5.124): `d̂ − d̂_res = ρ^(1/3) d̂_JKR(â/ρ^(2/3))`; separation (5.125).
-    fn from_turning_point(s: JkrContactState) -> Result<Self> {
+    pub(super) fn from_turning_point(s: JkrContactState) -> Result<Self> {
         let a = s.contact_radius;
         let rho = positive_output(MODEL, "R_p/R", a * a * a / (s.force + 2.0 * a * a.sqrt()))?;
         let scaled = a / rho.powf(2.0 / 3.0);
@@ -450,235 +444,11 @@ impl JkrUnloading {
     }
 
     /// `(â, F̂)` at depth `d̂` on the unloading branch (clamped at the instability).
-    fn state(&self, d: f64) -> Result<(f64, f64)> {
+    pub(super) fn state(&self, d: f64) -> Result<(f64, f64)> {
         let scaled = jkr::contact_radius_at_depth((d - self.residual) / self.rho.cbrt())?;
         Ok((
             scaled * self.rho.powf(2.0 / 3.0),
             self.rho * jkr::force(scaled)?,
         ))
-    }
-}
-
-/// The adhesive interpolation model in SI units: an [`ImpactModel`].
-///
-/// As Δγ → 0 its restitution tends to that of `PlasticImpact<Interpolation::default()>`
-/// (the derived `Q̃`, `D̃`, `κ`). It is not monotone in Δγ: for Φ below about 3 the
-/// JKR unloading (5.121)-(5.125) returns more energy than Hertz unloading, and ε lies
-/// above the non-adhesive value (by up to about 0.08; README).
-///
-/// Seed 000, eqs. (5.111)-(5.126).
-#[derive(Clone, Debug)]
-pub struct AdhesiveInterpolationImpact {
-    model: AdhesiveInterpolation,
-    sphere: JkrSphere,
-    mass: f64,
-    elastic_sticking_velocity: f64,
-    yield_velocity: f64,
-}
-
-impl AdhesiveInterpolationImpact {
-    /// From material data: effective modulus `E*` (Pa), effective radius `R` (m),
-    /// yield stress `σ_Y` (Pa), work of adhesion `Δγ` (J/m²), effective mass `m` (kg);
-    /// Φ by [`adhesion_parameter`].
-    ///
-    /// Seed 000, eqs. (5.111)-(5.126).
-    pub fn from_yield_stress(
-        effective_modulus: f64,
-        effective_radius: f64,
-        yield_stress: f64,
-        work_of_adhesion: f64,
-        effective_mass: f64,
-    ) -> Result<Self> {
-        let phi = adhesion_parameter(
-            effective_modulus,
-            effective_radius,
-            yield_stress,
-            work_of_adhesion,
-        )?;
-        Self::new(
-            effective_modulus,
-            effective_radius,
-            work_of_adhesion,
-            phi,
-            effective_mass,
-        )
-    }
-
-    /// With the adhesion parameter Φ given directly.
-    ///
-    /// Seed 000, eqs. (5.111)-(5.125).
-    pub fn new(
-        effective_modulus: f64,
-        effective_radius: f64,
-        work_of_adhesion: f64,
-        adhesion_parameter: f64,
-        effective_mass: f64,
-    ) -> Result<Self> {
-        let sphere = JkrSphere::new(effective_modulus, effective_radius, work_of_adhesion)?;
-        let model = AdhesiveInterpolation::new(adhesion_parameter)?;
-        let elastic = JkrImpact::new(sphere, effective_mass)?;
-        let v_c = sticking_velocity(&elastic, 1e-12)?.speed;
-        let v_c = positive_output(MODEL, "elastic sticking velocity", v_c)?;
-        let energy = sphere.scales().energy;
-        let yield_velocity = finite_output(
-            MODEL,
-            "yield velocity",
-            (2.0 * model.yield_kinetic_energy().max(0.0) * energy / effective_mass).sqrt(),
-        )?;
-        Ok(AdhesiveInterpolationImpact {
-            model,
-            sphere,
-            mass: effective_mass,
-            elastic_sticking_velocity: v_c,
-            yield_velocity,
-        })
-    }
-
-    /// The normalized model.
-    ///
-    /// Seed 000, eqs. (5.111)-(5.125).
-    pub fn model(&self) -> &AdhesiveInterpolation {
-        &self.model
-    }
-
-    /// The JKR sphere (scales `a_c`, `F_n`, `d_n`).
-    ///
-    /// Seed 000, eqs. (5.33)-(5.34) (the JKR relations used for loading and unloading).
-    pub fn sphere(&self) -> &JkrSphere {
-        &self.sphere
-    }
-
-    /// The elastic JKR sticking velocity `v_c` (m/s), seed 000 eq. (5.38).
-    pub fn elastic_sticking_velocity(&self) -> f64 {
-        self.elastic_sticking_velocity
-    }
-
-    /// The impact speed (m/s) at which the contact reaches the adhesive yield onset
-    /// (5.111) (0 when it yields at first touch or inside the adhesive well).
-    ///
-    /// Seed 000, eqs. (5.35), (5.111)-(5.113).
-    pub fn yield_velocity(&self) -> f64 {
-        self.yield_velocity
-    }
-
-    /// The time-domain force law of this model for `tabor_dynamics::simulate_impact`:
-    /// jump-in at first touch, loading (JKR, cubic, plastic), turning point, JKR
-    /// unloading with `R_p` and `d_res`, snap-off at (5.125).
-    ///
-    /// Seed 000, eqs. (5.111)-(5.125).
-    pub fn force_law(&self) -> AdhesiveForceLaw {
-        AdhesiveForceLaw {
-            model: self.model,
-            scales: self.sphere.scales(),
-            unloading: None,
-        }
-    }
-
-    /// Kinetic energy of an impact at `v0`, in units of `F_n d_n`.
-    fn kinetic(&self, impact_speed: f64) -> Result<f64> {
-        let v = validate::positive("impact_speed", impact_speed)?;
-        positive_output(
-            MODEL,
-            "kinetic energy",
-            0.5 * self.mass * v * v / self.sphere.scales().energy,
-        )
-    }
-}
-
-impl ImpactModel for AdhesiveInterpolationImpact {
-    fn name(&self) -> String {
-        format!(
-            "adhesive interpolation (Phi = {:.4})",
-            self.model.adhesion_parameter()
-        )
-    }
-    fn effective_mass(&self) -> f64 {
-        self.mass
-    }
-    /// Seed 000, eqs. (5.111)-(5.125), in units of `F_n d_n`.
-    fn energy_loss(&self, impact_speed: f64) -> Result<EnergyLoss> {
-        let k = self.kinetic(impact_speed)?;
-        let loss = self.model.energy_loss(k)? * self.sphere.scales().energy;
-        Ok(EnergyLoss::closed_form(
-            finite_output(MODEL, "energy loss", loss)?,
-            "adhesive interpolation (5.111)-(5.125)",
-        ))
-    }
-    fn speed_scale(&self) -> f64 {
-        self.elastic_sticking_velocity
-    }
-}
-
-/// The adhesive interpolation model as a `tabor_dynamics::ForceLaw`: the motion
-/// starts at first touch (`d = 0`) on the JKR branch (the jump-in force −(8/9)F_n is
-/// already attractive there), loads along (5.111)-(5.115), switches at the turning
-/// point to JKR unloading with `R_p` and `d_res` (5.121)-(5.124), and separates at
-/// the displacement-controlled instability (5.125) (`branch_end = d − d_sep`).
-///
-/// Seed 000, eqs. (5.111)-(5.125).
-#[derive(Clone, Debug, PartialEq)]
-pub struct AdhesiveForceLaw {
-    model: AdhesiveInterpolation,
-    scales: JkrScales,
-    unloading: Option<JkrUnloading>,
-}
-
-impl ForceLaw for AdhesiveForceLaw {
-    fn name(&self) -> String {
-        format!(
-            "adhesive interpolation (Phi = {:.4})",
-            self.model.adhesion_parameter()
-        )
-    }
-
-    /// `d_max` of the analytic model (at least `d_n`).
-    fn overlap_scale(&self, effective_mass: f64, impact_speed: f64) -> Result<f64> {
-        let m = validate::positive("effective_mass", effective_mass)?;
-        let v = validate::positive("impact_speed", impact_speed)?;
-        let k = positive_output(
-            MODEL,
-            "kinetic energy",
-            0.5 * m * v * v / self.scales.energy,
-        )?;
-        let d = self.model.max_depth(k)?;
-        positive_output(MODEL, "overlap scale", d.max(1.0) * self.scales.depth)
-    }
-
-    fn begin_impact(&mut self, _m: f64, _v0: f64) -> Result<()> {
-        self.unloading = None;
-        Ok(())
-    }
-
-    fn force(&self, overlap: f64, _rate: f64) -> Result<f64> {
-        let d = validate::finite("overlap", overlap)? / self.scales.depth;
-        let f = match self.unloading {
-            None => self.model.loading_state(d)?.force,
-            Some(u) => u.state(d)?.1,
-        };
-        finite_output(MODEL, "force", f * self.scales.force)
-    }
-
-    fn contact_radius(&self, overlap: f64, _rate: f64) -> Result<f64> {
-        let d = validate::finite("overlap", overlap)? / self.scales.depth;
-        let a = match self.unloading {
-            None => self.model.loading_state(d)?.contact_radius,
-            Some(u) => u.state(d)?.0,
-        };
-        finite_output(MODEL, "contact radius", a * self.scales.contact_radius)
-    }
-
-    fn branch_end(&self, overlap: f64, _rate: f64) -> Result<f64> {
-        Ok(match self.unloading {
-            None => overlap,
-            Some(u) => overlap - u.separation * self.scales.depth,
-        })
-    }
-
-    /// Seed 000, eqs. (5.123)-(5.124) (corrected (5.123)).
-    fn on_max_compression(&mut self, overlap: f64) -> Result<BranchChange> {
-        let d = validate::finite("overlap", overlap)? / self.scales.depth;
-        let state = self.model.loading_state(d)?;
-        self.unloading = Some(JkrUnloading::from_turning_point(state)?);
-        Ok(BranchChange::Continue)
     }
 }
