@@ -3,7 +3,7 @@
 use crate::law::{BranchChange, ForceLaw};
 use serde::Serialize;
 use std::cell::Cell;
-use tabor_numerics::ode::{DormandPrince, EventDirection, OdeTolerance};
+use tabor_numerics::ode::{DormandPrince, EventDirection, EventPoint, OdeTolerance};
 use tabor_numerics::{Cost, NumericsError};
 use tabor_restitution::{validate, EnergyLoss, Error, ImpactModel, Result};
 
@@ -144,6 +144,11 @@ pub struct ImpactSimulation {
 /// with the contact work `W = −∫ F ḋ dt` as a third state, until the law separates
 /// or sticks. The law is left in its final state.
 ///
+/// The run is a sequence of smooth segments: each is integrated to its first event
+/// (`Run::integrate_to_event`), where the law's hook decides how the motion goes on
+/// (`Run::handle_event`); the outcome is assembled from the last event
+/// (`Run::outcome`).
+///
 /// Seed 000, eq. (5.5) (and (5.15), (5.20) for the other elastic laws).
 pub fn simulate_impact<L: ForceLaw + ?Sized>(
     law: &mut L,
@@ -165,249 +170,426 @@ pub fn simulate_impact<L: ForceLaw + ?Sized>(
     law.begin_impact(m, v0)?;
     let scale = validate::positive("overlap_scale", law.overlap_scale(m, v0)?)?;
     let start = validate::finite("start_overlap", law.start_overlap())?;
-    // Normalized units: x = d/L, s = t v0/L, u = ḋ/v0, w = W/(m v0²).
-    let time_unit = scale / v0;
-    let force_unit = m * v0 * v0 / scale;
-    let sim_err = |message: String| Error::Model {
-        model: "impact simulation",
-        message,
-    };
-
-    let mut y = [start / scale, 1.0, 0.0];
-    let mut s = 0.0;
-    let mut stepper: Option<DormandPrince<3>> = None;
-    let mut events = Vec::new();
-    let mut trajectory = Vec::new();
-    let mut onset = law.in_contact().then_some(0.0);
-    let mut max_overlap = start;
-    let mut max_force = f64::NEG_INFINITY;
-
-    let record = |law: &L, s: f64, y: &[f64; 3], out: &mut Vec<TrajectoryPoint>| -> Result<f64> {
-        let d = y[0] * scale;
-        let r = y[1] * v0;
-        let f = law.force(d, r)?;
-        if settings.record_trajectory {
-            out.push(TrajectoryPoint {
-                time: s * time_unit,
-                overlap: d,
-                overlap_rate: r,
-                force: f,
-                contact_radius: law.contact_radius(d, r)?,
-                contact_work: y[2] * m * v0 * v0,
-            });
+    let mut run = Run::new(law, Units::new(m, v0, scale), start, settings)?;
+    let decision = loop {
+        let (kind, hit) = run.integrate_to_event(law)?;
+        if let Some(decision) = run.handle_event(law, kind, hit)? {
+            break decision;
         }
-        Ok(f)
     };
-    max_force = max_force.max(record(law, s, &y, &mut trajectory)?);
+    Ok(run.outcome(law, decision, kinetic))
+}
 
-    let (decision, end_y) = loop {
-        // One smooth segment: integrate until the first event.
-        let g_start = law.branch_end(y[0] * scale, y[1] * v0)?;
+/// The normalized units of one simulation: `x = d/L`, `s = t v0/L`, `u = ḋ/v0`,
+/// `w = W/(m v0²)`, with L the law's overlap scale.
+#[derive(Clone, Copy, Debug)]
+struct Units {
+    /// Effective mass m (kg).
+    mass: f64,
+    /// Impact speed v0 (m/s).
+    speed: f64,
+    /// Overlap scale L (m).
+    length: f64,
+    /// L/v0 (s).
+    time: f64,
+    /// m v0²/L (N).
+    force: f64,
+}
+
+impl Units {
+    fn new(mass: f64, speed: f64, length: f64) -> Self {
+        Units {
+            mass,
+            speed,
+            length,
+            time: length / speed,
+            force: mass * speed * speed / length,
+        }
+    }
+
+    /// Overlap d (m) of the normalized state.
+    fn overlap(&self, y: &[f64; 3]) -> f64 {
+        y[0] * self.length
+    }
+
+    /// Overlap rate ḋ (m/s) of the normalized state.
+    fn rate(&self, y: &[f64; 3]) -> f64 {
+        y[1] * self.speed
+    }
+}
+
+/// The state of a simulation between segments, and what it has recorded.
+struct Run<'s> {
+    settings: &'s SimulationSettings,
+    units: Units,
+    /// Normalized time and state `(x, u, w)`.
+    s: f64,
+    y: [f64; 3],
+    /// The integrator, created on the first segment and restarted at every event.
+    stepper: Option<DormandPrince<3>>,
+    events: Vec<ContactEvent>,
+    trajectory: Vec<TrajectoryPoint>,
+    /// Normalized time of contact onset, once known.
+    onset: Option<f64>,
+    max_overlap: f64,
+    max_force: f64,
+}
+
+impl<'s> Run<'s> {
+    /// The run at the start overlap `start` (m), ḋ = v0, no work done; the starting
+    /// point recorded.
+    fn new<L: ForceLaw + ?Sized>(
+        law: &L,
+        units: Units,
+        start: f64,
+        settings: &'s SimulationSettings,
+    ) -> Result<Self> {
+        let mut run = Run {
+            settings,
+            units,
+            s: 0.0,
+            y: [start / units.length, 1.0, 0.0],
+            stepper: None,
+            events: Vec::new(),
+            trajectory: Vec::new(),
+            onset: law.in_contact().then_some(0.0),
+            max_overlap: start,
+            max_force: f64::NEG_INFINITY,
+        };
+        let (s, y) = (run.s, run.y);
+        run.record(law, s, &y)?;
+        Ok(run)
+    }
+
+    /// The force at normalized time `s` and state `y` (N), kept in the trajectory
+    /// (when requested) and in the largest force.
+    fn record<L: ForceLaw + ?Sized>(&mut self, law: &L, s: f64, y: &[f64; 3]) -> Result<f64> {
+        let force = record_point(
+            law,
+            &self.units,
+            self.settings.record_trajectory,
+            s,
+            y,
+            &mut self.trajectory,
+        )?;
+        self.max_force = self.max_force.max(force);
+        Ok(force)
+    }
+
+    /// Integrates one smooth segment from the current point to its first event: the
+    /// end of the law's branch (`branch_end` falling to 0) or a turning point (ḋ
+    /// changing sign), whichever comes first; every accepted step before it is
+    /// recorded.
+    fn integrate_to_event<L: ForceLaw + ?Sized>(
+        &mut self,
+        law: &L,
+    ) -> Result<(EventKind, EventPoint<3>)> {
+        let units = self.units;
+        let settings = self.settings;
+        let g_start = law.branch_end(units.overlap(&self.y), units.rate(&self.y))?;
         if g_start.is_nan() || g_start < 0.0 {
-            return Err(sim_err(format!(
+            return Err(simulation_error(format!(
                 "{}: branch_end = {g_start:e} at the start of a branch (d = {:e} m); \
                  it must be >= 0 there",
                 law.name(),
-                y[0] * scale
+                units.overlap(&self.y)
             )));
         }
-        let (kind, hit) = {
-            let law_ref: &L = law;
-            let failure: Cell<Option<Error>> = Cell::new(None);
-            let rhs = |_s: f64, st: &[f64; 3]| -> [f64; 3] {
-                match law_ref.force(st[0] * scale, st[1] * v0) {
-                    Ok(f) => {
-                        let a = -f / force_unit;
-                        [st[1], a, a * st[1]]
-                    }
-                    Err(e) => {
-                        keep_first(&failure, e);
-                        [f64::NAN; 3]
-                    }
+        let failure: Cell<Option<Error>> = Cell::new(None);
+        let rhs = |_s: f64, st: &[f64; 3]| -> [f64; 3] {
+            match law.force(units.overlap(st), units.rate(st)) {
+                Ok(f) => {
+                    let a = -f / units.force;
+                    [st[1], a, a * st[1]]
                 }
-            };
-            let g_failure: Cell<Option<Error>> = Cell::new(None);
-            let g_branch = |_s: f64, st: &[f64; 3]| -> f64 {
-                match law_ref.branch_end(st[0] * scale, st[1] * v0) {
-                    Ok(g) => g,
-                    Err(e) => {
-                        keep_first(&g_failure, e);
-                        f64::NAN
-                    }
+                Err(e) => {
+                    keep_first(&failure, e);
+                    [f64::NAN; 3]
                 }
-            };
-            let started = match stepper.as_mut() {
-                None => {
-                    DormandPrince::new(&mut &rhs, s, y, settings.max_duration, settings.tolerance)
-                        .map(|st| {
-                            stepper = Some(st);
-                        })
-                }
-                Some(st) => st.restart(&mut &rhs, s, y, settings.max_duration),
-            };
-            let Some(st) = stepper.as_mut() else {
-                return Err(started.err().map_or_else(
-                    || sim_err("integrator did not start".into()),
-                    |e| failure.take().unwrap_or(Error::Numerics(e)),
-                ));
-            };
-            if let Err(e) = started {
-                return Err(failure.take().unwrap_or(Error::Numerics(e)));
-            }
-            let mut g_prev = g_start;
-            let mut u_prev = y[1];
-            loop {
-                if let Err(e) = st.step(&mut &rhs, settings.max_duration) {
-                    return Err(failure.take().unwrap_or(match e {
-                        NumericsError::InvalidArgument { .. } => sim_err(format!(
-                            "{}: no separation within the time limit {:e} s",
-                            law_ref.name(),
-                            settings.max_duration * time_unit
-                        )),
-                        other => Error::Numerics(other),
-                    }));
-                }
-                let y_new = st.y();
-                let g_new = g_branch(st.t(), &y_new);
-                if let Some(e) = g_failure.take() {
-                    return Err(e);
-                }
-                let branch = st
-                    .locate_event(&g_branch, EventDirection::Falling, g_prev, g_new, 0.0)
-                    .map_err(Error::Numerics)?;
-                if let Some(e) = g_failure.take() {
-                    return Err(e);
-                }
-                let turning = st
-                    .locate_event(
-                        |_, z: &[f64; 3]| z[1],
-                        EventDirection::Either,
-                        u_prev,
-                        y_new[1],
-                        0.0,
-                    )
-                    .map_err(Error::Numerics)?;
-                let first = match (branch, turning) {
-                    (Some((b, _)), Some((t, _))) if t.t < b.t => Some((
-                        if u_prev > 0.0 {
-                            EventKind::MaxCompression
-                        } else {
-                            EventKind::MinCompression
-                        },
-                        t,
-                    )),
-                    (Some((b, _)), _) => Some((EventKind::BranchEnd, b)),
-                    (None, Some((t, _))) => Some((
-                        if u_prev > 0.0 {
-                            EventKind::MaxCompression
-                        } else {
-                            EventKind::MinCompression
-                        },
-                        t,
-                    )),
-                    (None, None) => None,
-                };
-                if let Some(found) = first {
-                    break found;
-                }
-                max_overlap = max_overlap.max(y_new[0] * scale);
-                max_force = max_force.max(record(law_ref, st.t(), &y_new, &mut trajectory)?);
-                if st.t() >= settings.max_duration {
-                    return Err(sim_err(format!(
-                        "{}: no separation within the time limit {:e} s",
-                        law_ref.name(),
-                        settings.max_duration * time_unit
-                    )));
-                }
-                g_prev = g_new;
-                u_prev = y_new[1];
             }
         };
-        // The event point: a turning point has ḋ = 0 exactly.
-        s = hit.t;
-        y = hit.y;
-        if kind != EventKind::BranchEnd {
-            y[1] = 0.0;
+        let g_failure: Cell<Option<Error>> = Cell::new(None);
+        let g_branch = |_s: f64, st: &[f64; 3]| -> f64 {
+            match law.branch_end(units.overlap(st), units.rate(st)) {
+                Ok(g) => g,
+                Err(e) => {
+                    keep_first(&g_failure, e);
+                    f64::NAN
+                }
+            }
+        };
+        let st = start_stepper(&mut self.stepper, &rhs, self.s, self.y, settings, &failure)?;
+        let mut g_prev = g_start;
+        let mut u_prev = self.y[1];
+        loop {
+            if let Err(e) = st.step(&mut &rhs, settings.max_duration) {
+                return Err(failure.take().unwrap_or(match e {
+                    NumericsError::InvalidArgument { .. } => time_limit_error(law, settings, units),
+                    other => Error::Numerics(other),
+                }));
+            }
+            let y_new = st.y();
+            let g_new = g_branch(st.t(), &y_new);
+            if let Some(e) = g_failure.take() {
+                return Err(e);
+            }
+            if let Some(found) = event_on_step(st, &g_branch, &g_failure, g_prev, g_new, u_prev)? {
+                return Ok(found);
+            }
+            self.max_overlap = self.max_overlap.max(units.overlap(&y_new));
+            let force = record_point(
+                law,
+                &units,
+                settings.record_trajectory,
+                st.t(),
+                &y_new,
+                &mut self.trajectory,
+            )?;
+            self.max_force = self.max_force.max(force);
+            if st.t() >= settings.max_duration {
+                return Err(time_limit_error(law, settings, units));
+            }
+            g_prev = g_new;
+            u_prev = y_new[1];
         }
-        let d = y[0] * scale;
-        max_overlap = max_overlap.max(d);
-        let force_before = record(law, s, &y, &mut trajectory)?;
-        max_force = max_force.max(force_before);
+    }
+
+    /// Moves to the event point `hit` (a turning point has ḋ = 0 exactly), records it
+    /// and asks the law's hook what happens: `Some(decision)` ends the impact
+    /// (separation or sticking), `None` goes on with the next segment.
+    fn handle_event<L: ForceLaw + ?Sized>(
+        &mut self,
+        law: &mut L,
+        kind: EventKind,
+        hit: EventPoint<3>,
+    ) -> Result<Option<BranchChange>> {
+        let units = self.units;
+        self.s = hit.t;
+        self.y = hit.y;
+        if kind != EventKind::BranchEnd {
+            self.y[1] = 0.0;
+        }
+        let (s, y) = (self.s, self.y);
+        let d = units.overlap(&y);
+        self.max_overlap = self.max_overlap.max(d);
+        let force_before = self.record(law, s, &y)?;
         let decision = match kind {
             EventKind::MaxCompression => law.on_max_compression(d)?,
             EventKind::MinCompression => law.on_min_compression(d)?,
-            EventKind::BranchEnd => law.on_branch_end(d, y[1] * v0)?,
+            EventKind::BranchEnd => law.on_branch_end(d, units.rate(&y))?,
         };
-        events.push(ContactEvent {
-            time: s * time_unit,
+        self.events.push(ContactEvent {
+            time: s * units.time,
             overlap: d,
-            overlap_rate: y[1] * v0,
+            overlap_rate: units.rate(&y),
             kind,
             decision,
         });
-        if onset.is_none() && law.in_contact() {
-            onset = Some(s);
+        if self.onset.is_none() && law.in_contact() {
+            self.onset = Some(s);
         }
         if decision != BranchChange::Continue {
-            break (decision, y);
+            return Ok(Some(decision));
         }
-        if law.force(d, y[1] * v0)? != force_before {
+        if law.force(d, units.rate(&y))? != force_before {
             // The hook switched to a branch with a different force (jump-in): record
             // the state again, so the jump shows as two points at the same time.
-            max_force = max_force.max(record(law, s, &y, &mut trajectory)?);
+            self.record(law, s, &y)?;
         }
         if kind == EventKind::BranchEnd {
-            let g = law.branch_end(d, y[1] * v0)?;
+            let g = law.branch_end(d, units.rate(&y))?;
             if g.is_nan() || g <= 0.0 {
-                return Err(sim_err(format!(
+                return Err(simulation_error(format!(
                     "{}: on_branch_end returned Continue at d = {d:e} m, but the new branch \
                      ends there too (branch_end = {g:e})",
                     law.name()
                 )));
             }
         }
-        if events.len() >= settings.max_events {
-            return Err(sim_err(format!(
+        if self.events.len() >= self.settings.max_events {
+            return Err(simulation_error(format!(
                 "{}: more than {} events without separation",
                 law.name(),
-                settings.max_events
+                self.settings.max_events
             )));
         }
-    };
+        Ok(None)
+    }
 
-    let sticks = decision == BranchChange::Stick;
-    let rebound_speed = if sticks {
-        0.0
-    } else {
-        (-end_y[1] * v0).max(0.0)
-    };
-    // in units of the initial kinetic energy m v0²/2 (no overflow for huge m v0²):
-    // kinetic_end/kinetic = ḋ̂², work/kinetic = 2 ŵ
-    let energy_error = ((end_y[1] * end_y[1] - 1.0) - 2.0 * end_y[2]).abs();
-    let onset_s = onset.unwrap_or(s);
-    let cost = stepper.map_or(Cost::ZERO, |st| st.cost());
-    Ok(ImpactSimulation {
-        law: law.name(),
-        impact_speed: v0,
-        rebound_speed,
-        restitution: rebound_speed / v0,
-        sticks,
-        contact_time: (!sticks).then_some((s - onset_s) * time_unit),
-        contact_onset_time: onset_s * time_unit,
-        end_time: s * time_unit,
-        max_overlap,
-        max_force,
-        kinetic_energy: kinetic,
-        energy_loss: if sticks {
-            kinetic
+    /// The outcome of a run that ended with `decision` (separation or sticking) at
+    /// the current point, for the initial kinetic energy `kinetic` (J).
+    fn outcome<L: ForceLaw + ?Sized>(
+        self,
+        law: &L,
+        decision: BranchChange,
+        kinetic: f64,
+    ) -> ImpactSimulation {
+        let Units {
+            mass: m,
+            speed: v0,
+            time: time_unit,
+            ..
+        } = self.units;
+        let (s, end_y) = (self.s, self.y);
+        let sticks = decision == BranchChange::Stick;
+        let rebound_speed = if sticks {
+            0.0
         } else {
-            kinetic - 0.5 * m * rebound_speed * rebound_speed
-        },
-        energy_error,
-        events,
-        trajectory,
-        cost,
+            (-end_y[1] * v0).max(0.0)
+        };
+        // in units of the initial kinetic energy m v0²/2 (no overflow for huge m v0²):
+        // kinetic_end/kinetic = ḋ̂², work/kinetic = 2 ŵ
+        let energy_error = ((end_y[1] * end_y[1] - 1.0) - 2.0 * end_y[2]).abs();
+        let onset_s = self.onset.unwrap_or(s);
+        let cost = self.stepper.map_or(Cost::ZERO, |st| st.cost());
+        ImpactSimulation {
+            law: law.name(),
+            impact_speed: v0,
+            rebound_speed,
+            restitution: rebound_speed / v0,
+            sticks,
+            contact_time: (!sticks).then_some((s - onset_s) * time_unit),
+            contact_onset_time: onset_s * time_unit,
+            end_time: s * time_unit,
+            max_overlap: self.max_overlap,
+            max_force: self.max_force,
+            kinetic_energy: kinetic,
+            energy_loss: if sticks {
+                kinetic
+            } else {
+                kinetic - 0.5 * m * rebound_speed * rebound_speed
+            },
+            energy_error,
+            events: self.events,
+            trajectory: self.trajectory,
+            cost,
+        }
+    }
+}
+
+/// The force (N) at normalized time `s` and state `y`, and, when `keep` is true, the
+/// trajectory point there appended to `out`.
+fn record_point<L: ForceLaw + ?Sized>(
+    law: &L,
+    units: &Units,
+    keep: bool,
+    s: f64,
+    y: &[f64; 3],
+    out: &mut Vec<TrajectoryPoint>,
+) -> Result<f64> {
+    let d = units.overlap(y);
+    let r = units.rate(y);
+    let f = law.force(d, r)?;
+    if keep {
+        out.push(TrajectoryPoint {
+            time: s * units.time,
+            overlap: d,
+            overlap_rate: r,
+            force: f,
+            contact_radius: law.contact_radius(d, r)?,
+            contact_work: y[2] * units.mass * units.speed * units.speed,
+        });
+    }
+    Ok(f)
+}
+
+/// Starts the integrator at `(s, y)` on the first segment, restarts it on the
+/// others; an error of the right-hand side (kept in `failure`) takes precedence
+/// over the integrator's.
+fn start_stepper<'a, F>(
+    stepper: &'a mut Option<DormandPrince<3>>,
+    rhs: &F,
+    s: f64,
+    y: [f64; 3],
+    settings: &SimulationSettings,
+    failure: &Cell<Option<Error>>,
+) -> Result<&'a mut DormandPrince<3>>
+where
+    F: Fn(f64, &[f64; 3]) -> [f64; 3],
+{
+    let started = match stepper.as_mut() {
+        None => DormandPrince::new(&mut &rhs, s, y, settings.max_duration, settings.tolerance).map(
+            |st| {
+                *stepper = Some(st);
+            },
+        ),
+        Some(st) => st.restart(&mut &rhs, s, y, settings.max_duration),
+    };
+    let Some(st) = stepper.as_mut() else {
+        return Err(started.err().map_or_else(
+            || simulation_error("integrator did not start".into()),
+            |e| failure.take().unwrap_or(Error::Numerics(e)),
+        ));
+    };
+    if let Err(e) = started {
+        return Err(failure.take().unwrap_or(Error::Numerics(e)));
+    }
+    Ok(st)
+}
+
+/// The first event on the last accepted step of `st`, if any: the branch end
+/// (`g_branch` falling from `g_prev` to `g_new`; its errors kept in `g_failure`) or
+/// the turning point (ḋ changing sign from `u_prev`: maximum compression when it was
+/// positive, else minimum compression), the earlier one; the branch end when they
+/// coincide. Both are located on the dense output.
+fn event_on_step<G>(
+    st: &DormandPrince<3>,
+    g_branch: &G,
+    g_failure: &Cell<Option<Error>>,
+    g_prev: f64,
+    g_new: f64,
+    u_prev: f64,
+) -> Result<Option<(EventKind, EventPoint<3>)>>
+where
+    G: Fn(f64, &[f64; 3]) -> f64,
+{
+    let branch = st
+        .locate_event(g_branch, EventDirection::Falling, g_prev, g_new, 0.0)
+        .map_err(Error::Numerics)?;
+    if let Some(e) = g_failure.take() {
+        return Err(e);
+    }
+    let turning = st
+        .locate_event(
+            |_, z: &[f64; 3]| z[1],
+            EventDirection::Either,
+            u_prev,
+            st.y()[1],
+            0.0,
+        )
+        .map_err(Error::Numerics)?;
+    let turning_kind = if u_prev > 0.0 {
+        EventKind::MaxCompression
+    } else {
+        EventKind::MinCompression
+    };
+    Ok(match (branch, turning) {
+        (Some((b, _)), Some((t, _))) if t.t < b.t => Some((turning_kind, t)),
+        (Some((b, _)), _) => Some((EventKind::BranchEnd, b)),
+        (None, Some((t, _))) => Some((turning_kind, t)),
+        (None, None) => None,
     })
+}
+
+/// An error of the simulation itself (not of the law or the integrator).
+fn simulation_error(message: String) -> Error {
+    Error::Model {
+        model: "impact simulation",
+        message,
+    }
+}
+
+/// The law did not separate within `settings.max_duration`.
+fn time_limit_error<L: ForceLaw + ?Sized>(
+    law: &L,
+    settings: &SimulationSettings,
+    units: Units,
+) -> Error {
+    simulation_error(format!(
+        "{}: no separation within the time limit {:e} s",
+        law.name(),
+        settings.max_duration * units.time
+    ))
 }
 
 /// An [`ImpactModel`] whose energy loss comes from [`simulate_impact`]: any
