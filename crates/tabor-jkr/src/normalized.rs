@@ -1,5 +1,7 @@
 //! The JKR sphere in the normalized units of the force-controlled critical state
-//! (`../shared/spec/maugis-dugdale.md`, "JKR in these units"):
+//! (the JKR state with `dF/da = 0`, seed 000 eq. (5.43); `tabor-maugis` uses the same
+//! units), for effective modulus `E` = E*, effective radius `R` and work of adhesion
+//! `Δγ`, force positive in compression:
 //!
 //! ```text
 //! a_c = (9 π Δγ R² / (8 E))^(1/3),  F_n = (3/2) π Δγ R,  d_n = a_c² / (3 R),
@@ -7,8 +9,13 @@
 //! ```
 //!
 //! These are seed 000 eqs. (5.33)-(5.36) without a single dimensional parameter:
-//! `F̂ = â³ − 2 â^(3/2)`, `d̂ = 3 â² − 4 â^(1/2)`. [`crate::JkrSphere`] is the thin
-//! physical shell around them.
+//! `F̂ = â³ − 2 â^(3/2)`, `d̂ = 3 â² − 4 â^(1/2)`. The energy unit is
+//! `F_n d_n = (3∛3/8) [R⁴ (πΔγ)⁵ / E²]^(1/3)`. Landmarks: first touch `d̂ = 0`,
+//! `â0 = (4/3)^(2/3)`, `F̂ = −8/9`; the displacement-controlled pull-off (fixed grip)
+//! `dd̂/dâ = 0` at `â = (1/3)^(2/3)`, `d̂ = −3^(2/3)`, `F̂ = −5/9`; the load-controlled
+//! pull-off `â = 1`, `d̂ = −1`, `F̂ = −1`; the fixed-grip loss (5.36)
+//! `(1/10)(1 + ∛864) [R⁴(πΔγ)⁵/E²]^(1/3)`, about 1.9459 `F_n d_n`.
+//! [`crate::JkrSphere`] is the thin physical shell around them.
 
 use crate::common::{
     finite_output, loss_by_quadrature, solve_energy_balance, Balance, JkrContactState,

@@ -13,7 +13,8 @@ const MODEL: &str = "JKR sphere";
 
 /// The scales of the JKR sphere: its force-controlled critical state.
 ///
-/// `../shared/spec/maugis-dugdale.md`, "Scales"; seed 000 eq. (5.43) uses the same.
+/// Seed 000 eq. (5.43) (the normalization of [`crate::normalized`]; `tabor-maugis`
+/// uses the same scales).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct JkrScales {
     /// `a_c = (9πΔγR²/(8E))^(1/3)` (m).

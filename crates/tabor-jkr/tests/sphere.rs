@@ -96,7 +96,7 @@ impl Seed {
     fn offset_5_35(&self) -> f64 {
         0.6 * (4.0 * (PI * self.dg).powi(5) * self.r.powi(4) / (self.e * self.e)).cbrt()
     }
-    /// F_n d_n = (3∛3/8)[R⁴(πΔγ)⁵/E²]^(1/3) (maugis-dugdale.md).
+    /// F_n d_n = (3∛3/8)[R⁴(πΔγ)⁵/E²]^(1/3) (the normalization of tabor_jkr::normalized).
     fn energy_unit(&self) -> f64 {
         3.0 * 3f64.cbrt() / 8.0
             * (self.r.powi(4) * (PI * self.dg).powi(5) / (self.e * self.e)).cbrt()
@@ -146,7 +146,7 @@ fn normalized_states_match_the_spec() {
     assert_eq!(lc.contact_radius, 1.0);
     assert!(rel(lc.depth, -1.0) < 1e-15);
     assert!(rel(lc.force, -1.0) < 1e-15);
-    // F̂ and d̂ at a few points against the formulas of maugis-dugdale.md.
+    // F̂ and d̂ at a few points against the formulas of the normalization (tabor_jkr::normalized docs).
     for a in [0.0, 0.1, 0.5, 1.0, 2.0, 7.5] {
         let f: f64 = a * a * a - 2.0 * f64::powf(a, 1.5);
         let d: f64 = 3.0 * a * a - 4.0 * f64::sqrt(a);
@@ -357,7 +357,7 @@ fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
 
 proptest! {
     /// The physical loss over F_n d_n (computed here from the closed expression of
-    /// maugis-dugdale.md) equals the normalized loss, over many decades.
+    /// tabor_jkr::normalized docs) equals the normalized loss, over many decades.
     #[test]
     fn normalized_equals_physical_over_f_n_d_n(
         e in log_uniform(1e3, 1e12),

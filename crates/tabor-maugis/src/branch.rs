@@ -1,5 +1,5 @@
 //! The two equilibrium branches of the Maugis-Dugdale contact in the seed's
-//! normalization (`../shared/spec/maugis-dugdale.md`).
+//! normalization (the crate docs, "Normalization").
 //!
 //! The contact branch is parametrized by `θ = arccos(â/b̂) ∈ (0, π/2]`: with
 //! `â = b̂ cos θ` and `s = b̂ sin θ` the gap condition becomes the quadratic
@@ -102,7 +102,7 @@ pub struct ContactBranchState {
 
 /// The contact-branch state at parameter θ ∈ (0, π/2] for Tabor parameter Λ.
 ///
-/// Gap condition, depth and force of `maugis-dugdale.md` (the MD solution of seed
+/// Gap condition, depth and force of the crate docs, "Normalization" (the MD solution of seed
 /// 000 section 3.3.3, used by eqs. (5.43), (5.45)): `b̂` is the positive root of the
 /// quadratic in b̂, taken in the cancellation-free form `2/(β + √(β² + 4α))`.
 pub fn contact_state(lambda: f64, theta: f64) -> ContactBranchState {

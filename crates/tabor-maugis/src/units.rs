@@ -12,12 +12,12 @@ pub use tabor_jkr::JkrScales;
 pub const LAMBDA_PER_MAUGIS_PARAMETER: f64 = 0.686_108_492_583_778_5;
 
 /// Dugdale equivalence of Tabor's μ (Lennard-Jones): `λ ≈ 1.1570 μ`
-/// (`maugis-dugdale.md`; Johnson & Greenwood 1997 match σ0 = 1.03 σ_th and
+/// (crate docs, "Normalization"; Johnson & Greenwood 1997 match σ0 = 1.03 σ_th and
 /// h = 0.97 z0).
 pub const MAUGIS_PER_TABOR_MU: f64 = 1.157;
 
 /// The seed's Tabor parameter from the Dugdale cohesive stress σ0 (Pa):
-/// `Λ = σ0 a_c² / (3 R Δγ)` (`maugis-dugdale.md`).
+/// `Λ = σ0 a_c² / (3 R Δγ)` (crate docs, "Normalization").
 pub fn tabor_parameter_from_cohesive_stress(
     cohesive_stress: f64,
     work_of_adhesion: f64,
@@ -31,7 +31,7 @@ pub fn tabor_parameter_from_cohesive_stress(
 }
 
 /// The seed's Tabor parameter from the range of adhesion h = Δγ/σ0 (m):
-/// `Λ = d_n / h` (`maugis-dugdale.md`).
+/// `Λ = d_n / h` (crate docs, "Normalization").
 pub fn tabor_parameter_from_range(
     range: f64,
     work_of_adhesion: f64,
@@ -44,7 +44,7 @@ pub fn tabor_parameter_from_range(
 }
 
 /// The seed's Tabor parameter from Maugis' λ = 2σ0 (R/(πΔγK²))^(1/3), K = 4E*/3:
-/// `Λ = π(9/4)^(1/3)/6 · λ ≈ 0.6861 λ` (`maugis-dugdale.md`).
+/// `Λ = π(9/4)^(1/3)/6 · λ ≈ 0.6861 λ` (crate docs, "Normalization").
 pub fn tabor_parameter_from_maugis(maugis_parameter: f64) -> Result<f64> {
     let l = validate::positive("maugis_parameter", maugis_parameter)?;
     check_lambda(LAMBDA_PER_MAUGIS_PARAMETER * l)

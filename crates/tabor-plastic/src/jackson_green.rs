@@ -15,7 +15,7 @@ const MODEL: &str = "Jackson-Green";
 /// The hardness over the yield stress used in the fully plastic term of the
 /// Jackson-Green law, `H/σ_Y = 2.67` (the mean pressure `Q p_Y/3` of the
 /// interpolation model with Q = 5, p_Y = 1.6 σ_Y), instead of Jackson and Green's
-/// geometry-dependent `H_G`. `shared/spec/models.md` (Jackson-Green type).
+/// geometry-dependent `H_G` (this crate's choice; README, "Parameter choices").
 ///
 /// Seed 000, text after (5.108) (Q = 5, chapter 3 (3.282)).
 pub const DEFAULT_HARDNESS_RATIO: f64 = 2.67;
@@ -34,8 +34,8 @@ pub const FIT_ONSET: f64 = 1.9;
 /// `d_res = 1.02 d_max[1 − ((δ_max + 5.9)/6.9)^(−0.54)]` (Jackson, Chusoipin, Green
 /// 2005); elastic (Hertzian) unloading through `(d_max, F_max)`.
 ///
-/// Seed 000, eq. (5.108) and the text before it; relations as in
-/// `shared/spec/models.md`.
+/// Seed 000, eq. (5.108) and the text before it (the seed's FEM-based model, with the
+/// relations of Jackson and Green written out above).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct JacksonGreen {
     modulus: f64,

@@ -193,8 +193,9 @@ pub const DEFAULT_PLASTIC_ONSET: f64 = 80.0;
 /// with `a² = 2 R d` for `x ≥ D`; in between the cubics in `(x − 1)` that make force
 /// and contact radius C¹ at both ends. Unloading as in Thornton's model.
 ///
-/// Seed 000, eq. (5.107) (constants of chapter 3, (3.282)-(3.288); reconstructed in
-/// `shared/spec/models.md`), extended to loading beyond `x = D`.
+/// Seed 000, eq. (5.107) (constants of chapter 3, (3.282)-(3.288), not available;
+/// reconstructed as described in the crate README, "The interpolation model (5.107)"),
+/// extended to loading beyond `x = D`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Interpolation {
     plastic_slope: f64,

@@ -8,9 +8,10 @@
 //! - `impact`: the SI shell [`AdhesiveInterpolationImpact`], an `ImpactModel`;
 //! - `force_law`: [`AdhesiveForceLaw`], the time-domain force law.
 //!
-//! Normalized core in the units of the JKR force-controlled critical state (`a_c`,
-//! `F_n`, `d_n`, energies in `F_n d_n`; `shared/spec/maugis-dugdale.md`), force
-//! positive in compression. The JKR relations are those of `tabor_jkr::normalized`.
+//! Normalized core in the units of the JKR force-controlled critical state (seed 000
+//! eq. (5.43): `a_c = (9πΔγR²/(8E*))^(1/3)`, `F_n = (3/2)πΔγR`, `d_n = a_c²/(3R)`,
+//! energies in `F_n d_n`; `tabor_jkr::normalized` documents them), force positive in
+//! compression. The JKR relations are those of `tabor_jkr::normalized`.
 
 mod force_law;
 mod impact;

@@ -37,7 +37,7 @@ pub const ADHESIVE_PLASTIC_ONSET: f64 = 440.408_167_167_326_1;
 /// `K = Û_JKR (3∛3/8) π^(5/3) / ((8/15)(4π/5)⁵)`, Û_JKR the normalized fixed-grip
 /// loss). The book's own definition (3.293) is not available.
 ///
-/// Seed 000, the Φ of (5.111), (5.126) (`shared/spec/models.md`).
+/// Seed 000, the Φ of (5.111), (5.126) (derivation in the crate README).
 pub const ADHESION_PARAMETER_FACTOR: f64 = 0.821_012_305_737_916_4;
 
 /// The adhesion parameter `Φ = κ (Δγ E*²/(σ_Y³ R))^(1/3)` from material data:
