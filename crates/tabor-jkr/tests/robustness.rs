@@ -201,9 +201,18 @@ proptest! {
         let a0 = s.first_touch().unwrap().contact_radius;
         let model = JkrImpact::new(s, m).unwrap();
         prop_assert!(model.max_contact_radius(v).unwrap().contact_radius > a0);
+        // Dimensional analysis: the JKR loss is Δγ^(5/3) R^(4/3) E*^(-2/3) times a
+        // number of the separation rule alone; the numbers come from a reference
+        // sphere (E* = 1 GPa, R = 1 µm, Δγ = 0.05 J/m²).
+        let reference = JkrSphere::new(1e9, 1e-6, 0.05).unwrap();
+        let scale = |e: f64, r: f64, dg: f64| dg.powf(5.0 / 3.0) * r.powf(4.0 / 3.0) * e.powf(-2.0 / 3.0);
         for rule in [SeparationRule::FixedGrip, SeparationRule::LoadControlled] {
             let loss = s.energy_loss(rule, 1e-12).unwrap().joules;
-            prop_assert!(loss > 0.0 && loss.is_finite());
+            let number = reference.energy_loss(rule, 1e-12).unwrap().joules / scale(1e9, 1e-6, 0.05);
+            prop_assert!(
+                (loss / (number * scale(e, r, dg)) - 1.0).abs() < 1e-9,
+                "{rule}: {loss:e} vs {:e}", number * scale(e, r, dg)
+            );
         }
         let g = GradedSphere::new(e * (1e-7f64).powf(-k), k, r, dg).unwrap();
         prop_assert!(g.energy_loss(SeparationRule::FixedGrip, 1e-12).unwrap().joules > 0.0);
