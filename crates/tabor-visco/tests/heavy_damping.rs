@@ -5,7 +5,6 @@
 //! works, the first-order result (5.71), and the integration at a tight tolerance.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use std::time::Instant;
 use tabor_numerics::ode::{solve_until_event, EventDirection, OdeTolerance};
 use tabor_restitution::Error;
 use tabor_visco::{damping_law, kelvin_voigt_sphere, SphereModel};
@@ -70,11 +69,9 @@ fn lee_herrmann_heavy_damping_is_solved() {
     for &gamma in &[100.0, 1000.0] {
         let limit = damping_law::overdamped_restitution(0.0, gamma).unwrap();
         for &tol in &[1e-3, 1e-8, 1e-12] {
-            let s = Instant::now();
             let r = damping_law::solve(0.0, gamma, tol).unwrap();
-            let elapsed = s.elapsed();
             println!(
-                "γ {gamma} tol {tol:e}: ε {:.9e} (limit {limit:.9e}), {} evaluations, {elapsed:?}",
+                "γ {gamma} tol {tol:e}: ε {:.9e} (limit {limit:.9e}), {} evaluations",
                 r.restitution, r.cost.evaluations
             );
             assert!(
@@ -246,14 +243,12 @@ fn inverse_round_trips_over_the_whole_range() {
             0.999,
             1.0 - 1e-9,
         ] {
-            let s = Instant::now();
             let delta =
                 kelvin_voigt_sphere::viscous_parameter_for_restitution(eps, model, 1e-10).unwrap();
-            let elapsed = s.elapsed();
             let back = kelvin_voigt_sphere::solve(delta, model, 1e-12)
                 .unwrap()
                 .restitution;
-            println!("{model:?} ε {eps}: δ {delta:.9e} ({elapsed:?}), back {back:.12e}");
+            println!("{model:?} ε {eps}: δ {delta:.9e}, back {back:.12e}");
             if eps < 0.5 {
                 assert!((back / eps - 1.0).abs() < 1e-8, "{model:?} {eps}: {back}");
             } else {
@@ -319,38 +314,37 @@ fn inverse_names_the_restitution_outside_its_range() {
 }
 
 #[test]
-fn every_call_is_fast() {
-    // A sweep over the accepted inputs at tolerance 1e-8: each forward solution
-    // below 5 ms and each inverse below 20 ms (observed ≤ 0.3 ms and ≤ 1.4 ms;
-    // generous bounds for a loaded machine).
-    let mut worst = (0.0f64, 0.0f64);
+fn every_accepted_input_solves_and_inverts() {
+    // The sweep over the accepted inputs at tolerance 1e-8 (its time is measured by
+    // the criterion benchmark `benches/heavy_damping.rs`, not asserted here): every
+    // forward solution succeeds, and the inverse gives back ε to the tolerance.
     for &beta in &EXPONENTS {
         for k in 0..=12 {
             let gamma = 10f64.powf(-9.0 + k as f64);
-            let s = Instant::now();
-            damping_law::solve(beta, gamma, 1e-8).unwrap();
-            worst.0 = worst.0.max(s.elapsed().as_secs_f64());
+            let r = damping_law::solve(beta, gamma, 1e-8).unwrap();
+            assert!(
+                r.restitution > 0.0 && r.restitution <= 1.0,
+                "β {beta} γ {gamma}"
+            );
         }
     }
     for model in [SphereModel::KuwabaraKono, SphereModel::Rigorous] {
         for k in 0..=12 {
             let delta = 10f64.powf(-9.0 + k as f64);
-            let s = Instant::now();
             kelvin_voigt_sphere::solve(delta, model, 1e-8).unwrap();
-            worst.0 = worst.0.max(s.elapsed().as_secs_f64());
         }
         for &eps in &[4e-6, 1e-3, 0.2, 0.7, 0.99, 1.0 - 1e-10] {
-            let s = Instant::now();
-            kelvin_voigt_sphere::viscous_parameter_for_restitution(eps, model, 1e-8).unwrap();
-            worst.1 = worst.1.max(s.elapsed().as_secs_f64());
+            let delta =
+                kelvin_voigt_sphere::viscous_parameter_for_restitution(eps, model, 1e-8).unwrap();
+            let back = kelvin_voigt_sphere::solve(delta, model, 1e-12)
+                .unwrap()
+                .restitution;
+            assert!(
+                (back - eps).abs() <= 1e-6 * eps.min(1.0 - eps).max(1e-4),
+                "{model:?} ε {eps}: back {back}"
+            );
         }
     }
-    println!(
-        "slowest forward solution {:.3} ms, slowest inverse {:.3} ms",
-        worst.0 * 1e3,
-        worst.1 * 1e3
-    );
-    assert!(worst.0 < 5e-3 && worst.1 < 20e-3, "{worst:?}");
 }
 
 #[test]
