@@ -257,7 +257,7 @@ proptest! {
         };
         for l in [LAMBDA_1, LAMBDA_2] {
             if let Some(j) = jump(l, &eps_of_lambda) {
-                prop_assert!(j <= 1e-8, "jump {} at Lambda = {}", j, l);
+                prop_assert!(j <= 3.0 * spec.accuracy + 1e-8, "jump {} at Lambda = {}", j, l);
             }
         }
         // the JKR stand-in: where the adhesive model's name changes, in Λ
@@ -291,7 +291,7 @@ proptest! {
         factor in 1.01..3.0f64,
     ) {
         let Ok(scene) = spec.scene() else { return Ok(()) };
-        let Some(e0) = restitution(&scene, speed) else { return Ok(()) };
+        let Ok((e0, err0)) = scene.restitution_with_error(speed) else { return Ok(()) };
         // numerical models answer to the requested accuracy
         let slack = 10.0 * spec.accuracy + 1e-9;
         let mut grown = Vec::new();
@@ -299,8 +299,14 @@ proptest! {
             // at fixed range h: Λ and the loss grow with Δγ
             grown.push(("work of adhesion", Spec { work_of_adhesion: Some(w * factor), ..spec.clone() }));
         }
-        if let Some(h) = spec.range {
-            // σ0 = Δγ/h grows as h shrinks at fixed Δγ
+        // σ0 = Δγ/h grows as h shrinks at fixed Δγ. Not with the coupled
+        // viscous-adhesive model: there a longer range keeps the bodies in (tensile)
+        // contact longer while the viscous force dissipates, so a larger σ0 can
+        // raise ε (by about 7e-5 in ε, test in combinations.rs).
+        let coupled = spec.work_of_adhesion.is_some()
+            && spec.sphere_viscosity.is_some()
+            && spec.target_viscosity.is_some();
+        if let (Some(h), false) = (spec.range, coupled) {
             grown.push(("cohesive stress", Spec { range: Some(h / factor), ..spec.clone() }));
         }
         // Only a Kelvin-Voigt contact loses more with more viscosity: a viscous body on
@@ -315,8 +321,11 @@ proptest! {
         }
         for (what, s) in grown {
             let Ok(scene) = s.scene() else { continue };
-            if let Some(e1) = restitution(&scene, speed) {
-                prop_assert!(e1 <= e0 + slack, "{} x{}: {} -> {}\n{}", what, factor, e0, e1, s.toml());
+            if let Ok((e1, err1)) = scene.restitution_with_error(speed) {
+                // the accuracy bounds the loss, 1 − ε², not ε (near ε = 0 a loss
+                // error δ moves ε by √δ); the models' own error estimates add
+                let bound = slack + err0 + err1;
+                prop_assert!(1.0 - e1 * e1 >= 1.0 - e0 * e0 - bound, "{} x{} at {} m/s: {} -> {} (error estimates {:e}, {:e})\n{}", what, factor, speed, e0, e1, err0, err1, s.toml());
             }
         }
     }
