@@ -295,6 +295,23 @@ fn build_plastic(scene: &Scene) -> Result<Option<Plastic>, SceneError> {
 impl Models {
     /// Builds every model the scene's parameters call for.
     pub(crate) fn build(scene: &Scene) -> Result<Models, SceneError> {
+        // the elastic contact first: its errors (an overflowing force coefficient)
+        // concern the moduli or the gradation
+        let elastic = ElasticImpact::new(
+            match scene.target.gradation {
+                Some((k, c)) => ElasticContact::graded_sphere(c, k, scene.effective_radius)
+                    .map_err(|e| SceneError::field("target.gradation.modulus_factor", e.to_string()))?,
+                None => ElasticContact::hertz(scene.effective_modulus, scene.effective_radius)
+                    .map_err(|e| {
+                        SceneError::field(
+                            "sphere.youngs_modulus",
+                            format!("with the target's, E* = {:e} Pa and R = {:e} m: {e}", scene.effective_modulus, scene.effective_radius),
+                        )
+                    })?,
+            },
+            scene.effective_mass,
+        )
+        .map_err(err)?;
         let adhesive = build_adhesive(scene)?;
         let plastic = build_plastic(scene)?;
         let (visco, visco_kind) = match crate::visco_contact::build(scene)? {
@@ -368,17 +385,7 @@ impl Models {
             }
             _ => None,
         };
-        let elastic = ElasticImpact::new(
-            match scene.target.gradation {
-                Some((k, c)) => {
-                    ElasticContact::graded_sphere(c, k, scene.effective_radius).map_err(err)?
-                }
-                None => ElasticContact::hertz(scene.effective_modulus, scene.effective_radius)
-                    .map_err(err)?,
-            },
-            scene.effective_mass,
-        )
-        .map_err(err)?;
+
         Ok(Models {
             mass: scene.effective_mass,
             accuracy: scene.accuracy,

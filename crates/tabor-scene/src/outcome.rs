@@ -281,10 +281,21 @@ impl Prepared<'_> {
 
     /// The restitution at `speed`, without the outcome's reports.
     pub(crate) fn restitution(&self, speed: f64) -> Result<f64, SceneError> {
+        Ok(self.restitution_with_error(speed)?.0)
+    }
+
+    /// The restitution at `speed` and the estimated error of the loss as a
+    /// fraction of the kinetic energy (the error of 1 − ε²).
+    pub(crate) fn restitution_with_error(&self, speed: f64) -> Result<(f64, f64), SceneError> {
         let v = tabor_restitution::validate::positive("speed", speed)
             .map_err(|e| SceneError::field("impact.speed", e.to_string()))?;
         let selection = self.select(v)?;
-        restitution_from_loss(selection.evaluation.loss.joules, self.models.mass, v).map_err(err)
+        let loss = &selection.evaluation.loss;
+        let kinetic = 0.5 * self.models.mass * v * v;
+        Ok((
+            restitution_from_loss(loss.joules, self.models.mass, v).map_err(err)?,
+            loss.error_estimate / kinetic,
+        ))
     }
 }
 
@@ -301,6 +312,13 @@ impl Scene {
     /// The outcome at impact speed `speed` (m/s).
     pub fn outcome_at(&self, speed: f64) -> Result<Outcome, SceneError> {
         Prepared::new(self)?.outcome_at(speed)
+    }
+
+    /// The coefficient of restitution at `speed` (m/s) with the estimated error of
+    /// the loss as a fraction of the kinetic energy (the error of 1 − ε²), without
+    /// the outcome's sticking velocity and reports.
+    pub fn restitution_with_error(&self, speed: f64) -> Result<(f64, f64), SceneError> {
+        Prepared::new(self)?.restitution_with_error(speed)
     }
 
     /// The combination (rule and effects used) that answers at impact speed `speed`

@@ -257,29 +257,30 @@ proptest! {
         };
         for l in [LAMBDA_1, LAMBDA_2] {
             if let Some(j) = jump(l, &eps_of_lambda) {
-                prop_assert!(j <= 1e-8, "jump {} at Lambda = {}", j, l);
+                prop_assert!(j <= 3.0 * spec.accuracy + 1e-8, "jump {} at Lambda = {}", j, l);
             }
         }
-        // the JKR stand-in: where the adhesive model's name changes, in Λ
-        let model = |l: f64| {
-            scene
-                .with_parameter(SweepParameter::TaborParameter, l)
+        // the JKR stand-in: where the Maugis-Dugdale loss comes within the accuracy
+        // of the fixed-grip JKR loss, found here from tabor-maugis's normalized loss
+        let off = |l: f64| {
+            tabor_maugis::normalized_loss(l, spec.accuracy)
+                .map(|w| (1.0 - w.loss_over_jkr).abs() - spec.accuracy)
                 .ok()
-                .and_then(|s| s.outcome_at(speed).ok())
-                .map(|o| o.model.contains("Maugis"))
         };
-        let (mut lo, mut hi) = (10.0f64, 1e9f64);
-        if let (Some(true), Some(false)) = (model(lo), model(hi)) {
-            for _ in 0..40 {
-                let mid = (lo * hi).sqrt();
-                match model(mid) {
-                    Some(true) => lo = mid,
-                    Some(false) => hi = mid,
-                    None => return Ok(()),
+        let (mut lo, mut hi) = (2.0f64, 1e12f64);
+        if let (Some(a), Some(b)) = (off(lo), off(hi)) {
+            if a > 0.0 && b < 0.0 {
+                for _ in 0..50 {
+                    let mid = (lo * hi).sqrt();
+                    match off(mid) {
+                        Some(x) if x > 0.0 => lo = mid,
+                        Some(_) => hi = mid,
+                        None => return Ok(()),
+                    }
                 }
-            }
-            if let Some(j) = jump((lo * hi).sqrt(), &eps_of_lambda) {
-                prop_assert!(j <= 3.0 * spec.accuracy + 1e-8, "jump {} at the stand-in Lambda = {}", j, (lo * hi).sqrt());
+                if let Some(j) = jump((lo * hi).sqrt(), &eps_of_lambda) {
+                    prop_assert!(j <= 3.0 * spec.accuracy + 1e-8, "jump {} at the stand-in Lambda = {}", j, (lo * hi).sqrt());
+                }
             }
         }
     }
@@ -291,7 +292,7 @@ proptest! {
         factor in 1.01..3.0f64,
     ) {
         let Ok(scene) = spec.scene() else { return Ok(()) };
-        let Some(e0) = restitution(&scene, speed) else { return Ok(()) };
+        let Ok((e0, err0)) = scene.restitution_with_error(speed) else { return Ok(()) };
         // numerical models answer to the requested accuracy
         let slack = 10.0 * spec.accuracy + 1e-9;
         let mut grown = Vec::new();
@@ -299,8 +300,14 @@ proptest! {
             // at fixed range h: Λ and the loss grow with Δγ
             grown.push(("work of adhesion", Spec { work_of_adhesion: Some(w * factor), ..spec.clone() }));
         }
-        if let Some(h) = spec.range {
-            // σ0 = Δγ/h grows as h shrinks at fixed Δγ
+        // σ0 = Δγ/h grows as h shrinks at fixed Δγ. Not with the coupled
+        // viscous-adhesive model: there a longer range keeps the bodies in (tensile)
+        // contact longer while the viscous force dissipates, so a larger σ0 can
+        // raise ε (by about 7e-5 in ε, test in combinations.rs).
+        let coupled = spec.work_of_adhesion.is_some()
+            && spec.sphere_viscosity.is_some()
+            && spec.target_viscosity.is_some();
+        if let (Some(h), false) = (spec.range, coupled) {
             grown.push(("cohesive stress", Spec { range: Some(h / factor), ..spec.clone() }));
         }
         // Only a Kelvin-Voigt contact loses more with more viscosity: a viscous body on
@@ -315,8 +322,11 @@ proptest! {
         }
         for (what, s) in grown {
             let Ok(scene) = s.scene() else { continue };
-            if let Some(e1) = restitution(&scene, speed) {
-                prop_assert!(e1 <= e0 + slack, "{} x{}: {} -> {}\n{}", what, factor, e0, e1, s.toml());
+            if let Ok((e1, err1)) = scene.restitution_with_error(speed) {
+                // the accuracy bounds the loss, 1 − ε², not ε (near ε = 0 a loss
+                // error δ moves ε by √δ); the models' own error estimates add
+                let bound = slack + err0 + err1;
+                prop_assert!(1.0 - e1 * e1 >= 1.0 - e0 * e0 - bound, "{} x{} at {} m/s: {} -> {} (error estimates {:e}, {:e})\n{}", what, factor, speed, e0, e1, err0, err1, s.toml());
             }
         }
     }

@@ -772,3 +772,26 @@ fn viscous_adhesive_cell_tends_to_its_limits() {
         o.model
     );
 }
+
+#[test]
+fn coupled_viscous_adhesion_can_rebound_more_with_a_shorter_range() {
+    // With viscosity, a longer range of adhesion (smaller cohesive stress σ0 = Δγ/h)
+    // keeps the bodies in tensile contact longer while the viscous force dissipates:
+    // ε rises with σ0 although the elastic adhesive loss grows with it. Recorded here
+    // (found by the property tests); a property of the coupled model, far above its
+    // error estimates.
+    let text = |h: f64| {
+        format!(
+            "[sphere]\nradius = 1.9525951285642842e-4\ndensity = 900\nyoungs_modulus = 2.830985247694375e8\npoisson_ratio = 0\nviscosity = 1.1647446529530298e2\n\
+             [target]\nyoungs_modulus = 7.468628639035276e7\npoisson_ratio = 0\ndensity = 900\nviscosity = 3.0727978110422583e1\n\
+             [adhesion]\nwork_of_adhesion = 4.201807235807065e-3\nrange = {h:e}\n"
+        )
+    };
+    let v = 0.016;
+    let long = scene(&text(3e-10)).restitution_with_error(v).unwrap();
+    let short = scene(&text(1e-11)).restitution_with_error(v).unwrap();
+    assert_eq!(scene(&text(3e-10)).combination_at(v).unwrap().rule, Rule::ViscousAdhesive);
+    let rise = short.0 - long.0;
+    assert!(rise > 1e-5 && rise < 1e-3, "{rise}");
+    assert!(rise > 1e3 * (long.1 + short.1));
+}
