@@ -145,11 +145,86 @@ fn maxwell_branch_spheres_behave_as_the_seed_says() {
         k_big < k_mid && k_big < 0.05,
         "Kelvin-Maxwell: {k_mid} then {k_big}"
     );
-    // Sphere and flat punch differ only slightly (seed: the shape matters little):
-    // same β, δ of the sphere vs the flat punch within 0.1 at δ = 0.1.
-    let sph = standard_sphere::restitution(0.1, 0.1).unwrap();
-    let flat = standard_flat::restitution(0.1, 0.1).unwrap();
-    assert!((sph - flat).abs() < 0.15, "{sph} vs {flat}");
+}
+
+/// Γ(x) by the Lanczos approximation (g = 7, 9 terms; relative error below 1e-13
+/// for x > 0), written out here so that the first-order constants below do not
+/// come from the crate under test.
+fn gamma(x: f64) -> f64 {
+    const C: [f64; 9] = [
+        0.999_999_999_999_809_9,
+        676.520_368_121_885_1,
+        -1_259.139_216_722_402_8,
+        771.323_428_777_653_1,
+        -176.615_029_162_140_6,
+        12.507_343_278_686_905,
+        -0.138_571_095_265_720_12,
+        9.984_369_578_019_572e-6,
+        1.505_632_735_149_311_6e-7,
+    ];
+    if x < 0.5 {
+        return std::f64::consts::PI / ((std::f64::consts::PI * x).sin() * gamma(1.0 - x));
+    }
+    let x = x - 1.0;
+    let t = x + 7.5;
+    let sum = C[0]
+        + C[1..]
+            .iter()
+            .enumerate()
+            .map(|(i, c)| c / (x + i as f64 + 1.0))
+            .sum::<f64>();
+    (2.0 * std::f64::consts::PI).sqrt() * t.powf(x + 0.5) * (-t).exp() * sum
+}
+
+fn beta_fn(a: f64, b: f64) -> f64 {
+    gamma(a) * gamma(b) / gamma(a + b)
+}
+
+#[test]
+fn sphere_and_flat_punch_agree_at_one_definition_of_delta() {
+    // The two δ differ in definition: flat (5.79) δ_f = η √(8a/(m G∞)) = π τ_c/T_f,
+    // sphere (5.90) δ_s = η (R v0/(m² G∞³))^(1/5) = k τ_c/T_s, with τ_c = η/G∞ the
+    // creep time of the Kelvin-Voigt limit, T_f = π/ω0 (5.82) and T_s (5.12) the
+    // elastic contact times at G∞ (Ẽ = 4G∞), k = (4/5) B(2/5, 1/2) (15/64)^(2/5)
+    // = 1.647. The seed (after (5.90)): both "have the same meaning". Compared at
+    // one definition, the flat punch's δ = π τ_c/T: δ_s = δ k/π.
+    //
+    // Independent value of the difference: the first-order losses, (5.61) as D → 0
+    // (1 − ε_f ≈ π D = (π/2) δ) and (5.71) (1 − ε_s ≈ c δ_s, c = (32/5) B(3/5, 3/2)
+    // (15/64)^(3/5)) give ε_f − ε_s ≈ (c k/π − π/2) δ = 0.2015 δ: the sphere loses
+    // 12.8 % more. Asserted: (i) at δ = 1e-3 the gap is that first-order value to
+    // 1 % (the remainder is O(δ) relative: observed 0.4 %); (ii) the remainder is
+    // second order: it grows 8-12 times from δ = 1e-3 to 1e-2 (observed 10); (iii)
+    // at the seed's δ = 0.1 the shape still matters little: the sphere below the
+    // flat punch by less than the first-order gap 0.020 and by more than half of it
+    // (observed 0.013, for β = 0.1 and 1e-3 alike).
+    let pi = std::f64::consts::PI;
+    let k = 0.8 * beta_fn(0.4, 0.5) * (15.0_f64 / 64.0).powf(0.4);
+    let c = 6.4 * beta_fn(0.6, 1.5) * (15.0_f64 / 64.0).powf(0.6);
+    let slope = c * k / pi - pi / 2.0;
+    println!("k = {k:.6}, c = {c:.6}, first-order gap (ε_f − ε_s)/δ = {slope:.6}");
+    // The gap over its first-order value.
+    let ratio = |b: f64, d: f64| {
+        let flat = standard_flat::restitution(b, d).unwrap();
+        let sph = standard_sphere::restitution(b, d * k / pi).unwrap();
+        let r = (flat - sph) / (slope * d);
+        println!(
+            "β {b}, δ {d}: flat {flat:.9}, sphere (δ_s = {:.5}) {sph:.9}, gap {:.4e}, \
+             first order {:.4e}, ratio {r:.4}",
+            d * k / pi,
+            flat - sph,
+            slope * d
+        );
+        r
+    };
+    let (r3, r2) = (ratio(0.05, 1e-3), ratio(0.05, 1e-2));
+    assert!((r3 - 1.0).abs() < 0.01, "δ 1e-3: {r3}");
+    let growth = (r2 - 1.0) / (r3 - 1.0);
+    assert!((8.0..12.0).contains(&growth), "remainder growth {growth}");
+    for b in [0.1, 1e-3] {
+        let r1 = ratio(b, 0.1);
+        assert!(r1 > 0.5 && r1 < 1.0, "β {b}, δ 0.1: {r1}");
+    }
 }
 
 #[test]
