@@ -40,6 +40,8 @@ enum Command {
     Sticking(cmd::scene::StickingArgs),
     /// Simulate a scene's impact in the time domain.
     Trajectory(cmd::scene::TrajectoryArgs),
+    /// Export a scene to a DEM engine (LAMMPS): calibrated input, or --check a line.
+    Export(cmd::export::Args),
 }
 
 fn main() -> ExitCode {
@@ -55,6 +57,7 @@ fn main() -> ExitCode {
         Command::Sweep(args) => cmd::scene::sweep(&args),
         Command::Sticking(args) => cmd::scene::sticking(&args),
         Command::Trajectory(args) => cmd::scene::trajectory(&args),
+        Command::Export(args) => cmd::export::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

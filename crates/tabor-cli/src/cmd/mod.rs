@@ -1,6 +1,7 @@
 //! One module per subcommand.
 
 pub mod effective;
+pub mod export;
 pub mod jkr;
 pub mod maugis_loss;
 pub mod penalty;
