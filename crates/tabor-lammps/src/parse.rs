@@ -158,7 +158,11 @@ pub fn parse_line(line: &str) -> Result<ParsedLine, LineError> {
                     .get(i + 1)
                     .ok_or_else(|| LineError("damping needs a model name".into()))?;
                 damping = match d {
-                    "none" => DampingModel::None,
+                    "none" => {
+                        return Err(LineError(
+                            "damping none: LAMMPS 22 Jul 2025 refuses it (\"Must specify damping granular model\"); write damping viscoelastic with a damping coefficient of 0".into(),
+                        ))
+                    }
                     "velocity" => DampingModel::Velocity,
                     "mass_velocity" => DampingModel::MassVelocity,
                     "viscoelastic" => DampingModel::Viscoelastic,
