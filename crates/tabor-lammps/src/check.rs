@@ -53,11 +53,7 @@ pub struct Check {
     pub notes: Vec<String>,
 }
 
-fn point(
-    model: &GranularModel,
-    scene: &Scene,
-    v: f64,
-) -> Result<CheckPoint, ExportError> {
+fn point(model: &GranularModel, scene: &Scene, v: f64) -> Result<CheckPoint, ExportError> {
     let s = model
         .impact(scene.effective_radius, scene.effective_mass, v)
         .map_err(|e| ExportError::Model(e.to_string()))?;
@@ -91,7 +87,9 @@ pub fn check(scene: &Scene, line: &str, speed: Option<f64>) -> Result<Check, Exp
         _ => {}
     }
     for i in &parsed.ignored {
-        notes.push(format!("\"{i}\" has no effect on a frictionless central impact"));
+        notes.push(format!(
+            "\"{i}\" has no effect on a frictionless central impact"
+        ));
     }
     let v = speed.or(scene.speed).unwrap_or(1.0);
     let model = parsed.model;

@@ -209,7 +209,12 @@ pub struct Export {
 /// The load-controlled JKR loss (J) of LAMMPS's `jkr` with work of adhesion `w`:
 /// the integral of F dd from first touch to the load-controlled pull-off point
 /// (`tabor_jkr`, seed 000 (5.36) integrated to F' = 0), ∝ w^(5/3).
-pub fn load_controlled_loss(modulus: f64, radius: f64, mass: f64, w: f64) -> Result<f64, ExportError> {
+pub fn load_controlled_loss(
+    modulus: f64,
+    radius: f64,
+    mass: f64,
+    w: f64,
+) -> Result<f64, ExportError> {
     let s = JkrSphere::new(modulus, radius, w).map_err(model_err)?;
     let l = JkrImpact::new(s, mass)
         .map_err(model_err)?
@@ -305,13 +310,19 @@ pub fn model_keywords(m: &GranularModel) -> String {
     format!(
         "{normal} tangential linear_nohistory 0.0 0.0 damping {}{}",
         m.damping.keyword(),
-        if m.limit_damping { " limit_damping" } else { "" }
+        if m.limit_damping {
+            " limit_damping"
+        } else {
+            ""
+        }
     )
 }
 
 /// Speeds v_ref · 10^(k/8), k = −16 … 16 (two decades each side).
 fn grid(v_ref: f64) -> Vec<f64> {
-    (-16..=16).map(|k| v_ref * 10f64.powf(k as f64 / 8.0)).collect()
+    (-16..=16)
+        .map(|k| v_ref * 10f64.powf(k as f64 / 8.0))
+        .collect()
 }
 
 /// The contiguous range of grid speeds around index `mid` where `ok` holds.
@@ -539,7 +550,11 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
         }
         let target = o.restitution;
         let elastic = model.impact(r, m, v_ref).map_err(model_err)?;
-        let e0 = if elastic.sticks { 0.0 } else { elastic.restitution };
+        let e0 = if elastic.sticks {
+            0.0
+        } else {
+            elastic.restitution
+        };
         if e0 <= target {
             return Err(model_err(format!(
                 "the undamped LAMMPS model already rebounds with {e0:.6} <= tabor's {target:.6} at {v_ref:.4e} m/s: no damping to calibrate"
@@ -593,9 +608,7 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
         }
     }
     not_reproduced.push("tangential, rolling and twisting contact: the fragment is for frictionless central impact (tangential linear_nohistory 0 0); set your own".into());
-    if geometry == Geometry::Pair
-        && (scene.sphere.material != scene.target.material)
-    {
+    if geometry == Geometry::Pair && (scene.sphere.material != scene.target.material) {
         not_reproduced.push("the individual moduli of two different materials: one pair_coeff * * carries the equivalent modulus E = 2 E* (1 - nu^2)".into());
     }
     // --- comparison over speeds
@@ -625,13 +638,18 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
         .collect();
     let ok_percent: Vec<bool> = comparison
         .iter()
-        .map(|c| c.difference.abs() <= 0.01 * c.tabor.max(1e-300) || (c.tabor == 0.0 && c.lammps == 0.0))
+        .map(|c| {
+            c.difference.abs() <= 0.01 * c.tabor.max(1e-300) || (c.tabor == 0.0 && c.lammps == 0.0)
+        })
         .collect();
     let reproduced_range = contiguous(&speeds, &ok_exact, mid);
     let one_percent_range = contiguous(&speeds, &ok_percent, mid);
     let decade_error = comparison
         .iter()
-        .filter(|c| c.speed >= v_ref / 10f64.sqrt() * (1.0 - 1e-12) && c.speed <= v_ref * 10f64.sqrt() * (1.0 + 1e-12))
+        .filter(|c| {
+            c.speed >= v_ref / 10f64.sqrt() * (1.0 - 1e-12)
+                && c.speed <= v_ref * 10f64.sqrt() * (1.0 + 1e-12)
+        })
         .map(|c| c.difference.abs())
         .fold(0.0, f64::max);
     let scope = if lossy_effects.is_empty() && loss_speed_independent {
@@ -724,23 +742,34 @@ impl Export {
             s.push_str(t);
             s.push('\n');
         };
-        line(&format!("# tabor export lammps: scene \"{}\" ({})", self.scene, match self.geometry {
-            Geometry::Pair => "sphere-sphere: pair_style granular",
-            Geometry::Wall => "sphere on a flat wall: fix wall/gran granular",
-        }));
+        line(&format!(
+            "# tabor export lammps: scene \"{}\" ({})",
+            self.scene,
+            match self.geometry {
+                Geometry::Pair => "sphere-sphere: pair_style granular",
+                Geometry::Wall => "sphere on a flat wall: fix wall/gran granular",
+            }
+        ));
         line("# Include after atom_style sphere / create_box (units si). Frictionless central impact.");
         line(&format!(
             "# LAMMPS model: {} + damping {}{}",
             self.model.normal.keyword(),
             self.model.damping.keyword(),
-            if self.model.limit_damping { " + limit_damping" } else { "" }
+            if self.model.limit_damping {
+                " + limit_damping"
+            } else {
+                ""
+            }
         ));
         line(&format!(
             "# effective E* = {:.6e} Pa, R* = {:.6e} m, m* = {:.6e} kg",
             self.effective_modulus, self.effective_radius, self.effective_mass
         ));
         for p in &self.parameters {
-            line(&format!("# {} = {:.10e} {}: {}", p.name, p.value, p.unit, p.derivation));
+            line(&format!(
+                "# {} = {:.10e} {}: {}",
+                p.name, p.value, p.unit, p.derivation
+            ));
         }
         line(&format!("# REPRODUCES: {}", self.reproduces.statement));
         if let (Some(t), Some(l)) = (self.sticking_velocity, self.lammps_sticking_velocity) {
@@ -758,7 +787,11 @@ impl Export {
         line("# speed (m/s)   e_tabor        e_LAMMPS       difference");
         let lo = self.reproduces.speed / 10f64.sqrt() * (1.0 - 1e-12);
         let hi = self.reproduces.speed * 10f64.sqrt() * (1.0 + 1e-12);
-        for c in self.comparison.iter().filter(|c| c.speed >= lo && c.speed <= hi) {
+        for c in self
+            .comparison
+            .iter()
+            .filter(|c| c.speed >= lo && c.speed <= hi)
+        {
             line(&format!(
                 "#   {:.4e}   {:.10}   {:.10}   {:+.2e}",
                 c.speed, c.tabor, c.lammps, c.difference

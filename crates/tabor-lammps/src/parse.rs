@@ -86,8 +86,8 @@ pub fn parse_line(line: &str) -> Result<ParsedLine, LineError> {
         }
         Some(other) => {
             return Err(LineError(format!(
-                "expected a line starting with pair_coeff or fix (wall/gran granular), got \"{other}\""
-            )))
+            "expected a line starting with pair_coeff or fix (wall/gran granular), got \"{other}\""
+        )))
         }
         None => return Err(LineError("empty line".into())),
     };
@@ -220,8 +220,5 @@ pub fn parse_line(line: &str) -> Result<ParsedLine, LineError> {
 }
 
 fn is_wall_style(t: &str) -> bool {
-    matches!(
-        t,
-        "xplane" | "yplane" | "zplane" | "zcylinder" | "region"
-    )
+    matches!(t, "xplane" | "yplane" | "zplane" | "zcylinder" | "region")
 }

@@ -22,7 +22,9 @@ enum Target {
 
 /// Arguments of `tabor export lammps`.
 #[derive(clap::Args)]
-#[command(after_help = "Examples:\n  tabor export lammps examples/scenes/silica.toml --out silica.lmp\n  tabor export lammps examples/scenes/silica.toml --check 'pair_coeff * * hertz/material 54e9 0.5 0.17 damping tsuji' --speed 0.2")]
+#[command(
+    after_help = "Examples:\n  tabor export lammps examples/scenes/silica.toml --out silica.lmp\n  tabor export lammps examples/scenes/silica.toml --check 'pair_coeff * * hertz/material 54e9 0.5 0.17 damping tsuji' --speed 0.2"
+)]
 pub struct LammpsArgs {
     /// The scene file (.toml or .json)
     scene: PathBuf,
@@ -59,12 +61,19 @@ fn check_report(c: &Check) -> String {
         "model               {} + damping {}{}\n",
         m.normal.keyword(),
         m.damping.keyword(),
-        if m.limit_damping { " + limit_damping" } else { "" }
+        if m.limit_damping {
+            " + limit_damping"
+        } else {
+            ""
+        }
     ));
     if let Some(e) = c.nominal_restitution {
         s.push_str(&format!("nominal restitution {e}\n"));
     }
-    s.push_str(&format!("damping coefficient {:.6e}\n", c.damping_coefficient));
+    s.push_str(&format!(
+        "damping coefficient {:.6e}\n",
+        c.damping_coefficient
+    ));
     s.push_str(&format!(
         "bodies              R* = {:.6e} m, m* = {:.6e} kg\n",
         c.effective_radius, c.effective_mass
@@ -112,8 +121,9 @@ pub fn run(args: &Args) -> Result<(), String> {
         x.fragment()
     };
     match &a.out {
-        Some(path) => std::fs::write(path, text)
-            .map_err(|e| format!("cannot write {}: {e}", path.display())),
+        Some(path) => {
+            std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))
+        }
         None => emit(&text),
     }
 }
