@@ -643,7 +643,35 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
         })
         .collect();
     let reproduced_range = contiguous(&speeds, &ok_exact, mid);
-    let one_percent_range = contiguous(&speeds, &ok_percent, mid);
+    let coarse = contiguous(&speeds, &ok_percent, mid);
+    // refine the 1 % edges between grid points by bisection in log(speed)
+    let within = |v: f64| -> Result<bool, ExportError> {
+        let t = outcome(scene, v)?;
+        let te = if t.sticks { 0.0 } else { t.restitution };
+        let le = lammps_restitution(&model, r, m, v)?;
+        Ok((le - te).abs() <= 0.01 * te.max(1e-300) || (te == 0.0 && le == 0.0))
+    };
+    let step = 10f64.powf(1.0 / 8.0);
+    let mut one_percent_range = coarse;
+    if ok_percent[mid] {
+        for (edge, outward) in [(0usize, 1.0 / step), (1usize, step)] {
+            let (mut good, mut bad) = (coarse[edge], coarse[edge] * outward);
+            let inside_grid =
+                bad >= speeds[0] * (1.0 - 1e-12) && bad <= speeds[speeds.len() - 1] * (1.0 + 1e-12);
+            if !inside_grid {
+                continue;
+            }
+            for _ in 0..10 {
+                let trial = (good * bad).sqrt();
+                if within(trial)? {
+                    good = trial;
+                } else {
+                    bad = trial;
+                }
+            }
+            one_percent_range[edge] = good;
+        }
+    }
     let decade_error = comparison
         .iter()
         .filter(|c| {
