@@ -355,6 +355,17 @@ fn lammps_sticking_velocity(
     m: f64,
     guess: f64,
 ) -> Result<Option<f64>, ExportError> {
+    sticking_velocity_to(model, r, m, guess, 1e-10)
+}
+
+/// [`lammps_sticking_velocity`] to relative tolerance `tol`.
+fn sticking_velocity_to(
+    model: &GranularModel,
+    r: f64,
+    m: f64,
+    guess: f64,
+    tol: f64,
+) -> Result<Option<f64>, ExportError> {
     let mut lo = guess;
     let mut tries = 0;
     while lammps_restitution(model, r, m, lo)? > 0.0 {
@@ -380,11 +391,111 @@ fn lammps_sticking_velocity(
         } else {
             lo = mid;
         }
-        if hi - lo < 1e-10 * hi {
+        if hi - lo < tol * hi {
             break;
         }
     }
     Ok(Some(0.5 * (lo + hi)))
+}
+
+/// `model` with surface energy `gamma` (jkr) and damping coefficient `eta`.
+fn with_gamma_eta(model: &GranularModel, gamma: f64, eta: f64) -> GranularModel {
+    let mut m = *model;
+    if let NormalModel::Jkr {
+        youngs_modulus,
+        poisson_ratio,
+        ..
+    } = model.normal
+    {
+        m.normal = NormalModel::Jkr {
+            youngs_modulus,
+            poisson_ratio,
+            surface_energy: gamma,
+        };
+    }
+    m.damp = eta;
+    m
+}
+
+/// Brent's root of the restitution of `model(x)` at `v` minus `target` over
+/// x ∈ [0, hi·4^k], growing hi until the restitution falls below the target.
+fn fit_restitution(
+    make: impl Fn(f64) -> GranularModel,
+    r: f64,
+    m: f64,
+    v: f64,
+    target: f64,
+    hi: f64,
+) -> Option<f64> {
+    let f = |x: f64| match lammps_restitution(&make(x), r, m, v) {
+        Ok(e) => e - target,
+        Err(_) => f64::NAN,
+    };
+    if f(0.0).is_nan() || f(0.0) <= 0.0 {
+        return None;
+    }
+    let mut hi = hi;
+    let mut tries = 0;
+    while f(hi) > 0.0 {
+        hi *= 4.0;
+        tries += 1;
+        if tries > 40 {
+            return None;
+        }
+    }
+    brent(f, 0.0, hi, RootTolerance::relative(1e-12))
+        .ok()
+        .map(|root| root.value)
+}
+
+/// Adhesion with a speed-dependent loss: γ and η_n0 together, such that the LAMMPS
+/// model rebounds with tabor's `target` at `v` *and* sticks below tabor's sticking
+/// velocity `vc`. For each η, γ(η) matches the restitution; η is then the root of
+/// v_c,LAMMPS(γ(η), η) − v_c (η = 0: all loss adhesive, v_c too high; η at the
+/// purely viscous fit: γ = 0, v_c → 0). `None` when no bracket exists.
+fn fit_gamma_and_eta(
+    model: &GranularModel,
+    r: f64,
+    m: f64,
+    v: f64,
+    target: f64,
+    vc: f64,
+    (gamma_scale, eta_scale): (f64, f64),
+) -> Option<(f64, f64)> {
+    let eta_max = fit_restitution(
+        |eta| with_gamma_eta(model, 0.0, eta),
+        r,
+        m,
+        v,
+        target,
+        eta_scale,
+    )?;
+    let gamma_of = |eta: f64| {
+        fit_restitution(
+            |g| with_gamma_eta(model, g, eta),
+            r,
+            m,
+            v,
+            target,
+            gamma_scale,
+        )
+    };
+    let g = |eta: f64| -> f64 {
+        let Some(gamma) = gamma_of(eta) else {
+            return f64::NAN;
+        };
+        match sticking_velocity_to(&with_gamma_eta(model, gamma, eta), r, m, vc, 1e-9) {
+            Ok(Some(v_l)) => v_l / vc - 1.0,
+            Ok(None) => -1.0,
+            Err(_) => f64::NAN,
+        }
+    };
+    let hi = eta_max * (1.0 - 1e-6);
+    if !(g(0.0) > 0.0 && g(hi) < 0.0) {
+        return None;
+    }
+    let eta = brent(g, 0.0, hi, RootTolerance::relative(1e-8)).ok()?.value;
+    Some((gamma_of(eta)?, eta))
 }
 
 /// Exports `scene` to LAMMPS, calibrated at `speed` (m/s; default the scene's
@@ -585,18 +696,41 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
         }
         let root = brent(f, 0.0, hi, RootTolerance::relative(1e-12)).map_err(model_err)?;
         model.damp = root.value;
+        if adhesive {
+            if let Some(vc) = o.sticking_velocity {
+                if let Some((g2, eta2)) =
+                    fit_gamma_and_eta(&model, r, m, v_ref, target, vc, (gamma.max(1e-12), scale))
+                {
+                    let gamma_adhesive = gamma;
+                    model = with_gamma_eta(&model, g2, eta2);
+                    for p in parameters.iter_mut() {
+                        if p.name == "gamma" {
+                            p.value = g2;
+                            p.derivation = format!(
+                                "gamma and eta_n0 fitted together (Brent in gamma inside Brent in eta_n0, each step a time-domain run of the LAMMPS law) so that LAMMPS rebounds with tabor's {target:.10} at {v_ref:.4e} m/s and sticks below tabor's sticking velocity {vc:.6e} m/s (the adhesive loss alone would give gamma = {:.6e})",
+                                gamma_adhesive
+                            );
+                        }
+                        if p.name == "pulloff_distance" {
+                            p.value = jkr_pulloff_distance(g2, r, e_star);
+                        }
+                    }
+                }
+            }
+        }
         let kk = scene
             .viscosity()
             .map(|eta| format!("; the Kuwabara-Kono value for the Kelvin-Voigt viscosity eta = {eta} Pa s would be 8 eta/m* = {:.6e} (seed 000 (5.66))", 8.0 * eta / m))
             .unwrap_or_default();
         parameters.push(Parameter {
             name: "eta_n0".into(),
-            value: root.value,
+            value: model.damp,
             unit: "1/(m s)".into(),
             derivation: format!(
-                "damping viscoelastic F = eta_n0 m* a v_n: eta_n0 solves e_LAMMPS(eta_n0; {v_ref:.4e} m/s) = tabor's {target:.10} ({}) by Brent's method on the time-domain LAMMPS law{}{kk}",
+                "damping viscoelastic F = eta_n0 m* a v_n: eta_n0 solves e_LAMMPS(eta_n0; {v_ref:.4e} m/s) = tabor's {target:.10} ({}) by Brent's method on the time-domain LAMMPS law{}{}{kk}",
                 lossy_effects.join(" + "),
-                if model.limit_damping { " with limit_damping" } else { " (no limit_damping: it would remove jkr's attraction)" }
+                if model.limit_damping { " with limit_damping" } else { " (no limit_damping: LAMMPS refuses it with jkr)" },
+                if (model.damp / root.value - 1.0).abs() > 1e-9 { format!("; then refitted with gamma to match the sticking velocity too (eta_n0 = {:.6e} with the adhesive-loss gamma)", root.value) } else { String::new() },
             ),
         });
         not_reproduced.push(format!(
@@ -753,7 +887,10 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
         effective_modulus: e_star,
         effective_radius: r,
         effective_mass: m,
-        sticking_velocity: sticking_tabor.or(scene_outcome.and_then(|o| o.sticking_velocity)),
+        // the full scene's (all effects); the adhesive part's when no speed is given
+        sticking_velocity: scene_outcome
+            .and_then(|o| o.sticking_velocity)
+            .or(sticking_tabor),
         lammps_sticking_velocity: lammps_sticking,
         contact_time,
         time_step: contact_time * TIME_STEP_FRACTION,

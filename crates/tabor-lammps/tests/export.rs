@@ -94,6 +94,18 @@ fn damped_exports_hit_the_calibration_speed() {
             .iter()
             .any(|p| p.name == "eta_n0" && p.value > 0.0));
     }
+    // adhesion + viscosity: gamma and eta_n0 fitted together, so LAMMPS also sticks
+    // below tabor's sticking velocity
+    let a = export(
+        &scene("integrations/lammps/scenes/adhesive_viscoelastic.toml"),
+        None,
+    )
+    .expect("export");
+    let (vt, vl) = (
+        a.sticking_velocity.expect("sticks"),
+        a.lammps_sticking_velocity.expect("sticks"),
+    );
+    assert!((vl / vt - 1.0).abs() < 1e-6, "{vt} {vl}");
     let w = export(&scene("examples/scenes/rubber_viscoelastic.toml"), None).expect("wall");
     assert_eq!(w.geometry, Geometry::Wall);
     assert!(w.fragment().contains("wall/gran granular hertz/material"));
