@@ -80,7 +80,9 @@ pub fn finite_output(model: &'static str, quantity: &str, value: f64) -> Result<
     } else {
         Err(Error::Model {
             model,
-            message: format!("the {quantity} is not representable ({value:e}) for these parameters"),
+            message: format!(
+                "the {quantity} is not representable ({value:e}) for these parameters"
+            ),
         })
     }
 }
