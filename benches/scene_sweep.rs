@@ -29,7 +29,10 @@ fn scene_sweep(c: &mut Criterion) {
         .measurement_time(Duration::from_secs(20));
     for (label, file) in [
         ("jkr_silica_baseline", "silica.toml"),
-        ("adhesion_plus_viscosity", "polymer_grains_viscoadhesive.toml"),
+        (
+            "adhesion_plus_viscosity",
+            "polymer_grains_viscoadhesive.toml",
+        ),
     ] {
         let s = scene(file);
         g.bench_function(label, |b| {

@@ -27,6 +27,7 @@
 pub use tabor_dynamics as dynamics;
 pub use tabor_elastic as elastic;
 pub use tabor_jkr as jkr;
+pub use tabor_lammps as lammps;
 pub use tabor_maugis as maugis;
 pub use tabor_numerics as numerics;
 pub use tabor_penalty as penalty;

@@ -45,6 +45,8 @@ enum Command {
     Trajectory(cmd::scene::TrajectoryArgs),
     /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
     Completions(cmd::completions::Args),
+    /// Export a scene to a DEM engine (LAMMPS): calibrated input, or --check a line.
+    Export(cmd::export::Args),
 }
 
 fn main() -> ExitCode {
@@ -61,6 +63,7 @@ fn main() -> ExitCode {
         Command::Sticking(args) => cmd::scene::sticking(&args),
         Command::Trajectory(args) => cmd::scene::trajectory(&args),
         Command::Completions(args) => cmd::completions::run(&args, &mut Cli::command()),
+        Command::Export(args) => cmd::export::run(&args),
     };
     match result {
         Ok(()) | Err(Failure::ClosedPipe) => ExitCode::SUCCESS,

@@ -300,12 +300,17 @@ impl Models {
         let elastic = ElasticImpact::new(
             match scene.target.gradation {
                 Some((k, c)) => ElasticContact::graded_sphere(c, k, scene.effective_radius)
-                    .map_err(|e| SceneError::field("target.gradation.modulus_factor", e.to_string()))?,
+                    .map_err(|e| {
+                        SceneError::field("target.gradation.modulus_factor", e.to_string())
+                    })?,
                 None => ElasticContact::hertz(scene.effective_modulus, scene.effective_radius)
                     .map_err(|e| {
                         SceneError::field(
                             "sphere.youngs_modulus",
-                            format!("with the target's, E* = {:e} Pa and R = {:e} m: {e}", scene.effective_modulus, scene.effective_radius),
+                            format!(
+                                "with the target's, E* = {:e} Pa and R = {:e} m: {e}",
+                                scene.effective_modulus, scene.effective_radius
+                            ),
                         )
                     })?,
             },

@@ -159,27 +159,16 @@ fn spec() -> impl Strategy<Value = Spec> {
         )
 }
 
-/// ε at `v`, or `None` where the models refuse the parameters (a typed error with
-/// a field is fine: the property tests check the answers that are given).
-fn restitution(scene: &Scene, v: f64) -> Option<f64> {
-    match scene.restitutions(&[v]) {
-        Ok(e) => Some(e[0]),
-        Err((_, e)) => {
-            assert!(!e.message.is_empty() && !e.message.contains("NaN"), "{e}");
-            None
-        }
-    }
-}
-
 fn signature(c: &Combination) -> (tabor_scene::Rule, Vec<tabor_scene::EffectKind>) {
     (c.rule, c.effects.clone())
 }
 
-/// The jump of 1 − ε² (the loss over the kinetic energy) across x, by `eps_at`.
-fn jump(x: f64, eps_at: &dyn Fn(f64) -> Option<f64>) -> Option<f64> {
-    let lo = eps_at(x * (1.0 - 1e-9))?;
-    let hi = eps_at(x * (1.0 + 1e-9))?;
-    Some(((1.0 - lo * lo) - (1.0 - hi * hi)).abs())
+/// The jump of 1 − ε² (the loss over the kinetic energy) across x, by `eps_at`
+/// (ε and the error estimate of 1 − ε²), less the two error estimates.
+fn jump(x: f64, eps_at: &dyn Fn(f64) -> Option<(f64, f64)>) -> Option<f64> {
+    let (lo, e_lo) = eps_at(x * (1.0 - 1e-9))?;
+    let (hi, e_hi) = eps_at(x * (1.0 + 1e-9))?;
+    Some(((1.0 - lo * lo) - (1.0 - hi * hi)).abs() - e_lo - e_hi)
 }
 
 /// A change of the model that answers, bisected between speeds a < b whose
@@ -231,7 +220,7 @@ proptest! {
     #[test]
     fn continuous_where_the_model_changes(spec in spec(), speed in log_uniform(1e-3, 30.0)) {
         let Ok(scene) = spec.scene() else { return Ok(()) };
-        let eps = |v: f64| restitution(&scene, v);
+        let eps = |v: f64| scene.restitution_with_error(v).ok();
         let (a, b) = (speed, speed * 3.0);
         let (Ok(ca), Ok(cb)) = (scene.combination_at(a), scene.combination_at(b)) else { return Ok(()) };
         if signature(&ca) != signature(&cb) {
@@ -253,7 +242,7 @@ proptest! {
             scene
                 .with_parameter(SweepParameter::TaborParameter, l)
                 .ok()
-                .and_then(|s| restitution(&s, speed))
+                .and_then(|s| s.restitution_with_error(speed).ok())
         };
         for l in [LAMBDA_1, LAMBDA_2] {
             if let Some(j) = jump(l, &eps_of_lambda) {

@@ -790,7 +790,10 @@ fn coupled_viscous_adhesion_can_rebound_more_with_a_shorter_range() {
     let v = 0.016;
     let long = scene(&text(3e-10)).restitution_with_error(v).unwrap();
     let short = scene(&text(1e-11)).restitution_with_error(v).unwrap();
-    assert_eq!(scene(&text(3e-10)).combination_at(v).unwrap().rule, Rule::ViscousAdhesive);
+    assert_eq!(
+        scene(&text(3e-10)).combination_at(v).unwrap().rule,
+        Rule::ViscousAdhesive
+    );
     let rise = short.0 - long.0;
     assert!(rise > 1e-5 && rise < 1e-3, "{rise}");
     assert!(rise > 1e3 * (long.1 + short.1));

@@ -2,6 +2,7 @@
 
 pub mod completions;
 pub mod effective;
+pub mod export;
 pub mod jkr;
 pub mod maugis_loss;
 pub mod penalty;

@@ -1,0 +1,129 @@
+//! `tabor export lammps`: a scene as a calibrated LAMMPS input fragment, or
+//! (`--check`) the restitution a user's LAMMPS granular line really produces.
+//! Derivations: `crates/tabor-lammps/README.md`.
+
+use crate::output::{print_json, stdout, Outcome};
+use std::io::Write;
+use std::path::PathBuf;
+use tabor::lammps::{check, export, Check};
+use tabor::scene::Scene;
+
+/// Arguments of `tabor export`.
+#[derive(clap::Args)]
+pub struct Args {
+    #[command(subcommand)]
+    target: Target,
+}
+
+#[derive(clap::Subcommand)]
+enum Target {
+    /// LAMMPS (pair_style granular / fix wall/gran): calibrated fragment, or --check a line
+    Lammps(LammpsArgs),
+}
+
+/// Arguments of `tabor export lammps`.
+#[derive(clap::Args)]
+#[command(
+    after_help = "Examples:\n  tabor export lammps examples/scenes/silica.toml --out silica.lmp\n  tabor export lammps examples/scenes/silica.toml --check 'pair_coeff * * hertz/material 54e9 0.5 0.17 damping tsuji' --speed 0.2"
+)]
+pub struct LammpsArgs {
+    /// The scene file (.toml or .json)
+    scene: PathBuf,
+    /// Calibration speed (m/s); overrides [impact] speed
+    #[arg(long)]
+    speed: Option<f64>,
+    /// Write the fragment to this file instead of standard output
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Print the export (or the check) as one JSON object
+    #[arg(long)]
+    json: bool,
+    /// Predict the restitution LAMMPS produces for this pair_coeff or
+    /// "fix ... wall/gran granular ..." line, with the scene's bodies
+    #[arg(long, value_name = "LINE")]
+    check: Option<String>,
+}
+
+/// Writes `text` to stdout; a closed pipe ends the output quietly.
+fn emit(text: &str) -> Outcome {
+    let mut out = stdout();
+    out.write_all(text.as_bytes())?;
+    out.finish()
+}
+
+fn check_report(c: &Check) -> String {
+    let mut s = String::new();
+    s.push_str(&format!("line                {}\n", c.line));
+    let m = &c.parsed.model;
+    s.push_str(&format!(
+        "model               {} + damping {}{}\n",
+        m.normal.keyword(),
+        m.damping.keyword(),
+        if m.limit_damping {
+            " + limit_damping"
+        } else {
+            ""
+        }
+    ));
+    if let Some(e) = c.nominal_restitution {
+        s.push_str(&format!("nominal restitution {e}\n"));
+    }
+    s.push_str(&format!(
+        "damping coefficient {:.6e}\n",
+        c.damping_coefficient
+    ));
+    s.push_str(&format!(
+        "bodies              R* = {:.6e} m, m* = {:.6e} kg\n",
+        c.effective_radius, c.effective_mass
+    ));
+    let p = &c.at_speed;
+    s.push_str(&format!(
+        "achieved            {:.6} at {:.4e} m/s{} (LAMMPS at timestep <= contact time/5000: +- {:.0e})\n",
+        p.lammps,
+        p.speed,
+        if p.sticks { " (sticks)" } else { "" },
+        c.time_step_error
+    ));
+    s.push_str("speed (m/s)   LAMMPS     tabor\n");
+    for p in &c.decade {
+        s.push_str(&format!(
+            "{:.4e}    {:.6}   {}\n",
+            p.speed,
+            p.lammps,
+            p.tabor.map_or("-".into(), |t| format!("{t:.6}"))
+        ));
+    }
+    for n in &c.notes {
+        s.push_str(&format!("note: {n}\n"));
+    }
+    s
+}
+
+/// Runs `tabor export`.
+pub fn run(args: &Args) -> Outcome {
+    let Target::Lammps(a) = &args.target;
+    let scene = Scene::from_path(&a.scene).map_err(|e| format!("{}: {e}", a.scene.display()))?;
+    if let Some(line) = &a.check {
+        let c = check(&scene, line, a.speed).map_err(|e| format!("{}: {e}", a.scene.display()))?;
+        if a.json {
+            return print_json(&c);
+        }
+        return emit(&check_report(&c));
+    }
+    let x = export(&scene, a.speed).map_err(|e| format!("{}: {e}", a.scene.display()))?;
+    match (&a.out, a.json) {
+        (None, true) => print_json(&x),
+        (Some(path), true) => {
+            let text = serde_json::to_string_pretty(&serde_json::json!({
+                "tabor_version": tabor::VERSION,
+                "export": &x,
+            }))
+            .map_err(|e| e.to_string())?;
+            std::fs::write(path, text + "\n")
+                .map_err(|e| format!("cannot write {}: {e}", path.display()).into())
+        }
+        (Some(path), false) => std::fs::write(path, x.fragment())
+            .map_err(|e| format!("cannot write {}: {e}", path.display()).into()),
+        (None, false) => emit(&x.fragment()),
+    }
+}

@@ -1,0 +1,107 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+//! `tabor export lammps`: the fragment, --json, --out, --check, exit code 2 for
+//! what LAMMPS cannot represent, and a closed stdout pipe.
+
+use std::io::Read;
+use std::path::PathBuf;
+use std::process::{Command, Output, Stdio};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn tabor(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_tabor"))
+        .args(args)
+        .current_dir(root())
+        .output()
+        .expect("runs")
+}
+
+#[test]
+fn fragment_json_and_out_agree() {
+    let text = tabor(&["export", "lammps", "examples/scenes/silica.toml"]);
+    assert!(text.status.success());
+    let frag = String::from_utf8(text.stdout).unwrap();
+    let last = frag.lines().last().unwrap();
+    assert!(last.starts_with("pair_coeff * * jkr "), "{last}");
+    let json = tabor(&["export", "lammps", "examples/scenes/silica.toml", "--json"]);
+    let v: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    assert_eq!(
+        last,
+        format!("pair_coeff * * {}", v["model_keywords"].as_str().unwrap())
+    );
+    let out = std::env::temp_dir().join(format!("tabor-export-{}.lmp", std::process::id()));
+    let o = tabor(&[
+        "export",
+        "lammps",
+        "examples/scenes/silica.toml",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success() && o.stdout.is_empty());
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), frag);
+    std::fs::remove_file(out).ok();
+}
+
+#[test]
+fn unrepresentable_scene_exits_2_with_one_line() {
+    let o = tabor(&["export", "lammps", "examples/scenes/graded_adhesive.toml"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("graded medium") && err.contains("k = 0.5"),
+        "{err}"
+    );
+    let bad = tabor(&[
+        "export",
+        "lammps",
+        "examples/scenes/silica.toml",
+        "--check",
+        "pair_coeff * * jkr 54e9 0.5 0.17 0.025 damping tsuji",
+    ]);
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8(bad.stderr).unwrap().contains("tsuji"));
+}
+
+#[test]
+fn check_reports_nominal_and_achieved() {
+    let o = tabor(&[
+        "export",
+        "lammps",
+        "examples/scenes/silica.toml",
+        "--check",
+        "pair_coeff * * hertz/material 54e9 0.5 0.17 damping tsuji",
+        "--speed",
+        "0.2",
+        "--json",
+    ]);
+    assert!(o.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["nominal_restitution"].as_f64(), Some(0.5));
+    let achieved = v["at_speed"]["lammps"].as_f64().unwrap();
+    assert!((achieved - 0.616).abs() < 1e-3, "{achieved}");
+}
+
+#[test]
+fn closed_stdout_is_not_an_error() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_tabor"))
+        .args(["export", "lammps", "examples/scenes/silica.toml"])
+        .current_dir(root())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("spawns");
+    drop(child.stdout.take()); // the reader goes away before tabor writes
+    let status = child.wait().expect("waits");
+    let mut err = String::new();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut err)
+        .unwrap();
+    assert!(status.success(), "{status:?}: {err}");
+    assert!(!err.contains("panicked"), "{err}");
+}
