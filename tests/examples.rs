@@ -1,4 +1,5 @@
-//! The example programs run and their output matches the library point by point.
+//! The example programs run and their output matches the library point by point
+//! (the loss figure: independent values, closed forms and the mpmath reference).
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use std::path::PathBuf;
@@ -24,7 +25,7 @@ fn temp_dir(name: &str) -> PathBuf {
 }
 
 #[test]
-fn loss_vs_lambda_matches_the_direct_evaluation() {
+fn loss_vs_lambda_matches_independent_values() {
     let dir = temp_dir("loss_vs_lambda");
     let out = Command::new(example("loss_vs_lambda"))
         .arg("--out")
@@ -51,25 +52,64 @@ fn loss_vs_lambda_matches_the_direct_evaluation() {
         col("loss_over_jkr"),
         col("loss_over_jkr_fast"),
     );
+    // Independent values of W/W_JKR, none of them the call the example makes:
+    // - case 1 (Λ ≤ Λ1 = (3π³/1024)^(1/3)), the closed form (5.44)
+    //   W = 17·2¹⁹ Λ⁵/(3⁴ π⁸) over W_JKR = (1 + 864^(1/3))/10 / (3·3^(1/3)/8) (5.36),
+    //   1e-13;
+    // - the mpmath reference of crates/tabor-maugis/tests (tests/reference/
+    //   md_reference.py, 30-40 digits) at the Λ of the grid it covers, 1e-12;
+    // - Λ ≥ 10, the JKR limit 1 − c∞/Λ, c∞ = 0.456795226 (Richardson limit of the
+    //   reference), within 0.1/Λ² (the O(Λ⁻²) term: 0.067/Λ² at Λ = 10 and 100 in
+    //   the reference).
+    // The fast tier against the same values, to its stated relative error.
+    const REFERENCE: [(f64, f64); 4] = [
+        (0.01, 5.959_487_568_159_266e-10),
+        (1.0, 0.583_728_265_550_754_2),
+        (10.0, 0.954_987_251_621_391_9),
+        (100.0, 0.995_438_807_056_853_7),
+    ];
+    let pi = std::f64::consts::PI;
+    let lambda_1 = (3.0 * pi.powi(3) / 1024.0).cbrt();
+    let w_jkr = 0.1 * (1.0 + 864f64.cbrt()) / (3.0 * 3f64.cbrt() / 8.0);
     let mut lambdas = Vec::new();
+    let (mut case_1, mut reference, mut jkr) = (0, 0, 0);
     for line in lines {
         let fields: Vec<&str> = line.split(',').collect();
         let lambda: f64 = fields[lambda_col].parse().unwrap();
         let ratio: f64 = fields[ratio_col].parse().unwrap();
         let fast: f64 = fields[fast_col].parse().unwrap();
-        let direct = tabor::maugis::normalized_loss(lambda, 1e-12)
-            .unwrap()
-            .loss_over_jkr;
-        assert!(
-            (ratio / direct - 1.0).abs() <= 1e-14,
-            "Λ={lambda}: {ratio} vs {direct}"
-        );
-        assert!(
-            (fast / direct - 1.0).abs() <= tabor::maugis::FAST_TIER_RELATIVE_ERROR,
-            "Λ={lambda}: fast {fast} vs {direct}"
-        );
+        let check = |expected: f64, tol: f64, what: &str| {
+            assert!(
+                (ratio / expected - 1.0).abs() <= tol,
+                "Λ={lambda}: {ratio} vs {what} {expected}"
+            );
+            assert!(
+                (fast / expected - 1.0).abs() <= tabor::maugis::FAST_TIER_RELATIVE_ERROR + tol,
+                "Λ={lambda}: fast {fast} vs {what} {expected}"
+            );
+        };
+        if lambda <= lambda_1 {
+            let w = 17.0 * 2f64.powi(19) * lambda.powi(5) / (3f64.powi(4) * pi.powi(8));
+            check(w / w_jkr, 1e-13, "case 1 closed form");
+            case_1 += 1;
+        }
+        if let Some(&(_, r)) = REFERENCE
+            .iter()
+            .find(|(l, _)| (lambda / l - 1.0).abs() < 1e-14)
+        {
+            check(r, 1e-12, "mpmath");
+            reference += 1;
+        }
+        if lambda >= 10.0 {
+            let limit = 1.0 - 0.456_795_226 / lambda;
+            check(limit, 0.1 / (lambda * lambda), "JKR limit");
+            jkr += 1;
+        }
         lambdas.push(lambda);
     }
+    println!("checked: case 1 {case_1}, reference {reference}, JKR limit {jkr}");
+    assert_eq!(reference, REFERENCE.len());
+    assert!(case_1 >= 90 && jkr >= 60, "{case_1}, {jkr}");
     // ≥ 200 increasing points from 0.01 to 100, both ends included
     assert!(lambdas.len() >= 200);
     assert!(lambdas.windows(2).all(|w| w[0] < w[1]));
