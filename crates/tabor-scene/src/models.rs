@@ -339,7 +339,7 @@ impl Models {
         let homogeneous_adhesion = adhesive
             .as_ref()
             .filter(|a| a.kind != AdhesionKind::GradedJkr)
-            .and_then(|_| scene.adhesion.as_ref());
+            .and(scene.adhesion.as_ref());
         let (adhesive_interpolation, jkr_fixed_grip) = match (
             homogeneous_adhesion,
             scene.yield_stress(),

@@ -33,7 +33,7 @@ fn scene(text: &str) -> Scene {
     Scene::from_str(text, Format::Toml).unwrap_or_else(|e| panic!("{e}\n{text}"))
 }
 
-fn effect<'a>(o: &'a Outcome, kind: EffectKind) -> &'a tabor_scene::Effect {
+fn effect(o: &Outcome, kind: EffectKind) -> &tabor_scene::Effect {
     o.effects.iter().find(|e| e.name == kind).unwrap()
 }
 
