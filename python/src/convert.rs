@@ -126,14 +126,23 @@ where
         out.par_chunks_mut(CHUNK)
             .enumerate()
             .filter_map(|(c, chunk)| {
-                for (j, slot) in chunk.iter_mut().enumerate() {
-                    let i = c * CHUNK + j;
-                    match guarded(|| f(i)) {
-                        Ok(v) => *slot = v,
-                        Err(e) => return Some((i, e)),
+                // one unwind guard per chunk (not per element: it would cost in
+                // the fast tier); `current` tells which element panicked
+                let mut current = c * CHUNK;
+                let run = catch_unwind(AssertUnwindSafe(|| {
+                    for (j, slot) in chunk.iter_mut().enumerate() {
+                        current = c * CHUNK + j;
+                        match f(current) {
+                            Ok(v) => *slot = v,
+                            Err(m) => return Some((current, Failure::Value(m))),
+                        }
                     }
+                    None
+                }));
+                match run {
+                    Ok(failure) => failure,
+                    Err(p) => Some((current, Failure::Panic(panic_text(p)))),
                 }
-                None
             })
             .min_by_key(|(i, _)| *i)
     });

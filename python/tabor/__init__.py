@@ -78,8 +78,10 @@ def _float_array(name: str, value: Any) -> np.ndarray:
 class _Batch:
     """Broadcasts named arguments; hands flat columns to the native core."""
 
-    def __init__(self, **arguments: Any) -> None:
-        arrays = {k: _float_array(k, v) for k, v in arguments.items() if v is not None}
+    def __init__(self, optional: Tuple[str, ...] = (), **arguments: Any) -> None:
+        arrays = {
+            k: _float_array(k, v) for k, v in arguments.items() if not (v is None and k in optional)
+        }
         try:
             self.shape: Tuple[int, ...] = np.broadcast_shapes(*(a.shape for a in arrays.values()))
         except ValueError:
@@ -391,6 +393,7 @@ def effective(
     shape.
     """
     b = _Batch(
+        optional=("density", "mass", "target_youngs_modulus", "target_poisson_ratio", "target_radius", "target_density", "target_mass"),
         youngs_modulus=youngs_modulus,
         poisson_ratio=poisson_ratio,
         radius=radius,
@@ -455,6 +458,7 @@ def jkr(
     ``max_contact_radius`` (m), ``restitution``, ``sticks``.
     """
     b = _Batch(
+        optional=("speed",),
         modulus=modulus,
         radius=radius,
         work_of_adhesion=work_of_adhesion,
@@ -520,6 +524,7 @@ def plastic(
     ``adhesion_parameter``, ``clamping``.
     """
     b = _Batch(
+        optional=("poisson_ratio", "density", "work_of_adhesion", "adhesion_parameter"),
         modulus=modulus,
         radius=radius,
         mass=mass,
@@ -595,6 +600,7 @@ def visco(
     ``equivalent_kelvin_voigt_restitution``.
     """
     b = _Batch(
+        optional=("damping_ratio", "viscous_parameter", "modulus_ratio", "damping", "damping_exponent", "alpha", "poisson_ratio", "bulk_damping_ratio"),
         damping_ratio=damping_ratio,
         viscous_parameter=viscous_parameter,
         modulus_ratio=modulus_ratio,
@@ -658,6 +664,7 @@ def penalty(
     ``rounding``.
     """
     b = _Batch(
+        optional=("exponent",),
         restitution=restitution,
         stiffness=stiffness,
         exponent=exponent,
