@@ -88,9 +88,9 @@ pub fn exception(i: usize, shape: &[usize], failure: Failure) -> PyErr {
     };
     match failure {
         Failure::Value(m) => PyValueError::new_err(at(m)),
-        Failure::Panic(m) => PyRuntimeError::new_err(at(format!(
-            "internal error in tabor (please report): {m}"
-        ))),
+        Failure::Panic(m) => {
+            PyRuntimeError::new_err(at(format!("internal error in tabor (please report): {m}")))
+        }
     }
 }
 
@@ -213,7 +213,10 @@ pub fn records_to_columns<'py>(py: Python<'py>, records: &[Value]) -> PyResult<B
                 .collect();
             dict.set_item(&k, PyArray1::from_vec(py, col))?;
         } else if boolean {
-            let col: Vec<bool> = values.iter().map(|v| v.as_bool().unwrap_or(false)).collect();
+            let col: Vec<bool> = values
+                .iter()
+                .map(|v| v.as_bool().unwrap_or(false))
+                .collect();
             dict.set_item(&k, PyArray1::from_vec(py, col))?;
         } else {
             let list = PyList::empty(py);

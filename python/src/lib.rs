@@ -31,8 +31,17 @@ fn _tabor(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(models::visco, m)?)?;
     m.add_function(wrap_pyfunction!(models::penalty, m)?)?;
     m.add_class::<scene::Scene>()?;
-    m.add("LAMBDA_PER_MAUGIS_PARAMETER", tabor::maugis::units::LAMBDA_PER_MAUGIS_PARAMETER)?;
-    m.add("MAUGIS_PER_TABOR_MU", tabor::maugis::units::MAUGIS_PER_TABOR_MU)?;
-    m.add("FAST_TIER_RELATIVE_ERROR", tabor::maugis::FAST_TIER_RELATIVE_ERROR)?;
+    m.add(
+        "LAMBDA_PER_MAUGIS_PARAMETER",
+        tabor::maugis::units::LAMBDA_PER_MAUGIS_PARAMETER,
+    )?;
+    m.add(
+        "MAUGIS_PER_TABOR_MU",
+        tabor::maugis::units::MAUGIS_PER_TABOR_MU,
+    )?;
+    m.add(
+        "FAST_TIER_RELATIVE_ERROR",
+        tabor::maugis::FAST_TIER_RELATIVE_ERROR,
+    )?;
     Ok(())
 }

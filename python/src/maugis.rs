@@ -23,7 +23,10 @@ pub fn maugis_dugdale_loss<'py>(
     fast: bool,
     shape: Vec<usize>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    let args = [("tabor_parameter", &tabor_parameter), ("tolerance", &tolerance)];
+    let args = [
+        ("tabor_parameter", &tabor_parameter),
+        ("tolerance", &tolerance),
+    ];
     let (c, n) = columns(&args)?;
     let (lambda, tol) = (c[0], c[1]);
     let w_jkr = tabor::maugis::jkr_normalized_loss();

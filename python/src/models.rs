@@ -407,8 +407,8 @@ fn non_adhesive(a: &PlasticArgs, which: PlasticModel) -> Result<NonAdhesive, Str
         }
         PlasticModel::DimensionlessFit => {
             let rho = required(a.density, "density", "dimensionless-fit")?;
-            let m = DimensionlessFit::new(a.modulus, a.yield_stress, rho, a.mass)
-                .map_err(message)?;
+            let m =
+                DimensionlessFit::new(a.modulus, a.yield_stress, rho, a.mass).map_err(message)?;
             let clamping = m.restitution(a.speed).map_err(message)?.clamping;
             NonAdhesive {
                 yield_velocity: m.yield_velocity(),
@@ -418,8 +418,8 @@ fn non_adhesive(a: &PlasticArgs, which: PlasticModel) -> Result<NonAdhesive, Str
         }
         // interpolation (also the default under superposition)
         _ => {
-            let m = PlasticImpact::new(contact, Interpolation::default(), a.mass)
-                .map_err(message)?;
+            let m =
+                PlasticImpact::new(contact, Interpolation::default(), a.mass).map_err(message)?;
             NonAdhesive {
                 yield_velocity: m.yield_velocity(),
                 model: Box::new(m),

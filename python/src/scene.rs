@@ -21,10 +21,7 @@ fn value_error(e: impl std::fmt::Display) -> PyErr {
 }
 
 /// Runs `f` with the GIL released and a panic turned into an exception.
-fn detached<T: Send>(
-    py: Python<'_>,
-    f: impl FnOnce() -> Result<T, String> + Send,
-) -> PyResult<T> {
+fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, String> + Send) -> PyResult<T> {
     py.detach(|| guarded(f)).map_err(|e| exception(0, &[], e))
 }
 
@@ -161,7 +158,8 @@ impl Scene {
             PyValueError::new_err("give speed, or [impact] speed in the scene (m/s)")
         })?;
         let (sim, outcome) = detached(py, || {
-            let settings = SimulationSettings::with_tolerance(tolerance).map_err(|e| e.to_string())?;
+            let settings =
+                SimulationSettings::with_tolerance(tolerance).map_err(|e| e.to_string())?;
             self.inner
                 .simulate(speed, &settings)
                 .map_err(|e| e.to_string())

@@ -245,11 +245,9 @@ fn python_tests(ctx: &Context) -> Result<(), String> {
             .args(["build", "--quiet", "--package", "tabor-cli"])
             .current_dir(&ctx.root),
     )?;
-    let cli = target.join("debug").join(if cfg!(windows) {
-        "tabor.exe"
-    } else {
-        "tabor"
-    });
+    let cli = target
+        .join("debug")
+        .join(if cfg!(windows) { "tabor.exe" } else { "tabor" });
     let code = status(
         Command::new(&venv_python)
             .args(["-m", "pytest", "-p", "no:cacheprovider"])
