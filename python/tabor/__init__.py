@@ -153,7 +153,7 @@ def maugis_dugdale_loss(
         1e-12). Not used with ``fast=True``.
     fast : bool, optional
         Use the precomputed Chebyshev tier (relative error below
-        ``FAST_TIER_RELATIVE_ERROR`` = 1e-10, about 30 ns per point) instead of
+        ``FAST_TIER_RELATIVE_ERROR`` = 1e-10; see the README for timings) instead of
         the direct quadrature.
 
     Returns

@@ -164,7 +164,7 @@ def test_model_errors():
 
 
 def test_batch_releases_the_gil():
-    lam = np.geomspace(0.7, 50, 4000)
+    lam = np.geomspace(0.7, 50, 40000)
     done = threading.Event()
 
     def work():
@@ -181,7 +181,7 @@ def test_batch_releases_the_gil():
     t.join()
     elapsed = time.perf_counter() - start
     # with the GIL held by the batch this thread could not run at all while it works
-    assert elapsed > 0.02, "the batch was too quick to tell"
+    assert elapsed > 0.05, "the batch was too quick to tell"
     assert ticks > 100
 
 

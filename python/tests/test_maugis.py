@@ -80,7 +80,8 @@ def test_against_scipy_rederivation(lam):
 def test_jkr_limit_and_monotone():
     lam = np.geomspace(0.01, 1e8, 400)
     w = tabor.maugis_dugdale_loss(lam, fast=True)
-    assert np.all(np.diff(w) > 0)
+    # increasing (where the steps are far above the tier's 1e-10 error) and below JKR
+    assert np.all(np.diff(w[lam < 1e5]) > 0)
     assert np.all(w < W_JKR)
     # 1 − W/W_JKR ≈ 0.4568/Λ (the asymptote of the Rust tests), within 1 %
     big = lam > 1e4
