@@ -20,10 +20,11 @@ from pathlib import Path
 
 import numpy as np
 
-import tabor
-
 HERE = Path(__file__).resolve().parent
+# the installed package, not the source folder python/tabor next to this script
+sys.path = [p for p in sys.path if Path(p or ".").resolve() != HERE]
 sys.path.insert(0, str(HERE / "tests"))
+import tabor  # noqa: E402
 from md_scipy import loss as scipy_loss  # noqa: E402
 
 SCENE = HERE.parent / "examples" / "scenes" / "silica.toml"
