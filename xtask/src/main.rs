@@ -228,6 +228,9 @@ fn python_tests(ctx: &Context) -> Result<(), String> {
         )
     };
     let tests = ctx.root.join("python").join("tests");
+    // in-tree builds (pip >= 21.3): the package's Cargo.toml reaches the workspace
+    // through `..`, which an older pip's copy to a temporary directory would cut off
+    pip(&["install", "--quiet", "pip>=21.3"])?;
     pip(&["install", "--quiet", "-r", "python/tests/requirements.txt"])?;
     // packages whose own dependency tree the tests do not need (see the file)
     pip(&[
