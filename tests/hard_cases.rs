@@ -601,7 +601,10 @@ fn regression_simulation_scene_and_characteristic_extremes() {
     let text = include_str!("../examples/scenes/silica.toml")
         .replace("youngs_modulus = 54e9", "youngs_modulus = 1.7e308");
     let refused = tabor::scene::Scene::from_str(&text, tabor::scene::Format::Toml)
-        .map_err(|e| e.to_string())
-        .and_then(|s| s.outcome().map(|_| ()).map_err(|e| e.to_string()));
-    assert!(refused.is_err(), "E* overflows: {refused:?}");
+        .and_then(|s| s.outcome().map(|_| ()))
+        .expect_err("E* overflows");
+    // the error names the modulus field and its line, with E* and R
+    assert_eq!(refused.field.as_deref(), Some("sphere.youngs_modulus"), "{refused}");
+    assert_eq!(refused.line, Some(11), "{refused}");
+    assert!(refused.message.contains("E* = "), "{refused}");
 }
