@@ -31,6 +31,7 @@ fn _tabor(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(models::visco, m)?)?;
     m.add_function(wrap_pyfunction!(models::penalty, m)?)?;
     m.add_class::<scene::Scene>()?;
+    m.add("VERSION", tabor::VERSION)?;
     m.add(
         "LAMBDA_PER_MAUGIS_PARAMETER",
         tabor::maugis::units::LAMBDA_PER_MAUGIS_PARAMETER,

@@ -26,7 +26,12 @@ fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, String> + Sen
 }
 
 fn to_json<T: serde::Serialize>(v: &T) -> Result<serde_json::Value, String> {
-    serde_json::to_value(v).map_err(|e| e.to_string())
+    let mut value = serde_json::to_value(v).map_err(|e| e.to_string())?;
+    // every output carries the tabor version, as the CLI's JSON does
+    if let serde_json::Value::Object(o) = &mut value {
+        o.insert("tabor_version".into(), tabor::VERSION.into());
+    }
+    Ok(value)
 }
 
 #[pymethods]
@@ -138,7 +143,10 @@ impl Scene {
             let mut records = Vec::with_capacity(results.len());
             for (i, r) in results.into_iter().enumerate() {
                 let o = r.map_err(|e| (i, Failure::Value(e.to_string())))?;
-                records.push(to_json(&o).map_err(|e| (i, Failure::Value(e)))?);
+                // the version is added once to the whole result (tabor/__init__.py)
+                records.push(
+                    serde_json::to_value(&o).map_err(|e| (i, Failure::Value(e.to_string())))?,
+                );
             }
             Ok(records)
         });

@@ -49,7 +49,8 @@ __all__ = [
     "FAST_TIER_RELATIVE_ERROR",
 ]
 
-__version__ = "0.1.0"
+#: The version of tabor (the Rust workspace) this package was built from.
+__version__: str = _tabor.VERSION
 
 #: Λ per Maugis' λ: Λ = π (9/4)^(1/3) / 6 · λ ≈ 0.6861 λ.
 LAMBDA_PER_MAUGIS_PARAMETER: float = _tabor.LAMBDA_PER_MAUGIS_PARAMETER
@@ -108,7 +109,8 @@ class _Batch:
         return flat.reshape(self.shape)
 
     def out_dict(self, columns: Dict[str, Any]) -> Dict[str, Any]:
-        result: Dict[str, Any] = {}
+        # every result carries the tabor version once, as the CLI's JSON does
+        result: Dict[str, Any] = {"tabor_version": __version__}
         for k, v in columns.items():
             if isinstance(v, np.ndarray):
                 if self.scalar:
