@@ -63,7 +63,8 @@ fn models(c: &mut Criterion) {
         record_trajectory: false,
         ..SimulationSettings::default()
     };
-    let jackson_green = JacksonGreen::new(ep, rp, sy, STEEL_TABLE_5_2.poisson_ratio)
+    let jackson_green = PlasticContact::new(ep, rp, sy)
+        .and_then(|contact| JacksonGreen::new(contact, STEEL_TABLE_5_2.poisson_ratio))
         .unwrap()
         .impact(mp, settings)
         .unwrap();

@@ -106,8 +106,9 @@ fn models(pair: &Pair) -> Result<Models, Box<dyn Error>> {
         record_trajectory: false,
         ..SimulationSettings::default()
     };
-    let jackson_green =
-        JacksonGreen::new(e_star, r, sigma_y, pair.plate.poisson_ratio)?.impact(m, settings)?;
+    let jackson_green = PlasticContact::new(e_star, r, sigma_y)
+        .and_then(|contact| JacksonGreen::new(contact, pair.plate.poisson_ratio))?
+        .impact(m, settings)?;
     // Seed 001 with its own Table 3 constants (E*, σ_y, the sphere density).
     let fit = DimensionlessFit::new(
         ALUMINA_TABLE_3.effective_modulus_with(&pair.plate_table_3)?,

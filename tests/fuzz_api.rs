@@ -717,7 +717,8 @@ fn plastic_group(cases: u32, only: Option<u8>) {
                     check_model("DimensionlessFit", &[e, sy, rho, m], &fit, v, 1e-8)
                 }
                 _ => {
-                    let jg = JacksonGreen::new(e, r, sy, nu);
+                    let jg = PlasticContact::new(e, r, sy)
+                        .and_then(|contact| JacksonGreen::new(contact, nu));
                     check("JacksonGreen::new", &[e, r, sy, nu], &unit(&jg))?;
                     let Ok(jg) = jg else { return Ok(()) };
                     check(
@@ -742,7 +743,7 @@ fn plastic_group(cases: u32, only: Option<u8>) {
 
 /// The Jackson-Green time-domain model: few cases (one simulation each).
 fn jackson_green_group(cases: u32, _only: Option<u8>) {
-    use tabor::plastic::{JacksonGreen, SimulationSettings};
+    use tabor::plastic::{JacksonGreen, PlasticContact, SimulationSettings};
     run(
         "jackson_green",
         cases,
@@ -755,7 +756,9 @@ fn jackson_green_group(cases: u32, _only: Option<u8>) {
             x(),
         ),
         |(e, r, sy, m, v, a)| {
-            let Ok(jg) = JacksonGreen::new(e, r, sy, 0.3) else {
+            let Ok(jg) =
+                PlasticContact::new(e, r, sy).and_then(|contact| JacksonGreen::new(contact, 0.3))
+            else {
                 return Ok(());
             };
             let imp = jg.impact(m, SimulationSettings::default());

@@ -395,7 +395,8 @@ fn non_adhesive(a: &PlasticArgs, which: PlasticModel) -> Result<NonAdhesive, Str
         }
         PlasticModel::JacksonGreen => {
             let nu = required(a.poisson_ratio, "poisson_ratio", "jackson-green")?;
-            let m = JacksonGreen::new(a.modulus, a.radius, a.yield_stress, nu)
+            let m = PlasticContact::new(a.modulus, a.radius, a.yield_stress)
+                .and_then(|contact| JacksonGreen::new(contact, nu))
                 .map_err(message)?
                 .impact(a.mass, SimulationSettings::default())
                 .map_err(message)?;

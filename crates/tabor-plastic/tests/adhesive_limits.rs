@@ -261,7 +261,8 @@ fn yield_velocity_trait_gives_each_models_own_onset() {
     let v_adh = (2.0 * (w(a_y) - w((4.0f64 / 3.0).powf(2.0 / 3.0))) * sc.energy / m).sqrt();
     let rho = 3900.0;
     let fit = DimensionlessFit::new(e, s, rho, m).unwrap();
-    let jg = JacksonGreen::new(e, r, s, 0.3)
+    let jg = PlasticContact::new(e, r, s)
+        .and_then(|contact| JacksonGreen::new(contact, 0.3))
         .unwrap()
         .impact(m, SimulationSettings::default())
         .unwrap();

@@ -124,7 +124,8 @@ fn published_cases_run_through_every_model() {
         let v_y = contact.yield_velocity(m).unwrap();
         let thornton = PlasticImpact::new(contact, Thornton, m).unwrap();
         let interpolation = PlasticImpact::new(contact, Interpolation::default(), m).unwrap();
-        let jg = JacksonGreen::new(case.modulus, r, case.yield_stress, case.poisson_ratio)
+        let jg = PlasticContact::new(case.modulus, r, case.yield_stress)
+            .and_then(|contact| JacksonGreen::new(contact, case.poisson_ratio))
             .unwrap()
             .impact(m, SimulationSettings::default())
             .unwrap();
@@ -185,7 +186,8 @@ fn seed_000_section_5_5_2_numbers() {
     let steel = PlasticContact::new(c[0].modulus, r, c[0].yield_stress).unwrap();
     let interp = PlasticImpact::new(steel, Interpolation::default(), m).unwrap();
     assert!(impact(&interp, 0.12).unwrap().restitution > 0.98);
-    let jg = JacksonGreen::new(c[0].modulus, r, c[0].yield_stress, c[0].poisson_ratio)
+    let jg = PlasticContact::new(c[0].modulus, r, c[0].yield_stress)
+        .and_then(|contact| JacksonGreen::new(contact, c[0].poisson_ratio))
         .unwrap()
         .impact(m, SimulationSettings::default())
         .unwrap();

@@ -275,7 +275,8 @@ fn build_plastic(scene: &Scene) -> Result<Option<Plastic>, SceneError> {
             .map_err(err)?,
         ),
         PlasticityModel::JacksonGreen => Plastic::JacksonGreen(Box::new(
-            JacksonGreen::new(e, r, sy, scene.plastic_poisson_ratio())
+            PlasticContact::new(e, r, sy)
+                .and_then(|contact| JacksonGreen::new(contact, scene.plastic_poisson_ratio()))
                 .map_err(in_yield)?
                 .impact(m, SimulationSettings::default())
                 .map_err(err)?,

@@ -175,7 +175,8 @@ fn non_adhesive(args: &Args, which: PlasticModel) -> Result<NonAdhesive, String>
         }
         PlasticModel::JacksonGreen => {
             let nu = required(args.poisson_ratio, "--poisson-ratio", "jackson-green")?;
-            let m = JacksonGreen::new(args.modulus, args.radius, args.yield_stress, nu)
+            let m = PlasticContact::new(args.modulus, args.radius, args.yield_stress)
+                .and_then(|contact| JacksonGreen::new(contact, nu))
                 .map_err(message)?
                 .impact(args.mass, SimulationSettings::default())
                 .map_err(message)?;
