@@ -14,7 +14,7 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
 use tabor::jkr::{GradedSphere, JkrImpact, JkrSphere, PowerLawProfile, SeparationRule};
-use tabor::maugis::{loss_over_jkr_fast, prepare_fast_tier, MaugisDugdaleImpact};
+use tabor::maugis::{loss_over_jkr_fast, prepare_fast_tier, MaugisContact, MaugisDugdaleImpact};
 use tabor::plastic::materials::{
     ALUMINA_TABLE_3, ALUMINA_TABLE_5_2, SPHERE_MASS_SECTION_5_5_2, SPHERE_RADIUS_SECTION_5_5_2,
     STEEL_TABLE_3, STEEL_TABLE_5_2,
@@ -39,7 +39,11 @@ fn models(c: &mut Criterion) {
     let sphere = JkrSphere::new(e_star, r, dg).unwrap();
     let jkr = JkrImpact::new(sphere, m).unwrap();
     let jkr_load = jkr.clone().with_separation(SeparationRule::LoadControlled);
-    let md = MaugisDugdaleImpact::new(e_star, r, dg, 2.0, m).unwrap();
+    let md = MaugisDugdaleImpact::new(
+        MaugisContact::new(JkrSphere::new(e_star, r, dg).unwrap(), 2.0).unwrap(),
+        m,
+    )
+    .unwrap();
     // f(r) = A r⁴ with the sphere's curvature at r = 20 nm; E(z) = c_N z^(1/2) with
     // E(10 nm) = E*
     let power_law = JkrImpact::new(

@@ -507,6 +507,7 @@ fn jkr_impact<C: tabor::jkr::AdhesiveContact>(
 }
 
 fn maugis_group(cases: u32, only: Option<u8>) {
+    use tabor::jkr::JkrSphere;
     use tabor::maugis::units::*;
     use tabor::maugis::*;
     run(
@@ -565,15 +566,21 @@ fn maugis_group(cases: u32, only: Option<u8>) {
             check("maugis_parameter", &[s], &maugis_parameter(s))?;
             let (model, inputs) = match which {
                 0 => (
-                    MaugisDugdaleImpact::new(e, r, w, lambda, m),
+                    JkrSphere::new(e, r, w)
+                        .and_then(|sphere| MaugisContact::new(sphere, lambda))
+                        .and_then(|contact| MaugisDugdaleImpact::new(contact, m)),
                     [e, r, w, lambda, m],
                 ),
                 1 => (
-                    MaugisDugdaleImpact::from_cohesive_stress(e, r, w, s, m),
+                    JkrSphere::new(e, r, w)
+                        .and_then(|sphere| MaugisContact::from_cohesive_stress(sphere, s))
+                        .and_then(|contact| MaugisDugdaleImpact::new(contact, m)),
                     [e, r, w, s, m],
                 ),
                 _ => (
-                    MaugisDugdaleImpact::from_range(e, r, w, s, m),
+                    JkrSphere::new(e, r, w)
+                        .and_then(|sphere| MaugisContact::from_range(sphere, s))
+                        .and_then(|contact| MaugisDugdaleImpact::new(contact, m)),
                     [e, r, w, s, m],
                 ),
             };

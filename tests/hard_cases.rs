@@ -10,7 +10,8 @@
 
 use tabor::jkr::{GradedSphere, JkrImpact, JkrSphere, PowerLawProfile};
 use tabor::maugis::{
-    loss_over_jkr_fast, normalized_loss, MaugisDugdaleImpact, TaborCase, LAMBDA_1, LAMBDA_2,
+    loss_over_jkr_fast, normalized_loss, MaugisContact, MaugisDugdaleImpact, TaborCase, LAMBDA_1,
+    LAMBDA_2,
 };
 use tabor::restitution::{impact, sticking_velocity, Error, ImpactModel};
 
@@ -157,7 +158,11 @@ fn restitution_is_continuous_at_the_sticking_velocity() {
         .with_separation(tabor::jkr::SeparationRule::LoadControlled);
     check_sticking_boundary("JKR sphere, load-controlled", &jkr_load);
     for lambda in [0.1, LAMBDA_1, 0.5, LAMBDA_2, 1.0, 10.0] {
-        let md = MaugisDugdaleImpact::new(e, r, w, lambda, m).unwrap();
+        let md = MaugisDugdaleImpact::new(
+            MaugisContact::new(JkrSphere::new(e, r, w).unwrap(), lambda).unwrap(),
+            m,
+        )
+        .unwrap();
         check_sticking_boundary(&format!("Maugis-Dugdale Λ = {lambda}"), &md);
     }
     let plastic =
@@ -402,7 +407,12 @@ fn sizes_from_nanometres_to_metres_and_moduli_over_seven_decades() {
             let e = restitution_of(&jkr, 2.0 * vs);
             assert!(e > 0.5 && e < 1.0, "JKR ε(2 v_s) = {e}");
             // Maugis-Dugdale with a 0.3 nm range: Λ spans many decades over this grid
-            let md = MaugisDugdaleImpact::from_range(modulus, radius, w, 3e-10, mass).unwrap();
+            let md = MaugisDugdaleImpact::new(
+                MaugisContact::from_range(JkrSphere::new(modulus, radius, w).unwrap(), 3e-10)
+                    .unwrap(),
+                mass,
+            )
+            .unwrap();
             let lambda = md.tabor_parameter();
             assert!(lambda.is_finite() && lambda > 0.0);
             let vs_md = sticking_velocity(&md, 1e-12).unwrap().speed;
@@ -498,10 +508,16 @@ fn regression_maugis_extremes() {
     assert!(trace_impact(1.0, 1.0, 10).unwrap().len() > 10);
     // F_n d_n finite but W · F_n d_n overflows (full fuzzing run): an error, not ∞
     let m = tabor::maugis::MaugisDugdaleImpact::new(
-        42177358242.0135,
-        8.060477340906638e238,
-        0.004544629103630278,
-        1e3,
+        MaugisContact::new(
+            JkrSphere::new(
+                42177358242.0135,
+                8.060477340906638e238,
+                0.004544629103630278,
+            )
+            .unwrap(),
+            1e3,
+        )
+        .unwrap(),
         1.0,
     )
     .unwrap();

@@ -8,7 +8,7 @@ use crate::scene::{AdhesionRange, AdhesivePlasticity, PlasticityModel, Scene, Sc
 use tabor_dynamics::SimulationSettings;
 use tabor_elastic::{ElasticContact, ElasticImpact};
 use tabor_jkr::{GradedSphere, JkrImpact, JkrSphere, SeparationRule};
-use tabor_maugis::{normalized_loss, MaugisDugdaleImpact, LAMBDA_1};
+use tabor_maugis::{normalized_loss, MaugisContact, MaugisDugdaleImpact, LAMBDA_1};
 use tabor_plastic::YieldVelocity;
 use tabor_plastic::{
     AdhesiveInterpolationImpact, DimensionlessFit, Interpolation, JacksonGreen, JacksonGreenImpact,
@@ -206,7 +206,9 @@ fn build_adhesive(scene: &Scene) -> Result<Option<Adhesive>, SceneError> {
             why: "JKR: no range of adhesion given".into(),
         },
         (None, AdhesionRange::TaborParameter(lambda)) => {
-            let md = MaugisDugdaleImpact::new(e, r, a.work_of_adhesion, lambda, m)
+            let md = JkrSphere::new(e, r, a.work_of_adhesion)
+                .and_then(|sphere| MaugisContact::new(sphere, lambda))
+                .and_then(|contact| MaugisDugdaleImpact::new(contact, m))
                 .map_err(err)?
                 .with_tolerance(acc)
                 .map_err(err)?;

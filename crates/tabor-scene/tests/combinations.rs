@@ -5,7 +5,7 @@
 
 use approx::assert_relative_eq;
 use tabor_jkr::{JkrImpact, JkrSphere, SeparationRule};
-use tabor_maugis::MaugisDugdaleImpact;
+use tabor_maugis::{MaugisContact, MaugisDugdaleImpact};
 use tabor_plastic::{
     AdhesiveInterpolationImpact, Interpolation, PlasticContact, PlasticImpact, Thornton,
 };
@@ -213,7 +213,12 @@ fn range_with_plasticity_keeps_the_range() {
     // the JKR value, while Maugis-Dugdale gives 0.0104 m/s; "sticks": false at
     // 0.05 m/s), and the loss jumped 66x at the adhesive yield onset
     let s = silica("range = 0.3e-9", Some(1e9), "");
-    let md = MaugisDugdaleImpact::from_range(silica_e(), 0.5e-6, 0.05, 0.3e-9, silica_m()).unwrap();
+    let md = MaugisDugdaleImpact::new(
+        MaugisContact::from_range(JkrSphere::new(silica_e(), 0.5e-6, 0.05).unwrap(), 0.3e-9)
+            .unwrap(),
+        silica_m(),
+    )
+    .unwrap();
     let md_stick = tabor_restitution::sticking_velocity(&md, 1e-12)
         .unwrap()
         .speed;

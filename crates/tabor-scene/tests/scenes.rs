@@ -5,7 +5,7 @@
 use approx::assert_relative_eq;
 use std::path::PathBuf;
 use tabor_jkr::{GradedSphere, JkrImpact, JkrSphere, SeparationRule};
-use tabor_maugis::MaugisDugdaleImpact;
+use tabor_maugis::{MaugisContact, MaugisDugdaleImpact};
 use tabor_plastic::{Interpolation, PlasticContact, PlasticImpact};
 use tabor_restitution::{impact, sticking_velocity, ImpactModel};
 use tabor_scene::{spaced, sweep, Format, Scene, SceneBuilder, SweepParameter};
@@ -91,7 +91,11 @@ fn bundled_maugis_scene_equals_the_maugis_crate() {
     let lambda = o.tabor_parameter.unwrap();
     let e_star = 54e9 / (2.0 * (1.0 - 0.17f64 * 0.17));
     let m = scene.effective_mass;
-    let direct = MaugisDugdaleImpact::from_range(e_star, 0.5e-6, 0.05, 0.3e-9, m).unwrap();
+    let direct = MaugisDugdaleImpact::new(
+        MaugisContact::from_range(JkrSphere::new(e_star, 0.5e-6, 0.05).unwrap(), 0.3e-9).unwrap(),
+        m,
+    )
+    .unwrap();
     assert_relative_eq!(direct.tabor_parameter(), lambda, max_relative = 1e-14);
     let d = impact(&direct, 0.05).unwrap();
     assert_relative_eq!(o.restitution, d.restitution, max_relative = 1e-12);
@@ -293,10 +297,11 @@ fn jkr_closed_form_only_when_the_difference_is_below_the_accuracy() {
     assert!(fine.model.contains("Maugis"), "{}", fine.model);
     // Either way the result is the Maugis-Dugdale one within the requested accuracy.
     let md = MaugisDugdaleImpact::new(
-        e_star(54e9, 0.17, 54e9, 0.17),
-        0.5e-6,
-        0.05,
-        1e4,
+        MaugisContact::new(
+            JkrSphere::new(e_star(54e9, 0.17, 54e9, 0.17), 0.5e-6, 0.05).unwrap(),
+            1e4,
+        )
+        .unwrap(),
         sphere_mass(1e-6, 2650.0) / 2.0,
     )
     .unwrap();
