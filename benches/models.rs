@@ -20,8 +20,8 @@ use tabor::plastic::materials::{
     STEEL_TABLE_3, STEEL_TABLE_5_2,
 };
 use tabor::plastic::{
-    AdhesiveInterpolationImpact, DimensionlessFit, Interpolation, JacksonGreen, PlasticContact,
-    PlasticImpact, SimulationSettings, Superposition, Thornton,
+    AdhesiveInterpolationImpact, AdhesivePlasticContact, DimensionlessFit, Interpolation,
+    JacksonGreen, PlasticContact, PlasticImpact, SimulationSettings, Superposition, Thornton,
 };
 use tabor::restitution::ImpactModel;
 use tabor::visco::models::{KelvinVoigtFlatPunch, KelvinVoigtSphere, MaxwellBranchSphere};
@@ -83,7 +83,12 @@ fn models(c: &mut Criterion) {
     .unwrap();
     let superposition =
         Superposition::new(interpolation.clone(), JkrSphere::new(ep, rp, 0.5).unwrap()).unwrap();
-    let adhesive = AdhesiveInterpolationImpact::from_yield_stress(ep, rp, sy, 0.5, mp).unwrap();
+    let adhesive = AdhesiveInterpolationImpact::new(
+        AdhesivePlasticContact::from_yield_stress(JkrSphere::new(ep, rp, 0.5).unwrap(), sy)
+            .unwrap(),
+        mp,
+    )
+    .unwrap();
     let v_plastic = 1.0;
 
     // viscoelastic: rubber-like half-space, a 1 cm steel ball

@@ -689,13 +689,17 @@ fn plastic_group(cases: u32, only: Option<u8>) {
                     }
                 }
                 2 => {
-                    let imp = AdhesiveInterpolationImpact::from_yield_stress(e, r, sy, w, m);
+                    let imp = JkrSphere::new(e, r, w)
+                        .and_then(|sphere| AdhesivePlasticContact::from_yield_stress(sphere, sy))
+                        .and_then(|contact| AdhesiveInterpolationImpact::new(contact, m));
                     check(
                         "AdhesiveInterpolationImpact::from_yield_stress",
                         &[e, r, sy, w, m],
                         &unit(&imp),
                     )?;
-                    let imp2 = AdhesiveInterpolationImpact::new(e, r, w, phi, m);
+                    let imp2 = JkrSphere::new(e, r, w)
+                        .and_then(|sphere| AdhesivePlasticContact::new(sphere, phi))
+                        .and_then(|contact| AdhesiveInterpolationImpact::new(contact, m));
                     check(
                         "AdhesiveInterpolationImpact::new",
                         &[e, r, w, phi, m],

@@ -165,8 +165,15 @@ fn restitution_is_continuous_at_the_sticking_velocity() {
         .unwrap();
         check_sticking_boundary(&format!("Maugis-Dugdale Λ = {lambda}"), &md);
     }
-    let plastic =
-        tabor::plastic::AdhesiveInterpolationImpact::from_yield_stress(e, r, 1e9, w, m).unwrap();
+    let plastic = tabor::plastic::AdhesiveInterpolationImpact::new(
+        tabor::plastic::AdhesivePlasticContact::from_yield_stress(
+            JkrSphere::new(e, r, w).unwrap(),
+            1e9,
+        )
+        .unwrap(),
+        m,
+    )
+    .unwrap();
     check_sticking_boundary("adhesive interpolation (plastic)", &plastic);
 }
 

@@ -436,7 +436,10 @@ fn plastic_point(
     under: PlasticModel,
 ) -> Result<Value, String> {
     use tabor::jkr::JkrSphere;
-    use tabor::plastic::{AdhesiveInterpolationImpact, Clamping, PlasticContact, Superposition};
+    use tabor::plastic::{
+        AdhesiveInterpolationImpact, AdhesivePlasticContact, Clamping, PlasticContact,
+        Superposition,
+    };
     let message = renamed(PLASTIC_NAMES);
     let mut warnings = Vec::new();
     let mut elastic_sticking = None;
@@ -463,14 +466,14 @@ fn plastic_point(
                 )?;
                 PlasticContact::new(a.modulus, a.radius, a.yield_stress).map_err(message)?;
                 let m = match a.adhesion_parameter {
-                    Some(p) => AdhesiveInterpolationImpact::new(a.modulus, a.radius, dg, p, a.mass),
-                    None => AdhesiveInterpolationImpact::from_yield_stress(
-                        a.modulus,
-                        a.radius,
-                        a.yield_stress,
-                        dg,
-                        a.mass,
-                    ),
+                    Some(p) => JkrSphere::new(a.modulus, a.radius, dg)
+                        .and_then(|sphere| AdhesivePlasticContact::new(sphere, p))
+                        .and_then(|contact| AdhesiveInterpolationImpact::new(contact, a.mass)),
+                    None => JkrSphere::new(a.modulus, a.radius, dg)
+                        .and_then(|sphere| {
+                            AdhesivePlasticContact::from_yield_stress(sphere, a.yield_stress)
+                        })
+                        .and_then(|contact| AdhesiveInterpolationImpact::new(contact, a.mass)),
                 }
                 .map_err(message)?;
                 if a.adhesion_parameter.is_some() {

@@ -6,8 +6,8 @@ use tabor_dynamics::SimulationSettings;
 use tabor_jkr::JkrSphere;
 use tabor_plastic::materials::*;
 use tabor_plastic::{
-    AdhesiveInterpolationImpact, Clamping, DimensionlessFit, Interpolation, JacksonGreen,
-    PlasticContact, PlasticImpact, Superposition, Thornton,
+    AdhesiveInterpolationImpact, AdhesivePlasticContact, Clamping, DimensionlessFit, Interpolation,
+    JacksonGreen, PlasticContact, PlasticImpact, Superposition, Thornton,
 };
 use tabor_restitution::{impact, ImpactModel};
 
@@ -132,11 +132,12 @@ fn published_cases_run_through_every_model() {
         let fit = DimensionlessFit::new(case.modulus, case.yield_stress, case.density, m).unwrap();
         let sphere = JkrSphere::new(case.modulus, r, dg).unwrap();
         let sup = Superposition::new(interpolation.clone(), sphere).unwrap();
-        let adh = AdhesiveInterpolationImpact::from_yield_stress(
-            case.modulus,
-            r,
-            case.yield_stress,
-            dg,
+        let adh = AdhesiveInterpolationImpact::new(
+            AdhesivePlasticContact::from_yield_stress(
+                JkrSphere::new(case.modulus, r, dg).unwrap(),
+                case.yield_stress,
+            )
+            .unwrap(),
             m,
         )
         .unwrap();

@@ -7,8 +7,8 @@ use tabor_dynamics::SimulationSettings;
 use tabor_jkr::JkrSphere;
 use tabor_plastic::{
     adhesion_parameter, adhesive_yield_force, AdhesiveInterpolation, AdhesiveInterpolationImpact,
-    DimensionlessFit, Interpolation, JacksonGreen, LoadingLaw, PlasticContact, PlasticImpact,
-    Superposition, Thornton,
+    AdhesivePlasticContact, DimensionlessFit, Interpolation, JacksonGreen, LoadingLaw,
+    PlasticContact, PlasticImpact, Superposition, Thornton,
 };
 use tabor_restitution::{Error, ImpactModel, Result};
 
@@ -82,7 +82,7 @@ proptest! {
             ok_or_error(model.loading_force(v))?;
             ok_or_error(model.loading_work(v))?;
         }
-        if let Ok(model) = AdhesiveInterpolationImpact::from_yield_stress(e, r, s, dg, m) {
+        if let Ok(model) = JkrSphere::new(e, r, dg).and_then(|sphere| AdhesivePlasticContact::from_yield_stress(sphere, s)).and_then(|contact| AdhesiveInterpolationImpact::new(contact, m)) {
             ok_or_error(loss(&model, v))?;
         }
         if let (Ok(c), Ok(sphere)) = (PlasticContact::new(e, r, s), JkrSphere::new(e, r, dg)) {

@@ -5,11 +5,12 @@
 
 use proptest::prelude::*;
 use tabor_dynamics::{simulate_impact, EventKind, SimulationSettings};
+use tabor_jkr::JkrSphere;
 use tabor_numerics::quadrature::{integrate_smooth, QuadTolerance};
 use tabor_numerics::root_finding::{brent, RootTolerance};
 use tabor_plastic::{
-    AdhesiveInterpolation, AdhesiveInterpolationImpact, Interpolation, JacksonGreen,
-    PlasticContact, PlasticImpact, Thornton, FIT_ONSET,
+    AdhesiveInterpolation, AdhesiveInterpolationImpact, AdhesivePlasticContact, Interpolation,
+    JacksonGreen, PlasticContact, PlasticImpact, Thornton, FIT_ONSET,
 };
 use tabor_restitution::{impact, ImpactModel};
 
@@ -158,7 +159,11 @@ fn adhesive_interpolation_simulation_equals_analytic() {
         (0.3, 100.0),
         (2.5, 5.0),
     ] {
-        let model = AdhesiveInterpolationImpact::new(1e11, 1e-5, 0.5, phi, 1e-13).unwrap();
+        let model = AdhesiveInterpolationImpact::new(
+            AdhesivePlasticContact::new(JkrSphere::new(1e11, 1e-5, 0.5).unwrap(), phi).unwrap(),
+            1e-13,
+        )
+        .unwrap();
         let v0 = ratio * model.elastic_sticking_velocity();
         let analytic = impact(&model, v0).unwrap().restitution;
         let mut law = model.force_law();

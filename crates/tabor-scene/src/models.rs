@@ -11,8 +11,8 @@ use tabor_jkr::{GradedSphere, JkrImpact, JkrSphere, SeparationRule};
 use tabor_maugis::{normalized_loss, MaugisContact, MaugisDugdaleImpact, LAMBDA_1};
 use tabor_plastic::YieldVelocity;
 use tabor_plastic::{
-    AdhesiveInterpolationImpact, DimensionlessFit, Interpolation, JacksonGreen, JacksonGreenImpact,
-    PlasticContact, PlasticImpact, Thornton,
+    AdhesiveInterpolationImpact, AdhesivePlasticContact, DimensionlessFit, Interpolation,
+    JacksonGreen, JacksonGreenImpact, PlasticContact, PlasticImpact, Thornton,
 };
 use tabor_restitution::{EnergyLoss, Error, ImpactModel};
 
@@ -349,13 +349,15 @@ impl Models {
             &plastic,
         ) {
             (Some(a), Some(sy), Some(p)) => {
-                let ai = AdhesiveInterpolationImpact::from_yield_stress(
+                let ai = JkrSphere::new(
                     scene.effective_modulus,
                     scene.effective_radius,
-                    sy,
                     a.work_of_adhesion,
-                    scene.effective_mass,
-                );
+                )
+                .and_then(|sphere| AdhesivePlasticContact::from_yield_stress(sphere, sy))
+                .and_then(|contact| {
+                    AdhesiveInterpolationImpact::new(contact, scene.effective_mass)
+                });
                 let ai = match (ai, p.kind()) {
                         (Ok(ai), _) => Some(ai),
                         // the rule needs it: the scene is outside its range

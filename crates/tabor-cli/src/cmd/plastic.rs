@@ -7,8 +7,8 @@ use serde::Serialize;
 use std::io::Write;
 use tabor::jkr::JkrSphere;
 use tabor::plastic::{
-    AdhesiveInterpolationImpact, Clamping, DimensionlessFit, Interpolation, JacksonGreen,
-    PlasticContact, PlasticImpact, SimulationSettings, Superposition, Thornton,
+    AdhesiveInterpolationImpact, AdhesivePlasticContact, Clamping, DimensionlessFit, Interpolation,
+    JacksonGreen, PlasticContact, PlasticImpact, SimulationSettings, Superposition, Thornton,
 };
 use tabor::restitution::{impact, sticking_velocity, EnergyLoss, ImpactModel};
 
@@ -246,20 +246,14 @@ pub fn run(args: &Args) -> Outcome {
                 PlasticContact::new(args.modulus, args.radius, args.yield_stress)
                     .map_err(message)?;
                 let m = match args.adhesion_parameter {
-                    Some(p) => AdhesiveInterpolationImpact::new(
-                        args.modulus,
-                        args.radius,
-                        dg,
-                        p,
-                        args.mass,
-                    ),
-                    None => AdhesiveInterpolationImpact::from_yield_stress(
-                        args.modulus,
-                        args.radius,
-                        args.yield_stress,
-                        dg,
-                        args.mass,
-                    ),
+                    Some(p) => JkrSphere::new(args.modulus, args.radius, dg)
+                        .and_then(|sphere| AdhesivePlasticContact::new(sphere, p))
+                        .and_then(|contact| AdhesiveInterpolationImpact::new(contact, args.mass)),
+                    None => JkrSphere::new(args.modulus, args.radius, dg)
+                        .and_then(|sphere| {
+                            AdhesivePlasticContact::from_yield_stress(sphere, args.yield_stress)
+                        })
+                        .and_then(|contact| AdhesiveInterpolationImpact::new(contact, args.mass)),
                 }
                 .map_err(message)?;
                 if args.adhesion_parameter.is_some() {
