@@ -1117,7 +1117,8 @@ fn penalty_group(cases: u32, only: Option<u8>) {
 
 // Scenes: the builder with arbitrary numbers, then outcome / sticking velocity.
 fn scene_builder_group(cases: u32, only: Option<u8>) {
-    use tabor::scene::{spaced, Scene, SceneBuilder, SweepParameter};
+    use tabor::restitution::ElasticMaterial;
+    use tabor::scene::{spaced, ElasticSphere, Scene, SceneBuilder, SweepParameter};
     run(
         "scene_builder",
         cases,
@@ -1128,11 +1129,28 @@ fn scene_builder_group(cases: u32, only: Option<u8>) {
             (variant(4, only), x(), 0usize..5, any::<bool>()),
         ),
         |((r1, rho, e1, nu1), (r2, e2, nu2, half), (w, extra, v, acc), (kind, p, points, log))| {
-            let mut b = SceneBuilder::new().sphere(r1, rho, e1, nu1);
+            // the builder takes validated materials: arbitrary moduli and Poisson's
+            // ratios are checked by ElasticMaterial::new (and by the file groups)
+            let m1 = ElasticMaterial::new(e1, nu1);
+            check("ElasticMaterial::new", &[e1, nu1], &m1)?;
+            let m2 = ElasticMaterial::new(e2, nu2);
+            check("ElasticMaterial::new", &[e2, nu2], &m2)?;
+            let (Ok(m1), Ok(m2)) = (m1, m2) else {
+                return Ok(());
+            };
+            let mut b = SceneBuilder::new().sphere(ElasticSphere {
+                radius: r1,
+                density: rho,
+                material: m1,
+            });
             b = if half {
-                b.target_half_space(e2, nu2, None)
+                b.target_half_space(m2, None)
             } else {
-                b.target_sphere(r2, rho, e2, nu2)
+                b.target_sphere(ElasticSphere {
+                    radius: r2,
+                    density: rho,
+                    material: m2,
+                })
             };
             b = match kind {
                 0 => b,

@@ -13,7 +13,7 @@ use tabor::maugis::{
     loss_over_jkr_fast, normalized_loss, MaugisContact, MaugisDugdaleImpact, TaborCase, LAMBDA_1,
     LAMBDA_2,
 };
-use tabor::restitution::{impact, sticking_velocity, Error, ImpactModel};
+use tabor::restitution::{impact, sticking_velocity, ElasticMaterial, Error, ImpactModel};
 
 fn log_grid(from: f64, to: f64, n: usize) -> Vec<f64> {
     (0..n)
@@ -435,12 +435,16 @@ fn sizes_from_nanometres_to_metres_and_moduli_over_seven_decades() {
 
 #[test]
 fn scenes_over_sizes_and_moduli() {
-    use tabor::scene::SceneBuilder;
+    use tabor::scene::{ElasticSphere, SceneBuilder};
     for radius in [1e-9, 1e-6, 1e-3, 1.0] {
         for modulus in [1e5, 1e8, 1e12] {
             let scene = SceneBuilder::new()
-                .sphere(radius, 2500.0, modulus, 0.3)
-                .target_half_space(modulus, 0.3, Some(2500.0))
+                .sphere(ElasticSphere {
+                    radius,
+                    density: 2500.0,
+                    material: ElasticMaterial::new(modulus, 0.3).unwrap(),
+                })
+                .target_half_space(ElasticMaterial::new(modulus, 0.3).unwrap(), Some(2500.0))
                 .adhesion(0.05)
                 .speed(1.0)
                 .build()

@@ -7,8 +7,8 @@ use std::path::PathBuf;
 use tabor_jkr::{GradedSphere, JkrImpact, JkrSphere, SeparationRule};
 use tabor_maugis::{MaugisContact, MaugisDugdaleImpact};
 use tabor_plastic::{Interpolation, PlasticContact, PlasticImpact};
-use tabor_restitution::{impact, sticking_velocity, ImpactModel};
-use tabor_scene::{spaced, sweep, Format, Scene, SceneBuilder, SweepParameter};
+use tabor_restitution::{impact, sticking_velocity, ElasticMaterial, ImpactModel};
+use tabor_scene::{spaced, sweep, ElasticSphere, Format, Scene, SceneBuilder, SweepParameter};
 use tabor_visco::models::KelvinVoigtSphere;
 use tabor_visco::SphereModel;
 
@@ -31,8 +31,16 @@ fn load_scene(name: &str) -> Scene {
 
 fn silica(rule: SeparationRule) -> Scene {
     SceneBuilder::new()
-        .sphere(1e-6, 2650.0, 54e9, 0.17)
-        .target_sphere(1e-6, 2650.0, 54e9, 0.17)
+        .sphere(ElasticSphere {
+            radius: 1e-6,
+            density: 2650.0,
+            material: ElasticMaterial::new(54e9, 0.17).unwrap(),
+        })
+        .target_sphere(ElasticSphere {
+            radius: 1e-6,
+            density: 2650.0,
+            material: ElasticMaterial::new(54e9, 0.17).unwrap(),
+        })
         .adhesion(0.05)
         .separation(rule)
         .speed(0.1)
@@ -282,8 +290,16 @@ fn jkr_closed_form_only_when_the_difference_is_below_the_accuracy() {
     // at Λ = 1e4 the Maugis-Dugdale loss differs from JKR by about 4.6e-5
     let base = || {
         SceneBuilder::new()
-            .sphere(1e-6, 2650.0, 54e9, 0.17)
-            .target_sphere(1e-6, 2650.0, 54e9, 0.17)
+            .sphere(ElasticSphere {
+                radius: 1e-6,
+                density: 2650.0,
+                material: ElasticMaterial::new(54e9, 0.17).unwrap(),
+            })
+            .target_sphere(ElasticSphere {
+                radius: 1e-6,
+                density: 2650.0,
+                material: ElasticMaterial::new(54e9, 0.17).unwrap(),
+            })
             .adhesion(0.05)
             .tabor_parameter(1e4)
             .speed(0.2)
@@ -343,8 +359,12 @@ fn negligible_adhesion_is_skipped() {
     // a millimetre steel ball at 1 m/s: the adhesive loss is far below 1e-10 of
     // the kinetic energy
     let scene = SceneBuilder::new()
-        .sphere(1e-3, 7850.0, 210e9, 0.3)
-        .target_half_space(210e9, 0.3, Some(7850.0))
+        .sphere(ElasticSphere {
+            radius: 1e-3,
+            density: 7850.0,
+            material: ElasticMaterial::new(210e9, 0.3).unwrap(),
+        })
+        .target_half_space(ElasticMaterial::new(210e9, 0.3).unwrap(), Some(7850.0))
         .adhesion(1e-6)
         .speed(1.0)
         .build()
