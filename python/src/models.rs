@@ -465,17 +465,13 @@ fn plastic_point(
                     "adhesive-interpolation",
                 )?;
                 PlasticContact::new(a.modulus, a.radius, a.yield_stress).map_err(message)?;
-                let m = match a.adhesion_parameter {
-                    Some(p) => JkrSphere::new(a.modulus, a.radius, dg)
-                        .and_then(|sphere| AdhesivePlasticContact::new(sphere, p))
-                        .and_then(|contact| AdhesiveInterpolationImpact::new(contact, a.mass)),
-                    None => JkrSphere::new(a.modulus, a.radius, dg)
-                        .and_then(|sphere| {
-                            AdhesivePlasticContact::from_yield_stress(sphere, a.yield_stress)
-                        })
-                        .and_then(|contact| AdhesiveInterpolationImpact::new(contact, a.mass)),
-                }
-                .map_err(message)?;
+                let m = JkrSphere::new(a.modulus, a.radius, dg)
+                    .and_then(|sphere| match a.adhesion_parameter {
+                        Some(p) => AdhesivePlasticContact::new(sphere, p),
+                        None => AdhesivePlasticContact::from_yield_stress(sphere, a.yield_stress),
+                    })
+                    .and_then(|contact| AdhesiveInterpolationImpact::new(contact, a.mass))
+                    .map_err(message)?;
                 if a.adhesion_parameter.is_some() {
                     warnings.push(
                         "adhesion parameter Phi given directly: yield_stress is checked but \

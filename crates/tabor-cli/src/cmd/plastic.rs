@@ -245,17 +245,15 @@ pub fn run(args: &Args) -> Outcome {
                 // Validates E*, R, sigma_Y even when Phi is given.
                 PlasticContact::new(args.modulus, args.radius, args.yield_stress)
                     .map_err(message)?;
-                let m = match args.adhesion_parameter {
-                    Some(p) => JkrSphere::new(args.modulus, args.radius, dg)
-                        .and_then(|sphere| AdhesivePlasticContact::new(sphere, p))
-                        .and_then(|contact| AdhesiveInterpolationImpact::new(contact, args.mass)),
-                    None => JkrSphere::new(args.modulus, args.radius, dg)
-                        .and_then(|sphere| {
+                let m = JkrSphere::new(args.modulus, args.radius, dg)
+                    .and_then(|sphere| match args.adhesion_parameter {
+                        Some(p) => AdhesivePlasticContact::new(sphere, p),
+                        None => {
                             AdhesivePlasticContact::from_yield_stress(sphere, args.yield_stress)
-                        })
-                        .and_then(|contact| AdhesiveInterpolationImpact::new(contact, args.mass)),
-                }
-                .map_err(message)?;
+                        }
+                    })
+                    .and_then(|contact| AdhesiveInterpolationImpact::new(contact, args.mass))
+                    .map_err(message)?;
                 if args.adhesion_parameter.is_some() {
                     warnings.push(
                         "adhesion parameter Phi given directly: --yield-stress is checked but \
