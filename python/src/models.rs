@@ -395,7 +395,8 @@ fn non_adhesive(a: &PlasticArgs, which: PlasticModel) -> Result<NonAdhesive, Str
         }
         PlasticModel::JacksonGreen => {
             let nu = required(a.poisson_ratio, "poisson_ratio", "jackson-green")?;
-            let m = JacksonGreen::new(a.modulus, a.radius, a.yield_stress, nu)
+            let m = PlasticContact::new(a.modulus, a.radius, a.yield_stress)
+                .and_then(|contact| JacksonGreen::new(contact, nu))
                 .map_err(message)?
                 .impact(a.mass, SimulationSettings::default())
                 .map_err(message)?;
@@ -435,7 +436,10 @@ fn plastic_point(
     under: PlasticModel,
 ) -> Result<Value, String> {
     use tabor::jkr::JkrSphere;
-    use tabor::plastic::{AdhesiveInterpolationImpact, Clamping, PlasticContact, Superposition};
+    use tabor::plastic::{
+        AdhesiveInterpolationImpact, AdhesivePlasticContact, Clamping, PlasticContact,
+        Superposition,
+    };
     let message = renamed(PLASTIC_NAMES);
     let mut warnings = Vec::new();
     let mut elastic_sticking = None;
@@ -461,17 +465,13 @@ fn plastic_point(
                     "adhesive-interpolation",
                 )?;
                 PlasticContact::new(a.modulus, a.radius, a.yield_stress).map_err(message)?;
-                let m = match a.adhesion_parameter {
-                    Some(p) => AdhesiveInterpolationImpact::new(a.modulus, a.radius, dg, p, a.mass),
-                    None => AdhesiveInterpolationImpact::from_yield_stress(
-                        a.modulus,
-                        a.radius,
-                        a.yield_stress,
-                        dg,
-                        a.mass,
-                    ),
-                }
-                .map_err(message)?;
+                let m = JkrSphere::new(a.modulus, a.radius, dg)
+                    .and_then(|sphere| match a.adhesion_parameter {
+                        Some(p) => AdhesivePlasticContact::new(sphere, p),
+                        None => AdhesivePlasticContact::from_yield_stress(sphere, a.yield_stress),
+                    })
+                    .and_then(|contact| AdhesiveInterpolationImpact::new(contact, a.mass))
+                    .map_err(message)?;
                 if a.adhesion_parameter.is_some() {
                     warnings.push(
                         "adhesion parameter Phi given directly: yield_stress is checked but \

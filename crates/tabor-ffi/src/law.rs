@@ -9,7 +9,7 @@ use std::sync::{Arc, OnceLock};
 use tabor_dynamics::ForceLaw;
 use tabor_jkr::{JkrForceLaw, JkrSphere, SeparationRule};
 use tabor_maugis::branch::{junction_factor, no_contact_pull_off_radius, no_contact_state};
-use tabor_maugis::{MaugisDugdaleForceLaw, MaugisDugdaleImpact};
+use tabor_maugis::{MaugisContact, MaugisDugdaleForceLaw, MaugisDugdaleImpact};
 use tabor_restitution::{validate, Error, Result};
 
 /// Which elastic-adhesive law a [`ContactLaw`] follows.
@@ -186,10 +186,10 @@ impl ContactLaw {
         tabor_parameter: f64,
     ) -> Result<Self> {
         let model = MaugisDugdaleImpact::new(
-            effective_modulus,
-            effective_radius,
-            work_of_adhesion,
-            tabor_parameter,
+            MaugisContact::new(
+                JkrSphere::new(effective_modulus, effective_radius, work_of_adhesion)?,
+                tabor_parameter,
+            )?,
             1.0,
         )?;
         let s = model.scales();

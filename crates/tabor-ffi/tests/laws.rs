@@ -220,12 +220,17 @@ fn time_integration_reproduces_tabors_quasi_static_restitution() {
         (TABOR_MODEL_MAUGIS_DUGDALE, 1.5),
     ] {
         let loss = match model {
-            TABOR_MODEL_MAUGIS_DUGDALE => {
-                tabor_maugis::MaugisDugdaleImpact::new(E, R, W, lambda, mass)
-                    .unwrap()
-                    .energy_loss_joules()
-                    .unwrap()
-            }
+            TABOR_MODEL_MAUGIS_DUGDALE => tabor_maugis::MaugisDugdaleImpact::new(
+                tabor_maugis::MaugisContact::new(
+                    tabor_jkr::JkrSphere::new(E, R, W).unwrap(),
+                    lambda,
+                )
+                .unwrap(),
+                mass,
+            )
+            .unwrap()
+            .energy_loss_joules()
+            .unwrap(),
             _ => {
                 let rule = if model == TABOR_MODEL_JKR_FIXED_GRIP {
                     tabor_jkr::SeparationRule::FixedGrip

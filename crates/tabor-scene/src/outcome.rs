@@ -417,12 +417,14 @@ impl Scene {
                 Some(Plastic::Thornton(p)) => Box::new(p.force_law()),
                 Some(Plastic::Interpolation(p)) => Box::new(p.force_law()),
                 Some(Plastic::JacksonGreen(_)) => Box::new(
-                    tabor_plastic::JacksonGreen::new(
+                    tabor_plastic::PlasticContact::new(
                         self.effective_modulus,
                         self.effective_radius,
                         self.yield_stress().unwrap_or(f64::NAN),
-                        self.plastic_poisson_ratio(),
                     )
+                    .and_then(|contact| {
+                        tabor_plastic::JacksonGreen::new(contact, self.plastic_poisson_ratio())
+                    })
                     .map_err(err)?
                     .force_law(),
                 ),
