@@ -631,7 +631,11 @@ fn regression_simulation_scene_and_characteristic_extremes() {
         .and_then(|s| s.outcome().map(|_| ()))
         .expect_err("E* overflows");
     // the error names the modulus field and its line, with E* and R
-    assert_eq!(refused.field.as_deref(), Some("sphere.youngs_modulus"), "{refused}");
+    assert_eq!(
+        refused.field.as_deref(),
+        Some("sphere.youngs_modulus"),
+        "{refused}"
+    );
     assert_eq!(refused.line, Some(11), "{refused}");
     assert!(refused.message.contains("E* = "), "{refused}");
 }
