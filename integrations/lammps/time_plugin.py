@@ -10,7 +10,8 @@ times; the fastest of each is kept (the machine may be shared). Prints LAMMPS's
 "Pair" time and loop time for both and their ratios plugin/granular.
 
 Environment: TABOR, TABOR_PLUGIN, LAMMPS_VENV; TIMING_PAIRS (default 1000),
-TIMING_REPEATS (3), TIMING_RANKS (1).
+TIMING_REPEATS (3), TIMING_RANKS (1), TIMING_SPREAD ("0.6:1.4", the speeds in
+units of v_c; "0.6:0.9" makes every pair stick, so every grain is in contact).
 """
 
 import glob
@@ -30,6 +31,7 @@ VENV = os.environ["LAMMPS_VENV"]
 PAIRS = int(os.environ.get("TIMING_PAIRS", "1000"))
 REPEATS = int(os.environ.get("TIMING_REPEATS", "3"))
 RANKS = int(os.environ.get("TIMING_RANKS", "1"))
+SPREAD = tuple(float(x) for x in os.environ.get("TIMING_SPREAD", "0.6:1.4").split(":"))
 SCENE = os.path.join(ROOT, "examples", "scenes", "silica_maugis.toml")
 INPUT = os.path.join(ROOT, "examples", "lammps", "in.cloud")
 STEPS_PER_CONTACT = 1000
@@ -71,7 +73,7 @@ def main():
             phi = rng.uniform(0, 2 * math.pi)
             s = math.sqrt(1 - z * z)
             d = (s * math.cos(phi), s * math.sin(phi), z)
-            v = vc * rng.uniform(0.6, 1.4)
+            v = vc * rng.uniform(*SPREAD)
             h = r + (v * tc + reach) / 2
             for sign in (-1, 1):
                 atoms.append(tuple(c[q] + sign * h * d[q] for q in range(3)))
@@ -102,7 +104,8 @@ def main():
             old = best.get(name)
             best[name] = (min(loop, old[0]), min(pair, old[1])) if old else (loop, pair)
     g, p = best["granular jkr"], best["tabor plugin"]
-    print(f"{2 * PAIRS} grains, {steps} steps, {RANKS} MPI rank(s), fastest of {REPEATS}:")
+    print(f"{2 * PAIRS} grains, speeds {SPREAD[0]}-{SPREAD[1]} v_c, {steps} steps, "
+          f"{RANKS} MPI rank(s), fastest of {REPEATS}:")
     print(f"  pair_style granular jkr: loop {g[0]:.3f} s, pair {g[1]:.3f} s")
     print(f"  pair_style tabor       : loop {p[0]:.3f} s, pair {p[1]:.3f} s")
     print(f"ratio plugin/granular: pair time {p[1] / g[1]:.2f}, loop time {p[0] / g[0]:.2f} (target <= 2)")
