@@ -311,6 +311,11 @@ pub fn export_plugin(
         "newton on is refused; the neighbor skin must stay at least the interaction range (checked at run)".to_string(),
         "one pair_coeff * * for the scene's pair of bodies; polydisperse continuous size distributions (> 256 distinct R* per type pair) are refused".to_string(),
     ];
+    if range > 0.0 {
+        limits.push(format!(
+            "bodies created closer than the interaction range ({range:.4e} m beyond touching): they jump in where they start and miss the attraction's work; create grains at least that far apart"
+        ));
+    }
     if scene.sphere.material != scene.target.material {
         limits.push("the individual moduli: pair_coeff carries the effective modulus E* of the two materials".into());
     }
