@@ -43,7 +43,8 @@ pub struct LammpsArgs {
     #[arg(long, value_name = "LINE", conflicts_with = "plugin")]
     check: Option<String>,
     /// Write the fragment for pair_style tabor (the plugin built by
-    /// `cargo xtask lammps-plugin`), loaded from this .so: tabor's own force law
+    /// `cargo xtask lammps-plugin`), loaded from this .so (made absolute when it
+    /// exists): tabor's own force law
     #[arg(long, value_name = "PATH")]
     plugin: Option<PathBuf>,
 }
@@ -115,6 +116,9 @@ pub fn run(args: &Args) -> Outcome {
         return emit(&check_report(&c));
     }
     if let Some(plugin) = &a.plugin {
+        // an existing .so is written as an absolute path, so that the fragment
+        // loads it from any working directory
+        let plugin = std::fs::canonicalize(plugin).unwrap_or_else(|_| plugin.clone());
         let x = export_plugin(&scene, &plugin.to_string_lossy(), a.speed)
             .map_err(|e| format!("{}: {e}", a.scene.display()))?;
         return write_out(a, &x, &x.fragment());
