@@ -5,6 +5,10 @@
    Maugis-Dugdale across Lambda in each of its three cases, at two speeds each.
 2. The most tensile force during each collision (LAMMPS's force on atom 2, min
    over all steps) equals the model's pull-off force (tabor_law_info) within 1 %.
+   The same with the fragment that `tabor export lammps SCENE --plugin PATH`
+   writes (`exported()`): Maugis-Dugdale case 2 and the adhesive Kelvin-Voigt
+   polymer grains (JKR + Kuwabara-Kono damping A = eta_c/E*, tabor's coupled
+   viscous-adhesive model).
 3. A few hundred particles (isolated pairs colliding across the boundary between
    two MPI sub-domains and drifting through it while in contact) give the same
    outcomes, stuck or separated, on 1 and 2 MPI ranks.
@@ -61,12 +65,27 @@ def write_toml(s):
 def tabor_impact(scene, speed):
     path = write_toml(scene)
     try:
-        out = subprocess.run([TABOR, "impact", path, "--speed", repr(speed), "--json"],
-                             check=True, capture_output=True, text=True).stdout
+        return tabor_impact_path(path, speed)
     finally:
         os.unlink(path)
+
+
+def tabor_impact_path(path, speed):
+    out = subprocess.run([TABOR, "impact", path, "--speed", repr(speed), "--json"],
+                         check=True, capture_output=True, text=True).stdout
     o = json.loads(out)
     return 0.0 if o["sticks"] else o["restitution"]
+
+
+def exported(path):
+    """The fragment `tabor export lammps PATH --plugin PLUGIN` writes (its commands,
+    comments dropped) and the same export as JSON."""
+    frag = subprocess.run([TABOR, "export", "lammps", path, "--plugin", PLUGIN],
+                          check=True, capture_output=True, text=True).stdout
+    data = json.loads(subprocess.run([TABOR, "export", "lammps", path, "--plugin", PLUGIN, "--json"],
+                                     check=True, capture_output=True, text=True).stdout)
+    cmds = [l for l in frag.splitlines() if l.strip() and not l.startswith("#")]
+    return cmds, data
 
 
 def pair_coeff(scene):
@@ -84,12 +103,16 @@ def setup(lmp, cmds):
         lmp.command(c)
 
 
-def collide(scene, speed):
-    """Two equal spheres in their centre-of-mass frame; returns (e, min force, info)."""
+def collide(scene, speed, fragment=None):
+    """Two equal spheres in their centre-of-mass frame; returns (e, min force, info).
+    `fragment`: the commands of an exported fragment instead of the hand-written
+    plugin load / pair_style / pair_coeff / neighbor lines."""
     r, rho = scene["sphere"]["radius"], scene["sphere"]["density"]
     model, e_star, coeff, lam = pair_coeff(scene)
     r_star = r / 2.0
     info = law_info(FFI, model, e_star, r_star, scene["adhesion"]["work_of_adhesion"], lam)
+    plugin_cmds = fragment or [f"plugin load {PLUGIN}", "pair_style tabor", coeff,
+                               f"neighbor {0.2 * r} bin", "neigh_modify every 1 delay 0 check yes"]
     m_star = rho * 4.0 / 3.0 * math.pi * r ** 3 / 2.0
     tc = 2.87 * (m_star ** 2 / (r_star * e_star ** 2 * speed)) ** 0.2
     dt = tc / STEPS_PER_CONTACT
@@ -106,8 +129,7 @@ def collide(scene, speed):
             f"create_atoms 1 single {r + gap0 / 2} 0 0",
             f"set atom * diameter {2 * r} density {rho}",
             f"set atom 1 vx {speed / 2}", f"set atom 2 vx {-speed / 2}",
-            f"plugin load {PLUGIN}", "pair_style tabor", coeff,
-            f"neighbor {0.2 * r} bin", "neigh_modify every 1 delay 0 check yes",
+            *plugin_cmds,
             "fix integrate all nve/sphere", f"timestep {dt}",
             "variable vrel equal vx[2]-vx[1]", f"variable gap equal x[2]-x[1]-{2 * r}",
             "variable fx2 equal fx[2]", "fix fv all vector 1 v_fx2",
@@ -155,6 +177,36 @@ def two_body():
                 failures.append(f"{label} at {v}: e LAMMPS {e_l:.6f} vs tabor {e_t:.6f}")
             if e_t > 0 and abs(ratio) > PULLOFF_TOL:
                 failures.append(f"{label} at {v}: most tensile force {fmin:.4e} vs pull-off {info.pull_off_force:.4e}")
+    return failures
+
+
+EXPORTED = [  # (scene path, speeds, label); the fragment of `tabor export lammps --plugin`
+    ("integrations/lammps/scenes/maugis_case2.toml", (0.08, 0.20), "exported: MD case 2, Lambda 0.55"),
+    ("examples/scenes/polymer_grains_viscoadhesive.toml", (1.0, 2.0), "exported: JKR + Kelvin-Voigt"),
+]
+
+
+def exported_cases():
+    """Two-body collisions run with the exported fragment, against `tabor impact`."""
+    failures = []
+    root = os.path.dirname(os.path.dirname(HERE))
+    for rel, speeds, label in EXPORTED:
+        path = os.path.join(root, rel)
+        cmds, data = exported(path)
+        with open(path, "rb") as f:
+            scene = tomllib.load(f)
+        scene.setdefault("adhesion", {"work_of_adhesion": 0.0})
+        for v in speeds:
+            e_t = tabor_impact_path(path, v)
+            e_l, fmin, _ = collide(scene, v, fragment=cmds)
+            diff = e_l - e_t
+            # without damping the most tensile force is the law's pull-off force
+            ratio = fmin / data["pull_off_force"] - 1.0 if data["pull_off_force"] < 0 else 0.0
+            print(f"{label:26} {v:9.4f} {e_l:9.6f} {e_t:9.6f} {diff:+9.2e} {ratio:+11.2e}")
+            if abs(diff) > RESTITUTION_TOL:
+                failures.append(f"{label} at {v}: e LAMMPS {e_l:.6f} vs tabor {e_t:.6f}")
+            if data["damping_time"] is None and e_t > 0 and abs(ratio) > PULLOFF_TOL:
+                failures.append(f"{label} at {v}: most tensile force {fmin:.4e} vs pull-off {data['pull_off_force']:.4e}")
     return failures
 
 
@@ -269,6 +321,7 @@ def many_particles(npairs=120):
 
 def main():
     failures = two_body()
+    failures += exported_cases()
     sys.stdout.flush()
     failures += many_particles()
     if failures:
