@@ -9,7 +9,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
 use tabor::dynamics::{simulate_impact, SimulationSettings};
 use tabor::jkr::{JkrForceLaw, JkrImpact, JkrSphere, SeparationRule};
-use tabor::maugis::{MaugisDugdaleForceLaw, MaugisDugdaleImpact};
+use tabor::maugis::{MaugisContact, MaugisDugdaleForceLaw, MaugisDugdaleImpact};
 use tabor::restitution::{impact, sticking_velocity};
 
 fn impacts(c: &mut Criterion) {
@@ -21,7 +21,11 @@ fn impacts(c: &mut Criterion) {
     );
     let sphere = JkrSphere::new(e_star, r, dg).unwrap();
     let jkr = JkrImpact::new(sphere, m).unwrap();
-    let md = MaugisDugdaleImpact::new(e_star, r, dg, 1.0, m).unwrap();
+    let md = MaugisDugdaleImpact::new(
+        MaugisContact::new(JkrSphere::new(e_star, r, dg).unwrap(), 1.0).unwrap(),
+        m,
+    )
+    .unwrap();
     let v0 = 2.0 * sticking_velocity(&jkr, 1e-12).unwrap().speed;
     let settings = SimulationSettings {
         record_trajectory: false,

@@ -14,14 +14,14 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
 use tabor::jkr::{GradedSphere, JkrImpact, JkrSphere, PowerLawProfile, SeparationRule};
-use tabor::maugis::{loss_over_jkr_fast, prepare_fast_tier, MaugisDugdaleImpact};
+use tabor::maugis::{loss_over_jkr_fast, prepare_fast_tier, MaugisContact, MaugisDugdaleImpact};
 use tabor::plastic::materials::{
     ALUMINA_TABLE_3, ALUMINA_TABLE_5_2, SPHERE_MASS_SECTION_5_5_2, SPHERE_RADIUS_SECTION_5_5_2,
     STEEL_TABLE_3, STEEL_TABLE_5_2,
 };
 use tabor::plastic::{
-    AdhesiveInterpolationImpact, DimensionlessFit, Interpolation, JacksonGreen, PlasticContact,
-    PlasticImpact, SimulationSettings, Superposition, Thornton,
+    AdhesiveInterpolationImpact, AdhesivePlasticContact, DimensionlessFit, Interpolation,
+    JacksonGreen, PlasticContact, PlasticImpact, SimulationSettings, Superposition, Thornton,
 };
 use tabor::restitution::ImpactModel;
 use tabor::visco::models::{KelvinVoigtFlatPunch, KelvinVoigtSphere, MaxwellBranchSphere};
@@ -39,7 +39,11 @@ fn models(c: &mut Criterion) {
     let sphere = JkrSphere::new(e_star, r, dg).unwrap();
     let jkr = JkrImpact::new(sphere, m).unwrap();
     let jkr_load = jkr.clone().with_separation(SeparationRule::LoadControlled);
-    let md = MaugisDugdaleImpact::new(e_star, r, dg, 2.0, m).unwrap();
+    let md = MaugisDugdaleImpact::new(
+        MaugisContact::new(JkrSphere::new(e_star, r, dg).unwrap(), 2.0).unwrap(),
+        m,
+    )
+    .unwrap();
     // f(r) = A r⁴ with the sphere's curvature at r = 20 nm; E(z) = c_N z^(1/2) with
     // E(10 nm) = E*
     let power_law = JkrImpact::new(
@@ -63,7 +67,8 @@ fn models(c: &mut Criterion) {
         record_trajectory: false,
         ..SimulationSettings::default()
     };
-    let jackson_green = JacksonGreen::new(ep, rp, sy, STEEL_TABLE_5_2.poisson_ratio)
+    let jackson_green = PlasticContact::new(ep, rp, sy)
+        .and_then(|contact| JacksonGreen::new(contact, STEEL_TABLE_5_2.poisson_ratio))
         .unwrap()
         .impact(mp, settings)
         .unwrap();
@@ -78,7 +83,12 @@ fn models(c: &mut Criterion) {
     .unwrap();
     let superposition =
         Superposition::new(interpolation.clone(), JkrSphere::new(ep, rp, 0.5).unwrap()).unwrap();
-    let adhesive = AdhesiveInterpolationImpact::from_yield_stress(ep, rp, sy, 0.5, mp).unwrap();
+    let adhesive = AdhesiveInterpolationImpact::new(
+        AdhesivePlasticContact::from_yield_stress(JkrSphere::new(ep, rp, 0.5).unwrap(), sy)
+            .unwrap(),
+        mp,
+    )
+    .unwrap();
     let v_plastic = 1.0;
 
     // viscoelastic: rubber-like half-space, a 1 cm steel ball

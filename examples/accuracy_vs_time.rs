@@ -40,7 +40,7 @@ use std::time::{Duration, Instant};
 use tabor::dynamics::{simulate_impact, SimulationSettings};
 use tabor::jkr::{normalized, JkrForceLaw, JkrImpact, JkrSphere, SeparationRule};
 use tabor::maugis::{
-    loss_over_jkr_fast, normalized_loss, prepare_fast_tier, MaugisDugdaleForceLaw,
+    loss_over_jkr_fast, normalized_loss, prepare_fast_tier, MaugisContact, MaugisDugdaleForceLaw,
     MaugisDugdaleImpact, FAST_TIER_RELATIVE_ERROR,
 };
 use tabor::restitution::{impact, restitution_from_loss, sticking_velocity};
@@ -246,7 +246,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             reference,
         });
     }
-    let md = MaugisDugdaleImpact::new(e_star, r, dg, 1.0, m)?;
+    let md = MaugisDugdaleImpact::new(MaugisContact::new(JkrSphere::new(e_star, r, dg)?, 1.0)?, m)?;
     let md_loss = normalized_loss(1.0, REFERENCE_TOLERANCE)?.loss * md.scales().energy;
     let reference = restitution_from_loss(md_loss, m, v0)?;
     for tol in TOLERANCES {

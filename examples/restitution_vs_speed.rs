@@ -25,8 +25,8 @@ use tabor::plastic::materials::{
     SPHERE_MASS_SECTION_5_5_2, SPHERE_RADIUS_SECTION_5_5_2, STEEL_TABLE_3, STEEL_TABLE_5_2,
 };
 use tabor::plastic::{
-    AdhesiveInterpolationImpact, DimensionlessFit, Interpolation, JacksonGreen, PlasticContact,
-    PlasticImpact, SimulationSettings, Superposition, Thornton,
+    AdhesiveInterpolationImpact, AdhesivePlasticContact, DimensionlessFit, Interpolation,
+    JacksonGreen, PlasticContact, PlasticImpact, SimulationSettings, Superposition, Thornton,
 };
 use tabor::restitution::{impact, sticking_velocity, ImpactModel};
 
@@ -106,8 +106,9 @@ fn models(pair: &Pair) -> Result<Models, Box<dyn Error>> {
         record_trajectory: false,
         ..SimulationSettings::default()
     };
-    let jackson_green =
-        JacksonGreen::new(e_star, r, sigma_y, pair.plate.poisson_ratio)?.impact(m, settings)?;
+    let jackson_green = PlasticContact::new(e_star, r, sigma_y)
+        .and_then(|contact| JacksonGreen::new(contact, pair.plate.poisson_ratio))?
+        .impact(m, settings)?;
     // Seed 001 with its own Table 3 constants (E*, σ_y, the sphere density).
     let fit = DimensionlessFit::new(
         ALUMINA_TABLE_3.effective_modulus_with(&pair.plate_table_3)?,
@@ -119,8 +120,13 @@ fn models(pair: &Pair) -> Result<Models, Box<dyn Error>> {
     )?;
     let sphere = JkrSphere::new(e_star, r, WORK_OF_ADHESION)?;
     let superposition = Superposition::new(interpolation.clone(), sphere)?;
-    let adhesive =
-        AdhesiveInterpolationImpact::from_yield_stress(e_star, r, sigma_y, WORK_OF_ADHESION, m)?;
+    let adhesive = AdhesiveInterpolationImpact::new(
+        AdhesivePlasticContact::from_yield_stress(
+            JkrSphere::new(e_star, r, WORK_OF_ADHESION)?,
+            sigma_y,
+        )?,
+        m,
+    )?;
     let sticking = sticking_velocity(superposition.adhesive(), 1e-12)?.speed;
     let phi = adhesive.model().adhesion_parameter();
     Ok(Models {

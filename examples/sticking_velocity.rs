@@ -17,7 +17,7 @@ use std::io::Write;
 use std::path::PathBuf;
 use tabor::jkr::{JkrImpact, JkrSphere, SeparationRule};
 use tabor::maugis::units::tabor_parameter_from_range;
-use tabor::maugis::{MaugisDugdaleImpact, LAMBDA_1};
+use tabor::maugis::{MaugisContact, MaugisDugdaleImpact, LAMBDA_1};
 use tabor::restitution::{sticking_velocity, ImpactModel};
 
 /// Number of log-spaced particle radii from 1 nm to 1 mm.
@@ -88,7 +88,11 @@ fn sticking_velocities(material: &Material, r1: f64) -> Result<([f64; 3], f64), 
     let load = fixed
         .clone()
         .with_separation(SeparationRule::LoadControlled);
-    let md = MaugisDugdaleImpact::from_range(e_star, r, dg, RANGE, m)?.with_tolerance(TOLERANCE)?;
+    let md = MaugisDugdaleImpact::new(
+        MaugisContact::from_range(JkrSphere::new(e_star, r, dg)?, RANGE)?,
+        m,
+    )?
+    .with_tolerance(TOLERANCE)?;
     let models: [&dyn ImpactModel; 3] = [&fixed, &load, &md];
     let mut v = [0.0; 3];
     for (slot, model) in v.iter_mut().zip(models) {

@@ -13,7 +13,7 @@ use std::io::Write;
 use std::path::PathBuf;
 use tabor::dynamics::{simulate_impact, ImpactSimulation, SimulationSettings};
 use tabor::jkr::{JkrForceLaw, JkrImpact, JkrSphere, SeparationRule};
-use tabor::maugis::{MaugisDugdaleForceLaw, MaugisDugdaleImpact};
+use tabor::maugis::{MaugisContact, MaugisDugdaleForceLaw, MaugisDugdaleImpact};
 use tabor::restitution::{impact, sticking_velocity};
 
 fn out_dir() -> Result<PathBuf, Box<dyn Error>> {
@@ -35,7 +35,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let m = 4.0 / 3.0 * std::f64::consts::PI * r1.powi(3) * rho / 2.0;
     let sphere = JkrSphere::new(e_star, r, w)?;
     let jkr = JkrImpact::new(sphere, m)?;
-    let md = MaugisDugdaleImpact::new(e_star, r, w, 1.0, m)?;
+    let md = MaugisDugdaleImpact::new(MaugisContact::new(JkrSphere::new(e_star, r, w)?, 1.0)?, m)?;
     let v0 = 2.0 * sticking_velocity(&jkr, 1e-12)?.speed;
     let settings = SimulationSettings::default();
 

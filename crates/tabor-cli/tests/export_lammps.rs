@@ -105,3 +105,43 @@ fn closed_stdout_is_not_an_error() {
     assert!(status.success(), "{status:?}: {err}");
     assert!(!err.contains("panicked"), "{err}");
 }
+
+#[test]
+fn plugin_fragment_json_and_refusals() {
+    let so = "/x/taborplugin.so";
+    let args = [
+        "export",
+        "lammps",
+        "integrations/lammps/scenes/maugis_case1.toml",
+        "--plugin",
+        so,
+    ];
+    let o = tabor(&args);
+    assert!(o.status.success());
+    let frag = String::from_utf8(o.stdout).unwrap();
+    let cmds: Vec<&str> = frag.lines().filter(|l| !l.starts_with('#')).collect();
+    assert_eq!(cmds[2], format!("plugin load {so}"));
+    assert_eq!(cmds[3], "pair_style tabor");
+    let json = tabor(&[&args[..], &["--json"]].concat());
+    let v: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    let listed: Vec<&str> = v["commands"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c.as_str().unwrap())
+        .collect();
+    assert_eq!(listed, cmds);
+    assert_eq!(v["model"], "maugis");
+    assert_eq!(v["tabor_parameter"], 0.3);
+    // plasticity, a flat target: exit 2, one line
+    for scene in [
+        "examples/scenes/silica_maugis_plastic.toml",
+        "integrations/lammps/scenes/jkr_wall.toml",
+    ] {
+        let o = tabor(&["export", "lammps", scene, "--plugin", so]);
+        assert_eq!(o.status.code(), Some(2), "{scene}");
+        let err = String::from_utf8(o.stderr).unwrap();
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains("pair_style tabor"), "{err}");
+    }
+}

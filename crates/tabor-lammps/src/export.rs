@@ -494,7 +494,9 @@ fn fit_gamma_and_eta(
     if !(g(0.0) > 0.0 && g(hi) < 0.0) {
         return None;
     }
-    let eta = brent(g, 0.0, hi, RootTolerance::relative(1e-8)).ok()?.value;
+    let eta = brent(g, 0.0, hi, RootTolerance::relative(1e-12))
+        .ok()?
+        .value;
     Some((gamma_of(eta)?, eta))
 }
 
@@ -524,22 +526,18 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
     let e_lammps = 2.0 * e_star * (1.0 - nu * nu);
     let v_scene = speed.or(scene.speed);
     let scene_outcome = v_scene.map(|v| outcome(scene, v)).transpose()?;
-    let lossy_effects: Vec<&str> = match &scene_outcome {
-        Some(o) => ["plasticity", "viscoelasticity"]
-            .into_iter()
-            .filter(|n| used(o, n))
-            .collect(),
-        None => {
-            let mut v = Vec::new();
-            if scene.yield_stress().is_some() {
-                v.push("plasticity");
-            }
-            if scene.sphere.viscosity.is_some() || scene.target.viscosity.is_some() {
-                v.push("viscoelasticity");
-            }
-            v
-        }
+    // viscoelasticity whenever a viscosity is given (its loss acts at every speed,
+    // even where the scene's outcome drops it because adhesion alone makes the
+    // bodies stick); plasticity where the scene uses it at the calibration speed
+    let viscous = scene.sphere.viscosity.is_some() || scene.target.viscosity.is_some();
+    let plastic = match &scene_outcome {
+        Some(o) => used(o, "plasticity"),
+        None => scene.yield_stress().is_some(),
     };
+    let lossy_effects: Vec<&str> = [(plastic, "plasticity"), (viscous, "viscoelasticity")]
+        .into_iter()
+        .filter_map(|(on, name)| on.then_some(name))
+        .collect();
     if !lossy_effects.is_empty() && v_scene.is_none() {
         return Err(unrepresentable(
             &lossy_effects.join(" and "),

@@ -8,6 +8,10 @@
 //!   point), a `damping viscoelastic` coefficient for viscoelastic and plastic
 //!   losses — with the claims (which speeds, which error) and what is not
 //!   reproduced ([`Export::fragment`]);
+//! - [`export_plugin()`]: the fragment for `pair_style tabor` (the plugin of
+//!   `integrations/lammps/plugin`, tabor's own force laws through `tabor-ffi`):
+//!   `plugin load`, `pair_coeff * * maugis|jkr/…|hertz …`, the neighbor skin, and
+//!   what it reproduces ([`PluginExport::fragment`]);
 //! - [`check()`]: the restitution LAMMPS will really produce for a user's
 //!   `pair_coeff` or `wall/gran` line (nominal versus achieved);
 //! - [`GranularModel`]: LAMMPS's normal force and damping laws as a
@@ -20,6 +24,7 @@ mod check;
 mod export;
 mod law;
 mod parse;
+mod plugin;
 
 pub use check::{check, Check, CheckPoint};
 pub use export::{
@@ -32,3 +37,7 @@ pub use law::{
     LammpsLaw, NormalModel,
 };
 pub use parse::{parse_line, LineError, LineKind, ParsedLine};
+pub use plugin::{
+    export_plugin, PluginExport, PluginModel, PluginSpeed, PLUGIN_RESTITUTION_ERROR,
+    PLUGIN_TIME_STEP_FRACTION,
+};

@@ -90,5 +90,5 @@ pub use impact::{
     impact_path, jkr_normalized_loss, normalized_loss, ImpactPath, MaugisNormalizedLoss, PathState,
     TaborCase, LAMBDA_1, LAMBDA_2, LAMBDA_JKR_LIMIT,
 };
-pub use model::MaugisDugdaleImpact;
+pub use model::{MaugisContact, MaugisDugdaleImpact};
 pub use trace::{equilibrium_state, trace_impact, Phase, TracePoint};

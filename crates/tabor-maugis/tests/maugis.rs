@@ -6,6 +6,7 @@
 use approx::assert_relative_eq;
 use proptest::prelude::*;
 use std::f64::consts::PI;
+use tabor_jkr::JkrSphere;
 use tabor_maugis::branch::{
     contact_state, junction_factor, no_contact_pull_off_radius, no_contact_state,
 };
@@ -358,13 +359,20 @@ fn bad_input_is_a_named_error() {
     }
     let e = normalized_loss(1.0, 0.0).unwrap_err();
     assert!(e.to_string().contains("tolerance"), "{e}");
-    let e = MaugisDugdaleImpact::new(1e9, -1.0, 0.1, 1.0, 1.0).unwrap_err();
+    let e = JkrSphere::new(1e9, -1.0, 0.1)
+        .and_then(|sphere| MaugisContact::new(sphere, 1.0))
+        .and_then(|contact| MaugisDugdaleImpact::new(contact, 1.0))
+        .unwrap_err();
     assert!(e.to_string().contains("effective_radius"), "{e}");
 }
 
 #[test]
 fn restitution_and_sticking_through_the_core() {
-    let m = MaugisDugdaleImpact::new(2.78e10, 5e-7, 0.05, 2.0, 5.55e-15).unwrap();
+    let m = MaugisDugdaleImpact::new(
+        MaugisContact::new(JkrSphere::new(2.78e10, 5e-7, 0.05).unwrap(), 2.0).unwrap(),
+        5.55e-15,
+    )
+    .unwrap();
     let joules = m.energy_loss_joules().unwrap();
     let vc = sticking_velocity(&m, 1e-12).unwrap();
     assert_eq!(vc.method, StickingMethod::ClosedForm);
@@ -386,7 +394,7 @@ proptest! {
         log_e in 5.0f64..12.0, log_r in -9.0f64..0.0, log_w in -3.0f64..0.0, log_l in -3.0f64..4.0,
     ) {
         let (e, r, w, l) = (10f64.powf(log_e), 10f64.powf(log_r), 10f64.powf(log_w), 10f64.powf(log_l));
-        let m = MaugisDugdaleImpact::new(e, r, w, l, 1.0).unwrap();
+        let m = MaugisDugdaleImpact::new(MaugisContact::new(JkrSphere::new(e, r, w).unwrap(), l).unwrap(), 1.0).unwrap();
         let joules = m.energy_loss_joules().unwrap();
         let energy = 3.0 * 3f64.cbrt() / 8.0 * (r.powi(4) * (PI * w).powi(5) / (e * e)).cbrt();
         let normalized = normalized_loss(l, 1e-12).unwrap().loss;

@@ -4,7 +4,7 @@
 
 use tabor_dynamics::SimulationSettings;
 use tabor_jkr::{JkrImpact, JkrSphere};
-use tabor_maugis::MaugisDugdaleImpact;
+use tabor_maugis::{MaugisContact, MaugisDugdaleImpact};
 use tabor_penalty::{calibrate_characteristic, calibrate_damped_law, Error, PenaltyStiffness};
 use tabor_restitution::{impact, ImpactModel};
 
@@ -57,7 +57,11 @@ fn calibrated_law_reproduces_jkr_restitution() {
 #[test]
 fn calibrated_law_reproduces_maugis_dugdale_restitution() {
     for &lambda in &[0.5, 2.0] {
-        let model = MaugisDugdaleImpact::new(MODULUS, RADIUS, WORK, lambda, MASS).unwrap();
+        let model = MaugisDugdaleImpact::new(
+            MaugisContact::new(JkrSphere::new(MODULUS, RADIUS, WORK).unwrap(), lambda).unwrap(),
+            MASS,
+        )
+        .unwrap();
         check(&model, &[0.08, 0.2, 1.0]);
     }
 }

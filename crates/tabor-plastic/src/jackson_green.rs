@@ -49,23 +49,19 @@ pub struct JacksonGreen {
 }
 
 impl JacksonGreen {
-    /// The contact with effective modulus `E*` (Pa), effective radius `R` (m), yield
-    /// stress `σ_Y` (Pa, < E*) and Poisson's ratio `ν` (−1 < ν ≤ 1/2), hardness ratio
-    /// [`DEFAULT_HARDNESS_RATIO`].
+    /// The Jackson-Green law for the contact `contact` (its effective modulus `E*`,
+    /// effective radius `R` and yield stress `σ_Y`, already validated by
+    /// [`PlasticContact::new`]) and Poisson's ratio `ν` (−1 < ν ≤ 1/2) of the yielding
+    /// body, hardness ratio [`DEFAULT_HARDNESS_RATIO`]. Only `E*`, `R`, `σ_Y` of the
+    /// contact are used: the yield onset is Jackson and Green's `C(ν)`, not Thornton's
+    /// `p_Y = 1.6 σ_Y`.
     ///
     /// Seed 000, eq. (5.108) (`C(ν)`).
-    pub fn new(
-        effective_modulus: f64,
-        effective_radius: f64,
-        yield_stress: f64,
-        poisson_ratio: f64,
-    ) -> Result<Self> {
-        // Validates E*, R, σ_Y the same way as the other models.
-        PlasticContact::new(effective_modulus, effective_radius, yield_stress)?;
+    pub fn new(contact: PlasticContact, poisson_ratio: f64) -> Result<Self> {
         let nu = validate::poisson_ratio("poisson_ratio", poisson_ratio)?;
-        let e = effective_modulus;
-        let r = effective_radius;
-        let s = yield_stress;
+        let e = contact.effective_modulus();
+        let r = contact.effective_radius();
+        let s = contact.yield_stress();
         let c = critical_pressure_factor(nu);
         let strain = PI * c * s / (2.0 * e);
         let critical_depth = positive_output(MODEL, "d*_Y", strain * strain * r)?;

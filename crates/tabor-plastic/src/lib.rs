@@ -47,8 +47,9 @@ mod yield_velocity;
 
 pub use adhesive::{
     adhesion_parameter, adhesive_yield_force, AdhesiveForceLaw, AdhesiveInterpolation,
-    AdhesiveInterpolationImpact, AdhesiveTurningPoint, ADHESION_PARAMETER_FACTOR,
-    ADHESIVE_PLASTIC_ONSET, ADHESIVE_PLASTIC_SLOPE, WEAK_ADHESION_YIELD_COEFFICIENT,
+    AdhesiveInterpolationImpact, AdhesivePlasticContact, AdhesiveTurningPoint,
+    ADHESION_PARAMETER_FACTOR, ADHESIVE_PLASTIC_ONSET, ADHESIVE_PLASTIC_SLOPE,
+    WEAK_ADHESION_YIELD_COEFFICIENT,
 };
 pub use contact::{PlasticContact, LIMITING_PRESSURE_RATIO};
 pub use dimensionless_fit::{Clamping, DimensionlessFit, FittedRestitution};

@@ -5,9 +5,10 @@ use proptest::prelude::*;
 use tabor_jkr::{JkrImpact, JkrSphere};
 use tabor_plastic::{
     adhesion_parameter, adhesive_yield_force, AdhesiveInterpolation, AdhesiveInterpolationImpact,
-    Interpolation, LoadingLaw, PlasticContact, PlasticImpact, Superposition, Thornton,
-    ADHESION_PARAMETER_FACTOR, ADHESIVE_PLASTIC_ONSET, ADHESIVE_PLASTIC_SLOPE,
-    DEFAULT_PLASTIC_ONSET, DEFAULT_PLASTIC_SLOPE, WEAK_ADHESION_YIELD_COEFFICIENT,
+    AdhesivePlasticContact, Interpolation, LoadingLaw, PlasticContact, PlasticImpact,
+    Superposition, Thornton, ADHESION_PARAMETER_FACTOR, ADHESIVE_PLASTIC_ONSET,
+    ADHESIVE_PLASTIC_SLOPE, DEFAULT_PLASTIC_ONSET, DEFAULT_PLASTIC_SLOPE,
+    WEAK_ADHESION_YIELD_COEFFICIENT,
 };
 use tabor_restitution::{impact, sticking_velocity, ImpactModel};
 
@@ -178,8 +179,15 @@ fn restitution_tends_to_the_default_interpolation_model_as_work_of_adhesion_vani
         let diff: Vec<f64> = [1.01e-4, 1.01e-3, 1.01e-2]
             .iter()
             .map(|&phi| {
-                let adh =
-                    AdhesiveInterpolationImpact::from_yield_stress(e, r, s, dg(phi), m).unwrap();
+                let adh = AdhesiveInterpolationImpact::new(
+                    AdhesivePlasticContact::from_yield_stress(
+                        JkrSphere::new(e, r, dg(phi)).unwrap(),
+                        s,
+                    )
+                    .unwrap(),
+                    m,
+                )
+                .unwrap();
                 assert!(rel(adh.model().adhesion_parameter(), phi) < 1e-12);
                 (impact(&adh, v0).unwrap().restitution - e_plain).abs()
             })
@@ -196,7 +204,11 @@ fn restitution_tends_to_the_default_interpolation_model_as_work_of_adhesion_vani
 fn below_yield_the_impact_is_elastic_jkr() {
     // Independent path: tabor-jkr's elastic JKR impact (5.36)-(5.37). 1e-10.
     let (e, r, dg, m) = (1e11, 1e-5, 0.05, 1e-11);
-    let model = AdhesiveInterpolationImpact::new(e, r, dg, 0.3, m).unwrap();
+    let model = AdhesiveInterpolationImpact::new(
+        AdhesivePlasticContact::new(JkrSphere::new(e, r, dg).unwrap(), 0.3).unwrap(),
+        m,
+    )
+    .unwrap();
     let v_y = model.yield_velocity();
     assert!(v_y > 3.0 * model.elastic_sticking_velocity());
     let elastic = JkrImpact::new(JkrSphere::new(e, r, dg).unwrap(), m).unwrap();
@@ -212,7 +224,11 @@ fn below_yield_the_impact_is_elastic_jkr() {
 #[test]
 fn sticking_velocity_is_the_root_of_zero_restitution() {
     for &phi in &[0.5, 1.0, 2.0] {
-        let model = AdhesiveInterpolationImpact::new(1e11, 1e-5, 0.5, phi, 1e-13).unwrap();
+        let model = AdhesiveInterpolationImpact::new(
+            AdhesivePlasticContact::new(JkrSphere::new(1e11, 1e-5, 0.5).unwrap(), phi).unwrap(),
+            1e-13,
+        )
+        .unwrap();
         let v = sticking_velocity(&model, 1e-12).unwrap().speed;
         // Plastic dissipation adds to adhesion: never sticks at a lower speed than
         // elastic JKR (equal when the yield speed lies above v_c: Phi = 0.5).
@@ -240,9 +256,8 @@ proptest! {
     fn restitution_depends_on_speed_ratio_and_phi_only(
         phi in 0.1f64..6.0, ratio in 1.01f64..100.0, log_r in -7.0f64..-2.0,
         log_m in -15.0f64..-5.0, log_dg in -2.0f64..0.5, log_e in 9.0f64..11.5) {
-        let base = AdhesiveInterpolationImpact::new(1e11, 1e-5, 0.5, phi, 1e-12).unwrap();
-        let other = AdhesiveInterpolationImpact::new(
-            10f64.powf(log_e), 10f64.powf(log_r), 10f64.powf(log_dg), phi, 10f64.powf(log_m)).unwrap();
+        let base = AdhesiveInterpolationImpact::new(AdhesivePlasticContact::new(JkrSphere::new(1e11, 1e-5, 0.5).unwrap(), phi).unwrap(), 1e-12).unwrap();
+        let other = AdhesiveInterpolationImpact::new(AdhesivePlasticContact::new(JkrSphere::new(10f64.powf(log_e), 10f64.powf(log_r), 10f64.powf(log_dg)).unwrap(), phi).unwrap(), 10f64.powf(log_m)).unwrap();
         let a = impact(&base, ratio * base.elastic_sticking_velocity()).unwrap().restitution;
         let b = impact(&other, ratio * other.elastic_sticking_velocity()).unwrap().restitution;
         prop_assert!((a - b).abs() < 1e-9 * a.max(1e-3), "{a} vs {b}");
@@ -255,9 +270,9 @@ proptest! {
     #[test]
     fn invariance_with_phi_from_material_data(k in 0.1f64..10.0, ratio in 1.1f64..50.0) {
         let (e, r, s, dg, m) = (7e10, 1e-5, 4e8, 0.3, 1e-12);
-        let base = AdhesiveInterpolationImpact::from_yield_stress(e, r, s, dg, m).unwrap();
+        let base = AdhesiveInterpolationImpact::new(AdhesivePlasticContact::from_yield_stress(JkrSphere::new(e, r, dg).unwrap(), s).unwrap(), m).unwrap();
         let k3 = k * k * k;
-        let other = AdhesiveInterpolationImpact::from_yield_stress(e, r * k3, s, dg * k3, m * 7.3).unwrap();
+        let other = AdhesiveInterpolationImpact::new(AdhesivePlasticContact::from_yield_stress(JkrSphere::new(e, r * k3, dg * k3).unwrap(), s).unwrap(), m * 7.3).unwrap();
         prop_assert!(rel(base.model().adhesion_parameter(), other.model().adhesion_parameter()) < 1e-12);
         let a = impact(&base, ratio * base.elastic_sticking_velocity()).unwrap().restitution;
         let b = impact(&other, ratio * other.elastic_sticking_velocity()).unwrap().restitution;

@@ -6,9 +6,9 @@
 
 use tabor_jkr::{JkrImpact, JkrSphere};
 use tabor_plastic::{
-    AdhesiveInterpolation, AdhesiveInterpolationImpact, DimensionlessFit, Interpolation,
-    JacksonGreen, PlasticContact, PlasticImpact, SimulationSettings, Superposition, Thornton,
-    YieldVelocity, ADHESION_PARAMETER_FACTOR, ADHESIVE_PLASTIC_SLOPE,
+    AdhesiveInterpolation, AdhesiveInterpolationImpact, AdhesivePlasticContact, DimensionlessFit,
+    Interpolation, JacksonGreen, PlasticContact, PlasticImpact, SimulationSettings, Superposition,
+    Thornton, YieldVelocity, ADHESION_PARAMETER_FACTOR, ADHESIVE_PLASTIC_SLOPE,
 };
 use tabor_restitution::{impact, ImpactModel};
 
@@ -38,14 +38,10 @@ fn grid(ratios: &[f64], phis: &[f64]) -> Vec<(f64, Vec<f64>)> {
     let models: Vec<AdhesiveInterpolationImpact> = phis
         .iter()
         .filter_map(|&phi| {
-            AdhesiveInterpolationImpact::from_yield_stress(
-                e,
-                r,
-                s,
-                work_of_adhesion(phi, e, r, s),
-                m,
-            )
-            .ok()
+            JkrSphere::new(e, r, work_of_adhesion(phi, e, r, s))
+                .and_then(|sphere| AdhesivePlasticContact::from_yield_stress(sphere, s))
+                .and_then(|contact| AdhesiveInterpolationImpact::new(contact, m))
+                .ok()
         })
         .collect();
     ratios
@@ -158,7 +154,12 @@ fn loss_is_continuous_and_c1_at_the_adhesive_yield_onset() {
     let (e, r, s, m) = PS;
     for &phi in &[0.2, 0.5, 0.8] {
         let dg = work_of_adhesion(phi, e, r, s);
-        let model = AdhesiveInterpolationImpact::from_yield_stress(e, r, s, dg, m).unwrap();
+        let model = AdhesiveInterpolationImpact::new(
+            AdhesivePlasticContact::from_yield_stress(JkrSphere::new(e, r, dg).unwrap(), s)
+                .unwrap(),
+            m,
+        )
+        .unwrap();
         let u = JkrImpact::new(JkrSphere::new(e, r, dg).unwrap(), m)
             .unwrap()
             .adhesive_energy_loss()
@@ -184,7 +185,11 @@ fn loss_is_continuous_and_c1_at_the_adhesive_yield_onset() {
 fn section_5_6(phi: f64) -> Vec<(f64, f64, f64, f64)> {
     let (e, r, s, m) = (1e11, 1e-5, 5e8, 1e-11);
     let dg = work_of_adhesion(phi, e, r, s);
-    let adhesive = AdhesiveInterpolationImpact::from_yield_stress(e, r, s, dg, m).unwrap();
+    let adhesive = AdhesiveInterpolationImpact::new(
+        AdhesivePlasticContact::from_yield_stress(JkrSphere::new(e, r, dg).unwrap(), s).unwrap(),
+        m,
+    )
+    .unwrap();
     assert!(rel(adhesive.model().adhesion_parameter(), phi) < 1e-12);
     let plastic = PlasticImpact::new(
         PlasticContact::new(e, r, s).unwrap(),
@@ -253,7 +258,11 @@ fn yield_velocity_trait_gives_each_models_own_onset() {
     let v_y = ((16.0 / 15.0) * (0.8 * pi).powi(5) * (s / e).powi(5) * e * r.powi(3) / m).sqrt();
     let contact = PlasticContact::new(e, r, s).unwrap();
     let dg = work_of_adhesion(0.3, e, r, s);
-    let adhesive = AdhesiveInterpolationImpact::from_yield_stress(e, r, s, dg, m).unwrap();
+    let adhesive = AdhesiveInterpolationImpact::new(
+        AdhesivePlasticContact::from_yield_stress(JkrSphere::new(e, r, dg).unwrap(), s).unwrap(),
+        m,
+    )
+    .unwrap();
     let w = |a: f64| 1.2 * a.powi(5) - 4.0 * a.powf(3.5) + 2.0 * a * a;
     let f_y = tabor_plastic::adhesive_yield_force(0.3).unwrap();
     let a_y = (1.0 + (1.0 + f_y).sqrt()).powf(2.0 / 3.0);
@@ -261,7 +270,8 @@ fn yield_velocity_trait_gives_each_models_own_onset() {
     let v_adh = (2.0 * (w(a_y) - w((4.0f64 / 3.0).powf(2.0 / 3.0))) * sc.energy / m).sqrt();
     let rho = 3900.0;
     let fit = DimensionlessFit::new(e, s, rho, m).unwrap();
-    let jg = JacksonGreen::new(e, r, s, 0.3)
+    let jg = PlasticContact::new(e, r, s)
+        .and_then(|contact| JacksonGreen::new(contact, 0.3))
         .unwrap()
         .impact(m, SimulationSettings::default())
         .unwrap();
@@ -296,7 +306,11 @@ fn yield_velocity_trait_gives_each_models_own_onset() {
         assert!(rel(YieldVelocity::yield_velocity(&borrowed), *expected) < 1e-10);
     }
     // Inside the adhesive well the contact yields at any speed.
-    let strong = AdhesiveInterpolationImpact::new(e, r, dg, 1.5, m).unwrap();
+    let strong = AdhesiveInterpolationImpact::new(
+        AdhesivePlasticContact::new(JkrSphere::new(e, r, dg).unwrap(), 1.5).unwrap(),
+        m,
+    )
+    .unwrap();
     assert_eq!(YieldVelocity::yield_velocity(&strong), 0.0);
     assert!(strong.energy_loss(1e-3).unwrap().joules > 0.0);
 }

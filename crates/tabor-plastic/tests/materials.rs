@@ -6,8 +6,8 @@ use tabor_dynamics::SimulationSettings;
 use tabor_jkr::JkrSphere;
 use tabor_plastic::materials::*;
 use tabor_plastic::{
-    AdhesiveInterpolationImpact, Clamping, DimensionlessFit, Interpolation, JacksonGreen,
-    PlasticContact, PlasticImpact, Superposition, Thornton,
+    AdhesiveInterpolationImpact, AdhesivePlasticContact, Clamping, DimensionlessFit, Interpolation,
+    JacksonGreen, PlasticContact, PlasticImpact, Superposition, Thornton,
 };
 use tabor_restitution::{impact, ImpactModel};
 
@@ -124,18 +124,20 @@ fn published_cases_run_through_every_model() {
         let v_y = contact.yield_velocity(m).unwrap();
         let thornton = PlasticImpact::new(contact, Thornton, m).unwrap();
         let interpolation = PlasticImpact::new(contact, Interpolation::default(), m).unwrap();
-        let jg = JacksonGreen::new(case.modulus, r, case.yield_stress, case.poisson_ratio)
+        let jg = PlasticContact::new(case.modulus, r, case.yield_stress)
+            .and_then(|contact| JacksonGreen::new(contact, case.poisson_ratio))
             .unwrap()
             .impact(m, SimulationSettings::default())
             .unwrap();
         let fit = DimensionlessFit::new(case.modulus, case.yield_stress, case.density, m).unwrap();
         let sphere = JkrSphere::new(case.modulus, r, dg).unwrap();
         let sup = Superposition::new(interpolation.clone(), sphere).unwrap();
-        let adh = AdhesiveInterpolationImpact::from_yield_stress(
-            case.modulus,
-            r,
-            case.yield_stress,
-            dg,
+        let adh = AdhesiveInterpolationImpact::new(
+            AdhesivePlasticContact::from_yield_stress(
+                JkrSphere::new(case.modulus, r, dg).unwrap(),
+                case.yield_stress,
+            )
+            .unwrap(),
             m,
         )
         .unwrap();
@@ -185,7 +187,8 @@ fn seed_000_section_5_5_2_numbers() {
     let steel = PlasticContact::new(c[0].modulus, r, c[0].yield_stress).unwrap();
     let interp = PlasticImpact::new(steel, Interpolation::default(), m).unwrap();
     assert!(impact(&interp, 0.12).unwrap().restitution > 0.98);
-    let jg = JacksonGreen::new(c[0].modulus, r, c[0].yield_stress, c[0].poisson_ratio)
+    let jg = PlasticContact::new(c[0].modulus, r, c[0].yield_stress)
+        .and_then(|contact| JacksonGreen::new(contact, c[0].poisson_ratio))
         .unwrap()
         .impact(m, SimulationSettings::default())
         .unwrap();

@@ -7,8 +7,8 @@ use tabor_dynamics::SimulationSettings;
 use tabor_jkr::JkrSphere;
 use tabor_plastic::{
     adhesion_parameter, adhesive_yield_force, AdhesiveInterpolation, AdhesiveInterpolationImpact,
-    DimensionlessFit, Interpolation, JacksonGreen, LoadingLaw, PlasticContact, PlasticImpact,
-    Superposition, Thornton,
+    AdhesivePlasticContact, DimensionlessFit, Interpolation, JacksonGreen, LoadingLaw,
+    PlasticContact, PlasticImpact, Superposition, Thornton,
 };
 use tabor_restitution::{Error, ImpactModel, Result};
 
@@ -63,7 +63,7 @@ proptest! {
         if let Ok(fit) = DimensionlessFit::new(e, s, r, m) {
             ok_or_error(loss(&fit, v))?;
         }
-        if let Ok(jg) = JacksonGreen::new(e, r, s, nu) {
+        if let Ok(jg) = PlasticContact::new(e, r, s).and_then(|contact| JacksonGreen::new(contact, nu)) {
             ok_or_error(jg.loading_force(v))?;
             ok_or_error(jg.loading_contact_radius(v))?;
             ok_or_error(jg.residual_depth(v))?;
@@ -82,7 +82,7 @@ proptest! {
             ok_or_error(model.loading_force(v))?;
             ok_or_error(model.loading_work(v))?;
         }
-        if let Ok(model) = AdhesiveInterpolationImpact::from_yield_stress(e, r, s, dg, m) {
+        if let Ok(model) = JkrSphere::new(e, r, dg).and_then(|sphere| AdhesivePlasticContact::from_yield_stress(sphere, s)).and_then(|contact| AdhesiveInterpolationImpact::new(contact, m)) {
             ok_or_error(loss(&model, v))?;
         }
         if let (Ok(c), Ok(sphere)) = (PlasticContact::new(e, r, s), JkrSphere::new(e, r, dg)) {
@@ -101,7 +101,7 @@ proptest! {
     fn jackson_green_simulation_never_panics(log_e in 8.0f64..12.0, log_r in -8.0f64..0.0,
         strain in 1e-4f64..0.05, log_m in -16.0f64..0.0, log_s in -1.0f64..3.0, nu in -0.5f64..0.5) {
         let e = 10f64.powf(log_e);
-        let jg = JacksonGreen::new(e, 10f64.powf(log_r), strain * e, nu).unwrap();
+        let jg = PlasticContact::new(e, 10f64.powf(log_r), strain * e).and_then(|contact| JacksonGreen::new(contact, nu)).unwrap();
         let model = jg.impact(10f64.powf(log_m), SimulationSettings::default()).unwrap();
         let v = 10f64.powf(log_s) * model.yield_velocity();
         let l = loss(&model, v).unwrap();

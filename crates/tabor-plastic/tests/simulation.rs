@@ -5,11 +5,12 @@
 
 use proptest::prelude::*;
 use tabor_dynamics::{simulate_impact, EventKind, SimulationSettings};
+use tabor_jkr::JkrSphere;
 use tabor_numerics::quadrature::{integrate_smooth, QuadTolerance};
 use tabor_numerics::root_finding::{brent, RootTolerance};
 use tabor_plastic::{
-    AdhesiveInterpolation, AdhesiveInterpolationImpact, Interpolation, JacksonGreen,
-    PlasticContact, PlasticImpact, Thornton, FIT_ONSET,
+    AdhesiveInterpolation, AdhesiveInterpolationImpact, AdhesivePlasticContact, Interpolation,
+    JacksonGreen, PlasticContact, PlasticImpact, Thornton, FIT_ONSET,
 };
 use tabor_restitution::{impact, ImpactModel};
 
@@ -93,7 +94,9 @@ fn jackson_green_by_quadrature(jg: &JacksonGreen, m: f64, v0: f64) -> f64 {
 #[test]
 fn jackson_green_simulation_equals_quadrature() {
     // Tolerance 1e-7 relative (both paths are converged to ~1e-10).
-    let jg = JacksonGreen::new(1.4e11, 2.5e-3, 1.03e9, 0.29).unwrap();
+    let jg = PlasticContact::new(1.4e11, 2.5e-3, 1.03e9)
+        .and_then(|contact| JacksonGreen::new(contact, 0.29))
+        .unwrap();
     let m = 2.5e-4;
     let model = jg.impact(m, SimulationSettings::default()).unwrap();
     let v_y = model.yield_velocity();
@@ -114,7 +117,9 @@ fn jackson_green_simulation_equals_quadrature() {
 #[test]
 fn jackson_green_yield_velocity_is_the_hertz_speed_at_the_critical_depth() {
     // (5.108) v*_Y = v_Y (5C/8)^(5/2) vs m v*²/2 = (2/5) F*_Y d*_Y. 1e-12 relative.
-    let jg = JacksonGreen::new(7e10, 1e-3, 3.8e8, 0.33).unwrap();
+    let jg = PlasticContact::new(7e10, 1e-3, 3.8e8)
+        .and_then(|contact| JacksonGreen::new(contact, 0.33))
+        .unwrap();
     let m = 1e-5;
     let v = jg.yield_velocity(m).unwrap();
     let direct = (0.8 * jg.yield_force() * jg.yield_depth() / m).sqrt();
@@ -126,7 +131,9 @@ fn jackson_green_restitution_depends_on_v0_over_v_star_only() {
     // Seed 000: independent of R and m, almost independent of sigma_Y/E and nu.
     // Exact invariance in R and m (1e-8), weak dependence on sigma_Y/E (< 3 %).
     let base = |e: f64, r: f64, s: f64, m: f64, ratio: f64| {
-        let jg = JacksonGreen::new(e, r, s, 0.3).unwrap();
+        let jg = PlasticContact::new(e, r, s)
+            .and_then(|contact| JacksonGreen::new(contact, 0.3))
+            .unwrap();
         let model = jg.impact(m, SimulationSettings::default()).unwrap();
         impact(&model, ratio * model.yield_velocity())
             .unwrap()
@@ -152,7 +159,11 @@ fn adhesive_interpolation_simulation_equals_analytic() {
         (0.3, 100.0),
         (2.5, 5.0),
     ] {
-        let model = AdhesiveInterpolationImpact::new(1e11, 1e-5, 0.5, phi, 1e-13).unwrap();
+        let model = AdhesiveInterpolationImpact::new(
+            AdhesivePlasticContact::new(JkrSphere::new(1e11, 1e-5, 0.5).unwrap(), phi).unwrap(),
+            1e-13,
+        )
+        .unwrap();
         let v0 = ratio * model.elastic_sticking_velocity();
         let analytic = impact(&model, v0).unwrap().restitution;
         let mut law = model.force_law();

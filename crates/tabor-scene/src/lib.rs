@@ -43,7 +43,7 @@ pub use combination::{
 pub use file::{Format, ParseError, SceneFile};
 pub use outcome::{Effect, Outcome};
 pub use scene::{
-    Adhesion, AdhesionRange, AdhesivePlasticity, Body, PlasticityModel, Scene, SceneBuilder,
-    SceneError, DEFAULT_ACCURACY,
+    Adhesion, AdhesionRange, AdhesivePlasticity, Body, ElasticSphere, PlasticityModel, Scene,
+    SceneBuilder, SceneError, DEFAULT_ACCURACY,
 };
 pub use sweep::{spaced, sweep, SweepParameter};

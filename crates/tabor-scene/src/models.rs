@@ -8,11 +8,11 @@ use crate::scene::{AdhesionRange, AdhesivePlasticity, PlasticityModel, Scene, Sc
 use tabor_dynamics::SimulationSettings;
 use tabor_elastic::{ElasticContact, ElasticImpact};
 use tabor_jkr::{GradedSphere, JkrImpact, JkrSphere, SeparationRule};
-use tabor_maugis::{normalized_loss, MaugisDugdaleImpact, LAMBDA_1};
+use tabor_maugis::{normalized_loss, MaugisContact, MaugisDugdaleImpact, LAMBDA_1};
 use tabor_plastic::YieldVelocity;
 use tabor_plastic::{
-    AdhesiveInterpolationImpact, DimensionlessFit, Interpolation, JacksonGreen, JacksonGreenImpact,
-    PlasticContact, PlasticImpact, Thornton,
+    AdhesiveInterpolationImpact, AdhesivePlasticContact, DimensionlessFit, Interpolation,
+    JacksonGreen, JacksonGreenImpact, PlasticContact, PlasticImpact, Thornton,
 };
 use tabor_restitution::{EnergyLoss, Error, ImpactModel};
 
@@ -206,7 +206,9 @@ fn build_adhesive(scene: &Scene) -> Result<Option<Adhesive>, SceneError> {
             why: "JKR: no range of adhesion given".into(),
         },
         (None, AdhesionRange::TaborParameter(lambda)) => {
-            let md = MaugisDugdaleImpact::new(e, r, a.work_of_adhesion, lambda, m)
+            let md = JkrSphere::new(e, r, a.work_of_adhesion)
+                .and_then(|sphere| MaugisContact::new(sphere, lambda))
+                .and_then(|contact| MaugisDugdaleImpact::new(contact, m))
                 .map_err(err)?
                 .with_tolerance(acc)
                 .map_err(err)?;
@@ -275,7 +277,8 @@ fn build_plastic(scene: &Scene) -> Result<Option<Plastic>, SceneError> {
             .map_err(err)?,
         ),
         PlasticityModel::JacksonGreen => Plastic::JacksonGreen(Box::new(
-            JacksonGreen::new(e, r, sy, scene.plastic_poisson_ratio())
+            PlasticContact::new(e, r, sy)
+                .and_then(|contact| JacksonGreen::new(contact, scene.plastic_poisson_ratio()))
                 .map_err(in_yield)?
                 .impact(m, SimulationSettings::default())
                 .map_err(err)?,
@@ -339,20 +342,22 @@ impl Models {
         let homogeneous_adhesion = adhesive
             .as_ref()
             .filter(|a| a.kind != AdhesionKind::GradedJkr)
-            .and_then(|_| scene.adhesion.as_ref());
+            .and(scene.adhesion.as_ref());
         let (adhesive_interpolation, jkr_fixed_grip) = match (
             homogeneous_adhesion,
             scene.yield_stress(),
             &plastic,
         ) {
             (Some(a), Some(sy), Some(p)) => {
-                let ai = AdhesiveInterpolationImpact::from_yield_stress(
+                let ai = JkrSphere::new(
                     scene.effective_modulus,
                     scene.effective_radius,
-                    sy,
                     a.work_of_adhesion,
-                    scene.effective_mass,
-                );
+                )
+                .and_then(|sphere| AdhesivePlasticContact::from_yield_stress(sphere, sy))
+                .and_then(|contact| {
+                    AdhesiveInterpolationImpact::new(contact, scene.effective_mass)
+                });
                 let ai = match (ai, p.kind()) {
                         (Ok(ai), _) => Some(ai),
                         // the rule needs it: the scene is outside its range

@@ -279,6 +279,43 @@ impl Prepared<'_> {
         })
     }
 
+    /// The loss (J) when it does not depend on the speed (elastic adhesion alone,
+    /// [`SceneModel`](crate::select::SceneModel)), else `None`.
+    pub(crate) fn constant_loss(&self) -> Result<Option<f64>, SceneError> {
+        use tabor_restitution::ImpactModel;
+        let whole = crate::select::SceneModel { prepared: self };
+        if !whole.loss_is_speed_independent() {
+            return Ok(None);
+        }
+        let reference = whole.speed_scale();
+        Ok(Some(
+            self.models
+                .evaluate(&self.models.candidates, reference)
+                .map_err(|e| self.scene.locate(e))?
+                .loss
+                .joules,
+        ))
+    }
+
+    /// The restitution at `speed` for the speed-independent loss `loss` (J): what
+    /// [`Prepared::restitution`] computes, without re-evaluating the model. The
+    /// selection's rule: a loss below `accuracy` × the kinetic energy is dropped.
+    pub(crate) fn restitution_with_constant_loss(
+        &self,
+        loss: f64,
+        speed: f64,
+    ) -> Result<f64, SceneError> {
+        let kinetic = 0.5 * self.models.mass * speed * speed;
+        if !(speed > 0.0 && kinetic.is_finite() && kinetic > 0.0) {
+            // the full path reports the exact error
+            return self.restitution(speed);
+        }
+        if loss.abs() < self.models.accuracy * kinetic {
+            return Ok(1.0);
+        }
+        restitution_from_loss(loss, self.models.mass, speed).map_err(err)
+    }
+
     /// The restitution at `speed`, without the outcome's reports.
     pub(crate) fn restitution(&self, speed: f64) -> Result<f64, SceneError> {
         Ok(self.restitution_with_error(speed)?.0)
@@ -380,12 +417,14 @@ impl Scene {
                 Some(Plastic::Thornton(p)) => Box::new(p.force_law()),
                 Some(Plastic::Interpolation(p)) => Box::new(p.force_law()),
                 Some(Plastic::JacksonGreen(_)) => Box::new(
-                    tabor_plastic::JacksonGreen::new(
+                    tabor_plastic::PlasticContact::new(
                         self.effective_modulus,
                         self.effective_radius,
                         self.yield_stress().unwrap_or(f64::NAN),
-                        self.plastic_poisson_ratio(),
                     )
+                    .and_then(|contact| {
+                        tabor_plastic::JacksonGreen::new(contact, self.plastic_poisson_ratio())
+                    })
                     .map_err(err)?
                     .force_law(),
                 ),

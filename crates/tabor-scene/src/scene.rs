@@ -561,6 +561,35 @@ fn plasticity(
     Ok((model, adhesive))
 }
 
+/// An elastic sphere for [`SceneBuilder::sphere`] and [`SceneBuilder::target_sphere`]:
+/// radius (m), density (kg/m³) and elastic material (Young's modulus, Poisson's
+/// ratio). The radius and density are checked by [`SceneBuilder::build`], as in a file.
+///
+/// Seed 000, introduction of chapter 5 (a sphere of radius `R_i`, mass
+/// `m_i = (4/3)π R_i³ ρ_i`, modulus `E_i` and Poisson's ratio `ν_i`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ElasticSphere {
+    /// Radius (m).
+    pub radius: f64,
+    /// Density (kg/m³).
+    pub density: f64,
+    /// Young's modulus and Poisson's ratio.
+    pub material: ElasticMaterial,
+}
+
+impl ElasticSphere {
+    /// The scene-file section of this sphere.
+    fn body_file(&self) -> BodyFile {
+        BodyFile {
+            radius: Some(self.radius),
+            density: Some(self.density),
+            youngs_modulus: self.material.youngs_modulus(),
+            poisson_ratio: self.material.poisson_ratio(),
+            ..BodyFile::default()
+        }
+    }
+}
+
 /// Builds a scene in code; [`SceneBuilder::build`] validates it exactly as a file.
 #[derive(Clone, Debug, Default)]
 pub struct SceneBuilder {
@@ -573,52 +602,30 @@ impl SceneBuilder {
     pub fn new() -> Self {
         SceneBuilder::default()
     }
-    /// The sphere: radius (m), density (kg/m³), Young's modulus (Pa), Poisson's ratio.
-    pub fn sphere(
-        mut self,
-        radius: f64,
-        density: f64,
-        youngs_modulus: f64,
-        poisson_ratio: f64,
-    ) -> Self {
-        self.data.sphere = BodyFile {
-            radius: Some(radius),
-            density: Some(density),
-            youngs_modulus,
-            poisson_ratio,
-            ..BodyFile::default()
-        };
+    /// The sphere (radius, density, elastic material).
+    ///
+    /// Seed 000, introduction of chapter 5 (the impacting sphere of radius `R1`, mass
+    /// `m1` and material `E1`, `ν1`).
+    pub fn sphere(mut self, sphere: ElasticSphere) -> Self {
+        self.data.sphere = sphere.body_file();
         self
     }
-    /// A spherical target: radius (m), density (kg/m³), Young's modulus, Poisson's ratio.
-    pub fn target_sphere(
-        mut self,
-        radius: f64,
-        density: f64,
-        youngs_modulus: f64,
-        poisson_ratio: f64,
-    ) -> Self {
-        self.data.target = BodyFile {
-            radius: Some(radius),
-            density: Some(density),
-            youngs_modulus,
-            poisson_ratio,
-            ..BodyFile::default()
-        };
+    /// A spherical target (radius, density, elastic material).
+    ///
+    /// Seed 000, introduction of chapter 5 (`1/R = 1/R1 + 1/R2`, `1/m = 1/m1 + 1/m2`).
+    pub fn target_sphere(mut self, target: ElasticSphere) -> Self {
+        self.data.target = target.body_file();
         self
     }
-    /// A flat half-space target: Young's modulus (Pa), Poisson's ratio; density
+    /// A flat half-space target of elastic material `material`; its density (kg/m³)
     /// optional (for the quasi-static check).
-    pub fn target_half_space(
-        mut self,
-        youngs_modulus: f64,
-        poisson_ratio: f64,
-        density: Option<f64>,
-    ) -> Self {
+    ///
+    /// Seed 000, introduction of chapter 5 (`R2 → ∞`: `R = R1`).
+    pub fn target_half_space(mut self, material: ElasticMaterial, density: Option<f64>) -> Self {
         self.data.target = BodyFile {
             density,
-            youngs_modulus,
-            poisson_ratio,
+            youngs_modulus: material.youngs_modulus(),
+            poisson_ratio: material.poisson_ratio(),
             ..BodyFile::default()
         };
         self

@@ -165,12 +165,27 @@ impl Scene {
     /// parallel on rayon's pool, by the same model and combination rule as
     /// [`Scene::outcome_at`] at that speed (the models are built once). The first
     /// invalid speed or failing point is returned with its index.
+    ///
+    /// When the scene's loss does not depend on the speed (elastic adhesion alone),
+    /// the loss is computed once and each point is the closed form (5.37) with the
+    /// same negligible-effect rule as the outcome (bit-identical to it).
     pub fn restitutions(&self, speeds: &[f64]) -> Result<Vec<f64>, (usize, SceneError)> {
         let prepared = Prepared::new(self).map_err(|e| (0, e))?;
-        speeds
-            .par_iter()
-            .enumerate()
-            .map(|(i, &v)| prepared.restitution(v).map_err(|e| (i, e)))
-            .collect()
+        match prepared.constant_loss().map_err(|e| (0, e))? {
+            Some(loss) => speeds
+                .par_iter()
+                .enumerate()
+                .map(|(i, &v)| {
+                    prepared
+                        .restitution_with_constant_loss(loss, v)
+                        .map_err(|e| (i, e))
+                })
+                .collect(),
+            None => speeds
+                .par_iter()
+                .enumerate()
+                .map(|(i, &v)| prepared.restitution(v).map_err(|e| (i, e)))
+                .collect(),
+        }
     }
 }

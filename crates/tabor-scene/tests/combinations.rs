@@ -5,9 +5,10 @@
 
 use approx::assert_relative_eq;
 use tabor_jkr::{JkrImpact, JkrSphere, SeparationRule};
-use tabor_maugis::MaugisDugdaleImpact;
+use tabor_maugis::{MaugisContact, MaugisDugdaleImpact};
 use tabor_plastic::{
-    AdhesiveInterpolationImpact, Interpolation, PlasticContact, PlasticImpact, Thornton,
+    AdhesiveInterpolationImpact, AdhesivePlasticContact, Interpolation, PlasticContact,
+    PlasticImpact, Thornton,
 };
 use tabor_restitution::{impact, restitution_from_loss, ImpactModel};
 use tabor_scene::{
@@ -33,7 +34,7 @@ fn scene(text: &str) -> Scene {
     Scene::from_str(text, Format::Toml).unwrap_or_else(|e| panic!("{e}\n{text}"))
 }
 
-fn effect<'a>(o: &'a Outcome, kind: EffectKind) -> &'a tabor_scene::Effect {
+fn effect(o: &Outcome, kind: EffectKind) -> &tabor_scene::Effect {
     o.effects.iter().find(|e| e.name == kind).unwrap()
 }
 
@@ -167,9 +168,15 @@ fn elastic_scene_never_sticks_and_has_no_sticking_velocity() {
 #[test]
 fn adhesive_interpolation_cell_equals_the_plastic_crate() {
     let s = silica("", Some(1e9), "");
-    let ai =
-        AdhesiveInterpolationImpact::from_yield_stress(silica_e(), 0.5e-6, 1e9, 0.05, silica_m())
-            .unwrap();
+    let ai = AdhesiveInterpolationImpact::new(
+        AdhesivePlasticContact::from_yield_stress(
+            JkrSphere::new(silica_e(), 0.5e-6, 0.05).unwrap(),
+            1e9,
+        )
+        .unwrap(),
+        silica_m(),
+    )
+    .unwrap();
     let interp = PlasticImpact::new(
         PlasticContact::new(silica_e(), 0.5e-6, 1e9).unwrap(),
         Interpolation::default(),
@@ -213,7 +220,12 @@ fn range_with_plasticity_keeps_the_range() {
     // the JKR value, while Maugis-Dugdale gives 0.0104 m/s; "sticks": false at
     // 0.05 m/s), and the loss jumped 66x at the adhesive yield onset
     let s = silica("range = 0.3e-9", Some(1e9), "");
-    let md = MaugisDugdaleImpact::from_range(silica_e(), 0.5e-6, 0.05, 0.3e-9, silica_m()).unwrap();
+    let md = MaugisDugdaleImpact::new(
+        MaugisContact::from_range(JkrSphere::new(silica_e(), 0.5e-6, 0.05).unwrap(), 0.3e-9)
+            .unwrap(),
+        silica_m(),
+    )
+    .unwrap();
     let md_stick = tabor_restitution::sticking_velocity(&md, 1e-12)
         .unwrap()
         .speed;
@@ -223,9 +235,15 @@ fn range_with_plasticity_keeps_the_range() {
     assert!(!o.sticks && o.impact_speed > md_stick);
     // above the adhesive yield onset: Maugis-Dugdale loss + the plastic excess of the
     // adhesive interpolation model over its fixed-grip JKR loss, written out here
-    let ai =
-        AdhesiveInterpolationImpact::from_yield_stress(silica_e(), 0.5e-6, 1e9, 0.05, silica_m())
-            .unwrap();
+    let ai = AdhesiveInterpolationImpact::new(
+        AdhesivePlasticContact::from_yield_stress(
+            JkrSphere::new(silica_e(), 0.5e-6, 0.05).unwrap(),
+            1e9,
+        )
+        .unwrap(),
+        silica_m(),
+    )
+    .unwrap();
     let jkr = JkrImpact::new(
         JkrSphere::new(silica_e(), 0.5e-6, 0.05).unwrap(),
         silica_m(),

@@ -5,10 +5,10 @@
 use approx::assert_relative_eq;
 use std::path::PathBuf;
 use tabor_jkr::{GradedSphere, JkrImpact, JkrSphere, SeparationRule};
-use tabor_maugis::MaugisDugdaleImpact;
+use tabor_maugis::{MaugisContact, MaugisDugdaleImpact};
 use tabor_plastic::{Interpolation, PlasticContact, PlasticImpact};
-use tabor_restitution::{impact, sticking_velocity, ImpactModel};
-use tabor_scene::{spaced, sweep, Format, Scene, SceneBuilder, SweepParameter};
+use tabor_restitution::{impact, sticking_velocity, ElasticMaterial, ImpactModel};
+use tabor_scene::{spaced, sweep, ElasticSphere, Format, Scene, SceneBuilder, SweepParameter};
 use tabor_visco::models::KelvinVoigtSphere;
 use tabor_visco::SphereModel;
 
@@ -31,8 +31,16 @@ fn load_scene(name: &str) -> Scene {
 
 fn silica(rule: SeparationRule) -> Scene {
     SceneBuilder::new()
-        .sphere(1e-6, 2650.0, 54e9, 0.17)
-        .target_sphere(1e-6, 2650.0, 54e9, 0.17)
+        .sphere(ElasticSphere {
+            radius: 1e-6,
+            density: 2650.0,
+            material: ElasticMaterial::new(54e9, 0.17).unwrap(),
+        })
+        .target_sphere(ElasticSphere {
+            radius: 1e-6,
+            density: 2650.0,
+            material: ElasticMaterial::new(54e9, 0.17).unwrap(),
+        })
         .adhesion(0.05)
         .separation(rule)
         .speed(0.1)
@@ -91,7 +99,11 @@ fn bundled_maugis_scene_equals_the_maugis_crate() {
     let lambda = o.tabor_parameter.unwrap();
     let e_star = 54e9 / (2.0 * (1.0 - 0.17f64 * 0.17));
     let m = scene.effective_mass;
-    let direct = MaugisDugdaleImpact::from_range(e_star, 0.5e-6, 0.05, 0.3e-9, m).unwrap();
+    let direct = MaugisDugdaleImpact::new(
+        MaugisContact::from_range(JkrSphere::new(e_star, 0.5e-6, 0.05).unwrap(), 0.3e-9).unwrap(),
+        m,
+    )
+    .unwrap();
     assert_relative_eq!(direct.tabor_parameter(), lambda, max_relative = 1e-14);
     let d = impact(&direct, 0.05).unwrap();
     assert_relative_eq!(o.restitution, d.restitution, max_relative = 1e-12);
@@ -278,8 +290,16 @@ fn jkr_closed_form_only_when_the_difference_is_below_the_accuracy() {
     // at Λ = 1e4 the Maugis-Dugdale loss differs from JKR by about 4.6e-5
     let base = || {
         SceneBuilder::new()
-            .sphere(1e-6, 2650.0, 54e9, 0.17)
-            .target_sphere(1e-6, 2650.0, 54e9, 0.17)
+            .sphere(ElasticSphere {
+                radius: 1e-6,
+                density: 2650.0,
+                material: ElasticMaterial::new(54e9, 0.17).unwrap(),
+            })
+            .target_sphere(ElasticSphere {
+                radius: 1e-6,
+                density: 2650.0,
+                material: ElasticMaterial::new(54e9, 0.17).unwrap(),
+            })
             .adhesion(0.05)
             .tabor_parameter(1e4)
             .speed(0.2)
@@ -293,10 +313,11 @@ fn jkr_closed_form_only_when_the_difference_is_below_the_accuracy() {
     assert!(fine.model.contains("Maugis"), "{}", fine.model);
     // Either way the result is the Maugis-Dugdale one within the requested accuracy.
     let md = MaugisDugdaleImpact::new(
-        e_star(54e9, 0.17, 54e9, 0.17),
-        0.5e-6,
-        0.05,
-        1e4,
+        MaugisContact::new(
+            JkrSphere::new(e_star(54e9, 0.17, 54e9, 0.17), 0.5e-6, 0.05).unwrap(),
+            1e4,
+        )
+        .unwrap(),
         sphere_mass(1e-6, 2650.0) / 2.0,
     )
     .unwrap();
@@ -338,8 +359,12 @@ fn negligible_adhesion_is_skipped() {
     // a millimetre steel ball at 1 m/s: the adhesive loss is far below 1e-10 of
     // the kinetic energy
     let scene = SceneBuilder::new()
-        .sphere(1e-3, 7850.0, 210e9, 0.3)
-        .target_half_space(210e9, 0.3, Some(7850.0))
+        .sphere(ElasticSphere {
+            radius: 1e-3,
+            density: 7850.0,
+            material: ElasticMaterial::new(210e9, 0.3).unwrap(),
+        })
+        .target_half_space(ElasticMaterial::new(210e9, 0.3).unwrap(), Some(7850.0))
         .adhesion(1e-6)
         .speed(1.0)
         .build()

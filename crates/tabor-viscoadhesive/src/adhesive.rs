@@ -378,7 +378,7 @@ impl SeparationPotential for AdhesiveForceLaw {
 mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
-    use tabor_maugis::MaugisDugdaleImpact;
+    use tabor_maugis::{MaugisContact, MaugisDugdaleImpact};
     use tabor_restitution::ImpactModel;
 
     const E: f64 = 2.78e10;
@@ -431,7 +431,11 @@ mod tests {
     #[test]
     fn the_maugis_dugdale_table_gives_minus_the_adhesive_loss_at_jump_in() {
         for lambda in [0.2, 0.3, 0.5, 0.6, 1.0, 3.0] {
-            let md = MaugisDugdaleImpact::new(E, R, DG, lambda, 1e-15).unwrap();
+            let md = MaugisDugdaleImpact::new(
+                MaugisContact::new(JkrSphere::new(E, R, DG).unwrap(), lambda).unwrap(),
+                1e-15,
+            )
+            .unwrap();
             let law = MaugisDugdaleForceLaw::new(&md).unwrap();
             let (jump_in, _) = law.jump_in_and_pull_off_depths();
             let table = PotentialTable::build(&law, md.scales().depth).unwrap();

@@ -7,7 +7,7 @@ use crate::law::ViscousDamping;
 use serde::Serialize;
 use tabor_dynamics::{simulate_impact, ImpactSimulation, SimulationSettings};
 use tabor_jkr::{JkrImpact, JkrSphere, SeparationRule};
-use tabor_maugis::{MaugisDugdaleForceLaw, MaugisDugdaleImpact};
+use tabor_maugis::{MaugisContact, MaugisDugdaleForceLaw, MaugisDugdaleImpact};
 use tabor_restitution::{validate, EnergyLoss, Error, ImpactModel, Result};
 use tabor_visco::models::KelvinVoigtSphere;
 use tabor_visco::SphereModel;
@@ -105,8 +105,11 @@ impl ViscoadhesiveImpact {
                 (AdhesiveImpact::Jkr(imp), LawSpec::Jkr(sphere, rule))
             }
             Adhesion::MaugisDugdale { tabor_parameter } => {
-                let md =
-                    MaugisDugdaleImpact::new(e, r, dg, tabor_parameter, m)?.with_tolerance(tol)?;
+                let md = MaugisDugdaleImpact::new(
+                    MaugisContact::new(JkrSphere::new(e, r, dg)?, tabor_parameter)?,
+                    m,
+                )?
+                .with_tolerance(tol)?;
                 let law = MaugisDugdaleForceLaw::new(&md)?;
                 let law = LawSpec::maugis_dugdale(law, md.scales().depth)?;
                 (AdhesiveImpact::MaugisDugdale(md), law)

@@ -6,7 +6,7 @@
 
 use std::f64::consts::PI;
 use tabor_jkr::{JkrImpact, JkrSphere};
-use tabor_maugis::MaugisDugdaleImpact;
+use tabor_maugis::{MaugisContact, MaugisDugdaleImpact};
 use tabor_restitution::{impact, sticking_velocity, Error, ImpactModel};
 use tabor_visco::models::KelvinVoigtSphere;
 use tabor_visco::SphereModel;
@@ -284,7 +284,11 @@ fn vanishing_viscosity_tends_to_the_elastic_adhesive_loss() {
         assert!(d1 > 10.0 * d2, "not linear in eta_c: {d1:e}, {d2:e}");
     }
     for lambda in [0.3, 0.55, 1.0, 5.0] {
-        let elastic = MaugisDugdaleImpact::new(E, R, DG, lambda, M).unwrap();
+        let elastic = MaugisDugdaleImpact::new(
+            MaugisContact::new(JkrSphere::new(E, R, DG).unwrap(), lambda).unwrap(),
+            M,
+        )
+        .unwrap();
         let v = 2.0 * sticking_velocity(&elastic, 1e-12).unwrap().speed;
         let target = impact(&elastic, v).unwrap().restitution;
         let md = |eta_c: f64| {

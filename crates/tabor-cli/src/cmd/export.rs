@@ -5,7 +5,7 @@
 use crate::output::{print_json, stdout, Outcome};
 use std::io::Write;
 use std::path::PathBuf;
-use tabor::lammps::{check, export, Check};
+use tabor::lammps::{check, export, export_plugin, Check};
 use tabor::scene::Scene;
 
 /// Arguments of `tabor export`.
@@ -24,7 +24,7 @@ enum Target {
 /// Arguments of `tabor export lammps`.
 #[derive(clap::Args)]
 #[command(
-    after_help = "Examples:\n  tabor export lammps examples/scenes/silica.toml --out silica.lmp\n  tabor export lammps examples/scenes/silica.toml --check 'pair_coeff * * hertz/material 54e9 0.5 0.17 damping tsuji' --speed 0.2"
+    after_help = "Examples:\n  tabor export lammps examples/scenes/silica.toml --out silica.lmp\n  tabor export lammps examples/scenes/silica_maugis.toml --plugin target/lammps-plugin/taborplugin.so\n  tabor export lammps examples/scenes/silica.toml --check 'pair_coeff * * hertz/material 54e9 0.5 0.17 damping tsuji' --speed 0.2"
 )]
 pub struct LammpsArgs {
     /// The scene file (.toml or .json)
@@ -40,8 +40,13 @@ pub struct LammpsArgs {
     json: bool,
     /// Predict the restitution LAMMPS produces for this pair_coeff or
     /// "fix ... wall/gran granular ..." line, with the scene's bodies
-    #[arg(long, value_name = "LINE")]
+    #[arg(long, value_name = "LINE", conflicts_with = "plugin")]
     check: Option<String>,
+    /// Write the fragment for pair_style tabor (the plugin built by
+    /// `cargo xtask lammps-plugin`), loaded from this .so (made absolute when it
+    /// exists): tabor's own force law
+    #[arg(long, value_name = "PATH")]
+    plugin: Option<PathBuf>,
 }
 
 /// Writes `text` to stdout; a closed pipe ends the output quietly.
@@ -110,20 +115,33 @@ pub fn run(args: &Args) -> Outcome {
         }
         return emit(&check_report(&c));
     }
+    if let Some(plugin) = &a.plugin {
+        // an existing .so is written as an absolute path, so that the fragment
+        // loads it from any working directory
+        let plugin = std::fs::canonicalize(plugin).unwrap_or_else(|_| plugin.clone());
+        let x = export_plugin(&scene, &plugin.to_string_lossy(), a.speed)
+            .map_err(|e| format!("{}: {e}", a.scene.display()))?;
+        return write_out(a, &x, &x.fragment());
+    }
     let x = export(&scene, a.speed).map_err(|e| format!("{}: {e}", a.scene.display()))?;
+    write_out(a, &x, &x.fragment())
+}
+
+/// Prints or writes an export: JSON (`--json`) or the fragment, to `--out` or stdout.
+fn write_out(a: &LammpsArgs, x: &impl serde::Serialize, fragment: &str) -> Outcome {
     match (&a.out, a.json) {
-        (None, true) => print_json(&x),
+        (None, true) => print_json(x),
         (Some(path), true) => {
             let text = serde_json::to_string_pretty(&serde_json::json!({
                 "tabor_version": tabor::VERSION,
-                "export": &x,
+                "export": x,
             }))
             .map_err(|e| e.to_string())?;
             std::fs::write(path, text + "\n")
                 .map_err(|e| format!("cannot write {}: {e}", path.display()).into())
         }
-        (Some(path), false) => std::fs::write(path, x.fragment())
+        (Some(path), false) => std::fs::write(path, fragment)
             .map_err(|e| format!("cannot write {}: {e}", path.display()).into()),
-        (None, false) => emit(&x.fragment()),
+        (None, false) => emit(fragment),
     }
 }

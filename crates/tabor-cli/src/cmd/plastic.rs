@@ -7,8 +7,8 @@ use serde::Serialize;
 use std::io::Write;
 use tabor::jkr::JkrSphere;
 use tabor::plastic::{
-    AdhesiveInterpolationImpact, Clamping, DimensionlessFit, Interpolation, JacksonGreen,
-    PlasticContact, PlasticImpact, SimulationSettings, Superposition, Thornton,
+    AdhesiveInterpolationImpact, AdhesivePlasticContact, Clamping, DimensionlessFit, Interpolation,
+    JacksonGreen, PlasticContact, PlasticImpact, SimulationSettings, Superposition, Thornton,
 };
 use tabor::restitution::{impact, sticking_velocity, EnergyLoss, ImpactModel};
 
@@ -175,7 +175,8 @@ fn non_adhesive(args: &Args, which: PlasticModel) -> Result<NonAdhesive, String>
         }
         PlasticModel::JacksonGreen => {
             let nu = required(args.poisson_ratio, "--poisson-ratio", "jackson-green")?;
-            let m = JacksonGreen::new(args.modulus, args.radius, args.yield_stress, nu)
+            let m = PlasticContact::new(args.modulus, args.radius, args.yield_stress)
+                .and_then(|contact| JacksonGreen::new(contact, nu))
                 .map_err(message)?
                 .impact(args.mass, SimulationSettings::default())
                 .map_err(message)?;
@@ -244,23 +245,15 @@ pub fn run(args: &Args) -> Outcome {
                 // Validates E*, R, sigma_Y even when Phi is given.
                 PlasticContact::new(args.modulus, args.radius, args.yield_stress)
                     .map_err(message)?;
-                let m = match args.adhesion_parameter {
-                    Some(p) => AdhesiveInterpolationImpact::new(
-                        args.modulus,
-                        args.radius,
-                        dg,
-                        p,
-                        args.mass,
-                    ),
-                    None => AdhesiveInterpolationImpact::from_yield_stress(
-                        args.modulus,
-                        args.radius,
-                        args.yield_stress,
-                        dg,
-                        args.mass,
-                    ),
-                }
-                .map_err(message)?;
+                let m = JkrSphere::new(args.modulus, args.radius, dg)
+                    .and_then(|sphere| match args.adhesion_parameter {
+                        Some(p) => AdhesivePlasticContact::new(sphere, p),
+                        None => {
+                            AdhesivePlasticContact::from_yield_stress(sphere, args.yield_stress)
+                        }
+                    })
+                    .and_then(|contact| AdhesiveInterpolationImpact::new(contact, args.mass))
+                    .map_err(message)?;
                 if args.adhesion_parameter.is_some() {
                     warnings.push(
                         "adhesion parameter Phi given directly: --yield-stress is checked but \

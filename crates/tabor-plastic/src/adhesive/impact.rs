@@ -7,6 +7,58 @@ use crate::util::{finite_output, positive_output};
 use tabor_jkr::{JkrImpact, JkrSphere};
 use tabor_restitution::{sticking_velocity, validate, EnergyLoss, ImpactModel, Result};
 
+/// An adhesive elastic-plastic contact: the JKR sphere (effective modulus `E*`,
+/// effective radius `R`, work of adhesion `Δγ`) whose softer body yields, the onset of
+/// yield given by the adhesion parameter Φ.
+///
+/// Seed 000, eqs. (5.111)-(5.126) (Φ as in [`adhesion_parameter`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AdhesivePlasticContact {
+    sphere: JkrSphere,
+    model: AdhesiveInterpolation,
+}
+
+impl AdhesivePlasticContact {
+    /// The contact of `sphere` with the adhesion parameter Φ = `adhesion_parameter`
+    /// given directly.
+    ///
+    /// Seed 000, eqs. (5.111)-(5.125).
+    pub fn new(sphere: JkrSphere, adhesion_parameter: f64) -> Result<Self> {
+        Ok(AdhesivePlasticContact {
+            sphere,
+            model: AdhesiveInterpolation::new(adhesion_parameter)?,
+        })
+    }
+
+    /// The contact of `sphere` whose softer body has yield stress `σ_Y` (Pa); Φ by
+    /// [`adhesion_parameter`] from `E*`, `R`, `σ_Y` and `Δγ` of the sphere.
+    ///
+    /// Seed 000, eqs. (5.111)-(5.126).
+    pub fn from_yield_stress(sphere: JkrSphere, yield_stress: f64) -> Result<Self> {
+        let phi = adhesion_parameter(
+            sphere.effective_modulus(),
+            sphere.effective_radius(),
+            yield_stress,
+            sphere.work_of_adhesion(),
+        )?;
+        Self::new(sphere, phi)
+    }
+
+    /// The JKR sphere (scales `a_c`, `F_n`, `d_n`).
+    ///
+    /// Seed 000, eqs. (5.33)-(5.34).
+    pub fn sphere(&self) -> &JkrSphere {
+        &self.sphere
+    }
+
+    /// The adhesion parameter Φ.
+    ///
+    /// Seed 000, eq. (5.111).
+    pub fn adhesion_parameter(&self) -> f64 {
+        self.model.adhesion_parameter()
+    }
+}
+
 /// The adhesive interpolation model in SI units: an [`ImpactModel`].
 ///
 /// As Δγ → 0 its restitution tends to that of `PlasticImpact<Interpolation::default()>`
@@ -25,45 +77,11 @@ pub struct AdhesiveInterpolationImpact {
 }
 
 impl AdhesiveInterpolationImpact {
-    /// From material data: effective modulus `E*` (Pa), effective radius `R` (m),
-    /// yield stress `σ_Y` (Pa), work of adhesion `Δγ` (J/m²), effective mass `m` (kg);
-    /// Φ by [`adhesion_parameter`].
-    ///
-    /// Seed 000, eqs. (5.111)-(5.126).
-    pub fn from_yield_stress(
-        effective_modulus: f64,
-        effective_radius: f64,
-        yield_stress: f64,
-        work_of_adhesion: f64,
-        effective_mass: f64,
-    ) -> Result<Self> {
-        let phi = adhesion_parameter(
-            effective_modulus,
-            effective_radius,
-            yield_stress,
-            work_of_adhesion,
-        )?;
-        Self::new(
-            effective_modulus,
-            effective_radius,
-            work_of_adhesion,
-            phi,
-            effective_mass,
-        )
-    }
-
-    /// With the adhesion parameter Φ given directly.
+    /// The impact of the contact `contact` with effective mass `m` (kg).
     ///
     /// Seed 000, eqs. (5.111)-(5.125).
-    pub fn new(
-        effective_modulus: f64,
-        effective_radius: f64,
-        work_of_adhesion: f64,
-        adhesion_parameter: f64,
-        effective_mass: f64,
-    ) -> Result<Self> {
-        let sphere = JkrSphere::new(effective_modulus, effective_radius, work_of_adhesion)?;
-        let model = AdhesiveInterpolation::new(adhesion_parameter)?;
+    pub fn new(contact: AdhesivePlasticContact, effective_mass: f64) -> Result<Self> {
+        let AdhesivePlasticContact { sphere, model } = contact;
         let elastic = JkrImpact::new(sphere, effective_mass)?;
         let v_c = sticking_velocity(&elastic, 1e-12)?.speed;
         let v_c = positive_output(MODEL, "elastic sticking velocity", v_c)?;

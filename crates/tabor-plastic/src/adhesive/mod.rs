@@ -18,7 +18,7 @@ mod impact;
 mod normalized;
 
 pub use force_law::AdhesiveForceLaw;
-pub use impact::AdhesiveInterpolationImpact;
+pub use impact::{AdhesiveInterpolationImpact, AdhesivePlasticContact};
 pub use normalized::{
     adhesion_parameter, adhesive_yield_force, AdhesiveInterpolation, AdhesiveTurningPoint,
     ADHESION_PARAMETER_FACTOR, ADHESIVE_PLASTIC_ONSET, ADHESIVE_PLASTIC_SLOPE,

@@ -1,0 +1,441 @@
+//! The per-contact normal force laws behind the C ABI, in Rust.
+//!
+//! Conventions (those of `tabor_dynamics::ForceLaw`, seed 000 eq. (5.5)): overlap
+//! δ > 0 in contact (negative: a gap), overlap rate δ̇ > 0 while approaching, force
+//! F > 0 when repulsive.
+
+use crate::table::{Table, TableError};
+use std::sync::{Arc, OnceLock};
+use tabor_dynamics::ForceLaw;
+use tabor_jkr::{JkrForceLaw, JkrSphere, SeparationRule};
+use tabor_maugis::branch::{junction_factor, no_contact_pull_off_radius, no_contact_state};
+use tabor_maugis::{MaugisContact, MaugisDugdaleForceLaw, MaugisDugdaleImpact};
+use tabor_restitution::{validate, Error, Result};
+
+/// Which elastic-adhesive law a [`ContactLaw`] follows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LawKind {
+    /// Hertz, seed 000 eq. (5.5): F = (4/3)E*√R δ^(3/2), a = √(Rδ).
+    Hertz,
+    /// JKR, seed 000 eqs. (5.33)-(5.34), separating by `rule` (fixed grip: the
+    /// seed's (5.36); load-controlled: LAMMPS's `jkr`).
+    Jkr(SeparationRule),
+    /// Maugis-Dugdale at Tabor parameter Λ, the impact path of seed 000 section
+    /// 5.3.2 ((5.40)-(5.46)): jump-in at δ = −h, snap-off at the path's minimum depth.
+    MaugisDugdale(f64),
+}
+
+/// The state a contact carries from one time step to the next (one per pair of
+/// particles in contact). `#[repr(C)]` and all doubles, so that a DEM engine can
+/// store it in its per-atom partner arrays.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TaborHistory {
+    /// 1 once the contact has formed (jump-in: δ ≥ 0 for Hertz and JKR, δ ≥ −h for
+    /// Maugis-Dugdale, seed 000 (5.40)), 0 before and after snap-off. While it is 1
+    /// the force follows the adhesive branch down to the snap-off overlap.
+    pub contact: f64,
+    /// The largest overlap reached since the contact formed (m): the turning point
+    /// that separates loading from unloading on the branch (0 when not in contact).
+    pub max_overlap: f64,
+}
+
+/// What happened to a contact in one evaluation.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TaborForce {
+    /// Normal force (N), positive when repulsive: elastic-adhesive plus
+    /// Kuwabara-Kono damping.
+    pub force: f64,
+    /// Contact radius a (m) of the branch (0 without contact, and on the no-contact
+    /// branch of Maugis-Dugdale).
+    pub contact_radius: f64,
+    /// 0: nothing happened; 1: the contact formed in this call (jump-in); 2: it broke
+    /// (snap-off); 3: it formed and broke in the same call (never for a continuous
+    /// trajectory).
+    pub event: i32,
+}
+
+/// The exact law, for overlaps beyond the table.
+#[derive(Clone, Debug)]
+enum Exact {
+    Hertz,
+    Jkr(JkrForceLaw),
+    Maugis(Box<MaugisDugdaleForceLaw>),
+}
+
+/// A normal contact law for one pair of particle types and one effective radius:
+/// elastic adhesion ([`LawKind`]) plus optional Kuwabara-Kono viscous damping
+/// `F_d = 2E*A a δ̇` (seed 000 eq. (5.66) with the contact radius a of the law, the
+/// form LAMMPS's `damping viscoelastic` also uses), evaluated from a precomputed
+/// [`Table`] of the branch in normalized variables.
+#[derive(Clone, Debug)]
+pub struct ContactLaw {
+    kind: LawKind,
+    effective_modulus: f64,
+    effective_radius: f64,
+    damping_time: f64,
+    /// F_n = (3/2)πwR (N), d_n (m), a_c (m): the scales of `tabor_jkr::JkrScales`.
+    force_scale: f64,
+    depth_scale: f64,
+    inv_depth_scale: f64,
+    radius_scale: f64,
+    /// d̂₀: normalized depth at the table origin s = 0 (the branch minimum).
+    table_origin: f64,
+    /// 1/L: the table coordinate is s = √((d̂ − d̂₀)/L).
+    inv_table_length: f64,
+    /// The overlap at which a contact forms (m).
+    jump_in: f64,
+    /// The overlap below which a formed contact breaks (m).
+    snap_off: f64,
+    /// The most tensile force on the branch (N, ≤ 0).
+    pull_off_force: f64,
+    table: Option<Arc<Table>>,
+    exact: Exact,
+    hertz_factor: f64,
+}
+
+fn jkr_table() -> Result<Arc<Table>> {
+    static TABLE: OnceLock<std::result::Result<Arc<Table>, String>> = OnceLock::new();
+    TABLE
+        .get_or_init(|| {
+            let sphere = JkrSphere::new(1.0, 1.0, 1.0).map_err(|e| e.to_string())?;
+            let s = sphere.scales();
+            let law = JkrForceLaw::new(sphere, SeparationRule::FixedGrip);
+            let d0 = law.separation_depth();
+            Table::build(
+                &|x: f64| -> Result<(f64, f64)> {
+                    let d = d0 + x * x * s.depth;
+                    Ok((
+                        law.force(d, 0.0)? / s.force,
+                        law.contact_radius(d, 0.0)? / s.contact_radius,
+                    ))
+                },
+                None,
+            )
+            .map(Arc::new)
+            .map_err(|e| e.to_string())
+        })
+        .clone()
+        .map_err(|message| Error::Model {
+            model: "tabor-ffi JKR table",
+            message,
+        })
+}
+
+impl ContactLaw {
+    /// Hertz (seed 000 (5.5)) with effective modulus E* (Pa) and effective radius
+    /// R* (m).
+    pub fn hertz(effective_modulus: f64, effective_radius: f64) -> Result<Self> {
+        let e = validate::positive("effective_modulus", effective_modulus)?;
+        let r = validate::positive("effective_radius", effective_radius)?;
+        Ok(ContactLaw {
+            kind: LawKind::Hertz,
+            effective_modulus: e,
+            effective_radius: r,
+            damping_time: 0.0,
+            force_scale: 1.0,
+            depth_scale: 1.0,
+            inv_depth_scale: 1.0,
+            radius_scale: 1.0,
+            table_origin: 0.0,
+            inv_table_length: 1.0,
+            jump_in: 0.0,
+            snap_off: 0.0,
+            pull_off_force: 0.0,
+            table: None,
+            exact: Exact::Hertz,
+            hertz_factor: 4.0 / 3.0 * e,
+        })
+    }
+
+    /// JKR (seed 000 (5.33)-(5.34)) with work of adhesion w (J/m², LAMMPS's 2γ)
+    /// separating by `rule`.
+    pub fn jkr(
+        effective_modulus: f64,
+        effective_radius: f64,
+        work_of_adhesion: f64,
+        rule: SeparationRule,
+    ) -> Result<Self> {
+        let sphere = JkrSphere::new(effective_modulus, effective_radius, work_of_adhesion)?;
+        let s = sphere.scales();
+        let fixed = JkrForceLaw::new(sphere, SeparationRule::FixedGrip);
+        let law = JkrForceLaw::new(sphere, rule);
+        let mut out = Self::hertz(effective_modulus, effective_radius)?;
+        out.kind = LawKind::Jkr(rule);
+        out.force_scale = s.force;
+        out.depth_scale = s.depth;
+        out.inv_depth_scale = 1.0 / s.depth;
+        out.radius_scale = s.contact_radius;
+        out.table_origin = fixed.separation_depth() / s.depth;
+        out.jump_in = 0.0;
+        out.snap_off = law.separation_depth();
+        // the minimum of F̂ = â³ − 2â^(3/2) is −1 at â = 1 (the load-controlled point)
+        out.pull_off_force = -s.force;
+        out.table = Some(jkr_table()?);
+        out.exact = Exact::Jkr(fixed);
+        Ok(out)
+    }
+
+    /// Maugis-Dugdale at Tabor parameter Λ (seed 000 section 5.3.2) with work of
+    /// adhesion w (J/m²): the range is h = d_n/Λ.
+    pub fn maugis_dugdale(
+        effective_modulus: f64,
+        effective_radius: f64,
+        work_of_adhesion: f64,
+        tabor_parameter: f64,
+    ) -> Result<Self> {
+        let model = MaugisDugdaleImpact::new(
+            MaugisContact::new(
+                JkrSphere::new(effective_modulus, effective_radius, work_of_adhesion)?,
+                tabor_parameter,
+            )?,
+            1.0,
+        )?;
+        let s = model.scales();
+        let mut law = MaugisDugdaleForceLaw::new(&model)?;
+        // leave the approach: the law now follows the equilibrium branch
+        law.begin_impact(1.0, 1.0)?;
+        law.on_branch_end(law.start_overlap(), 0.0)?;
+        let (jump_in, pull_off) = law.jump_in_and_pull_off_depths();
+        let lambda = model.tabor_parameter();
+        // the adhesive features span a depth ~ 1/Λ (the range) when Λ < 1
+        let length = (1.0 / lambda).max(1.0);
+        let step = length * s.depth;
+        // cases 1 and 2: the no-contact branch meets the contact branch at
+        // b̂ = K b̂_c (seed 000 (5.46)), a kink of F̂(d̂)
+        let kink = match tabor_maugis::TaborCase::of(lambda) {
+            tabor_maugis::TaborCase::Contact => None,
+            _ => {
+                let b = junction_factor(lambda) * no_contact_pull_off_radius(lambda);
+                let dj = no_contact_state(lambda, b).depth * s.depth;
+                Some(((dj - pull_off) / step).max(0.0).sqrt())
+            }
+        };
+        let table = {
+            let law = &law;
+            Table::build(
+                &|x: f64| -> Result<(f64, f64)> {
+                    let d = pull_off + x * x * step;
+                    let at = |d: f64| -> Result<(f64, f64)> {
+                        Ok((
+                            law.force(d, 0.0)? / s.force,
+                            law.contact_radius(d, 0.0)? / s.contact_radius,
+                        ))
+                    };
+                    // exactly at the junction, rounding can leave the contact-branch
+                    // root unbracketed: the state a hair shallower is the same
+                    at(d).or_else(|_| at(d - 1e-12 * step))
+                },
+                kink,
+            )?
+        };
+        let mut out = Self::hertz(effective_modulus, effective_radius)?;
+        out.kind = LawKind::MaugisDugdale(model.tabor_parameter());
+        out.force_scale = s.force;
+        out.depth_scale = s.depth;
+        out.inv_depth_scale = 1.0 / s.depth;
+        out.radius_scale = s.contact_radius;
+        out.table_origin = pull_off / s.depth;
+        out.inv_table_length = 1.0 / length;
+        out.jump_in = jump_in;
+        out.snap_off = pull_off;
+        out.pull_off_force = branch_minimum(&|x| {
+            let d = pull_off + x * x * step;
+            law.force(d, 0.0)
+                .or_else(|_| law.force(d - 1e-12 * step, 0.0))
+        })?;
+        out.table = Some(Arc::new(table));
+        out.exact = Exact::Maugis(Box::new(law));
+        Ok(out)
+    }
+
+    /// Adds Kuwabara-Kono damping with dissipative time A (s): F_d = 2E*A a δ̇
+    /// (seed 000 (5.66): F = (4/3)E*√R (δ^(3/2) + (3/2)A δ^(1/2) δ̇) for Hertz).
+    pub fn with_damping(mut self, damping_time: f64) -> Result<Self> {
+        self.damping_time = validate::non_negative("damping_time", damping_time)?;
+        Ok(self)
+    }
+
+    /// The elastic-adhesive law.
+    pub fn kind(&self) -> LawKind {
+        self.kind
+    }
+
+    /// The effective radius R* (m).
+    pub fn effective_radius(&self) -> f64 {
+        self.effective_radius
+    }
+
+    /// The overlap at which a contact forms (m): 0, or −h for Maugis-Dugdale.
+    pub fn jump_in_overlap(&self) -> f64 {
+        self.jump_in
+    }
+
+    /// The overlap below which a formed contact breaks (m): 0 for Hertz, the
+    /// separation depth of the rule for JKR, the pull-off depth of the path for
+    /// Maugis-Dugdale.
+    pub fn snap_off_overlap(&self) -> f64 {
+        self.snap_off
+    }
+
+    /// The largest gap (m, ≥ 0) at which the law can act: max(−jump-in, −snap-off).
+    /// A DEM engine must keep pairs this far apart in its neighbor lists.
+    pub fn interaction_range(&self) -> f64 {
+        (-self.jump_in).max(-self.snap_off).max(0.0)
+    }
+
+    /// The most tensile force along the branch (N, ≤ 0): −(3/2)πwR for JKR (both
+    /// rules pass through it), the minimum of the Maugis-Dugdale path (→ −2πwR as
+    /// Λ → 0, DMT), 0 for Hertz.
+    pub fn pull_off_force(&self) -> f64 {
+        self.pull_off_force
+    }
+
+    /// The measured interpolation errors of the table (zero for Hertz).
+    pub fn table_error(&self) -> TableError {
+        self.table.as_ref().map(|t| t.error()).unwrap_or_default()
+    }
+
+    /// The force scale F_n = (3/2)πwR (N; 1 for Hertz).
+    pub fn force_scale(&self) -> f64 {
+        self.force_scale
+    }
+
+    /// The elastic-adhesive force and contact radius on the branch at `overlap`
+    /// (m), assuming the contact has formed; exact beyond the table.
+    #[inline]
+    fn branch(&self, overlap: f64) -> Result<(f64, f64)> {
+        match &self.table {
+            None => {
+                let d = overlap.max(0.0);
+                let a = (self.effective_radius * d).sqrt();
+                Ok((self.hertz_factor * a * d, a))
+            }
+            Some(table) => {
+                let x =
+                    (overlap * self.inv_depth_scale - self.table_origin) * self.inv_table_length;
+                let s = x.max(0.0).sqrt();
+                match table.eval(s) {
+                    Some((f, a)) => Ok((f * self.force_scale, a * self.radius_scale)),
+                    None => self.exact_branch(overlap),
+                }
+            }
+        }
+    }
+
+    /// The exact (root-finding) law on the branch: the reference of the table.
+    pub fn exact_branch(&self, overlap: f64) -> Result<(f64, f64)> {
+        let overlap = validate::finite("overlap", overlap)?;
+        match &self.exact {
+            Exact::Hertz => {
+                let d = overlap.max(0.0);
+                let a = (self.effective_radius * d).sqrt();
+                Ok((4.0 / 3.0 * self.effective_modulus * a * d, a))
+            }
+            Exact::Jkr(law) => {
+                let d = overlap.max(law.separation_depth());
+                Ok((law.force(d, 0.0)?, law.contact_radius(d, 0.0)?))
+            }
+            Exact::Maugis(law) => Ok((law.force(overlap, 0.0)?, law.contact_radius(overlap, 0.0)?)),
+        }
+    }
+
+    /// One time step of a contact: updates `history` (jump-in, turning point,
+    /// snap-off) and returns the normal force at `overlap` (m) and `overlap_rate`
+    /// (m/s, > 0 approaching).
+    ///
+    /// While not in contact the force is 0 until δ reaches the jump-in overlap;
+    /// in contact it follows the branch until δ falls below the snap-off overlap.
+    /// Hertz with damping never pulls (F = max(F_e + F_d, 0), the convention of
+    /// seed 000 (5.72) and LAMMPS's `limit_damping`); adhesive laws add the damping
+    /// force unclipped.
+    #[inline]
+    pub fn evaluate(
+        &self,
+        overlap: f64,
+        overlap_rate: f64,
+        history: &mut TaborHistory,
+    ) -> Result<TaborForce> {
+        if !overlap.is_finite() || !overlap_rate.is_finite() {
+            return Err(Error::invalid(
+                "overlap",
+                if overlap.is_finite() {
+                    overlap_rate
+                } else {
+                    overlap
+                },
+                "overlap and overlap rate must be finite",
+            ));
+        }
+        let mut event = 0;
+        if history.contact == 0.0 {
+            if overlap < self.jump_in || (self.table.is_none() && overlap <= 0.0) {
+                return Ok(TaborForce::default());
+            }
+            history.contact = 1.0;
+            history.max_overlap = overlap;
+            event = 1;
+        }
+        if overlap < self.snap_off || (self.table.is_none() && overlap <= 0.0) {
+            *history = TaborHistory::default();
+            return Ok(TaborForce {
+                force: 0.0,
+                contact_radius: 0.0,
+                event: event | 2,
+            });
+        }
+        if overlap > history.max_overlap {
+            history.max_overlap = overlap;
+        }
+        let (f, a) = self.branch(overlap)?;
+        let damping = 2.0 * self.effective_modulus * self.damping_time * a * overlap_rate;
+        let mut force = f + damping;
+        if self.table.is_none() && force < 0.0 {
+            force = 0.0;
+        }
+        Ok(TaborForce {
+            force,
+            contact_radius: a,
+            event,
+        })
+    }
+}
+
+/// The minimum over x ≥ 0 of `f(x)` (the branch force at s = x), located on a grid
+/// of the fine segment and refined by golden section.
+fn branch_minimum(f: &dyn Fn(f64) -> Result<f64>) -> Result<f64> {
+    let n = 4096;
+    let h = crate::table::S_FINE / n as f64;
+    let mut best = (0usize, f(0.0)?);
+    for i in 1..=n {
+        let v = f(h * i as f64)?;
+        if v < best.1 {
+            best = (i, v);
+        }
+    }
+    let (mut lo, mut hi) = (
+        h * best.0.saturating_sub(1) as f64,
+        h * (best.0 + 1).min(n) as f64,
+    );
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let mut x1 = hi - g * (hi - lo);
+    let mut x2 = lo + g * (hi - lo);
+    let (mut f1, mut f2) = (f(x1)?, f(x2)?);
+    for _ in 0..80 {
+        if f1 < f2 {
+            hi = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = hi - g * (hi - lo);
+            f1 = f(x1)?;
+        } else {
+            lo = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = lo + g * (hi - lo);
+            f2 = f(x2)?;
+        }
+    }
+    Ok(best.1.min(f1).min(f2))
+}

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# LAMMPS timing of pair_style tabor against pair_style granular jkr on the cloud of
+# examples/lammps (time_plugin.py): builds the plugin and tabor, prints the times
+# and the ratio plugin/granular (target <= 2). No assertion: wall-clock times
+# depend on the machine. Environment: TIMING_PAIRS, TIMING_REPEATS, TIMING_RANKS.
+set -euo pipefail
+HERE="$(cd "$(dirname "$0")" && pwd)"
+ROOT="$(cd "$HERE/../.." && pwd)"
+TARGET="${CARGO_TARGET_DIR:-$ROOT/target}"
+export CARGO_TARGET_DIR="$TARGET"
+PLUGIN="$(cd "$ROOT" && cargo xtask lammps-plugin | tail -n 1)"
+VENV="$("$HERE/setup.sh")"
+(cd "$ROOT" && cargo build --release -q -p tabor-cli)
+export TABOR="$TARGET/release/tabor" TABOR_PLUGIN="$PLUGIN" LAMMPS_VENV="$VENV"
+export LD_LIBRARY_PATH="$VENV/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+"$VENV/bin/python" "$HERE/time_plugin.py" "$@"

