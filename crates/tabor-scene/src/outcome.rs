@@ -382,16 +382,17 @@ impl Scene {
     ) -> Result<(ImpactSimulation, Outcome), SceneError> {
         let prepared = Prepared::new(self)?;
         let outcome = prepared.outcome_at(speed)?;
-        let selection = prepared.select(speed)?;
         let models = &prepared.models;
-        let used = selection.used;
+        // the rule and the effects used at this speed, as the outcome reports them
+        let rule = outcome.combination.rule;
+        let uses = |effect| outcome.combination.effects.contains(&effect);
         let no_law = |what: &str| {
             SceneError::model(Error::Model {
                 model: "scene",
                 message: format!("no time-domain force law for {what}"),
             })
         };
-        let mut law: Box<dyn ForceLaw> = match selection.evaluation.rule {
+        let mut law: Box<dyn ForceLaw> = match rule {
             Rule::Elastic => Box::new(match self.target.gradation {
                 Some((k, c)) => {
                     ElasticContact::graded_sphere(c, k, self.effective_radius).map_err(err)?
@@ -399,7 +400,7 @@ impl Scene {
                 None => ElasticContact::hertz(self.effective_modulus, self.effective_radius)
                     .map_err(err)?,
             }),
-            Rule::Single if used.adhesion.is_some() => {
+            Rule::Single if uses(EffectKind::Adhesion) => {
                 match models.adhesive.as_ref().map(|a| &a.model) {
                     // the rule of the selected model (fixed grip when it stands in for
                     // Maugis-Dugdale)
@@ -413,7 +414,7 @@ impl Scene {
                     None => return Err(no_law("this scene")),
                 }
             }
-            Rule::Single if used.plasticity.is_some() => match &models.plastic {
+            Rule::Single if uses(EffectKind::Plasticity) => match &models.plastic {
                 Some(Plastic::Thornton(p)) => Box::new(p.force_law()),
                 Some(Plastic::Interpolation(p)) => Box::new(p.force_law()),
                 Some(Plastic::JacksonGreen(_)) => Box::new(
@@ -443,7 +444,7 @@ impl Scene {
             Rule::AdhesivePlasticExcess | Rule::Superposition => {
                 return Err(no_law(&format!(
                     "the {} rule (a sum of losses, not of forces)",
-                    selection.evaluation.rule.as_str()
+                    rule.as_str()
                 )))
             }
         };
