@@ -11,6 +11,7 @@ use pyo3::types::PyDict;
 use serde::Serialize;
 use serde_json::Value;
 use tabor::restitution::{impact, sticking_velocity, Error, ImpactModel};
+use tabor::single::jkr::{jkr as jkr_record, JkrArgs};
 
 type Arr<'py> = PyReadonlyArray1<'py, f64>;
 
@@ -186,28 +187,6 @@ pub fn effective<'py>(
 // ---------------------------------------------------------------------------------
 // jkr
 
-#[derive(Serialize)]
-struct Jkr {
-    model: String,
-    branch: String,
-    separation: &'static str,
-    energy_loss: f64,
-    energy_loss_error: f64,
-    sticking_velocity: f64,
-    separation_force: f64,
-    separation_contact_radius: f64,
-    first_touch_contact_radius: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    impact_speed: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    max_contact_radius: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    restitution: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    sticks: Option<bool>,
-    evaluations: u64,
-}
-
 const JKR_NAMES: &[(&str, &str)] = &[
     ("effective_modulus", "modulus"),
     ("effective_radius", "radius"),
@@ -240,7 +219,6 @@ pub fn jkr<'py>(
     tolerance: Arr<'py>,
     shape: Vec<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    use tabor::jkr::{AdhesiveContact, JkrImpact, JkrSphere};
     let rule = separation_rule(separation)?;
     let inp = inputs(
         &[
@@ -256,39 +234,18 @@ pub fn jkr<'py>(
     let records = batch(py, inp.n, &shape, |i| {
         let [e, r, w, m, tol] = [0, 1, 2, 3, 4].map(|k| inp.required[k].at(i));
         let v0 = opt_at(&inp.optional[0], i);
-        let sphere = JkrSphere::new(e, r, w).map_err(message)?;
-        let model = JkrImpact::new(sphere, m)
-            .map_err(message)?
-            .with_separation(rule)
-            .with_tolerance(tol)
-            .map_err(message)?;
-        let loss = model.adhesive_energy_loss().map_err(message)?;
-        let v_c = sticking_velocity(&model, tol.max(1e-15)).map_err(message)?;
-        let sep = sphere.critical_state(rule).map_err(message)?;
-        let touch = sphere.first_touch().map_err(message)?;
-        let (max_radius, outcome) = match v0 {
-            Some(v) => (
-                Some(model.max_contact_radius(v).map_err(message)?),
-                Some(impact(&model, v).map_err(message)?),
-            ),
-            None => (None, None),
-        };
-        json(&Jkr {
-            model: ImpactModel::name(&model),
-            branch: loss.branch.clone(),
-            separation: rule.as_str(),
-            energy_loss: loss.joules,
-            energy_loss_error: loss.error_estimate,
-            sticking_velocity: v_c.speed,
-            separation_force: sep.force,
-            separation_contact_radius: sep.contact_radius,
-            first_touch_contact_radius: touch.contact_radius,
-            impact_speed: v0,
-            max_contact_radius: max_radius.map(|x| x.contact_radius),
-            restitution: outcome.as_ref().map(|o| o.restitution),
-            sticks: outcome.as_ref().map(|o| o.sticks),
-            evaluations: loss.cost.evaluations,
-        })
+        json(
+            &jkr_record(&JkrArgs {
+                modulus: e,
+                radius: r,
+                work_of_adhesion: w,
+                mass: m,
+                speed: v0,
+                separation: rule,
+                tolerance: tol,
+            })
+            .map_err(message)?,
+        )
     })?;
     records_to_columns(py, &records)
 }
