@@ -10,6 +10,7 @@
 //! input (`--modulus` on the command line, `modulus` in Python).
 
 pub mod jkr;
+pub mod plastic;
 
 use crate::restitution;
 
@@ -65,4 +66,19 @@ impl Error {
             Error::Input(m) => m,
         }
     }
+}
+/// `value`, or the error that `model` needs the input `name`.
+pub(crate) fn required(
+    value: Option<f64>,
+    name: &str,
+    model: &str,
+    naming: Naming,
+) -> Result<f64, Error> {
+    value.ok_or_else(|| {
+        Error::Input(format!(
+            "missing {}: required by {}",
+            naming.input(name),
+            naming.choice("model", model)
+        ))
+    })
 }

@@ -10,8 +10,10 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use serde::Serialize;
 use serde_json::Value;
-use tabor::restitution::{impact, sticking_velocity, Error, ImpactModel};
+use tabor::restitution::Error;
 use tabor::single::jkr::{jkr as jkr_record, JkrArgs};
+use tabor::single::plastic::{plastic as plastic_record, PlasticArgs, PlasticModel};
+use tabor::single::Naming;
 
 type Arr<'py> = PyReadonlyArray1<'py, f64>;
 
@@ -253,16 +255,6 @@ pub fn jkr<'py>(
 // ---------------------------------------------------------------------------------
 // plastic
 
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum PlasticModel {
-    Thornton,
-    Interpolation,
-    JacksonGreen,
-    DimensionlessFit,
-    AdhesiveInterpolation,
-    Superposition,
-}
-
 fn plastic_model(name: &str, what: &str) -> PyResult<PlasticModel> {
     Ok(match name.replace('_', "-").as_str() {
         "thornton" => PlasticModel::Thornton,
@@ -284,211 +276,12 @@ fn plastic_model(name: &str, what: &str) -> PyResult<PlasticModel> {
     })
 }
 
-#[derive(Serialize)]
-struct Plastic {
-    model: String,
-    branch: String,
-    impact_speed: f64,
-    restitution: f64,
-    energy_loss: f64,
-    sticks: bool,
-    yield_velocity: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    sticking_velocity: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    elastic_sticking_velocity: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    adhesion_parameter: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    clamping: Option<tabor::plastic::Clamping>,
-    warnings: Vec<String>,
-}
-
 const PLASTIC_NAMES: &[(&str, &str)] = &[
     ("effective_modulus", "modulus"),
     ("effective_radius", "radius"),
     ("effective_mass", "mass"),
     ("impact_speed", "speed"),
 ];
-
-/// One element's inputs of `plastic`.
-struct PlasticArgs {
-    modulus: f64,
-    radius: f64,
-    mass: f64,
-    yield_stress: f64,
-    speed: f64,
-    poisson_ratio: Option<f64>,
-    density: Option<f64>,
-    work_of_adhesion: Option<f64>,
-    adhesion_parameter: Option<f64>,
-}
-
-fn required(value: Option<f64>, name: &str, model: &str) -> Result<f64, String> {
-    value.ok_or_else(|| format!("missing {name}: required by model=\"{model}\""))
-}
-
-struct NonAdhesive {
-    model: Box<dyn ImpactModel>,
-    yield_velocity: f64,
-    clamping: Option<tabor::plastic::Clamping>,
-}
-
-fn non_adhesive(a: &PlasticArgs, which: PlasticModel) -> Result<NonAdhesive, String> {
-    use tabor::plastic::{
-        DimensionlessFit, Interpolation, JacksonGreen, PlasticContact, PlasticImpact,
-        SimulationSettings, Thornton,
-    };
-    let message = renamed(PLASTIC_NAMES);
-    let contact = PlasticContact::new(a.modulus, a.radius, a.yield_stress).map_err(message)?;
-    Ok(match which {
-        PlasticModel::Thornton => {
-            let m = PlasticImpact::new(contact, Thornton, a.mass).map_err(message)?;
-            NonAdhesive {
-                yield_velocity: m.yield_velocity(),
-                model: Box::new(m),
-                clamping: None,
-            }
-        }
-        PlasticModel::JacksonGreen => {
-            let nu = required(a.poisson_ratio, "poisson_ratio", "jackson-green")?;
-            let m = PlasticContact::new(a.modulus, a.radius, a.yield_stress)
-                .and_then(|contact| JacksonGreen::new(contact, nu))
-                .map_err(message)?
-                .impact(a.mass, SimulationSettings::default())
-                .map_err(message)?;
-            NonAdhesive {
-                yield_velocity: m.yield_velocity(),
-                model: Box::new(m),
-                clamping: None,
-            }
-        }
-        PlasticModel::DimensionlessFit => {
-            let rho = required(a.density, "density", "dimensionless-fit")?;
-            let m =
-                DimensionlessFit::new(a.modulus, a.yield_stress, rho, a.mass).map_err(message)?;
-            let clamping = m.restitution(a.speed).map_err(message)?.clamping;
-            NonAdhesive {
-                yield_velocity: m.yield_velocity(),
-                model: Box::new(m),
-                clamping: Some(clamping),
-            }
-        }
-        // interpolation (also the default under superposition)
-        _ => {
-            let m =
-                PlasticImpact::new(contact, Interpolation::default(), a.mass).map_err(message)?;
-            NonAdhesive {
-                yield_velocity: m.yield_velocity(),
-                model: Box::new(m),
-                clamping: None,
-            }
-        }
-    })
-}
-
-fn plastic_point(
-    a: &PlasticArgs,
-    which: PlasticModel,
-    under: PlasticModel,
-) -> Result<Value, String> {
-    use tabor::jkr::JkrSphere;
-    use tabor::plastic::{
-        AdhesiveInterpolationImpact, AdhesivePlasticContact, Clamping, PlasticContact,
-        Superposition,
-    };
-    let message = renamed(PLASTIC_NAMES);
-    let mut warnings = Vec::new();
-    let mut elastic_sticking = None;
-    let mut phi = None;
-    let (model, yield_velocity, clamping): (Box<dyn ImpactModel>, f64, Option<Clamping>) =
-        match which {
-            PlasticModel::Superposition => {
-                let dg = required(a.work_of_adhesion, "work_of_adhesion", "superposition")?;
-                let n = non_adhesive(a, under)?;
-                let sphere = JkrSphere::new(a.modulus, a.radius, dg).map_err(message)?;
-                let sup = Superposition::new(n.model, sphere).map_err(message)?;
-                elastic_sticking = Some(
-                    sticking_velocity(sup.adhesive(), 1e-12)
-                        .map_err(message)?
-                        .speed,
-                );
-                (Box::new(sup), n.yield_velocity, n.clamping)
-            }
-            PlasticModel::AdhesiveInterpolation => {
-                let dg = required(
-                    a.work_of_adhesion,
-                    "work_of_adhesion",
-                    "adhesive-interpolation",
-                )?;
-                PlasticContact::new(a.modulus, a.radius, a.yield_stress).map_err(message)?;
-                let m = JkrSphere::new(a.modulus, a.radius, dg)
-                    .and_then(|sphere| match a.adhesion_parameter {
-                        Some(p) => AdhesivePlasticContact::new(sphere, p),
-                        None => AdhesivePlasticContact::from_yield_stress(sphere, a.yield_stress),
-                    })
-                    .and_then(|contact| AdhesiveInterpolationImpact::new(contact, a.mass))
-                    .map_err(message)?;
-                if a.adhesion_parameter.is_some() {
-                    warnings.push(
-                        "adhesion parameter Phi given directly: yield_stress is checked but \
-                         not used (the model depends on v0/v_c and Phi only)"
-                            .to_string(),
-                    );
-                }
-                phi = Some(m.model().adhesion_parameter());
-                elastic_sticking = Some(m.elastic_sticking_velocity());
-                if m.yield_velocity() == 0.0 {
-                    warnings.push(
-                        "the adhesive yield load (5.111) is reached inside the JKR adhesive \
-                         well: every impact deforms plastically (yield_velocity 0)"
-                            .to_string(),
-                    );
-                }
-                let v_y = m.yield_velocity();
-                (Box::new(m), v_y, None)
-            }
-            other => {
-                let n = non_adhesive(a, other)?;
-                (n.model, n.yield_velocity, n.clamping)
-            }
-        };
-    let sticking = if matches!(
-        which,
-        PlasticModel::Superposition | PlasticModel::AdhesiveInterpolation
-    ) {
-        Some(sticking_velocity(&*model, 1e-10).map_err(message)?.speed)
-    } else {
-        None
-    };
-    let outcome = impact(&*model, a.speed).map_err(message)?;
-    match clamping {
-        Some(Clamping::ToOne) => warnings.push(
-            "seed 001 fit gave a restitution above 1 (just above its yield velocity): clamped to 1"
-                .into(),
-        ),
-        Some(Clamping::ToZero) => warnings
-            .push("seed 001 fit gave a negative restitution: clamped to 0 (sticking)".into()),
-        _ => {}
-    }
-    if a.speed <= yield_velocity && which != PlasticModel::AdhesiveInterpolation {
-        warnings.push("impact speed at or below the yield velocity: elastic impact".into());
-    }
-    json(&Plastic {
-        model: outcome.model.clone(),
-        branch: outcome.branch.clone(),
-        impact_speed: a.speed,
-        restitution: outcome.restitution,
-        energy_loss: outcome.energy_loss,
-        sticks: outcome.sticks,
-        yield_velocity,
-        sticking_velocity: sticking,
-        elastic_sticking_velocity: elastic_sticking,
-        adhesion_parameter: phi,
-        clamping,
-        warnings,
-    })
-}
 
 /// `tabor plastic` per element (see `tabor.plastic`).
 #[pyfunction]
@@ -531,6 +324,7 @@ pub fn plastic<'py>(
         let r = |k: usize| inp.required[k].at(i);
         let o = |k: usize| opt_at(&inp.optional[k], i);
         let a = PlasticArgs {
+            model: which,
             modulus: r(0),
             radius: r(1),
             mass: r(2),
@@ -540,8 +334,9 @@ pub fn plastic<'py>(
             density: o(1),
             work_of_adhesion: o(2),
             adhesion_parameter: o(3),
+            plastic_model: under,
         };
-        plastic_point(&a, which, under)
+        json(&plastic_record(&a, Naming::Keywords).map_err(|e| e.message(renamed(PLASTIC_NAMES)))?)
     })?;
     records_to_columns(py, &records)
 }
