@@ -11,6 +11,7 @@
 
 pub mod jkr;
 pub mod plastic;
+pub mod visco;
 
 use crate::restitution;
 
@@ -29,6 +30,14 @@ impl Naming {
         match self {
             Naming::Flags => format!("--{}", name.replace('_', "-")),
             Naming::Keywords => name.to_string(),
+        }
+    }
+
+    /// A choice `value` mentioned on its own: as is for flags, quoted for keywords.
+    pub fn value(self, value: &str) -> String {
+        match self {
+            Naming::Flags => value.to_string(),
+            Naming::Keywords => format!("\"{value}\""),
         }
     }
 

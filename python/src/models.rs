@@ -13,6 +13,7 @@ use serde_json::Value;
 use tabor::restitution::Error;
 use tabor::single::jkr::{jkr as jkr_record, JkrArgs};
 use tabor::single::plastic::{plastic as plastic_record, PlasticArgs, PlasticModel};
+use tabor::single::visco::{visco as visco_record, ViscoArgs, ViscoModel};
 use tabor::single::Naming;
 
 type Arr<'py> = PyReadonlyArray1<'py, f64>;
@@ -344,145 +345,7 @@ pub fn plastic<'py>(
 // ---------------------------------------------------------------------------------
 // visco
 
-#[derive(Serialize)]
-struct Visco {
-    model: &'static str,
-    restitution: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    contact_time: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    max_overlap: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    equivalent_kelvin_voigt_damping_ratio: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    equivalent_kelvin_voigt_restitution: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    first_order_restitution: Option<f64>,
-    evaluations: u64,
-}
-
-const VISCO_MODELS: [&str; 11] = [
-    "kelvin-voigt-flat",
-    "kuwabara-kono",
-    "kelvin-voigt-sphere",
-    "lee-herrmann",
-    "tsuji",
-    "hunt-crossley",
-    "power-damping",
-    "standard-flat",
-    "standard-sphere",
-    "kelvin-maxwell-sphere",
-    "compressible-flat",
-];
-
 const VISCO_NAMES: &[(&str, &str)] = &[("shear_damping_ratio", "damping_ratio")];
-
-/// One element's optional inputs of `visco`, in the order of the signature.
-struct ViscoArgs {
-    damping_ratio: Option<f64>,
-    viscous_parameter: Option<f64>,
-    modulus_ratio: Option<f64>,
-    damping: Option<f64>,
-    damping_exponent: Option<f64>,
-    alpha: Option<f64>,
-    poisson_ratio: Option<f64>,
-    bulk_damping_ratio: Option<f64>,
-    tolerance: f64,
-}
-
-fn need(value: Option<f64>, name: &str, model: &str) -> Result<f64, String> {
-    value.ok_or_else(|| format!("missing {name}: the model \"{model}\" needs it"))
-}
-
-fn visco_point(name: &'static str, a: &ViscoArgs) -> Result<Value, String> {
-    use tabor::visco::{
-        compressible_flat, damping_law, kelvin_maxwell_sphere, kelvin_voigt_flat,
-        kelvin_voigt_sphere, standard_flat, standard_sphere, SphereModel,
-    };
-    let message = renamed(VISCO_NAMES);
-    let tol = tabor::restitution::validate::tolerance("tolerance", a.tolerance).map_err(message)?;
-    let mut out = Visco {
-        model: name,
-        restitution: 0.0,
-        contact_time: None,
-        max_overlap: None,
-        equivalent_kelvin_voigt_damping_ratio: None,
-        equivalent_kelvin_voigt_restitution: None,
-        first_order_restitution: None,
-        evaluations: 0,
-    };
-    let delta = || need(a.viscous_parameter, "viscous_parameter", name);
-    let beta = || need(a.modulus_ratio, "modulus_ratio", name);
-    let damping = || need(a.damping, "damping", name);
-    let law = |b: f64, g: f64| damping_law::solve(b, g, tol).map_err(message);
-    let scaled = match name {
-        "kelvin-voigt-flat" => {
-            let d = need(a.damping_ratio, "damping_ratio", name)?;
-            out.restitution = kelvin_voigt_flat::restitution(d).map_err(message)?;
-            out.contact_time = Some(kelvin_voigt_flat::contact_time(d).map_err(message)?);
-            None
-        }
-        "kuwabara-kono" | "kelvin-voigt-sphere" => {
-            let model = if name == "kuwabara-kono" {
-                SphereModel::KuwabaraKono
-            } else {
-                SphereModel::Rigorous
-            };
-            let d = delta()?;
-            out.first_order_restitution =
-                Some(kelvin_voigt_sphere::first_order_restitution(d).map_err(message)?);
-            Some(kelvin_voigt_sphere::solve(d, model, tol).map_err(message)?)
-        }
-        "lee-herrmann" => Some(law(
-            damping_law::DampingLaw::LeeHerrmann.exponent(),
-            damping()?,
-        )?),
-        "hunt-crossley" => Some(law(
-            damping_law::DampingLaw::HuntCrossley.exponent(),
-            damping()?,
-        )?),
-        "tsuji" => {
-            let alpha = need(a.alpha, "alpha", name)?;
-            let g = damping_law::tsuji_damping(alpha).map_err(message)?;
-            Some(law(damping_law::DampingLaw::Tsuji.exponent(), g)?)
-        }
-        "power-damping" => {
-            let b = need(a.damping_exponent, "damping_exponent", name)?;
-            Some(law(b, damping()?)?)
-        }
-        "standard-flat" => {
-            let (b, d) = (beta()?, delta()?);
-            let s = standard_flat::solve(b, d, tol).map_err(message)?;
-            out.equivalent_kelvin_voigt_damping_ratio =
-                Some(standard_flat::equivalent_damping_ratio(b, d).map_err(message)?);
-            out.equivalent_kelvin_voigt_restitution =
-                Some(standard_flat::equivalent_restitution(b, d).map_err(message)?);
-            Some(s)
-        }
-        "standard-sphere" => Some(standard_sphere::solve(beta()?, delta()?, tol).map_err(message)?),
-        "kelvin-maxwell-sphere" => {
-            Some(kelvin_maxwell_sphere::solve(beta()?, delta()?, tol).map_err(message)?)
-        }
-        _ => {
-            // compressible-flat
-            let nu = need(a.poisson_ratio, "poisson_ratio", name)?;
-            let d1 = need(a.damping_ratio, "damping_ratio", name)?;
-            let d2 = match a.bulk_damping_ratio {
-                Some(d2) => d2,
-                None => compressible_flat::bulk_damping_ratio_equal_viscosities(nu, d1)
-                    .map_err(message)?,
-            };
-            Some(compressible_flat::solve(nu, d1, d2, tol).map_err(message)?)
-        }
-    };
-    if let Some(s) = scaled {
-        out.restitution = s.restitution;
-        out.contact_time = Some(s.contact_time);
-        out.max_overlap = Some(s.max_overlap);
-        out.evaluations = s.cost.evaluations;
-    }
-    json(&out)
-}
 
 /// `tabor visco` per element (see `tabor.visco`).
 #[pyfunction]
@@ -504,14 +367,14 @@ pub fn visco<'py>(
     shape: Vec<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let wanted = model.replace('_', "-");
-    let name: &'static str = VISCO_MODELS
-        .iter()
-        .find(|m| **m == wanted)
-        .copied()
+    let which = ViscoModel::ALL
+        .into_iter()
+        .find(|m| m.name() == wanted)
         .ok_or_else(|| {
+            let names: Vec<&str> = ViscoModel::ALL.iter().map(|m| m.name()).collect();
             PyValueError::new_err(format!(
                 "invalid model = \"{model}\": expected one of {}",
-                VISCO_MODELS.join(", ")
+                names.join(", ")
             ))
         })?;
     let inp = inputs(
@@ -530,6 +393,7 @@ pub fn visco<'py>(
     let records = batch(py, inp.n, &shape, |i| {
         let o = |k: usize| opt_at(&inp.optional[k], i);
         let a = ViscoArgs {
+            model: which,
             damping_ratio: o(0),
             viscous_parameter: o(1),
             modulus_ratio: o(2),
@@ -540,7 +404,7 @@ pub fn visco<'py>(
             bulk_damping_ratio: o(7),
             tolerance: inp.required[0].at(i),
         };
-        visco_point(name, &a)
+        json(&visco_record(&a, Naming::Keywords).map_err(|e| e.message(renamed(VISCO_NAMES)))?)
     })?;
     records_to_columns(py, &records)
 }
