@@ -10,6 +10,7 @@
 //! input (`--modulus` on the command line, `modulus` in Python).
 
 pub mod jkr;
+pub mod penalty;
 pub mod plastic;
 pub mod visco;
 

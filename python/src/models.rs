@@ -12,6 +12,7 @@ use serde::Serialize;
 use serde_json::Value;
 use tabor::restitution::Error;
 use tabor::single::jkr::{jkr as jkr_record, JkrArgs};
+use tabor::single::penalty::{penalty as penalty_record, PenaltyArgs, PenaltyLaw};
 use tabor::single::plastic::{plastic as plastic_record, PlasticArgs, PlasticModel};
 use tabor::single::visco::{visco as visco_record, ViscoArgs, ViscoModel};
 use tabor::single::Naming;
@@ -412,130 +413,7 @@ pub fn visco<'py>(
 // ---------------------------------------------------------------------------------
 // penalty
 
-#[derive(Serialize)]
-struct Penalty {
-    law: &'static str,
-    nominal_restitution: f64,
-    achieved_restitution: f64,
-    closed_form_restitution: f64,
-    stiffness: f64,
-    exponent: f64,
-    effective_mass: f64,
-    impact_speed: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    damping_factor: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    damping_coefficient: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    exact_damping_factor: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    loss_speed: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    rounding: Option<f64>,
-    max_overlap: f64,
-    max_force: f64,
-    contact_time: Option<f64>,
-    energy_error: f64,
-}
-
 const PENALTY_NAMES: &[(&str, &str)] = &[("effective_mass", "mass"), ("impact_speed", "speed")];
-
-#[derive(Clone, Copy)]
-enum Law {
-    Characteristic,
-    Damped(tabor::penalty::DampingModel),
-}
-
-fn penalty_point(
-    law: Law,
-    e: f64,
-    stiffness: f64,
-    exponent: Option<f64>,
-    rounding: f64,
-    mass: f64,
-    speed: f64,
-) -> Result<Value, String> {
-    use tabor::penalty::{
-        characteristic_loss_speed, exact_damping_factor, simulate_impact, ContactCharacteristic,
-        DampedPowerLaw, ForceLaw, ImpactSimulation, SimulationSettings,
-    };
-    let message = renamed(PENALTY_NAMES);
-    fn simulate<L: ForceLaw>(
-        law: &mut L,
-        mass: f64,
-        speed: f64,
-        message: impl Fn(Error) -> String,
-    ) -> Result<ImpactSimulation, String> {
-        let settings = SimulationSettings {
-            record_trajectory: false,
-            ..SimulationSettings::default()
-        };
-        simulate_impact(law, mass, speed, &settings).map_err(message)
-    }
-    let out = match law {
-        Law::Characteristic => {
-            if let Some(n) = exponent {
-                if n != 1.0 {
-                    return Err(format!(
-                        "invalid exponent = {n:e}: the seed-002 characteristic is linear (n = 1)"
-                    ));
-                }
-            }
-            let big_v = characteristic_loss_speed(e, speed).map_err(message)?;
-            let mut law =
-                ContactCharacteristic::new(stiffness, rounding, big_v).map_err(message)?;
-            let closed = law.restitution(speed).map_err(message)?;
-            let sim = simulate(&mut law, mass, speed, message)?;
-            Penalty {
-                law: "seed-002 contact characteristic",
-                nominal_restitution: e,
-                achieved_restitution: sim.restitution,
-                closed_form_restitution: closed,
-                stiffness,
-                exponent: 1.0,
-                effective_mass: mass,
-                impact_speed: speed,
-                damping_factor: None,
-                damping_coefficient: None,
-                exact_damping_factor: None,
-                loss_speed: big_v.is_finite().then_some(big_v),
-                rounding: Some(rounding),
-                max_overlap: sim.max_overlap,
-                max_force: sim.max_force,
-                contact_time: sim.contact_time,
-                energy_error: sim.energy_error,
-            }
-        }
-        Law::Damped(model) => {
-            let n = exponent.unwrap_or(1.5);
-            let mut law =
-                DampedPowerLaw::from_model(model, stiffness, n, e, speed).map_err(message)?;
-            let exact = exact_damping_factor(e, speed).map_err(message)?;
-            let closed = law.restitution(speed).map_err(message)?;
-            let sim = simulate(&mut law, mass, speed, message)?;
-            Penalty {
-                law: model.name(),
-                nominal_restitution: e,
-                achieved_restitution: sim.restitution,
-                closed_form_restitution: closed,
-                stiffness: law.stiffness(),
-                exponent: law.exponent(),
-                effective_mass: mass,
-                impact_speed: speed,
-                damping_factor: Some(law.damping_factor()),
-                damping_coefficient: Some(law.damping_coefficient()),
-                exact_damping_factor: Some(exact),
-                loss_speed: None,
-                rounding: None,
-                max_overlap: sim.max_overlap,
-                max_force: sim.max_force,
-                contact_time: sim.contact_time,
-                energy_error: sim.energy_error,
-            }
-        }
-    };
-    json(&out)
-}
 
 /// `tabor penalty` per element (see `tabor.penalty`).
 #[pyfunction]
@@ -552,12 +430,11 @@ pub fn penalty<'py>(
     speed: Arr<'py>,
     shape: Vec<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    use tabor::penalty::DampingModel;
     let which = match law.replace('_', "-").as_str() {
-        "characteristic" => Law::Characteristic,
-        "hunt-crossley" => Law::Damped(DampingModel::HuntCrossley),
-        "lankarani-nikravesh" => Law::Damped(DampingModel::LankaraniNikravesh),
-        "flores" => Law::Damped(DampingModel::Flores),
+        "characteristic" => PenaltyLaw::Characteristic,
+        "hunt-crossley" => PenaltyLaw::HuntCrossley,
+        "lankarani-nikravesh" => PenaltyLaw::LankaraniNikravesh,
+        "flores" => PenaltyLaw::Flores,
         _ => {
             return Err(PyValueError::new_err(format!(
                 "invalid law = \"{law}\": expected characteristic, hunt-crossley, \
@@ -577,15 +454,16 @@ pub fn penalty<'py>(
     )?;
     let records = batch(py, inp.n, &shape, |i| {
         let r = |k: usize| inp.required[k].at(i);
-        penalty_point(
-            which,
-            r(0),
-            r(1),
-            opt_at(&inp.optional[0], i),
-            r(2),
-            r(3),
-            r(4),
-        )
+        let a = PenaltyArgs {
+            law: which,
+            restitution: r(0),
+            stiffness: r(1),
+            exponent: opt_at(&inp.optional[0], i),
+            rounding: r(2),
+            mass: r(3),
+            speed: r(4),
+        };
+        json(&penalty_record(&a, Naming::Keywords).map_err(|e| e.message(renamed(PENALTY_NAMES)))?)
     })?;
     records_to_columns(py, &records)
 }
