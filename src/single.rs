@@ -9,6 +9,7 @@
 //! `effective_modulus`); each front end renders it under its own name for the
 //! input (`--modulus` on the command line, `modulus` in Python).
 
+pub mod effective;
 pub mod jkr;
 pub mod penalty;
 pub mod plastic;

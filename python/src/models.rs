@@ -1,7 +1,8 @@
 //! The single-model functions, mirroring the CLI subcommands `effective`, `jkr`,
 //! `plastic`, `visco` and `penalty` (crates/tabor-cli/src/cmd): the same inputs (as
 //! keyword arguments named like the flags), the same outputs (as columns), the
-//! same validation. Re-created here over the facade because the CLI is a binary.
+//! same validation. The computations are shared with the CLI in `tabor::single`;
+//! this module only broadcasts the numpy inputs and converts the records.
 
 use crate::convert::{batch, records_to_columns, Col};
 use numpy::PyReadonlyArray1;
@@ -11,6 +12,7 @@ use pyo3::types::PyDict;
 use serde::Serialize;
 use serde_json::Value;
 use tabor::restitution::Error;
+use tabor::single::effective::{effective as effective_record, EffectiveArgs};
 use tabor::single::jkr::{jkr as jkr_record, JkrArgs};
 use tabor::single::penalty::{penalty as penalty_record, PenaltyArgs, PenaltyLaw};
 use tabor::single::plastic::{plastic as plastic_record, PlasticArgs, PlasticModel};
@@ -93,13 +95,6 @@ fn opt_at(c: &Option<Col<'_>>, i: usize) -> Option<f64> {
 // ---------------------------------------------------------------------------------
 // effective
 
-#[derive(Serialize)]
-struct Effective {
-    effective_modulus: f64,
-    effective_radius: f64,
-    effective_mass: f64,
-}
-
 /// `tabor effective` per element (see `tabor.effective`).
 #[pyfunction]
 #[pyo3(signature = (youngs_modulus, poisson_ratio, radius, density, mass, target_youngs_modulus,
@@ -120,10 +115,6 @@ pub fn effective<'py>(
     target_mass: Option<Arr<'py>>,
     shape: Vec<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    use tabor::restitution::effective::{
-        effective_modulus, effective_radius, reduced_mass, sphere_mass,
-    };
-    use tabor::restitution::ElasticMaterial;
     if density.is_some() && mass.is_some() {
         return Err(PyValueError::new_err("give density or mass, not both"));
     }
@@ -153,37 +144,23 @@ pub fn effective<'py>(
             ("target_mass", target_mass.as_ref()),
         ],
     )?;
-    let err = |e: Error| e.to_string();
     let records = batch(py, inp.n, &shape, |i| {
         let [e1, nu1, r1] = [0, 1, 2].map(|k| inp.required[k].at(i));
         let o = |k: usize| opt_at(&inp.optional[k], i);
-        let (rho, m, e2, nu2, r2, rho2, m2) = (o(0), o(1), o(2), o(3), o(4), o(5), o(6));
-        let sphere = ElasticMaterial::new(e1, nu1).map_err(err)?;
-        let target = if rigid_target {
-            ElasticMaterial::rigid()
-        } else {
-            ElasticMaterial::new(e2.unwrap_or(e1), nu2.unwrap_or(nu1)).map_err(err)?
+        let a = EffectiveArgs {
+            youngs_modulus: e1,
+            poisson_ratio: nu1,
+            radius: r1,
+            density: o(0),
+            mass: o(1),
+            target_youngs_modulus: o(2),
+            target_poisson_ratio: o(3),
+            rigid_target,
+            target_radius: o(4),
+            target_density: o(5),
+            target_mass: o(6),
         };
-        let m1 = match (m, rho) {
-            (Some(m), _) => m,
-            (None, Some(rho)) => sphere_mass(r1, rho).map_err(err)?,
-            (None, None) => return Err("give the sphere's density or mass".into()),
-        };
-        let m2 = match (m2, rho2, r2) {
-            (Some(m), _, _) => Some(m),
-            (None, Some(rho), Some(r)) => Some(sphere_mass(r, rho).map_err(err)?),
-            (None, None, Some(r)) => match rho {
-                Some(rho) => Some(sphere_mass(r, rho).map_err(err)?),
-                None => None,
-            },
-            (None, Some(_), None) => return Err("target_density needs target_radius".into()),
-            (None, None, None) => None,
-        };
-        json(&Effective {
-            effective_modulus: effective_modulus(&sphere, &target).map_err(err)?,
-            effective_radius: effective_radius(r1, r2).map_err(err)?,
-            effective_mass: reduced_mass(m1, m2).map_err(err)?,
-        })
+        json(&effective_record(&a, Naming::Keywords).map_err(|e| e.message(|e| e.to_string()))?)
     })?;
     records_to_columns(py, &records)
 }
