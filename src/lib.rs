@@ -22,6 +22,10 @@
 //! - [`viscoadhesive`]: adhesion (JKR or Maugis-Dugdale) with Kuwabara-Kono viscous
 //!   damping.
 //!
+//! [`single`] holds the single-model computations shared by the command line
+//! (`tabor jkr`, …) and the Python package: plain inputs named like the flags, one
+//! result record per model.
+//!
 //! [`VERSION`] is the version of this package, which every workspace crate shares.
 
 pub use tabor_dynamics as dynamics;
@@ -36,6 +40,8 @@ pub use tabor_restitution as restitution;
 pub use tabor_scene as scene;
 pub use tabor_visco as visco;
 pub use tabor_viscoadhesive as viscoadhesive;
+
+pub mod single;
 
 /// The tabor version (every workspace crate has this version).
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");

@@ -1,7 +1,8 @@
 //! The single-model functions, mirroring the CLI subcommands `effective`, `jkr`,
 //! `plastic`, `visco` and `penalty` (crates/tabor-cli/src/cmd): the same inputs (as
 //! keyword arguments named like the flags), the same outputs (as columns), the
-//! same validation. Re-created here over the facade because the CLI is a binary.
+//! same validation. The computations are shared with the CLI in `tabor::single`;
+//! this module only broadcasts the numpy inputs and converts the records.
 
 use crate::convert::{batch, records_to_columns, Col};
 use numpy::PyReadonlyArray1;
@@ -10,7 +11,13 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use serde::Serialize;
 use serde_json::Value;
-use tabor::restitution::{impact, sticking_velocity, Error, ImpactModel};
+use tabor::restitution::Error;
+use tabor::single::effective::{effective as effective_record, EffectiveArgs};
+use tabor::single::jkr::{jkr as jkr_record, JkrArgs};
+use tabor::single::penalty::{penalty as penalty_record, PenaltyArgs, PenaltyLaw};
+use tabor::single::plastic::{plastic as plastic_record, PlasticArgs, PlasticModel};
+use tabor::single::visco::{visco as visco_record, ViscoArgs, ViscoModel};
+use tabor::single::Naming;
 
 type Arr<'py> = PyReadonlyArray1<'py, f64>;
 
@@ -88,13 +95,6 @@ fn opt_at(c: &Option<Col<'_>>, i: usize) -> Option<f64> {
 // ---------------------------------------------------------------------------------
 // effective
 
-#[derive(Serialize)]
-struct Effective {
-    effective_modulus: f64,
-    effective_radius: f64,
-    effective_mass: f64,
-}
-
 /// `tabor effective` per element (see `tabor.effective`).
 #[pyfunction]
 #[pyo3(signature = (youngs_modulus, poisson_ratio, radius, density, mass, target_youngs_modulus,
@@ -115,10 +115,6 @@ pub fn effective<'py>(
     target_mass: Option<Arr<'py>>,
     shape: Vec<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    use tabor::restitution::effective::{
-        effective_modulus, effective_radius, reduced_mass, sphere_mass,
-    };
-    use tabor::restitution::ElasticMaterial;
     if density.is_some() && mass.is_some() {
         return Err(PyValueError::new_err("give density or mass, not both"));
     }
@@ -148,65 +144,29 @@ pub fn effective<'py>(
             ("target_mass", target_mass.as_ref()),
         ],
     )?;
-    let err = |e: Error| e.to_string();
     let records = batch(py, inp.n, &shape, |i| {
         let [e1, nu1, r1] = [0, 1, 2].map(|k| inp.required[k].at(i));
         let o = |k: usize| opt_at(&inp.optional[k], i);
-        let (rho, m, e2, nu2, r2, rho2, m2) = (o(0), o(1), o(2), o(3), o(4), o(5), o(6));
-        let sphere = ElasticMaterial::new(e1, nu1).map_err(err)?;
-        let target = if rigid_target {
-            ElasticMaterial::rigid()
-        } else {
-            ElasticMaterial::new(e2.unwrap_or(e1), nu2.unwrap_or(nu1)).map_err(err)?
+        let a = EffectiveArgs {
+            youngs_modulus: e1,
+            poisson_ratio: nu1,
+            radius: r1,
+            density: o(0),
+            mass: o(1),
+            target_youngs_modulus: o(2),
+            target_poisson_ratio: o(3),
+            rigid_target,
+            target_radius: o(4),
+            target_density: o(5),
+            target_mass: o(6),
         };
-        let m1 = match (m, rho) {
-            (Some(m), _) => m,
-            (None, Some(rho)) => sphere_mass(r1, rho).map_err(err)?,
-            (None, None) => return Err("give the sphere's density or mass".into()),
-        };
-        let m2 = match (m2, rho2, r2) {
-            (Some(m), _, _) => Some(m),
-            (None, Some(rho), Some(r)) => Some(sphere_mass(r, rho).map_err(err)?),
-            (None, None, Some(r)) => match rho {
-                Some(rho) => Some(sphere_mass(r, rho).map_err(err)?),
-                None => None,
-            },
-            (None, Some(_), None) => return Err("target_density needs target_radius".into()),
-            (None, None, None) => None,
-        };
-        json(&Effective {
-            effective_modulus: effective_modulus(&sphere, &target).map_err(err)?,
-            effective_radius: effective_radius(r1, r2).map_err(err)?,
-            effective_mass: reduced_mass(m1, m2).map_err(err)?,
-        })
+        json(&effective_record(&a, Naming::Keywords).map_err(|e| e.message(|e| e.to_string()))?)
     })?;
     records_to_columns(py, &records)
 }
 
 // ---------------------------------------------------------------------------------
 // jkr
-
-#[derive(Serialize)]
-struct Jkr {
-    model: String,
-    branch: String,
-    separation: &'static str,
-    energy_loss: f64,
-    energy_loss_error: f64,
-    sticking_velocity: f64,
-    separation_force: f64,
-    separation_contact_radius: f64,
-    first_touch_contact_radius: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    impact_speed: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    max_contact_radius: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    restitution: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    sticks: Option<bool>,
-    evaluations: u64,
-}
 
 const JKR_NAMES: &[(&str, &str)] = &[
     ("effective_modulus", "modulus"),
@@ -240,7 +200,6 @@ pub fn jkr<'py>(
     tolerance: Arr<'py>,
     shape: Vec<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    use tabor::jkr::{AdhesiveContact, JkrImpact, JkrSphere};
     let rule = separation_rule(separation)?;
     let inp = inputs(
         &[
@@ -256,55 +215,24 @@ pub fn jkr<'py>(
     let records = batch(py, inp.n, &shape, |i| {
         let [e, r, w, m, tol] = [0, 1, 2, 3, 4].map(|k| inp.required[k].at(i));
         let v0 = opt_at(&inp.optional[0], i);
-        let sphere = JkrSphere::new(e, r, w).map_err(message)?;
-        let model = JkrImpact::new(sphere, m)
-            .map_err(message)?
-            .with_separation(rule)
-            .with_tolerance(tol)
-            .map_err(message)?;
-        let loss = model.adhesive_energy_loss().map_err(message)?;
-        let v_c = sticking_velocity(&model, tol.max(1e-15)).map_err(message)?;
-        let sep = sphere.critical_state(rule).map_err(message)?;
-        let touch = sphere.first_touch().map_err(message)?;
-        let (max_radius, outcome) = match v0 {
-            Some(v) => (
-                Some(model.max_contact_radius(v).map_err(message)?),
-                Some(impact(&model, v).map_err(message)?),
-            ),
-            None => (None, None),
-        };
-        json(&Jkr {
-            model: ImpactModel::name(&model),
-            branch: loss.branch.clone(),
-            separation: rule.as_str(),
-            energy_loss: loss.joules,
-            energy_loss_error: loss.error_estimate,
-            sticking_velocity: v_c.speed,
-            separation_force: sep.force,
-            separation_contact_radius: sep.contact_radius,
-            first_touch_contact_radius: touch.contact_radius,
-            impact_speed: v0,
-            max_contact_radius: max_radius.map(|x| x.contact_radius),
-            restitution: outcome.as_ref().map(|o| o.restitution),
-            sticks: outcome.as_ref().map(|o| o.sticks),
-            evaluations: loss.cost.evaluations,
-        })
+        json(
+            &jkr_record(&JkrArgs {
+                modulus: e,
+                radius: r,
+                work_of_adhesion: w,
+                mass: m,
+                speed: v0,
+                separation: rule,
+                tolerance: tol,
+            })
+            .map_err(message)?,
+        )
     })?;
     records_to_columns(py, &records)
 }
 
 // ---------------------------------------------------------------------------------
 // plastic
-
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum PlasticModel {
-    Thornton,
-    Interpolation,
-    JacksonGreen,
-    DimensionlessFit,
-    AdhesiveInterpolation,
-    Superposition,
-}
 
 fn plastic_model(name: &str, what: &str) -> PyResult<PlasticModel> {
     Ok(match name.replace('_', "-").as_str() {
@@ -327,211 +255,12 @@ fn plastic_model(name: &str, what: &str) -> PyResult<PlasticModel> {
     })
 }
 
-#[derive(Serialize)]
-struct Plastic {
-    model: String,
-    branch: String,
-    impact_speed: f64,
-    restitution: f64,
-    energy_loss: f64,
-    sticks: bool,
-    yield_velocity: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    sticking_velocity: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    elastic_sticking_velocity: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    adhesion_parameter: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    clamping: Option<tabor::plastic::Clamping>,
-    warnings: Vec<String>,
-}
-
 const PLASTIC_NAMES: &[(&str, &str)] = &[
     ("effective_modulus", "modulus"),
     ("effective_radius", "radius"),
     ("effective_mass", "mass"),
     ("impact_speed", "speed"),
 ];
-
-/// One element's inputs of `plastic`.
-struct PlasticArgs {
-    modulus: f64,
-    radius: f64,
-    mass: f64,
-    yield_stress: f64,
-    speed: f64,
-    poisson_ratio: Option<f64>,
-    density: Option<f64>,
-    work_of_adhesion: Option<f64>,
-    adhesion_parameter: Option<f64>,
-}
-
-fn required(value: Option<f64>, name: &str, model: &str) -> Result<f64, String> {
-    value.ok_or_else(|| format!("missing {name}: required by model=\"{model}\""))
-}
-
-struct NonAdhesive {
-    model: Box<dyn ImpactModel>,
-    yield_velocity: f64,
-    clamping: Option<tabor::plastic::Clamping>,
-}
-
-fn non_adhesive(a: &PlasticArgs, which: PlasticModel) -> Result<NonAdhesive, String> {
-    use tabor::plastic::{
-        DimensionlessFit, Interpolation, JacksonGreen, PlasticContact, PlasticImpact,
-        SimulationSettings, Thornton,
-    };
-    let message = renamed(PLASTIC_NAMES);
-    let contact = PlasticContact::new(a.modulus, a.radius, a.yield_stress).map_err(message)?;
-    Ok(match which {
-        PlasticModel::Thornton => {
-            let m = PlasticImpact::new(contact, Thornton, a.mass).map_err(message)?;
-            NonAdhesive {
-                yield_velocity: m.yield_velocity(),
-                model: Box::new(m),
-                clamping: None,
-            }
-        }
-        PlasticModel::JacksonGreen => {
-            let nu = required(a.poisson_ratio, "poisson_ratio", "jackson-green")?;
-            let m = PlasticContact::new(a.modulus, a.radius, a.yield_stress)
-                .and_then(|contact| JacksonGreen::new(contact, nu))
-                .map_err(message)?
-                .impact(a.mass, SimulationSettings::default())
-                .map_err(message)?;
-            NonAdhesive {
-                yield_velocity: m.yield_velocity(),
-                model: Box::new(m),
-                clamping: None,
-            }
-        }
-        PlasticModel::DimensionlessFit => {
-            let rho = required(a.density, "density", "dimensionless-fit")?;
-            let m =
-                DimensionlessFit::new(a.modulus, a.yield_stress, rho, a.mass).map_err(message)?;
-            let clamping = m.restitution(a.speed).map_err(message)?.clamping;
-            NonAdhesive {
-                yield_velocity: m.yield_velocity(),
-                model: Box::new(m),
-                clamping: Some(clamping),
-            }
-        }
-        // interpolation (also the default under superposition)
-        _ => {
-            let m =
-                PlasticImpact::new(contact, Interpolation::default(), a.mass).map_err(message)?;
-            NonAdhesive {
-                yield_velocity: m.yield_velocity(),
-                model: Box::new(m),
-                clamping: None,
-            }
-        }
-    })
-}
-
-fn plastic_point(
-    a: &PlasticArgs,
-    which: PlasticModel,
-    under: PlasticModel,
-) -> Result<Value, String> {
-    use tabor::jkr::JkrSphere;
-    use tabor::plastic::{
-        AdhesiveInterpolationImpact, AdhesivePlasticContact, Clamping, PlasticContact,
-        Superposition,
-    };
-    let message = renamed(PLASTIC_NAMES);
-    let mut warnings = Vec::new();
-    let mut elastic_sticking = None;
-    let mut phi = None;
-    let (model, yield_velocity, clamping): (Box<dyn ImpactModel>, f64, Option<Clamping>) =
-        match which {
-            PlasticModel::Superposition => {
-                let dg = required(a.work_of_adhesion, "work_of_adhesion", "superposition")?;
-                let n = non_adhesive(a, under)?;
-                let sphere = JkrSphere::new(a.modulus, a.radius, dg).map_err(message)?;
-                let sup = Superposition::new(n.model, sphere).map_err(message)?;
-                elastic_sticking = Some(
-                    sticking_velocity(sup.adhesive(), 1e-12)
-                        .map_err(message)?
-                        .speed,
-                );
-                (Box::new(sup), n.yield_velocity, n.clamping)
-            }
-            PlasticModel::AdhesiveInterpolation => {
-                let dg = required(
-                    a.work_of_adhesion,
-                    "work_of_adhesion",
-                    "adhesive-interpolation",
-                )?;
-                PlasticContact::new(a.modulus, a.radius, a.yield_stress).map_err(message)?;
-                let m = JkrSphere::new(a.modulus, a.radius, dg)
-                    .and_then(|sphere| match a.adhesion_parameter {
-                        Some(p) => AdhesivePlasticContact::new(sphere, p),
-                        None => AdhesivePlasticContact::from_yield_stress(sphere, a.yield_stress),
-                    })
-                    .and_then(|contact| AdhesiveInterpolationImpact::new(contact, a.mass))
-                    .map_err(message)?;
-                if a.adhesion_parameter.is_some() {
-                    warnings.push(
-                        "adhesion parameter Phi given directly: yield_stress is checked but \
-                         not used (the model depends on v0/v_c and Phi only)"
-                            .to_string(),
-                    );
-                }
-                phi = Some(m.model().adhesion_parameter());
-                elastic_sticking = Some(m.elastic_sticking_velocity());
-                if m.yield_velocity() == 0.0 {
-                    warnings.push(
-                        "the adhesive yield load (5.111) is reached inside the JKR adhesive \
-                         well: every impact deforms plastically (yield_velocity 0)"
-                            .to_string(),
-                    );
-                }
-                let v_y = m.yield_velocity();
-                (Box::new(m), v_y, None)
-            }
-            other => {
-                let n = non_adhesive(a, other)?;
-                (n.model, n.yield_velocity, n.clamping)
-            }
-        };
-    let sticking = if matches!(
-        which,
-        PlasticModel::Superposition | PlasticModel::AdhesiveInterpolation
-    ) {
-        Some(sticking_velocity(&*model, 1e-10).map_err(message)?.speed)
-    } else {
-        None
-    };
-    let outcome = impact(&*model, a.speed).map_err(message)?;
-    match clamping {
-        Some(Clamping::ToOne) => warnings.push(
-            "seed 001 fit gave a restitution above 1 (just above its yield velocity): clamped to 1"
-                .into(),
-        ),
-        Some(Clamping::ToZero) => warnings
-            .push("seed 001 fit gave a negative restitution: clamped to 0 (sticking)".into()),
-        _ => {}
-    }
-    if a.speed <= yield_velocity && which != PlasticModel::AdhesiveInterpolation {
-        warnings.push("impact speed at or below the yield velocity: elastic impact".into());
-    }
-    json(&Plastic {
-        model: outcome.model.clone(),
-        branch: outcome.branch.clone(),
-        impact_speed: a.speed,
-        restitution: outcome.restitution,
-        energy_loss: outcome.energy_loss,
-        sticks: outcome.sticks,
-        yield_velocity,
-        sticking_velocity: sticking,
-        elastic_sticking_velocity: elastic_sticking,
-        adhesion_parameter: phi,
-        clamping,
-        warnings,
-    })
-}
 
 /// `tabor plastic` per element (see `tabor.plastic`).
 #[pyfunction]
@@ -574,6 +303,7 @@ pub fn plastic<'py>(
         let r = |k: usize| inp.required[k].at(i);
         let o = |k: usize| opt_at(&inp.optional[k], i);
         let a = PlasticArgs {
+            model: which,
             modulus: r(0),
             radius: r(1),
             mass: r(2),
@@ -583,8 +313,9 @@ pub fn plastic<'py>(
             density: o(1),
             work_of_adhesion: o(2),
             adhesion_parameter: o(3),
+            plastic_model: under,
         };
-        plastic_point(&a, which, under)
+        json(&plastic_record(&a, Naming::Keywords).map_err(|e| e.message(renamed(PLASTIC_NAMES)))?)
     })?;
     records_to_columns(py, &records)
 }
@@ -592,145 +323,7 @@ pub fn plastic<'py>(
 // ---------------------------------------------------------------------------------
 // visco
 
-#[derive(Serialize)]
-struct Visco {
-    model: &'static str,
-    restitution: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    contact_time: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    max_overlap: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    equivalent_kelvin_voigt_damping_ratio: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    equivalent_kelvin_voigt_restitution: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    first_order_restitution: Option<f64>,
-    evaluations: u64,
-}
-
-const VISCO_MODELS: [&str; 11] = [
-    "kelvin-voigt-flat",
-    "kuwabara-kono",
-    "kelvin-voigt-sphere",
-    "lee-herrmann",
-    "tsuji",
-    "hunt-crossley",
-    "power-damping",
-    "standard-flat",
-    "standard-sphere",
-    "kelvin-maxwell-sphere",
-    "compressible-flat",
-];
-
 const VISCO_NAMES: &[(&str, &str)] = &[("shear_damping_ratio", "damping_ratio")];
-
-/// One element's optional inputs of `visco`, in the order of the signature.
-struct ViscoArgs {
-    damping_ratio: Option<f64>,
-    viscous_parameter: Option<f64>,
-    modulus_ratio: Option<f64>,
-    damping: Option<f64>,
-    damping_exponent: Option<f64>,
-    alpha: Option<f64>,
-    poisson_ratio: Option<f64>,
-    bulk_damping_ratio: Option<f64>,
-    tolerance: f64,
-}
-
-fn need(value: Option<f64>, name: &str, model: &str) -> Result<f64, String> {
-    value.ok_or_else(|| format!("missing {name}: the model \"{model}\" needs it"))
-}
-
-fn visco_point(name: &'static str, a: &ViscoArgs) -> Result<Value, String> {
-    use tabor::visco::{
-        compressible_flat, damping_law, kelvin_maxwell_sphere, kelvin_voigt_flat,
-        kelvin_voigt_sphere, standard_flat, standard_sphere, SphereModel,
-    };
-    let message = renamed(VISCO_NAMES);
-    let tol = tabor::restitution::validate::tolerance("tolerance", a.tolerance).map_err(message)?;
-    let mut out = Visco {
-        model: name,
-        restitution: 0.0,
-        contact_time: None,
-        max_overlap: None,
-        equivalent_kelvin_voigt_damping_ratio: None,
-        equivalent_kelvin_voigt_restitution: None,
-        first_order_restitution: None,
-        evaluations: 0,
-    };
-    let delta = || need(a.viscous_parameter, "viscous_parameter", name);
-    let beta = || need(a.modulus_ratio, "modulus_ratio", name);
-    let damping = || need(a.damping, "damping", name);
-    let law = |b: f64, g: f64| damping_law::solve(b, g, tol).map_err(message);
-    let scaled = match name {
-        "kelvin-voigt-flat" => {
-            let d = need(a.damping_ratio, "damping_ratio", name)?;
-            out.restitution = kelvin_voigt_flat::restitution(d).map_err(message)?;
-            out.contact_time = Some(kelvin_voigt_flat::contact_time(d).map_err(message)?);
-            None
-        }
-        "kuwabara-kono" | "kelvin-voigt-sphere" => {
-            let model = if name == "kuwabara-kono" {
-                SphereModel::KuwabaraKono
-            } else {
-                SphereModel::Rigorous
-            };
-            let d = delta()?;
-            out.first_order_restitution =
-                Some(kelvin_voigt_sphere::first_order_restitution(d).map_err(message)?);
-            Some(kelvin_voigt_sphere::solve(d, model, tol).map_err(message)?)
-        }
-        "lee-herrmann" => Some(law(
-            damping_law::DampingLaw::LeeHerrmann.exponent(),
-            damping()?,
-        )?),
-        "hunt-crossley" => Some(law(
-            damping_law::DampingLaw::HuntCrossley.exponent(),
-            damping()?,
-        )?),
-        "tsuji" => {
-            let alpha = need(a.alpha, "alpha", name)?;
-            let g = damping_law::tsuji_damping(alpha).map_err(message)?;
-            Some(law(damping_law::DampingLaw::Tsuji.exponent(), g)?)
-        }
-        "power-damping" => {
-            let b = need(a.damping_exponent, "damping_exponent", name)?;
-            Some(law(b, damping()?)?)
-        }
-        "standard-flat" => {
-            let (b, d) = (beta()?, delta()?);
-            let s = standard_flat::solve(b, d, tol).map_err(message)?;
-            out.equivalent_kelvin_voigt_damping_ratio =
-                Some(standard_flat::equivalent_damping_ratio(b, d).map_err(message)?);
-            out.equivalent_kelvin_voigt_restitution =
-                Some(standard_flat::equivalent_restitution(b, d).map_err(message)?);
-            Some(s)
-        }
-        "standard-sphere" => Some(standard_sphere::solve(beta()?, delta()?, tol).map_err(message)?),
-        "kelvin-maxwell-sphere" => {
-            Some(kelvin_maxwell_sphere::solve(beta()?, delta()?, tol).map_err(message)?)
-        }
-        _ => {
-            // compressible-flat
-            let nu = need(a.poisson_ratio, "poisson_ratio", name)?;
-            let d1 = need(a.damping_ratio, "damping_ratio", name)?;
-            let d2 = match a.bulk_damping_ratio {
-                Some(d2) => d2,
-                None => compressible_flat::bulk_damping_ratio_equal_viscosities(nu, d1)
-                    .map_err(message)?,
-            };
-            Some(compressible_flat::solve(nu, d1, d2, tol).map_err(message)?)
-        }
-    };
-    if let Some(s) = scaled {
-        out.restitution = s.restitution;
-        out.contact_time = Some(s.contact_time);
-        out.max_overlap = Some(s.max_overlap);
-        out.evaluations = s.cost.evaluations;
-    }
-    json(&out)
-}
 
 /// `tabor visco` per element (see `tabor.visco`).
 #[pyfunction]
@@ -752,14 +345,14 @@ pub fn visco<'py>(
     shape: Vec<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let wanted = model.replace('_', "-");
-    let name: &'static str = VISCO_MODELS
-        .iter()
-        .find(|m| **m == wanted)
-        .copied()
+    let which = ViscoModel::ALL
+        .into_iter()
+        .find(|m| m.name() == wanted)
         .ok_or_else(|| {
+            let names: Vec<&str> = ViscoModel::ALL.iter().map(|m| m.name()).collect();
             PyValueError::new_err(format!(
                 "invalid model = \"{model}\": expected one of {}",
-                VISCO_MODELS.join(", ")
+                names.join(", ")
             ))
         })?;
     let inp = inputs(
@@ -778,6 +371,7 @@ pub fn visco<'py>(
     let records = batch(py, inp.n, &shape, |i| {
         let o = |k: usize| opt_at(&inp.optional[k], i);
         let a = ViscoArgs {
+            model: which,
             damping_ratio: o(0),
             viscous_parameter: o(1),
             modulus_ratio: o(2),
@@ -788,7 +382,7 @@ pub fn visco<'py>(
             bulk_damping_ratio: o(7),
             tolerance: inp.required[0].at(i),
         };
-        visco_point(name, &a)
+        json(&visco_record(&a, Naming::Keywords).map_err(|e| e.message(renamed(VISCO_NAMES)))?)
     })?;
     records_to_columns(py, &records)
 }
@@ -796,130 +390,7 @@ pub fn visco<'py>(
 // ---------------------------------------------------------------------------------
 // penalty
 
-#[derive(Serialize)]
-struct Penalty {
-    law: &'static str,
-    nominal_restitution: f64,
-    achieved_restitution: f64,
-    closed_form_restitution: f64,
-    stiffness: f64,
-    exponent: f64,
-    effective_mass: f64,
-    impact_speed: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    damping_factor: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    damping_coefficient: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    exact_damping_factor: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    loss_speed: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    rounding: Option<f64>,
-    max_overlap: f64,
-    max_force: f64,
-    contact_time: Option<f64>,
-    energy_error: f64,
-}
-
 const PENALTY_NAMES: &[(&str, &str)] = &[("effective_mass", "mass"), ("impact_speed", "speed")];
-
-#[derive(Clone, Copy)]
-enum Law {
-    Characteristic,
-    Damped(tabor::penalty::DampingModel),
-}
-
-fn penalty_point(
-    law: Law,
-    e: f64,
-    stiffness: f64,
-    exponent: Option<f64>,
-    rounding: f64,
-    mass: f64,
-    speed: f64,
-) -> Result<Value, String> {
-    use tabor::penalty::{
-        characteristic_loss_speed, exact_damping_factor, simulate_impact, ContactCharacteristic,
-        DampedPowerLaw, ForceLaw, ImpactSimulation, SimulationSettings,
-    };
-    let message = renamed(PENALTY_NAMES);
-    fn simulate<L: ForceLaw>(
-        law: &mut L,
-        mass: f64,
-        speed: f64,
-        message: impl Fn(Error) -> String,
-    ) -> Result<ImpactSimulation, String> {
-        let settings = SimulationSettings {
-            record_trajectory: false,
-            ..SimulationSettings::default()
-        };
-        simulate_impact(law, mass, speed, &settings).map_err(message)
-    }
-    let out = match law {
-        Law::Characteristic => {
-            if let Some(n) = exponent {
-                if n != 1.0 {
-                    return Err(format!(
-                        "invalid exponent = {n:e}: the seed-002 characteristic is linear (n = 1)"
-                    ));
-                }
-            }
-            let big_v = characteristic_loss_speed(e, speed).map_err(message)?;
-            let mut law =
-                ContactCharacteristic::new(stiffness, rounding, big_v).map_err(message)?;
-            let closed = law.restitution(speed).map_err(message)?;
-            let sim = simulate(&mut law, mass, speed, message)?;
-            Penalty {
-                law: "seed-002 contact characteristic",
-                nominal_restitution: e,
-                achieved_restitution: sim.restitution,
-                closed_form_restitution: closed,
-                stiffness,
-                exponent: 1.0,
-                effective_mass: mass,
-                impact_speed: speed,
-                damping_factor: None,
-                damping_coefficient: None,
-                exact_damping_factor: None,
-                loss_speed: big_v.is_finite().then_some(big_v),
-                rounding: Some(rounding),
-                max_overlap: sim.max_overlap,
-                max_force: sim.max_force,
-                contact_time: sim.contact_time,
-                energy_error: sim.energy_error,
-            }
-        }
-        Law::Damped(model) => {
-            let n = exponent.unwrap_or(1.5);
-            let mut law =
-                DampedPowerLaw::from_model(model, stiffness, n, e, speed).map_err(message)?;
-            let exact = exact_damping_factor(e, speed).map_err(message)?;
-            let closed = law.restitution(speed).map_err(message)?;
-            let sim = simulate(&mut law, mass, speed, message)?;
-            Penalty {
-                law: model.name(),
-                nominal_restitution: e,
-                achieved_restitution: sim.restitution,
-                closed_form_restitution: closed,
-                stiffness: law.stiffness(),
-                exponent: law.exponent(),
-                effective_mass: mass,
-                impact_speed: speed,
-                damping_factor: Some(law.damping_factor()),
-                damping_coefficient: Some(law.damping_coefficient()),
-                exact_damping_factor: Some(exact),
-                loss_speed: None,
-                rounding: None,
-                max_overlap: sim.max_overlap,
-                max_force: sim.max_force,
-                contact_time: sim.contact_time,
-                energy_error: sim.energy_error,
-            }
-        }
-    };
-    json(&out)
-}
 
 /// `tabor penalty` per element (see `tabor.penalty`).
 #[pyfunction]
@@ -936,12 +407,11 @@ pub fn penalty<'py>(
     speed: Arr<'py>,
     shape: Vec<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    use tabor::penalty::DampingModel;
     let which = match law.replace('_', "-").as_str() {
-        "characteristic" => Law::Characteristic,
-        "hunt-crossley" => Law::Damped(DampingModel::HuntCrossley),
-        "lankarani-nikravesh" => Law::Damped(DampingModel::LankaraniNikravesh),
-        "flores" => Law::Damped(DampingModel::Flores),
+        "characteristic" => PenaltyLaw::Characteristic,
+        "hunt-crossley" => PenaltyLaw::HuntCrossley,
+        "lankarani-nikravesh" => PenaltyLaw::LankaraniNikravesh,
+        "flores" => PenaltyLaw::Flores,
         _ => {
             return Err(PyValueError::new_err(format!(
                 "invalid law = \"{law}\": expected characteristic, hunt-crossley, \
@@ -961,15 +431,16 @@ pub fn penalty<'py>(
     )?;
     let records = batch(py, inp.n, &shape, |i| {
         let r = |k: usize| inp.required[k].at(i);
-        penalty_point(
-            which,
-            r(0),
-            r(1),
-            opt_at(&inp.optional[0], i),
-            r(2),
-            r(3),
-            r(4),
-        )
+        let a = PenaltyArgs {
+            law: which,
+            restitution: r(0),
+            stiffness: r(1),
+            exponent: opt_at(&inp.optional[0], i),
+            rounding: r(2),
+            mass: r(3),
+            speed: r(4),
+        };
+        json(&penalty_record(&a, Naming::Keywords).map_err(|e| e.message(renamed(PENALTY_NAMES)))?)
     })?;
     records_to_columns(py, &records)
 }

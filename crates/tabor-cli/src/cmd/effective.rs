@@ -2,11 +2,8 @@
 //! second sphere or a flat half-space.
 
 use crate::output::{print_json, print_table, stdout, Outcome};
-use serde::Serialize;
-use tabor::restitution::effective::{
-    effective_modulus, effective_radius, reduced_mass, sphere_mass,
-};
-use tabor::restitution::ElasticMaterial;
+use tabor::single::effective::{effective, EffectiveArgs};
+use tabor::single::Naming;
 
 /// Arguments of `tabor effective`.
 #[derive(clap::Args)]
@@ -50,50 +47,27 @@ pub struct Args {
     json: bool,
 }
 
-#[derive(Serialize)]
-struct Effective {
-    effective_modulus: f64,
-    effective_radius: f64,
-    effective_mass: f64,
-}
-
 /// Runs `tabor effective`.
 pub fn run(args: &Args) -> Outcome {
     // The library names the parameter (`youngs_modulus`, `radius`, …); the flags
     // differ between the two bodies, so the shared flag table is not used here.
-    let err = |e: tabor::restitution::Error| e.to_string();
-    let sphere = ElasticMaterial::new(args.youngs_modulus, args.poisson_ratio).map_err(err)?;
-    let target = if args.rigid_target {
-        ElasticMaterial::rigid()
-    } else {
-        ElasticMaterial::new(
-            args.target_youngs_modulus.unwrap_or(args.youngs_modulus),
-            args.target_poisson_ratio.unwrap_or(args.poisson_ratio),
-        )
-        .map_err(err)?
-    };
-    let m1 = match (args.mass, args.density) {
-        (Some(m), _) => m,
-        (None, Some(rho)) => sphere_mass(args.radius, rho).map_err(err)?,
-        (None, None) => return Err("give the sphere's --density or --mass".into()),
-    };
-    let m2 = match (args.target_mass, args.target_density, args.target_radius) {
-        (Some(m), _, _) => Some(m),
-        (None, Some(rho), Some(r)) => Some(sphere_mass(r, rho).map_err(err)?),
-        (None, None, Some(r)) => match args.density {
-            Some(rho) => Some(sphere_mass(r, rho).map_err(err)?),
-            None => None,
+    let out = effective(
+        &EffectiveArgs {
+            youngs_modulus: args.youngs_modulus,
+            poisson_ratio: args.poisson_ratio,
+            radius: args.radius,
+            density: args.density,
+            mass: args.mass,
+            target_youngs_modulus: args.target_youngs_modulus,
+            target_poisson_ratio: args.target_poisson_ratio,
+            rigid_target: args.rigid_target,
+            target_radius: args.target_radius,
+            target_density: args.target_density,
+            target_mass: args.target_mass,
         },
-        (None, Some(_), None) => {
-            return Err("--target-density needs --target-radius".into());
-        }
-        (None, None, None) => None,
-    };
-    let out = Effective {
-        effective_modulus: effective_modulus(&sphere, &target).map_err(err)?,
-        effective_radius: effective_radius(args.radius, args.target_radius).map_err(err)?,
-        effective_mass: reduced_mass(m1, m2).map_err(err)?,
-    };
+        Naming::Flags,
+    )
+    .map_err(|e| e.message(|e| e.to_string()))?;
     if args.json {
         print_json(&out)
     } else {

@@ -3,10 +3,9 @@
 //! maximum contact radius and the coefficient of restitution.
 
 use crate::output::{message, print_json, print_table, stdout, Outcome};
-use serde::Serialize;
 use std::io::Write;
-use tabor::jkr::{AdhesiveContact, JkrImpact, JkrSphere, SeparationRule};
-use tabor::restitution::{impact, sticking_velocity};
+use tabor::jkr::SeparationRule;
+use tabor::single::jkr::{jkr, JkrArgs};
 
 /// Where contact breaks on the way out.
 #[derive(Clone, Copy, Debug, clap::ValueEnum)]
@@ -53,72 +52,22 @@ pub struct Args {
     json: bool,
 }
 
-#[derive(Serialize)]
-struct Jkr {
-    model: String,
-    branch: String,
-    separation: &'static str,
-    /// |ΔU_kin| (J).
-    energy_loss: f64,
-    energy_loss_error: f64,
-    /// v_c (m/s).
-    sticking_velocity: f64,
-    /// Force where contact breaks (N, negative: tensile).
-    separation_force: f64,
-    separation_contact_radius: f64,
-    first_touch_contact_radius: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    impact_speed: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    max_contact_radius: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    restitution: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    sticks: Option<bool>,
-    /// Function evaluations spent on the loss (0 for the closed form).
-    evaluations: u64,
-}
-
 /// Runs `tabor jkr`.
 pub fn run(args: &Args) -> Outcome {
-    let rule = match args.separation {
+    let separation = match args.separation {
         Separation::FixedGrip => SeparationRule::FixedGrip,
         Separation::LoadControlled => SeparationRule::LoadControlled,
     };
-    let sphere =
-        JkrSphere::new(args.modulus, args.radius, args.work_of_adhesion).map_err(message)?;
-    let model = JkrImpact::new(sphere, args.mass)
-        .map_err(message)?
-        .with_separation(rule)
-        .with_tolerance(args.tolerance)
-        .map_err(message)?;
-    let loss = model.adhesive_energy_loss().map_err(message)?;
-    let v_c = sticking_velocity(&model, args.tolerance.max(1e-15)).map_err(message)?;
-    let separation = sphere.critical_state(rule).map_err(message)?;
-    let touch = sphere.first_touch().map_err(message)?;
-    let (max_radius, outcome) = match args.speed {
-        Some(v) => (
-            Some(model.max_contact_radius(v).map_err(message)?),
-            Some(impact(&model, v).map_err(message)?),
-        ),
-        None => (None, None),
-    };
-    let out = Jkr {
-        model: tabor::restitution::ImpactModel::name(&model),
-        branch: loss.branch.clone(),
-        separation: rule.as_str(),
-        energy_loss: loss.joules,
-        energy_loss_error: loss.error_estimate,
-        sticking_velocity: v_c.speed,
-        separation_force: separation.force,
-        separation_contact_radius: separation.contact_radius,
-        first_touch_contact_radius: touch.contact_radius,
-        impact_speed: args.speed,
-        max_contact_radius: max_radius.map(|m| m.contact_radius),
-        restitution: outcome.as_ref().map(|o| o.restitution),
-        sticks: outcome.as_ref().map(|o| o.sticks),
-        evaluations: loss.cost.evaluations,
-    };
+    let out = jkr(&JkrArgs {
+        modulus: args.modulus,
+        radius: args.radius,
+        work_of_adhesion: args.work_of_adhesion,
+        mass: args.mass,
+        speed: args.speed,
+        separation,
+        tolerance: args.tolerance,
+    })
+    .map_err(message)?;
     if args.json {
         return print_json(&out);
     }

@@ -4,12 +4,9 @@
 //! the law actually achieves in a simulated impact.
 
 use crate::output::{message, print_json, print_table, stdout, Outcome};
-use serde::Serialize;
 use std::io::Write;
-use tabor::penalty::{
-    characteristic_loss_speed, exact_damping_factor, simulate_impact, ContactCharacteristic,
-    DampedPowerLaw, DampingModel, ForceLaw, ImpactSimulation, SimulationSettings,
-};
+use tabor::single::penalty::{penalty, PenaltyArgs, PenaltyLaw};
+use tabor::single::Naming;
 
 /// Which penalty law.
 #[derive(Clone, Copy, Debug, clap::ValueEnum)]
@@ -59,115 +56,27 @@ pub struct Args {
     json: bool,
 }
 
-#[derive(Serialize)]
-struct Penalty {
-    law: &'static str,
-    nominal_restitution: f64,
-    /// From the simulated impact.
-    achieved_restitution: f64,
-    /// From the law's exact first integral.
-    closed_form_restitution: f64,
-    stiffness: f64,
-    exponent: f64,
-    effective_mass: f64,
-    impact_speed: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    damping_factor: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    damping_coefficient: Option<f64>,
-    /// The χ that would give the nominal restitution exactly.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    exact_damping_factor: Option<f64>,
-    /// V (m/s); null when infinite (e = 1).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    loss_speed: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    rounding: Option<f64>,
-    max_overlap: f64,
-    max_force: f64,
-    contact_time: Option<f64>,
-    energy_error: f64,
-}
-
-fn simulate<L: ForceLaw>(law: &mut L, args: &Args) -> Result<ImpactSimulation, String> {
-    let settings = SimulationSettings {
-        record_trajectory: false,
-        ..SimulationSettings::default()
-    };
-    simulate_impact(law, args.mass, args.speed, &settings).map_err(message)
-}
-
 /// Runs `tabor penalty`.
 pub fn run(args: &Args) -> Outcome {
-    let e = args.restitution;
-    let out = match args.law {
-        Law::Characteristic => {
-            if let Some(n) = args.exponent {
-                if n != 1.0 {
-                    return Err(format!(
-                        "invalid --exponent = {n}: the seed-002 characteristic is linear (n = 1)"
-                    )
-                    .into());
-                }
-            }
-            let big_v = characteristic_loss_speed(e, args.speed).map_err(message)?;
-            let mut law = ContactCharacteristic::new(args.stiffness, args.rounding, big_v)
-                .map_err(message)?;
-            let closed = law.restitution(args.speed).map_err(message)?;
-            let sim = simulate(&mut law, args)?;
-            Penalty {
-                law: "seed-002 contact characteristic",
-                nominal_restitution: e,
-                achieved_restitution: sim.restitution,
-                closed_form_restitution: closed,
-                stiffness: args.stiffness,
-                exponent: 1.0,
-                effective_mass: args.mass,
-                impact_speed: args.speed,
-                damping_factor: None,
-                damping_coefficient: None,
-                exact_damping_factor: None,
-                loss_speed: big_v.is_finite().then_some(big_v),
-                rounding: Some(args.rounding),
-                max_overlap: sim.max_overlap,
-                max_force: sim.max_force,
-                contact_time: sim.contact_time,
-                energy_error: sim.energy_error,
-            }
-        }
-        damped => {
-            let model = match damped {
-                Law::HuntCrossley => DampingModel::HuntCrossley,
-                Law::LankaraniNikravesh => DampingModel::LankaraniNikravesh,
-                _ => DampingModel::Flores,
-            };
-            let n = args.exponent.unwrap_or(1.5);
-            let mut law = DampedPowerLaw::from_model(model, args.stiffness, n, e, args.speed)
-                .map_err(message)?;
-            let exact = exact_damping_factor(e, args.speed).map_err(message)?;
-            let closed = law.restitution(args.speed).map_err(message)?;
-            let sim = simulate(&mut law, args)?;
-            Penalty {
-                law: model.name(),
-                nominal_restitution: e,
-                achieved_restitution: sim.restitution,
-                closed_form_restitution: closed,
-                stiffness: law.stiffness(),
-                exponent: law.exponent(),
-                effective_mass: args.mass,
-                impact_speed: args.speed,
-                damping_factor: Some(law.damping_factor()),
-                damping_coefficient: Some(law.damping_coefficient()),
-                exact_damping_factor: Some(exact),
-                loss_speed: None,
-                rounding: None,
-                max_overlap: sim.max_overlap,
-                max_force: sim.max_force,
-                contact_time: sim.contact_time,
-                energy_error: sim.energy_error,
-            }
-        }
+    let law = match args.law {
+        Law::Characteristic => PenaltyLaw::Characteristic,
+        Law::HuntCrossley => PenaltyLaw::HuntCrossley,
+        Law::LankaraniNikravesh => PenaltyLaw::LankaraniNikravesh,
+        Law::Flores => PenaltyLaw::Flores,
     };
+    let out = penalty(
+        &PenaltyArgs {
+            law,
+            restitution: args.restitution,
+            stiffness: args.stiffness,
+            exponent: args.exponent,
+            rounding: args.rounding,
+            mass: args.mass,
+            speed: args.speed,
+        },
+        Naming::Flags,
+    )
+    .map_err(|e| e.message(message))?;
     if args.json {
         return print_json(&out);
     }

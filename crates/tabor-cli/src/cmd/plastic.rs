@@ -3,35 +3,9 @@
 //! restitution, yield velocity and, for the adhesive models, sticking velocity.
 
 use crate::output::{message, print_json, print_table, stdout, Outcome};
-use serde::Serialize;
 use std::io::Write;
-use tabor::jkr::JkrSphere;
-use tabor::plastic::{
-    AdhesiveInterpolationImpact, AdhesivePlasticContact, Clamping, DimensionlessFit, Interpolation,
-    JacksonGreen, PlasticContact, PlasticImpact, SimulationSettings, Superposition, Thornton,
-};
-use tabor::restitution::{impact, sticking_velocity, EnergyLoss, ImpactModel};
-
-/// A boxed model, so that the superposition can wrap whichever one was chosen.
-struct Boxed(Box<dyn ImpactModel>);
-
-impl ImpactModel for Boxed {
-    fn name(&self) -> String {
-        self.0.name()
-    }
-    fn effective_mass(&self) -> f64 {
-        self.0.effective_mass()
-    }
-    fn energy_loss(&self, impact_speed: f64) -> tabor::restitution::Result<EnergyLoss> {
-        self.0.energy_loss(impact_speed)
-    }
-    fn loss_is_speed_independent(&self) -> bool {
-        self.0.loss_is_speed_independent()
-    }
-    fn speed_scale(&self) -> f64 {
-        self.0.speed_scale()
-    }
-}
+use tabor::single::plastic::{self as single, plastic, PlasticArgs};
+use tabor::single::Naming;
 
 /// Which elasto-plastic model.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -118,195 +92,39 @@ pub struct Args {
     json: bool,
 }
 
-#[derive(Serialize)]
-struct Plastic {
-    model: String,
-    branch: String,
-    impact_speed: f64,
-    /// ε (5.37) in [0, 1].
-    restitution: f64,
-    /// |ΔU_kin| (J), capped at m v0²/2 when sticking.
-    energy_loss: f64,
-    sticks: bool,
-    /// Speed where plastic deformation begins (m/s).
-    yield_velocity: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    sticking_velocity: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    elastic_sticking_velocity: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    adhesion_parameter: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    clamping: Option<Clamping>,
-    warnings: Vec<String>,
-}
-
-fn required(value: Option<f64>, name: &str, model: &str) -> Result<f64, String> {
-    value.ok_or_else(|| format!("missing {name}: required by --model {model}"))
-}
-
-/// A non-adhesive model boxed, with its yield velocity and any clamping report.
-struct NonAdhesive {
-    model: Box<dyn ImpactModel>,
-    yield_velocity: f64,
-    clamping: Option<Clamping>,
-}
-
-fn non_adhesive(args: &Args, which: PlasticModel) -> Result<NonAdhesive, String> {
-    let contact =
-        PlasticContact::new(args.modulus, args.radius, args.yield_stress).map_err(message)?;
-    Ok(match which {
-        PlasticModel::Thornton => {
-            let m = PlasticImpact::new(contact, Thornton, args.mass).map_err(message)?;
-            NonAdhesive {
-                yield_velocity: m.yield_velocity(),
-                model: Box::new(m),
-                clamping: None,
-            }
-        }
-        PlasticModel::Interpolation => {
-            let m = PlasticImpact::new(contact, Interpolation::default(), args.mass)
-                .map_err(message)?;
-            NonAdhesive {
-                yield_velocity: m.yield_velocity(),
-                model: Box::new(m),
-                clamping: None,
-            }
-        }
-        PlasticModel::JacksonGreen => {
-            let nu = required(args.poisson_ratio, "--poisson-ratio", "jackson-green")?;
-            let m = PlasticContact::new(args.modulus, args.radius, args.yield_stress)
-                .and_then(|contact| JacksonGreen::new(contact, nu))
-                .map_err(message)?
-                .impact(args.mass, SimulationSettings::default())
-                .map_err(message)?;
-            NonAdhesive {
-                yield_velocity: m.yield_velocity(),
-                model: Box::new(m),
-                clamping: None,
-            }
-        }
-        PlasticModel::DimensionlessFit => {
-            let rho = required(args.density, "--density", "dimensionless-fit")?;
-            let m = DimensionlessFit::new(args.modulus, args.yield_stress, rho, args.mass)
-                .map_err(message)?;
-            let clamping = m.restitution(args.speed).map_err(message)?.clamping;
-            NonAdhesive {
-                yield_velocity: m.yield_velocity(),
-                model: Box::new(m),
-                clamping: Some(clamping),
-            }
-        }
-    })
-}
-
 /// Runs `tabor plastic`.
 pub fn run(args: &Args) -> Outcome {
-    let mut warnings = Vec::new();
-    let mut sticking = None;
-    let mut elastic_sticking = None;
-    let mut phi = None;
-    let (model, yield_velocity, clamping): (Box<dyn ImpactModel>, f64, Option<Clamping>) =
-        match args.model {
-            Model::Thornton => {
-                let n = non_adhesive(args, PlasticModel::Thornton)?;
-                (n.model, n.yield_velocity, n.clamping)
-            }
-            Model::Interpolation => {
-                let n = non_adhesive(args, PlasticModel::Interpolation)?;
-                (n.model, n.yield_velocity, n.clamping)
-            }
-            Model::JacksonGreen => {
-                let n = non_adhesive(args, PlasticModel::JacksonGreen)?;
-                (n.model, n.yield_velocity, n.clamping)
-            }
-            Model::DimensionlessFit => {
-                let n = non_adhesive(args, PlasticModel::DimensionlessFit)?;
-                (n.model, n.yield_velocity, n.clamping)
-            }
-            Model::Superposition => {
-                let dg = required(args.work_of_adhesion, "--work-of-adhesion", "superposition")?;
-                let n = non_adhesive(args, args.plastic_model)?;
-                let sphere = JkrSphere::new(args.modulus, args.radius, dg).map_err(message)?;
-                let sup = Superposition::new(Boxed(n.model), sphere).map_err(message)?;
-                elastic_sticking = Some(
-                    sticking_velocity(sup.adhesive(), 1e-12)
-                        .map_err(message)?
-                        .speed,
-                );
-                (Box::new(sup), n.yield_velocity, n.clamping)
-            }
-            Model::AdhesiveInterpolation => {
-                let dg = required(
-                    args.work_of_adhesion,
-                    "--work-of-adhesion",
-                    "adhesive-interpolation",
-                )?;
-                // Validates E*, R, sigma_Y even when Phi is given.
-                PlasticContact::new(args.modulus, args.radius, args.yield_stress)
-                    .map_err(message)?;
-                let m = JkrSphere::new(args.modulus, args.radius, dg)
-                    .and_then(|sphere| match args.adhesion_parameter {
-                        Some(p) => AdhesivePlasticContact::new(sphere, p),
-                        None => {
-                            AdhesivePlasticContact::from_yield_stress(sphere, args.yield_stress)
-                        }
-                    })
-                    .and_then(|contact| AdhesiveInterpolationImpact::new(contact, args.mass))
-                    .map_err(message)?;
-                if args.adhesion_parameter.is_some() {
-                    warnings.push(
-                        "adhesion parameter Phi given directly: --yield-stress is checked but \
-                         not used (the model depends on v0/v_c and Phi only)"
-                            .to_string(),
-                    );
-                }
-                phi = Some(m.model().adhesion_parameter());
-                elastic_sticking = Some(m.elastic_sticking_velocity());
-                if m.yield_velocity() == 0.0 {
-                    warnings.push(
-                        "the adhesive yield load (5.111) is reached inside the JKR adhesive \
-                         well: every impact deforms plastically (yield_velocity 0)"
-                            .to_string(),
-                    );
-                }
-                let v_y = m.yield_velocity();
-                (Box::new(m), v_y, None)
-            }
-        };
-    if matches!(
-        args.model,
-        Model::Superposition | Model::AdhesiveInterpolation
-    ) {
-        sticking = Some(sticking_velocity(&*model, 1e-10).map_err(message)?.speed);
-    }
-    let outcome = impact(&*model, args.speed).map_err(message)?;
-    match clamping {
-        Some(Clamping::ToOne) => warnings.push(
-            "seed 001 fit gave a restitution above 1 (just above its yield velocity): clamped to 1"
-                .into(),
-        ),
-        Some(Clamping::ToZero) => warnings
-            .push("seed 001 fit gave a negative restitution: clamped to 0 (sticking)".into()),
-        _ => {}
-    }
-    if args.speed <= yield_velocity && args.model != Model::AdhesiveInterpolation {
-        warnings.push("impact speed at or below the yield velocity: elastic impact".into());
-    }
-    let out = Plastic {
-        model: outcome.model.clone(),
-        branch: outcome.branch.clone(),
-        impact_speed: args.speed,
-        restitution: outcome.restitution,
-        energy_loss: outcome.energy_loss,
-        sticks: outcome.sticks,
-        yield_velocity,
-        sticking_velocity: sticking,
-        elastic_sticking_velocity: elastic_sticking,
-        adhesion_parameter: phi,
-        clamping,
-        warnings,
+    let shared = |m: PlasticModel| match m {
+        PlasticModel::Thornton => single::PlasticModel::Thornton,
+        PlasticModel::Interpolation => single::PlasticModel::Interpolation,
+        PlasticModel::JacksonGreen => single::PlasticModel::JacksonGreen,
+        PlasticModel::DimensionlessFit => single::PlasticModel::DimensionlessFit,
     };
+    let model = match args.model {
+        Model::Thornton => single::PlasticModel::Thornton,
+        Model::Interpolation => single::PlasticModel::Interpolation,
+        Model::JacksonGreen => single::PlasticModel::JacksonGreen,
+        Model::DimensionlessFit => single::PlasticModel::DimensionlessFit,
+        Model::AdhesiveInterpolation => single::PlasticModel::AdhesiveInterpolation,
+        Model::Superposition => single::PlasticModel::Superposition,
+    };
+    let out = plastic(
+        &PlasticArgs {
+            model,
+            modulus: args.modulus,
+            radius: args.radius,
+            mass: args.mass,
+            yield_stress: args.yield_stress,
+            speed: args.speed,
+            poisson_ratio: args.poisson_ratio,
+            density: args.density,
+            work_of_adhesion: args.work_of_adhesion,
+            adhesion_parameter: args.adhesion_parameter,
+            plastic_model: shared(args.plastic_model),
+        },
+        Naming::Flags,
+    )
+    .map_err(|e| e.message(message))?;
     if args.json {
         return print_json(&out);
     }

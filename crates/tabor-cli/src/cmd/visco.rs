@@ -3,12 +3,9 @@
 //! parameters.
 
 use crate::output::{message, print_json, print_table, stdout, Outcome};
-use serde::Serialize;
 use std::io::Write;
-use tabor::visco::{
-    compressible_flat, damping_law, kelvin_maxwell_sphere, kelvin_voigt_flat, kelvin_voigt_sphere,
-    standard_flat, standard_sphere, SphereModel,
-};
+use tabor::single::visco::{visco, ViscoArgs, ViscoModel};
+use tabor::single::Naming;
 
 /// The viscoelastic models.
 #[derive(Clone, Copy, Debug, clap::ValueEnum)]
@@ -80,131 +77,37 @@ pub struct Args {
     json: bool,
 }
 
-#[derive(Serialize)]
-struct Visco {
-    model: &'static str,
-    restitution: f64,
-    /// Scaled contact time (units in the library docs of the model).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    contact_time: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    max_overlap: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    equivalent_kelvin_voigt_damping_ratio: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    equivalent_kelvin_voigt_restitution: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    first_order_restitution: Option<f64>,
-    evaluations: u64,
-}
-
-fn need(value: Option<f64>, name: &str, model: &str) -> Result<f64, String> {
-    value.ok_or_else(|| format!("missing {name}: the model {model} needs it"))
-}
-
-fn model_name(m: Model) -> &'static str {
-    match m {
-        Model::KelvinVoigtFlat => "kelvin-voigt-flat",
-        Model::KuwabaraKono => "kuwabara-kono",
-        Model::KelvinVoigtSphere => "kelvin-voigt-sphere",
-        Model::LeeHerrmann => "lee-herrmann",
-        Model::Tsuji => "tsuji",
-        Model::HuntCrossley => "hunt-crossley",
-        Model::PowerDamping => "power-damping",
-        Model::StandardFlat => "standard-flat",
-        Model::StandardSphere => "standard-sphere",
-        Model::KelvinMaxwellSphere => "kelvin-maxwell-sphere",
-        Model::CompressibleFlat => "compressible-flat",
-    }
-}
-
 /// Runs `tabor visco`.
 pub fn run(args: &Args) -> Outcome {
-    let name = model_name(args.model);
-    // checked here so that a bad --tolerance names the flag for every model
-    let tol =
-        tabor::restitution::validate::tolerance("tolerance", args.tolerance).map_err(message)?;
-    let mut out = Visco {
-        model: name,
-        restitution: 0.0,
-        contact_time: None,
-        max_overlap: None,
-        equivalent_kelvin_voigt_damping_ratio: None,
-        equivalent_kelvin_voigt_restitution: None,
-        first_order_restitution: None,
-        evaluations: 0,
+    let model = match args.model {
+        Model::KelvinVoigtFlat => ViscoModel::KelvinVoigtFlat,
+        Model::KuwabaraKono => ViscoModel::KuwabaraKono,
+        Model::KelvinVoigtSphere => ViscoModel::KelvinVoigtSphere,
+        Model::LeeHerrmann => ViscoModel::LeeHerrmann,
+        Model::Tsuji => ViscoModel::Tsuji,
+        Model::HuntCrossley => ViscoModel::HuntCrossley,
+        Model::PowerDamping => ViscoModel::PowerDamping,
+        Model::StandardFlat => ViscoModel::StandardFlat,
+        Model::StandardSphere => ViscoModel::StandardSphere,
+        Model::KelvinMaxwellSphere => ViscoModel::KelvinMaxwellSphere,
+        Model::CompressibleFlat => ViscoModel::CompressibleFlat,
     };
-    let delta = || need(args.viscous_parameter, "--viscous-parameter", name);
-    let beta = || need(args.modulus_ratio, "--modulus-ratio", name);
-    let damping = || need(args.damping, "--damping", name);
-    let law = |b: f64, g: f64| damping_law::solve(b, g, tol).map_err(message);
-    let scaled = match args.model {
-        Model::KelvinVoigtFlat => {
-            let d = need(args.damping_ratio, "--damping-ratio", name)?;
-            out.restitution = kelvin_voigt_flat::restitution(d).map_err(message)?;
-            out.contact_time = Some(kelvin_voigt_flat::contact_time(d).map_err(message)?);
-            None
-        }
-        Model::KuwabaraKono | Model::KelvinVoigtSphere => {
-            let model = if matches!(args.model, Model::KuwabaraKono) {
-                SphereModel::KuwabaraKono
-            } else {
-                SphereModel::Rigorous
-            };
-            let d = delta()?;
-            out.first_order_restitution =
-                Some(kelvin_voigt_sphere::first_order_restitution(d).map_err(message)?);
-            Some(kelvin_voigt_sphere::solve(d, model, tol).map_err(message)?)
-        }
-        Model::LeeHerrmann => Some(law(
-            damping_law::DampingLaw::LeeHerrmann.exponent(),
-            damping()?,
-        )?),
-        Model::HuntCrossley => Some(law(
-            damping_law::DampingLaw::HuntCrossley.exponent(),
-            damping()?,
-        )?),
-        Model::Tsuji => {
-            let alpha = need(args.alpha, "--alpha", name)?;
-            let g = damping_law::tsuji_damping(alpha).map_err(message)?;
-            Some(law(damping_law::DampingLaw::Tsuji.exponent(), g)?)
-        }
-        Model::PowerDamping => {
-            let b = need(args.damping_exponent, "--damping-exponent", name)?;
-            Some(law(b, damping()?)?)
-        }
-        Model::StandardFlat => {
-            let (b, d) = (beta()?, delta()?);
-            let s = standard_flat::solve(b, d, tol).map_err(message)?;
-            out.equivalent_kelvin_voigt_damping_ratio =
-                Some(standard_flat::equivalent_damping_ratio(b, d).map_err(message)?);
-            out.equivalent_kelvin_voigt_restitution =
-                Some(standard_flat::equivalent_restitution(b, d).map_err(message)?);
-            Some(s)
-        }
-        Model::StandardSphere => {
-            Some(standard_sphere::solve(beta()?, delta()?, tol).map_err(message)?)
-        }
-        Model::KelvinMaxwellSphere => {
-            Some(kelvin_maxwell_sphere::solve(beta()?, delta()?, tol).map_err(message)?)
-        }
-        Model::CompressibleFlat => {
-            let nu = need(args.poisson_ratio, "--poisson-ratio", name)?;
-            let d1 = need(args.damping_ratio, "--damping-ratio", name)?;
-            let d2 = match args.bulk_damping_ratio {
-                Some(d2) => d2,
-                None => compressible_flat::bulk_damping_ratio_equal_viscosities(nu, d1)
-                    .map_err(message)?,
-            };
-            Some(compressible_flat::solve(nu, d1, d2, tol).map_err(message)?)
-        }
-    };
-    if let Some(s) = scaled {
-        out.restitution = s.restitution;
-        out.contact_time = Some(s.contact_time);
-        out.max_overlap = Some(s.max_overlap);
-        out.evaluations = s.cost.evaluations;
-    }
+    let out = visco(
+        &ViscoArgs {
+            model,
+            damping_ratio: args.damping_ratio,
+            viscous_parameter: args.viscous_parameter,
+            modulus_ratio: args.modulus_ratio,
+            damping: args.damping,
+            damping_exponent: args.damping_exponent,
+            alpha: args.alpha,
+            poisson_ratio: args.poisson_ratio,
+            bulk_damping_ratio: args.bulk_damping_ratio,
+            tolerance: args.tolerance,
+        },
+        Naming::Flags,
+    )
+    .map_err(|e| e.message(message))?;
     if args.json {
         return print_json(&out);
     }

@@ -1,0 +1,95 @@
+//! The single-model computations behind the command-line subcommands (`tabor jkr`,
+//! …) and the Python package's functions of the same names: for each model a plain
+//! value type of its inputs, named like the flags, and a function that validates
+//! them and computes the result record (a [`Serialize`](serde::Serialize) struct,
+//! printed by the CLI as a table or JSON, turned into columns by Python).
+//!
+//! A bad input is reported as the library's
+//! [`Error`](crate::restitution::Error) (which names the library parameter, e.g.
+//! `effective_modulus`); each front end renders it under its own name for the
+//! input (`--modulus` on the command line, `modulus` in Python).
+
+pub mod effective;
+pub mod jkr;
+pub mod penalty;
+pub mod plastic;
+pub mod visco;
+
+use crate::restitution;
+
+/// How a front end names the inputs in messages and warnings.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Naming {
+    /// Command-line flags: `--poisson-ratio`, `--model jackson-green`.
+    Flags,
+    /// Python keyword arguments: `poisson_ratio`, `model="jackson-green"`.
+    Keywords,
+}
+
+impl Naming {
+    /// The input `name` (snake_case) as this front end spells it.
+    pub fn input(self, name: &str) -> String {
+        match self {
+            Naming::Flags => format!("--{}", name.replace('_', "-")),
+            Naming::Keywords => name.to_string(),
+        }
+    }
+
+    /// A choice `value` mentioned on its own: as is for flags, quoted for keywords.
+    pub fn value(self, value: &str) -> String {
+        match self {
+            Naming::Flags => value.to_string(),
+            Naming::Keywords => format!("\"{value}\""),
+        }
+    }
+
+    /// The choice `value` of the input `name` (snake_case) as this front end
+    /// spells it.
+    pub fn choice(self, name: &str, value: &str) -> String {
+        match self {
+            Naming::Flags => format!("{} {value}", self.input(name)),
+            Naming::Keywords => format!("{name}=\"{value}\""),
+        }
+    }
+}
+
+/// Why a single-model computation failed.
+#[derive(Debug)]
+pub enum Error {
+    /// A library error (a bad parameter is named as the library spells it; the
+    /// front end renames it).
+    Library(restitution::Error),
+    /// A problem with the inputs, already worded in the front end's [`Naming`].
+    Input(String),
+}
+
+impl From<restitution::Error> for Error {
+    fn from(e: restitution::Error) -> Self {
+        Error::Library(e)
+    }
+}
+
+impl Error {
+    /// One line: `library` renders a library error, an input problem is as is.
+    pub fn message(self, library: impl FnOnce(restitution::Error) -> String) -> String {
+        match self {
+            Error::Library(e) => library(e),
+            Error::Input(m) => m,
+        }
+    }
+}
+/// `value`, or the error that `model` needs the input `name`.
+pub(crate) fn required(
+    value: Option<f64>,
+    name: &str,
+    model: &str,
+    naming: Naming,
+) -> Result<f64, Error> {
+    value.ok_or_else(|| {
+        Error::Input(format!(
+            "missing {}: required by {}",
+            naming.input(name),
+            naming.choice("model", model)
+        ))
+    })
+}

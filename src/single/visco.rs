@@ -1,0 +1,225 @@
+//! Viscoelastic impact without adhesion (`tabor visco`, `tabor.visco`): the
+//! coefficient of restitution as a function of each model's dimensionless
+//! parameters.
+
+use super::{Error, Naming};
+use crate::restitution::validate;
+use crate::visco::{
+    compressible_flat, damping_law, kelvin_maxwell_sphere, kelvin_voigt_flat, kelvin_voigt_sphere,
+    standard_flat, standard_sphere, SphereModel,
+};
+use serde::Serialize;
+
+/// The viscoelastic models (`--model`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ViscoModel {
+    /// Flat punch, Kelvin-Voigt, closed form (5.61)-(5.63); needs `damping_ratio`.
+    KelvinVoigtFlat,
+    /// Sphere, Kelvin-Voigt, Kuwabara-Kono (5.66); needs `viscous_parameter`.
+    KuwabaraKono,
+    /// Sphere, Kelvin-Voigt, compression and restitution apart (5.64)-(5.67);
+    /// needs `viscous_parameter`.
+    KelvinVoigtSphere,
+    /// Sphere, linear damping β = 0 (5.72); needs `damping`.
+    LeeHerrmann,
+    /// Sphere, β = 1/4 with (5.73); needs `alpha`.
+    Tsuji,
+    /// Sphere, β = 3/2 (5.72); needs `damping`.
+    HuntCrossley,
+    /// Sphere, damping exponent of your choice (5.72); needs `damping_exponent`,
+    /// `damping`.
+    PowerDamping,
+    /// Flat punch, standard medium (5.76)-(5.81), with the equivalent Kelvin-Voigt
+    /// value (5.83); needs `modulus_ratio`, `viscous_parameter`.
+    StandardFlat,
+    /// Sphere, standard medium, MDR (5.84)-(5.90); needs `modulus_ratio`,
+    /// `viscous_parameter`.
+    StandardSphere,
+    /// Sphere, Kelvin-Maxwell medium, MDR (5.91)-(5.92); needs `modulus_ratio`,
+    /// `viscous_parameter`.
+    KelvinMaxwellSphere,
+    /// Flat punch, compressible Kelvin-Voigt (5.96)-(5.99); needs `poisson_ratio`,
+    /// `damping_ratio` (and optionally `bulk_damping_ratio`, default (5.100)).
+    CompressibleFlat,
+}
+
+impl ViscoModel {
+    /// Every model, in the order of the CLI's help.
+    pub const ALL: [ViscoModel; 11] = [
+        ViscoModel::KelvinVoigtFlat,
+        ViscoModel::KuwabaraKono,
+        ViscoModel::KelvinVoigtSphere,
+        ViscoModel::LeeHerrmann,
+        ViscoModel::Tsuji,
+        ViscoModel::HuntCrossley,
+        ViscoModel::PowerDamping,
+        ViscoModel::StandardFlat,
+        ViscoModel::StandardSphere,
+        ViscoModel::KelvinMaxwellSphere,
+        ViscoModel::CompressibleFlat,
+    ];
+
+    /// The model's name (kebab-case, as the `--model` flag takes it).
+    pub fn name(self) -> &'static str {
+        match self {
+            ViscoModel::KelvinVoigtFlat => "kelvin-voigt-flat",
+            ViscoModel::KuwabaraKono => "kuwabara-kono",
+            ViscoModel::KelvinVoigtSphere => "kelvin-voigt-sphere",
+            ViscoModel::LeeHerrmann => "lee-herrmann",
+            ViscoModel::Tsuji => "tsuji",
+            ViscoModel::HuntCrossley => "hunt-crossley",
+            ViscoModel::PowerDamping => "power-damping",
+            ViscoModel::StandardFlat => "standard-flat",
+            ViscoModel::StandardSphere => "standard-sphere",
+            ViscoModel::KelvinMaxwellSphere => "kelvin-maxwell-sphere",
+            ViscoModel::CompressibleFlat => "compressible-flat",
+        }
+    }
+}
+
+/// The inputs of `tabor visco`, named like its flags. All are dimensionless.
+#[derive(Clone, Copy, Debug)]
+pub struct ViscoArgs {
+    /// The model.
+    pub model: ViscoModel,
+    /// Damping ratio D (flat punch; D1 of the compressible model), > 0.
+    pub damping_ratio: Option<f64>,
+    /// Viscous parameter δ, > 0.
+    pub viscous_parameter: Option<f64>,
+    /// Modulus ratio β = G∞/G1, in [1e-5, 1e4].
+    pub modulus_ratio: Option<f64>,
+    /// Scaled damping γ of (5.72), in (0, 1e3].
+    pub damping: Option<f64>,
+    /// Damping exponent β of (5.72), in [0, 1.5].
+    pub damping_exponent: Option<f64>,
+    /// Tsuji's α of (5.73), > 0.
+    pub alpha: Option<f64>,
+    /// Static Poisson's ratio ν (compressible model), in (-1, 0.5).
+    pub poisson_ratio: Option<f64>,
+    /// Bulk damping ratio D2 (compressible model); default (5.100), equal
+    /// viscosities.
+    pub bulk_damping_ratio: Option<f64>,
+    /// Relative integration tolerance, in [1e-15, 0.5].
+    pub tolerance: f64,
+}
+
+/// The result record of `tabor visco` (scaled quantities).
+#[derive(Clone, Debug, Serialize)]
+pub struct Visco {
+    /// The model's name.
+    pub model: &'static str,
+    /// The coefficient of restitution.
+    pub restitution: f64,
+    /// Scaled contact time (units in the library docs of the model).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contact_time: Option<f64>,
+    /// Scaled maximum overlap.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_overlap: Option<f64>,
+    /// The equivalent Kelvin-Voigt damping ratio (5.83) (standard-flat).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub equivalent_kelvin_voigt_damping_ratio: Option<f64>,
+    /// The restitution of the equivalent Kelvin-Voigt punch (standard-flat).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub equivalent_kelvin_voigt_restitution: Option<f64>,
+    /// The first-order restitution (Kelvin-Voigt spheres).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub first_order_restitution: Option<f64>,
+    /// Function evaluations (0 for a closed form).
+    pub evaluations: u64,
+}
+
+/// Validates `a` and computes the record of `tabor visco`; a missing input is
+/// named in `naming`.
+pub fn visco(a: &ViscoArgs, naming: Naming) -> Result<Visco, Error> {
+    let name = a.model.name();
+    let need = |value: Option<f64>, input: &str| -> Result<f64, Error> {
+        value.ok_or_else(|| {
+            Error::Input(format!(
+                "missing {}: the model {} needs it",
+                naming.input(input),
+                naming.value(name)
+            ))
+        })
+    };
+    // checked first so that a bad tolerance is named for every model
+    let tol = validate::tolerance("tolerance", a.tolerance)?;
+    let mut out = Visco {
+        model: name,
+        restitution: 0.0,
+        contact_time: None,
+        max_overlap: None,
+        equivalent_kelvin_voigt_damping_ratio: None,
+        equivalent_kelvin_voigt_restitution: None,
+        first_order_restitution: None,
+        evaluations: 0,
+    };
+    let delta = || need(a.viscous_parameter, "viscous_parameter");
+    let beta = || need(a.modulus_ratio, "modulus_ratio");
+    let damping = || need(a.damping, "damping");
+    let law = |b: f64, g: f64| damping_law::solve(b, g, tol).map_err(Error::from);
+    let scaled = match a.model {
+        ViscoModel::KelvinVoigtFlat => {
+            let d = need(a.damping_ratio, "damping_ratio")?;
+            out.restitution = kelvin_voigt_flat::restitution(d)?;
+            out.contact_time = Some(kelvin_voigt_flat::contact_time(d)?);
+            None
+        }
+        ViscoModel::KuwabaraKono | ViscoModel::KelvinVoigtSphere => {
+            let model = if a.model == ViscoModel::KuwabaraKono {
+                SphereModel::KuwabaraKono
+            } else {
+                SphereModel::Rigorous
+            };
+            let d = delta()?;
+            out.first_order_restitution = Some(kelvin_voigt_sphere::first_order_restitution(d)?);
+            Some(kelvin_voigt_sphere::solve(d, model, tol)?)
+        }
+        ViscoModel::LeeHerrmann => Some(law(
+            damping_law::DampingLaw::LeeHerrmann.exponent(),
+            damping()?,
+        )?),
+        ViscoModel::HuntCrossley => Some(law(
+            damping_law::DampingLaw::HuntCrossley.exponent(),
+            damping()?,
+        )?),
+        ViscoModel::Tsuji => {
+            let alpha = need(a.alpha, "alpha")?;
+            let g = damping_law::tsuji_damping(alpha)?;
+            Some(law(damping_law::DampingLaw::Tsuji.exponent(), g)?)
+        }
+        ViscoModel::PowerDamping => {
+            let b = need(a.damping_exponent, "damping_exponent")?;
+            Some(law(b, damping()?)?)
+        }
+        ViscoModel::StandardFlat => {
+            let (b, d) = (beta()?, delta()?);
+            let s = standard_flat::solve(b, d, tol)?;
+            out.equivalent_kelvin_voigt_damping_ratio =
+                Some(standard_flat::equivalent_damping_ratio(b, d)?);
+            out.equivalent_kelvin_voigt_restitution =
+                Some(standard_flat::equivalent_restitution(b, d)?);
+            Some(s)
+        }
+        ViscoModel::StandardSphere => Some(standard_sphere::solve(beta()?, delta()?, tol)?),
+        ViscoModel::KelvinMaxwellSphere => {
+            Some(kelvin_maxwell_sphere::solve(beta()?, delta()?, tol)?)
+        }
+        ViscoModel::CompressibleFlat => {
+            let nu = need(a.poisson_ratio, "poisson_ratio")?;
+            let d1 = need(a.damping_ratio, "damping_ratio")?;
+            let d2 = match a.bulk_damping_ratio {
+                Some(d2) => d2,
+                None => compressible_flat::bulk_damping_ratio_equal_viscosities(nu, d1)?,
+            };
+            Some(compressible_flat::solve(nu, d1, d2, tol)?)
+        }
+    };
+    if let Some(s) = scaled {
+        out.restitution = s.restitution;
+        out.contact_time = Some(s.contact_time);
+        out.max_overlap = Some(s.max_overlap);
+        out.evaluations = s.cost.evaluations;
+    }
+    Ok(out)
+}
