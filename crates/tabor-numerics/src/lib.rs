@@ -15,6 +15,8 @@
 //!   event location, explicit (Dormand-Prince 5(4)) and, in [`rosenbrock`] (also
 //!   reachable as `ode::rosenbrock`), L-stable for stiff systems (Rodas5P by
 //!   default, RODAS4 on request), all run by one driver ([`ode::drive`]);
+//! - [`search`]: the edge of a yes/no property of a positive argument, by bisection
+//!   in its logarithm (where two models stop agreeing within a bound);
 //! - [`chebyshev`]: Chebyshev interpolation (single and piecewise) for precomputed
 //!   fast tiers of expensive smooth functions;
 //! - [`Cost`]: evaluations and iterations that callers accumulate, so the library can
@@ -30,6 +32,7 @@ mod error;
 pub mod ode;
 pub mod quadrature;
 pub mod root_finding;
+pub mod search;
 pub mod special;
 
 pub use ode::rosenbrock;
