@@ -1,9 +1,9 @@
 //! `--check`: the restitution LAMMPS will really produce for a user's granular
 //! model line, before running LAMMPS (nominal versus achieved).
 
-use crate::export::{time_step_error, ExportError, TIME_STEP_ERROR};
 use crate::law::GranularModel;
 use crate::parse::{parse_line, LineKind, ParsedLine};
+use crate::report::{time_step_error, ExportError, TIME_STEP_ERROR};
 use serde::Serialize;
 use tabor_scene::Scene;
 

@@ -2,7 +2,7 @@
 //! `integrations/lammps/plugin`, which evaluates tabor's force laws themselves
 //! (through `tabor-ffi`) instead of LAMMPS's `jkr` with an effective γ.
 
-use crate::export::{ExportError, Geometry};
+use crate::report::{ExportError, Geometry};
 use serde::Serialize;
 use std::fmt::Display;
 use tabor_ffi::ContactLaw;

@@ -5,7 +5,9 @@
 //! load-controlled loss by a quadrature written here.
 
 use std::f64::consts::PI;
-use tabor_lammps::{load_controlled_loss, parse_line, DampingModel, GranularModel, NormalModel};
+use tabor_lammps::{
+    load_controlled_loss, parse_line, DampingModel, GranularModel, LammpsImpact, NormalModel,
+};
 
 const R: f64 = 0.5e-6; // silica pair
 const M: f64 = 5.550147e-15;
@@ -149,6 +151,24 @@ fn jkr_loss_is_the_load_controlled_loss() {
     // below the sticking velocity it sticks
     let vc = (2.0 * w_quad / M).sqrt();
     assert_eq!(e_at(&m, 0.95 * vc), 0.0);
+    // the sticking velocity through tabor_restitution::sticking_velocity on the
+    // simulated law: sqrt(2 W/m) of the quadrature (seed 000 (5.38)), from a guess
+    // off by a factor 3 either way
+    for guess in [vc / 3.0, 3.0 * vc] {
+        let found = LammpsImpact::new(m, R, M)
+            .expect("impact")
+            .with_speed_scale(guess)
+            .sticking_velocity(1e-10)
+            .expect("search")
+            .expect("sticks");
+        assert!((found / vc - 1.0).abs() < 1e-7, "{found} vs {vc}");
+    }
+    // Hertz without adhesion never sticks
+    let h = model(hertz(), 0.0, DampingModel::Viscoelastic, false);
+    let none = LammpsImpact::new(h, R, M)
+        .expect("impact")
+        .sticking_velocity(1e-8);
+    assert_eq!(none.expect("search"), None);
 }
 
 #[test]
