@@ -41,8 +41,10 @@ def collide(fragment, geometry, bodies, speed, contact_time, pulloff=0.0,
         f.write(fragment)
         path = f.name
     try:
+        # LAMMPS's defaults (newton on): a fragment is included after create_box
+        # exactly as its header says
         cmds = ["units si", "atom_style sphere", "atom_modify map array",
-                "boundary f f f", "newton off"]
+                "boundary f f f"]
         if geometry == "pair":
             r2 = bodies["target_radius"]
             rho2 = bodies["target_density"]

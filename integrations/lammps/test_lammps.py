@@ -8,6 +8,7 @@ by the contact time (no wall-clock dependence).
 """
 
 import json
+import math
 import os
 import subprocess
 import sys
@@ -193,12 +194,27 @@ def test_graded_refused():
 
 # --- --check: nominal versus achieved ------------------------------------------
 
-def run_check(name, line, speed):
+def check_fragment(line, variables=()):
+    """The LAMMPS commands that put a user's line in force: the variables defined
+    (LAMMPS substitutes them itself), pair_style granular before a pair_coeff line,
+    pair_coeff * * after a legacy pair_style line."""
+    cmds = ["comm_modify vel yes"] + [f"variable {n} equal {v}" for n, v in variables]
+    if line.startswith("pair_coeff"):
+        cmds += ["pair_style granular", line]
+    elif line.startswith("pair_style"):
+        cmds += [line, "pair_coeff * *"]
+    else:
+        cmds += [line]
+    return "\n".join(cmds) + "\n"
+
+
+def run_check(name, line, speed, variables=()):
+    extra = [a for n, v in variables for a in ("--var", f"{n}={v}")]
     c = json.loads(tabor("export", "lammps", scene_path(name), "--check", line,
-                         "--speed", repr(speed), "--json"))
+                         "--speed", repr(speed), "--json", *extra))
     p = c["at_speed"]
     geometry = "wall" if "wall/gran" in line else "pair"
-    fragment = "comm_modify vel yes\n" + ("" if geometry == "wall" else "pair_style granular\n") + line + "\n"
+    fragment = check_fragment(line, variables)
     tc = p["contact_time"]
     if tc is None:  # predicted to stick: the Hertz contact time of the scene at this speed
         tc = c["decade"][-1]["contact_time"] or 1e-8
@@ -217,6 +233,36 @@ def run_check(name, line, speed):
     assert abs(diff) <= tol, (f"--check predicted {p['lammps']:.6f}, LAMMPS gave {e_lammps:.6f} "
                               f"for {line!r} at {speed} m/s")
     return c, e_lammps
+
+
+def test_check_legacy_hertz_history():
+    c, e = run_check("jkr_load_controlled",
+                     "pair_style gran/hertz/history 3.7e10 NULL 5e15 NULL 0.5 0", 0.2)
+    assert c["parsed"]["style"] == "gran/hertz/history"
+    assert 0.3 < e < 0.99, e
+
+
+def test_check_legacy_hooke_history():
+    # the linear spring-dashpot in closed form: zeta = gamma_n / (2 omega),
+    # e = exp(-pi zeta / sqrt(1 - zeta^2)), independent of the speed
+    kn, gamma_n = 1000.0, 1.7e8
+    c, e = run_check("jkr_load_controlled",
+                     f"pair_style gran/hooke/history {kn} NULL {gamma_n} NULL 0.5 1", 0.2)
+    m = c["effective_mass"]
+    zeta = gamma_n / (2 * (kn / m) ** 0.5)
+    e_closed = math.exp(-math.pi * zeta / (1 - zeta * zeta) ** 0.5)
+    assert abs(c["at_speed"]["lammps"] - e_closed) < 1e-6, (c["at_speed"]["lammps"], e_closed)
+
+
+def test_check_legacy_wall():
+    run_check("jkr_wall", "fix w all wall/gran hertz/history 3.7e10 NULL 5e15 NULL 0.5 0 zplane 0.0 NULL", 0.2)
+
+
+def test_check_variables():
+    c, e = run_check("jkr_load_controlled",
+                     "pair_coeff * * hertz/material ${E} $d 0.17 tangential linear_nohistory 0 0 damping tsuji",
+                     0.2, variables=(("E", "54e9"), ("d", "0.5")))
+    assert c["substituted"].startswith("pair_coeff * * hertz/material 54e9 0.5 0.17")
 
 
 def test_check_tsuji():
@@ -241,9 +287,10 @@ def test_check_coeff_restitution_hooke():
 
 
 def test_check_viscoelastic_limit():
-    run_check("jkr_load_controlled",
-              "pair_coeff * * hertz/material 54e9 2e9 0.17 tangential linear_nohistory 0 0 damping viscoelastic limit_damping",
-              0.2)
+    c, e = run_check("jkr_load_controlled",
+                     "pair_coeff * * hertz/material 54e9 5e15 0.17 tangential linear_nohistory 0 0 damping viscoelastic limit_damping",
+                     0.2)
+    assert 0.3 < e < 0.99, e  # a damping that acts
 
 
 def test_check_velocity_limit():

@@ -44,13 +44,13 @@ pub use law::{
     coeff_restitution_alpha, jkr_pulloff_distance, tsuji_alpha, DampingModel, GranularModel,
     LammpsLaw, NormalModel,
 };
-pub use parse::{parse_line, LineError, LineKind, ParsedLine};
+pub use parse::{parse_line, substitute_variables, LineError, LineKind, ParsedLine};
 pub use plugin::{
     export_plugin, PluginExport, PluginModel, PluginSpeed, PLUGIN_RESTITUTION_ERROR,
     PLUGIN_TIME_STEP_FRACTION,
 };
 pub use report::{
-    time_step_error, Bodies, Claim, Export, ExportError, Geometry, Limit, Parameter, RangeEnd,
-    Scope, SpeedComparison, CALIBRATED_RELATIVE_ERROR, LOSS_STEP_ERROR, REPRODUCES,
-    SMALL_STRAIN_OVERLAP, TIME_STEP_ERROR, TIME_STEP_FRACTION,
+    time_step_error, versioned_json, Bodies, Claim, Export, ExportError, Geometry, Limit,
+    Parameter, RangeEnd, Scope, SpeedComparison, CALIBRATED_RELATIVE_ERROR, LOSS_STEP_ERROR,
+    REPRODUCES, SMALL_STRAIN_OVERLAP, TIME_STEP_ERROR, TIME_STEP_FRACTION,
 };

@@ -2,10 +2,10 @@
 //! (`--check`) the restitution a user's LAMMPS granular line really produces.
 //! Derivations: `crates/tabor-lammps/README.md`.
 
-use crate::output::{print_json, stdout, Outcome};
+use crate::output::{stdout, Outcome};
 use std::io::Write;
 use std::path::PathBuf;
-use tabor::lammps::{check, export, export_plugin, Check};
+use tabor::lammps::{check, export, export_plugin, versioned_json, Check};
 use tabor::scene::Scene;
 
 /// Arguments of `tabor export`.
@@ -47,6 +47,18 @@ pub struct LammpsArgs {
     /// exists): tabor's own force law
     #[arg(long, value_name = "PATH")]
     plugin: Option<PathBuf>,
+    /// A LAMMPS variable used in the --check line ($x, ${name}), as NAME=VALUE
+    /// (repeatable)
+    #[arg(long = "var", value_name = "NAME=VALUE", value_parser = parse_var, requires = "check")]
+    vars: Vec<(String, String)>,
+}
+
+/// `NAME=VALUE` of `--var`.
+fn parse_var(s: &str) -> Result<(String, String), String> {
+    match s.split_once('=') {
+        Some((n, v)) if !n.is_empty() => Ok((n.to_string(), v.to_string())),
+        _ => Err(format!("--var {s}: expected NAME=VALUE")),
+    }
 }
 
 /// Writes `text` to stdout; a closed pipe ends the output quietly.
@@ -109,9 +121,10 @@ pub fn run(args: &Args) -> Outcome {
     let Target::Lammps(a) = &args.target;
     let scene = Scene::from_path(&a.scene).map_err(|e| format!("{}: {e}", a.scene.display()))?;
     if let Some(line) = &a.check {
-        let c = check(&scene, line, a.speed).map_err(|e| format!("{}: {e}", a.scene.display()))?;
+        let c = check(&scene, line, a.speed, &a.vars)
+            .map_err(|e| format!("{}: {e}", a.scene.display()))?;
         if a.json {
-            return print_json(&c);
+            return emit(&versioned_json(&c, tabor::VERSION).map_err(|e| e.to_string())?);
         }
         return emit(&check_report(&c));
     }
@@ -129,15 +142,12 @@ pub fn run(args: &Args) -> Outcome {
 
 /// Prints or writes an export: JSON (`--json`) or the fragment, to `--out` or stdout.
 fn write_out(a: &LammpsArgs, x: &impl serde::Serialize, fragment: &str) -> Outcome {
+    // one JSON shape, printed or written (tabor::lammps::versioned_json)
     match (&a.out, a.json) {
-        (None, true) => print_json(x),
+        (None, true) => emit(&versioned_json(x, tabor::VERSION).map_err(|e| e.to_string())?),
         (Some(path), true) => {
-            let text = serde_json::to_string_pretty(&serde_json::json!({
-                "tabor_version": tabor::VERSION,
-                "export": x,
-            }))
-            .map_err(|e| e.to_string())?;
-            std::fs::write(path, text + "\n")
+            let text = versioned_json(x, tabor::VERSION).map_err(|e| e.to_string())?;
+            std::fs::write(path, text)
                 .map_err(|e| format!("cannot write {}: {e}", path.display()).into())
         }
         (Some(path), false) => std::fs::write(path, fragment)
