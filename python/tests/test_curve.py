@@ -50,7 +50,7 @@ def test_agrees_with_adhesion_to_1e8(lam):
     ref_load, ref_disp = adhesion_curve(lam, radii)
     ok = np.isfinite(ref_load) & np.isfinite(ref_disp)
     assert ok.sum() >= 0.9 * len(radii), "Adhesion's solver converged at too few radii"
-    load, disp = tabor.maugis_dugdale_curve(lam, radii)
+    load, disp = tabor.maugis_dugdale_curve(contact_radius=radii, maugis_parameter=lam)
     assert load.shape == disp.shape == radii.shape
     np.testing.assert_allclose(load[ok], ref_load[ok], rtol=1e-8, atol=0)
     # the penetration crosses zero: 1e-8 relative, or 1e-12 absolute next to the
@@ -67,7 +67,7 @@ def test_zero_contact_radius_is_the_junction_with_the_no_contact_branch(lam):
     b = k * 32 * big / (3 * math.pi**2)
     f_hat = -2 * big * b * b
     d_hat = 1.5 * b * b - 32 * big / math.pi**2 * b - 1 / big
-    load, disp = tabor.maugis_dugdale_curve(lam, 0.0)
+    load, disp = tabor.maugis_dugdale_curve(contact_radius=0.0, maugis_parameter=lam)
     assert load == pytest.approx(1.5 * f_hat, rel=1e-13)
     assert disp == pytest.approx(1.5 ** (2 / 3) / 3 * d_hat, rel=1e-13)
 
@@ -76,7 +76,7 @@ def test_hertz_limit_for_large_contact_radius():
     # far on the compressive side the adhesive terms vanish relative to Hertz
     # P̄ = A³, Δ̄ = A² (Maugis' units; they fall like A^(-3/2))
     a = np.array([1e3, 1e4])
-    load, disp = tabor.maugis_dugdale_curve(1.0, a)
+    load, disp = tabor.maugis_dugdale_curve(contact_radius=a, maugis_parameter=1.0)
     np.testing.assert_allclose(load, a**3, rtol=1e-4)
     np.testing.assert_allclose(disp, a**2, rtol=1e-4)
 
@@ -84,6 +84,6 @@ def test_hertz_limit_for_large_contact_radius():
 def test_jkr_limit_for_large_maugis_parameter():
     # λ → ∞: JKR, P̄ = A³ − √(6A³), Δ̄ = A² − (2/3)√(6A) (Maugis 1992, eq. (6.5))
     a = np.array([0.5, 1.0, 2.0])
-    load, disp = tabor.maugis_dugdale_curve(1e6, a)
+    load, disp = tabor.maugis_dugdale_curve(contact_radius=a, maugis_parameter=1e6)
     np.testing.assert_allclose(load, a**3 - np.sqrt(6 * a**3), rtol=1e-4)
     np.testing.assert_allclose(disp, a**2 - 2 / 3 * np.sqrt(6 * a), rtol=1e-4)
