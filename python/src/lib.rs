@@ -51,7 +51,8 @@ fn _tabor(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(get_num_threads, m)?)?;
     m.add_class::<scene::Scene>()?;
     m.add("SPECS", models::specs(m.py())?)?;
-    m.add("VERSION", tabor::VERSION)?;
+    m.add("VERSION", env!("CARGO_PKG_VERSION"))?;
+    m.add("LIBRARY_VERSION", tabor::VERSION)?;
     m.add("MIN_MAUGIS_PARAMETER", maugis::MIN_MAUGIS_PARAMETER)?;
     m.add(
         "LAMBDA_PER_MAUGIS_PARAMETER",

@@ -213,3 +213,13 @@ def test_help_shows_flags_and_units():
     assert "(5.43)" in tabor.maugis_dugdale_loss.__doc__
     for f in (tabor.effective, tabor.plastic, tabor.visco, tabor.penalty):
         assert "--" in f.__doc__
+
+
+def test_version_is_single_sourced():
+    from importlib.metadata import version
+
+    from tabor import _tabor
+
+    # the wheel's version (maturin, dynamic = ["version"] from python/Cargo.toml),
+    # the module's and the Rust workspace's are one
+    assert tabor.__version__ == version("tabor") == _tabor.LIBRARY_VERSION
