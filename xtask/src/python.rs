@@ -92,7 +92,10 @@ pub fn wheel(root: &Path, target: &Path) -> Result<PathBuf, String> {
             })
         })
         .ok_or_else(|| format!("maturin wrote no tabor-{version} wheel into {out:?}"))?;
-    let name = wheel.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let name = wheel
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
     if !(name.contains("-abi3-") && name.contains("manylinux")) {
         return Err(format!("{name}: expected an abi3 manylinux wheel"));
     }
@@ -122,7 +125,13 @@ fn path_without_rust() -> OsString {
     std::env::join_paths(kept).unwrap_or_default()
 }
 
-fn pytest(python: &Path, root: &Path, cli: &Path, args: &[String], no_rust: bool) -> Result<(), String> {
+fn pytest(
+    python: &Path,
+    root: &Path,
+    cli: &Path,
+    args: &[String],
+    no_rust: bool,
+) -> Result<(), String> {
     let mut cmd = Command::new(python);
     cmd.args(["-m", "pytest", "-p", "no:cacheprovider"])
         .arg(root.join("python").join("tests"))
@@ -158,7 +167,13 @@ fn test_requirements(python: &Path, target: &Path, requirements: &str) -> Result
     pip(
         python,
         target,
-        &["install", "--quiet", "--no-deps", "-r", "python/tests/requirements-nodeps.txt"],
+        &[
+            "install",
+            "--quiet",
+            "--no-deps",
+            "-r",
+            "python/tests/requirements-nodeps.txt",
+        ],
     )
 }
 
@@ -180,11 +195,25 @@ pub fn tests(root: &Path, target: &Path, pytest_args: &[String]) -> Result<(), S
     let python = venv(&target.join("python-venv"), fresh, target)?;
     std::env::set_current_dir(root).map_err(|e| e.to_string())?;
     test_requirements(&python, target, "python/tests/requirements.txt")?;
-    pip(&python, target, &["install", "--quiet", "--force-reinstall", "--no-deps", &wheel_arg])?;
+    pip(
+        &python,
+        target,
+        &[
+            "install",
+            "--quiet",
+            "--force-reinstall",
+            "--no-deps",
+            &wheel_arg,
+        ],
+    )?;
     pytest(&python, root, &cli, pytest_args, false)?;
     // 2. a fresh venv, numpy 1.x, no Rust on PATH
     let python = venv(&target.join("python-wheel-venv"), true, target)?;
     test_requirements(&python, target, "python/tests/requirements-numpy1.txt")?;
-    pip(&python, target, &["install", "--quiet", "--no-deps", &wheel_arg])?;
+    pip(
+        &python,
+        target,
+        &["install", "--quiet", "--no-deps", &wheel_arg],
+    )?;
     pytest(&python, root, &cli, pytest_args, true)
 }
