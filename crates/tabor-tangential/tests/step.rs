@@ -1,6 +1,8 @@
 //! The per-contact step against values derived by hand from the definitions of
 //! LAMMPS's `pair granular` (doc/src/pair_granular.rst, the sub-model sources).
 
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
 use approx::assert_relative_eq;
 use nalgebra::Vector3;
 use tabor_tangential::step::rotate_into_plane;
