@@ -31,11 +31,8 @@ fn run(
     let (e, nu, w) = (54e9, 0.17, 0.05);
     let sphere = Body::solid_sphere(R, 2650.0).unwrap();
     let target = if flat { Body::flat() } else { sphere };
-    let e_star = if flat {
-        e / (2.0 * (1.0 - nu * nu))
-    } else {
-        e / (2.0 * (1.0 - nu * nu))
-    };
+    // a flat of the same material: the same E* as two spheres
+    let e_star = e / (2.0 * (1.0 - nu * nu));
     let reff = if flat { R } else { 0.5 * R };
     let shear = EffectiveShear::of_pair(e, nu, e, nu).unwrap();
     let model = TangentialModel::ALL[model];
