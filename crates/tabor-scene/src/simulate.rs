@@ -26,6 +26,16 @@ impl Prepared<'_> {
         settings: &SimulationSettings,
     ) -> Result<(ImpactSimulation, Outcome), SceneError> {
         let outcome = self.outcome_at(speed)?;
+        let mut law = self.force_law(&outcome)?;
+        let inputs = self.inputs();
+        let sim =
+            simulate_impact(law.as_mut(), inputs.effective_mass, speed, settings).map_err(err)?;
+        Ok((sim, outcome))
+    }
+
+    /// The time-domain force law of the model that gave `outcome` (the rule and
+    /// effects it reports), or an error naming what has none.
+    pub(crate) fn force_law(&self, outcome: &Outcome) -> Result<Box<dyn ForceLaw>, SceneError> {
         let models = self.models();
         let inputs = self.inputs();
         // the rule and the effects used at this speed, as the outcome reports them
@@ -37,7 +47,7 @@ impl Prepared<'_> {
                 message: format!("no time-domain force law for {what}"),
             })
         };
-        let mut law: Box<dyn ForceLaw> = match rule {
+        let law: Box<dyn ForceLaw> = match rule {
             Rule::Elastic => Box::new(match inputs.target.gradation {
                 Some((k, c)) => {
                     ElasticContact::graded_sphere(c, k, inputs.effective_radius).map_err(err)?
@@ -96,8 +106,6 @@ impl Prepared<'_> {
                 )))
             }
         };
-        let sim =
-            simulate_impact(law.as_mut(), inputs.effective_mass, speed, settings).map_err(err)?;
-        Ok((sim, outcome))
+        Ok(law)
     }
 }
