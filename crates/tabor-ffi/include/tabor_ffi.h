@@ -48,7 +48,8 @@ typedef struct TaborLawParams {
   int32_t model;
   // Effective modulus E* (Pa): 1/E* = (1−ν1²)/E1 + (1−ν2²)/E2 (seed 000).
   double effective_modulus;
-  // Effective radius R* = R1R2/(R1+R2) (m).
+  // Reference effective radius R* = R1R2/(R1+R2) (m): the radius of
+  // [`tabor_law_evaluate`] and [`tabor_law_info`] (the `_at` variants take any).
   double effective_radius;
   // Work of adhesion w = Δγ (J/m²; LAMMPS's `jkr` γ is w/2). Ignored for Hertz.
   double work_of_adhesion;
@@ -110,8 +111,9 @@ extern "C" {
 
 // Creates a contact law; on success `*out` owns it (free with [`tabor_law_free`]).
 //
-// Building a Maugis-Dugdale law tabulates its branch (a few milliseconds); JKR
-// laws share one normalized table built on first use.
+// Building a Maugis-Dugdale law tabulates its branch (60-90 ms, about 160 kB);
+// JKR laws share one normalized table built on first use. Either serves every
+// effective radius ([`tabor_law_evaluate_at`]).
 //
 // # Safety
 // `params` must point to a valid [`TaborLawParams`], `out` to writable storage
@@ -137,12 +139,34 @@ int32_t tabor_law_evaluate(const struct TaborLaw *law,
                            struct TaborHistory *history,
                            struct TaborForce *out);
 
+// [`tabor_law_evaluate`] at effective radius R* = `effective_radius` (m, finite
+// and > 0) instead of the law's reference radius: the same normalized branch
+// scaled by F_n ∝ R*, d_n ∝ R*^(1/3), a_c ∝ R*^(2/3) (one cube root per call).
+//
+// # Safety
+// `law` from [`tabor_law_new`]; `history` and `out` valid and writable.
+int32_t tabor_law_evaluate_at(const struct TaborLaw *law,
+                              double effective_radius,
+                              double overlap,
+                              double overlap_rate,
+                              struct TaborHistory *history,
+                              struct TaborForce *out);
+
 // The law's jump-in and snap-off overlaps, interaction range, pull-off force and
-// measured table errors.
+// measured table errors at its reference radius.
 //
 // # Safety
 // `law` from [`tabor_law_new`]; `out` valid and writable.
 int32_t tabor_law_info(const struct TaborLaw *law, struct TaborLawInfo *out);
+
+// [`tabor_law_info`] at effective radius R* = `effective_radius` (m, finite and
+// > 0): lengths scale as R*^(1/3), forces as R*.
+//
+// # Safety
+// `law` from [`tabor_law_new`]; `out` valid and writable.
+int32_t tabor_law_info_at(const struct TaborLaw *law,
+                          double effective_radius,
+                          struct TaborLawInfo *out);
 
 // Copies the message of the last error on this thread into `buffer` (at most
 // `length` bytes including the terminating NUL) and returns the message's full

@@ -10,11 +10,14 @@
 //!   section 5.3.2 (jump-in at δ = −h (5.40), snap-off at the path's minimum depth),
 //! - optional Kuwabara-Kono viscous damping F_d = 2E*A a δ̇ (seed 000 (5.66)).
 //!
-//! A law is created once per pair of particle types and effective radius
-//! ([`tabor_law_new`]); each time step a contact calls [`tabor_law_evaluate`] with
-//! its overlap δ (m, > 0 in contact), overlap rate δ̇ (m/s, > 0 approaching) and its
+//! A law is created once per pair of particle types ([`tabor_law_new`]); each time
+//! step a contact calls [`tabor_law_evaluate_at`] with its effective radius R*, its
+//! overlap δ (m, > 0 in contact), overlap rate δ̇ (m/s, > 0 approaching) and its
 //! [`TaborHistory`] (two doubles the engine stores per contact), and receives the
-//! normal force (N, > 0 repulsive). The branch is precomputed in normalized
+//! normal force (N, > 0 repulsive). The branch is tabulated in normalized variables
+//! that do not depend on R* (JKR; Maugis-Dugdale at a fixed Λ), so one law serves
+//! any number of distinct radii at no extra memory ([`tabor_law_evaluate`]: at the
+//! law's own reference radius). The branch is precomputed in normalized
 //! variables (module [`table`]; measured interpolation error in [`TaborLawInfo`]),
 //! so an evaluation is a square root, a table look-up and a cubic.
 //!
@@ -26,7 +29,7 @@
 pub mod law;
 pub mod table;
 
-pub use law::{ContactLaw, LawKind, TaborForce, TaborHistory};
+pub use law::{ContactLaw, LawKind, RadiusScales, TaborForce, TaborHistory};
 
 use std::cell::RefCell;
 use std::ffi::{c_char, CStr};
@@ -64,7 +67,8 @@ pub struct TaborLawParams {
     pub model: i32,
     /// Effective modulus E* (Pa): 1/E* = (1−ν1²)/E1 + (1−ν2²)/E2 (seed 000).
     pub effective_modulus: f64,
-    /// Effective radius R* = R1R2/(R1+R2) (m).
+    /// Reference effective radius R* = R1R2/(R1+R2) (m): the radius of
+    /// [`tabor_law_evaluate`] and [`tabor_law_info`] (the `_at` variants take any).
     pub effective_radius: f64,
     /// Work of adhesion w = Δγ (J/m²; LAMMPS's `jkr` γ is w/2). Ignored for Hertz.
     pub work_of_adhesion: f64,
@@ -165,8 +169,9 @@ pub fn law_from_params(p: &TaborLawParams) -> tabor_restitution::Result<ContactL
 
 /// Creates a contact law; on success `*out` owns it (free with [`tabor_law_free`]).
 ///
-/// Building a Maugis-Dugdale law tabulates its branch (a few milliseconds); JKR
-/// laws share one normalized table built on first use.
+/// Building a Maugis-Dugdale law tabulates its branch (60-90 ms, about 160 kB);
+/// JKR laws share one normalized table built on first use. Either serves every
+/// effective radius ([`tabor_law_evaluate_at`]).
 ///
 /// # Safety
 /// `params` must point to a valid [`TaborLawParams`], `out` to writable storage
@@ -246,27 +251,92 @@ pub unsafe extern "C" fn tabor_law_evaluate(
     })
 }
 
+/// [`tabor_law_evaluate`] at effective radius R* = `effective_radius` (m, finite
+/// and > 0) instead of the law's reference radius: the same normalized branch
+/// scaled by F_n ∝ R*, d_n ∝ R*^(1/3), a_c ∝ R*^(2/3) (one cube root per call).
+///
+/// # Safety
+/// `law` from [`tabor_law_new`]; `history` and `out` valid and writable.
+#[no_mangle]
+pub unsafe extern "C" fn tabor_law_evaluate_at(
+    law: *const TaborLaw,
+    effective_radius: f64,
+    overlap: f64,
+    overlap_rate: f64,
+    history: *mut TaborHistory,
+    out: *mut TaborForce,
+) -> i32 {
+    guard(|| {
+        if law.is_null() || history.is_null() || out.is_null() {
+            set_error("tabor_law_evaluate_at: null pointer".into());
+            return TABOR_ERR_NULL;
+        }
+        // SAFETY: valid per the contract
+        let (law, history, out) = unsafe { (&(*law).0, &mut *history, &mut *out) };
+        let mut h = *history;
+        let result = law
+            .scales(effective_radius)
+            .and_then(|s| law.evaluate_scaled(&s, overlap, overlap_rate, &mut h));
+        match result {
+            Ok(f) => {
+                *history = h;
+                *out = f;
+                TABOR_OK
+            }
+            Err(e) => {
+                *out = TaborForce::default();
+                status_of(&e)
+            }
+        }
+    })
+}
+
 /// The law's jump-in and snap-off overlaps, interaction range, pull-off force and
-/// measured table errors.
+/// measured table errors at its reference radius.
 ///
 /// # Safety
 /// `law` from [`tabor_law_new`]; `out` valid and writable.
 #[no_mangle]
 pub unsafe extern "C" fn tabor_law_info(law: *const TaborLaw, out: *mut TaborLawInfo) -> i32 {
+    if law.is_null() {
+        set_error("tabor_law_info: null pointer".into());
+        return TABOR_ERR_NULL;
+    }
+    // SAFETY: non-null, valid per the contract
+    let r = unsafe { (*law).0.effective_radius() };
+    // SAFETY: forwarded contract
+    unsafe { tabor_law_info_at(law, r, out) }
+}
+
+/// [`tabor_law_info`] at effective radius R* = `effective_radius` (m, finite and
+/// > 0): lengths scale as R*^(1/3), forces as R*.
+///
+/// # Safety
+/// `law` from [`tabor_law_new`]; `out` valid and writable.
+#[no_mangle]
+pub unsafe extern "C" fn tabor_law_info_at(
+    law: *const TaborLaw,
+    effective_radius: f64,
+    out: *mut TaborLawInfo,
+) -> i32 {
     guard(|| {
         if law.is_null() || out.is_null() {
-            set_error("tabor_law_info: null pointer".into());
+            set_error("tabor_law_info_at: null pointer".into());
             return TABOR_ERR_NULL;
         }
         // SAFETY: valid per the contract
         let (law, out) = unsafe { (&(*law).0, &mut *out) };
+        let s = match law.scales(effective_radius) {
+            Ok(s) => s,
+            Err(e) => return status_of(&e),
+        };
         let e = law.table_error();
         *out = TaborLawInfo {
-            jump_in_overlap: law.jump_in_overlap(),
-            snap_off_overlap: law.snap_off_overlap(),
-            interaction_range: law.interaction_range(),
-            pull_off_force: law.pull_off_force(),
-            force_scale: law.force_scale(),
+            jump_in_overlap: law.jump_in_overlap_at(&s),
+            snap_off_overlap: law.snap_off_overlap_at(&s),
+            interaction_range: law.interaction_range_at(&s),
+            pull_off_force: law.pull_off_force_at(&s),
+            force_scale: s.force,
             table_force_error: e.fine_force_abs,
             table_force_relative_error: e.hertz_force_rel,
         };

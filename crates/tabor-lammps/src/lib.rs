@@ -38,6 +38,6 @@ pub use law::{
 };
 pub use parse::{parse_line, LineError, LineKind, ParsedLine};
 pub use plugin::{
-    export_plugin, PluginExport, PluginModel, PluginSpeed, PLUGIN_RESTITUTION_ERROR,
-    PLUGIN_TIME_STEP_FRACTION,
+    export_plugin, plugin_load_command, PluginExport, PluginModel, PluginSpeed,
+    PLUGIN_RESTITUTION_ERROR, PLUGIN_TIME_STEP_FRACTION,
 };

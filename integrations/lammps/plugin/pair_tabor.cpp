@@ -18,14 +18,18 @@
 
 using namespace LAMMPS_NS;
 
-static constexpr std::size_t MAX_RADII_PER_PAIR = 256;
+static const char *const HISTORY_ID = "TABOR_HISTORY";
 
 PairTabor::PairTabor(LAMMPS *lmp) :
-    Pair(lmp), maxrad(nullptr), fix_history(nullptr), evaluations(0), overflow_reported(0)
+    Pair(lmp), maxrad(nullptr), fix_history(nullptr), history_width(TABOR_HISTORY_LEN)
 {
-  single_enable = 0;
+  single_enable = 1;
   no_virial_fdotr_compute = 1;
   finitecutflag = 1;
+  // pair_style and pair_coeff are not stored in restart files: after read_restart
+  // include the fragment again (plugin load, pair_style, pair_coeff); the contact
+  // histories come back with the atoms (fix tabor/history)
+  restartinfo = 0;
 }
 
 PairTabor::~PairTabor()
@@ -36,23 +40,31 @@ PairTabor::~PairTabor()
     memory->destroy(cutsq);
   }
   memory->destroy(maxrad);
-  if (fix_history && modify->get_fix_by_id("TABOR_HISTORY")) modify->delete_fix("TABOR_HISTORY");
+  if (fix_history && modify->get_fix_by_id(HISTORY_ID)) modify->delete_fix(HISTORY_ID);
 }
 
 void PairTabor::free_laws()
 {
   for (auto &c : coeffs) {
-    for (auto &l : c.laws) tabor_law_free(l.law);
-    c.laws.clear();
+    tabor_law_free(c.law);
+    c.law = nullptr;
   }
 }
 
-void PairTabor::check(int status, const char *what)
+void PairTabor::fail_all(int status, const char *what)
 {
-  if (status == TABOR_OK) return;
   char buf[512];
   tabor_last_error(buf, sizeof(buf));
-  error->one(FLERR, "pair tabor: {} failed (status {}): {}", what, status, buf);
+  error->all(FLERR, "pair tabor: {} (status {}): {}", what, status, buf);
+  throw;    // not reached: error->all does not return
+}
+
+void PairTabor::fail_one(int status, const char *what)
+{
+  char buf[512];
+  tabor_last_error(buf, sizeof(buf));
+  error->one(FLERR, "pair tabor: {} (status {}): {}", what, status, buf);
+  throw;    // not reached
 }
 
 void PairTabor::settings(int narg, char ** /*arg*/)
@@ -65,11 +77,12 @@ void PairTabor::settings(int narg, char ** /*arg*/)
    pair_coeff I J jkr/load-controlled E* w [damping A]
    pair_coeff I J maugis E* w Lambda [damping A]
    E*: effective modulus (Pa), w: work of adhesion (J/m^2, = 2 gamma of LAMMPS jkr),
-   Lambda: Tabor parameter (used for every effective radius), A: Kuwabara-Kono
-   dissipative time (s). */
+   Lambda: Tabor parameter (held fixed for every effective radius: the Dugdale
+   range h = d_n(R*)/Lambda grows as R*^(1/3)), A: Kuwabara-Kono dissipative
+   time (s). Every error is reported on all ranks (error->all). */
 void PairTabor::coeff(int narg, char **arg)
 {
-  if (narg < 4) error->all(FLERR, "Incorrect args for pair coefficients (pair tabor)");
+  if (narg < 4) error->all(FLERR, "Incorrect args for pair coefficients (pair tabor): pair_coeff I J MODEL E* ...");
   if (!allocated) {
     allocated = 1;
     int n = atom->ntypes;
@@ -92,99 +105,103 @@ void PairTabor::coeff(int narg, char **arg)
     if (iarg >= narg) error->all(FLERR, "pair tabor {}: missing {}", model, what);
     return utils::numeric(FLERR, arg[iarg++], false, lmp);
   };
-  p.effective_modulus = number("E*");
   if (model == "hertz") {
     p.model = TABOR_MODEL_HERTZ;
   } else if (model == "jkr/fixed-grip" || model == "jkr/load-controlled") {
     p.model = model == "jkr/fixed-grip" ? TABOR_MODEL_JKR_FIXED_GRIP : TABOR_MODEL_JKR_LOAD_CONTROLLED;
-    p.work_of_adhesion = number("w");
   } else if (model == "maugis") {
     p.model = TABOR_MODEL_MAUGIS_DUGDALE;
-    p.work_of_adhesion = number("w");
-    p.tabor_parameter = number("Lambda");
   } else {
     error->all(FLERR, "pair tabor: unknown model {} (hertz, jkr/fixed-grip, jkr/load-controlled, maugis)", model);
   }
+  p.effective_modulus = number("E*");
+  if (p.model != TABOR_MODEL_HERTZ) p.work_of_adhesion = number("w");
+  if (p.model == TABOR_MODEL_MAUGIS_DUGDALE) p.tabor_parameter = number("Lambda");
   while (iarg < narg) {
     if (strcmp(arg[iarg], "damping") == 0) {
       iarg++;
       p.damping_time = number("damping time A");
     } else {
-      error->all(FLERR, "pair tabor: unknown keyword {}", arg[iarg]);
+      error->all(FLERR, "pair tabor: unknown keyword {} (damping)", arg[iarg]);
     }
   }
-  // validate once with a unit radius: errors are reported here, not mid-run
+  // one law for every radius; the reference radius only sets where the exact law
+  // is evaluated beyond the table (an overlap 1e6 adhesive depths deep)
   p.effective_radius = 1.0;
-  TaborLaw *probe = nullptr;
-  check(tabor_law_new(&p, &probe), "pair_coeff");
-  tabor_law_free(probe);
+  TaborLaw *law = nullptr;
+  int status = tabor_law_new(&p, &law);
+  if (status != TABOR_OK) fail_all(status, "pair_coeff");
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++)
     for (int j = MAX(jlo, i); j <= jhi; j++) {
-      for (auto &l : coeff_of(i, j).laws) tabor_law_free(l.law);
-      coeff_of(i, j) = Coeff();
-      coeff_of(i, j).set = 1;
-      coeff_of(i, j).params = p;
+      Coeff &c = coeff_of(i, j);
+      tabor_law_free(c.law);
+      c = Coeff();
+      c.set = 1;
+      c.params = p;
+      if (count == 0) {
+        c.law = law;
+      } else {
+        status = tabor_law_new(&p, &c.law);
+        if (status != TABOR_OK) fail_all(status, "pair_coeff");
+      }
       setflag[i][j] = 1;
       count++;
     }
-  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients (pair tabor)");
+  if (count == 0) {
+    tabor_law_free(law);
+    error->all(FLERR, "Incorrect args for pair coefficients (pair tabor)");
+  }
 }
 
 void PairTabor::init_style()
 {
   if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR, "Pair tabor requires atom attributes radius, rmass (atom_style sphere)");
-  if (comm->ghost_velocity == 0) error->all(FLERR, "Pair tabor requires ghost atoms store velocity (comm_modify vel yes)");
-  if (force->newton_pair)
-    error->all(FLERR, "Pair tabor requires newton pair off (its history is kept on both atoms of a pair)");
-  neighbor->add_request(this, NeighConst::REQ_SIZE);
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "Pair tabor requires ghost atoms store velocity (comm_modify vel yes)");
+  if (atom->tag_enable == 0) error->all(FLERR, "Pair tabor requires atom IDs");
+  // a newton-off half list whatever the newton setting: a pair across two ranks
+  // is computed on both (each applies the force to its own atom and keeps the
+  // contact's history with it), so no reverse communication of history is needed
+  neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_NEWTON_OFF);
 
-  fix_history = dynamic_cast<FixTaborHistory *>(modify->get_fix_by_id("TABOR_HISTORY"));
-  if (!fix_history) fix_history = dynamic_cast<FixTaborHistory *>(modify->add_fix("TABOR_HISTORY all tabor/history"));
+  // the history fix: recreated after read_restart with the same ID and style,
+  // LAMMPS hands it the histories stored in the restart file
+  fix_history = dynamic_cast<FixTaborHistory *>(modify->get_fix_by_id(HISTORY_ID));
+  if (fix_history && fix_history->width() != history_width) {
+    modify->delete_fix(HISTORY_ID);
+    fix_history = nullptr;
+  }
+  if (!fix_history)
+    fix_history = dynamic_cast<FixTaborHistory *>(
+        modify->add_fix(fmt::format("{} all tabor/history {}", HISTORY_ID, history_width)));
   if (!fix_history) error->all(FLERR, "pair tabor: could not create fix tabor/history");
 
   // largest radius per type, over all ranks (as pair granular's maxrad_dynamic)
   int n = atom->ntypes;
   std::vector<double> local(n + 1, 0.0);
-  for (int i = 0; i < atom->nlocal; i++)
-    local[atom->type[i]] = MAX(local[atom->type[i]], atom->radius[i]);
+  for (int i = 0; i < atom->nlocal; i++) local[atom->type[i]] = MAX(local[atom->type[i]], atom->radius[i]);
   MPI_Allreduce(local.data(), maxrad, n + 1, MPI_DOUBLE, MPI_MAX, world);
 }
 
 double PairTabor::init_one(int i, int j)
 {
-  Coeff &c = coeff_of(MIN(i, j), MAX(i, j));
+  Coeff &c = coeff_of(i, j);
   if (!c.set) error->all(FLERR, "pair tabor: no pair_coeff for types {} {}", i, j);
   double ri = maxrad[i], rj = maxrad[j];
+  c.reach = 0.0;
   if (ri <= 0.0 || rj <= 0.0) return 0.0;
-  // the largest effective radius has the largest interaction range (h ∝ R*^(1/3))
-  const Law &l = law_for(MIN(i, j), MAX(i, j), ri * rj / (ri + rj));
-  double range = l.info.interaction_range;
-  if (neighbor->skin < range)
+  // the largest effective radius has the largest interaction range (∝ R*^(1/3))
+  TaborLawInfo info;
+  int status = tabor_law_info_at(c.law, ri * rj / (ri + rj), &info);
+  if (status != TABOR_OK) fail_all(status, "init");
+  c.reach = info.interaction_range;
+  if (neighbor->skin < c.reach)
     error->all(FLERR, "pair tabor: neighbor skin {} is below the interaction range {} of types {} {}",
-               neighbor->skin, range, i, j);
-  return ri + rj + range;
-}
-
-const PairTabor::Law &PairTabor::law_for(int itype, int jtype, double rstar)
-{
-  Coeff &c = coeff_of(itype, jtype);
-  for (auto &l : c.laws)
-    if (l.rstar == rstar) return l;
-  if (c.laws.size() >= MAX_RADII_PER_PAIR)
-    error->one(FLERR, "pair tabor: more than {} distinct effective radii for types {} {} "
-               "(each needs its own table; polydisperse systems are not supported)",
-               MAX_RADII_PER_PAIR, itype, jtype);
-  Law l{};
-  l.rstar = rstar;
-  TaborLawParams p = c.params;
-  p.effective_radius = rstar;
-  check(tabor_law_new(&p, &l.law), "tabor_law_new");
-  check(tabor_law_info(l.law, &l.info), "tabor_law_info");
-  c.laws.push_back(l);
-  return c.laws.back();
+               neighbor->skin, c.reach, i, j);
+  return ri + rj + c.reach;
 }
 
 void PairTabor::compute(int eflag, int vflag)
@@ -203,11 +220,7 @@ void PairTabor::compute(int eflag, int vflag)
   int *ilist = list->ilist;
   int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
-
-  // a one-entry cache of the last law: monodisperse runs never search
-  int last_i = -1, last_j = -1;
-  double last_r = -1.0;
-  const Law *law = nullptr;
+  std::vector<double> h(history_width);
 
   for (int ii = 0; ii < inum; ii++) {
     int i = ilist[ii];
@@ -216,37 +229,31 @@ void PairTabor::compute(int eflag, int vflag)
     int jnum = numneigh[i];
     for (int jj = 0; jj < jnum; jj++) {
       int j = jlist[jj] & NEIGHMASK;
-      int jtype = type[j];
+      const Coeff &c = coeff_of(itype, type[j]);
       double delx = x[i][0] - x[j][0];
       double dely = x[i][1] - x[j][1];
       double delz = x[i][2] - x[j][2];
       double rsq = delx * delx + dely * dely + delz * delz;
       double radsum = radius[i] + radius[j];
-      double rstar = radius[i] * radius[j] / radsum;
-      int ti = MIN(itype, jtype), tj = MAX(itype, jtype);
-      if (ti != last_i || tj != last_j || rstar != last_r) {
-        law = &law_for(ti, tj, rstar);
-        last_i = ti;
-        last_j = tj;
-        last_r = rstar;
-      }
-      TaborHistory *stored = fix_history->find(i, tag[j]);
-      double reach = radsum + law->info.interaction_range;
+      double *stored = fix_history->find(i, tag[j]);
+      double reach = radsum + c.reach;
       if (!stored && rsq >= reach * reach) continue;
+      double rstar = radius[i] * radius[j] / radsum;
       double r = sqrt(rsq);
       double overlap = radsum - r;
       double rinv = 1.0 / r;
       // overlap rate = -(v_i - v_j) . n, n = (x_i - x_j)/r
       double vrn = (v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely + (v[i][2] - v[j][2]) * delz;
       double rate = -vrn * rinv;
-      TaborHistory h = stored ? *stored : TaborHistory{0.0, 0.0};
+      if (stored) std::memcpy(h.data(), stored, sizeof(double) * history_width);
+      else std::fill(h.begin(), h.end(), 0.0);
+      auto *hist = reinterpret_cast<TaborHistory *>(h.data());
       TaborForce out;
-      int status = tabor_law_evaluate(law->law, overlap, rate, &h, &out);
-      if (status != TABOR_OK) check(status, "tabor_law_evaluate");
-      evaluations++;
-      if (stored || h.contact != 0.0) {
-        fix_history->store(i, tag[j], h);
-        if (j < nlocal) fix_history->store(j, tag[i], h);
+      int status = tabor_law_evaluate_at(c.law, rstar, overlap, rate, hist, &out);
+      if (status != TABOR_OK) fail_one(status, "tabor_law_evaluate_at");
+      if (stored || h[0] != 0.0) {
+        fix_history->store(i, tag[j], h.data());
+        if (j < nlocal) fix_history->store(j, tag[i], h.data());
       }
       if (out.force == 0.0) continue;
       double fpair = out.force * rinv;
@@ -262,14 +269,37 @@ void PairTabor::compute(int eflag, int vflag)
       if (evflag) ev_tally_xyz(i, j, nlocal, 0, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
     }
   }
-  if (fix_history->overflow > overflow_reported) {
-    overflow_reported = fix_history->overflow;
-    error->warning(FLERR, "pair tabor: more than {} contacts on one atom: {} histories dropped",
-                   FixTaborHistory::MAXPARTNER, fix_history->overflow);
-  }
+}
+
+/* the force between i and j as compute pair/local sees it: the stored history of
+   the contact is read, not advanced; the energy is not tallied (0) */
+double PairTabor::single(int i, int j, int itype, int jtype, double rsq, double /*factor_coul*/,
+                         double /*factor_lj*/, double &fforce)
+{
+  fforce = 0.0;
+  const Coeff &c = coeff_of(itype, jtype);
+  double *radius = atom->radius;
+  double radsum = radius[i] + radius[j];
+  double *stored = fix_history->find(i, atom->tag[j]);
+  if (!stored && j < atom->nlocal) stored = fix_history->find(j, atom->tag[i]);
+  double reach = radsum + c.reach;
+  if (!stored && rsq >= reach * reach) return 0.0;
+  double **x = atom->x;
+  double **v = atom->v;
+  double r = sqrt(rsq);
+  double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+  double vrn = (v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely + (v[i][2] - v[j][2]) * delz;
+  std::vector<double> h(history_width, 0.0);
+  if (stored) std::memcpy(h.data(), stored, sizeof(double) * history_width);
+  TaborForce out;
+  int status = tabor_law_evaluate_at(c.law, radius[i] * radius[j] / radsum, radsum - r, -vrn / r,
+                                     reinterpret_cast<TaborHistory *>(h.data()), &out);
+  if (status != TABOR_OK) fail_one(status, "tabor_law_evaluate_at (single)");
+  fforce = out.force / r;
+  return 0.0;
 }
 
 double PairTabor::memory_usage()
 {
-  return 0.0;
+  return (double) coeffs.size() * sizeof(Coeff);
 }
