@@ -47,6 +47,9 @@ pub struct TaborForce {
     /// Normal force (N), positive when repulsive: elastic-adhesive plus
     /// Kuwabara-Kono damping.
     pub force: f64,
+    /// The elastic-adhesive part of `force` (N), without damping (what the Coulomb
+    /// limit of friction is built from, LAMMPS's `Fne`).
+    pub elastic_force: f64,
     /// Contact radius a (m) of the branch (0 without contact, and on the no-contact
     /// branch of Maugis-Dugdale).
     pub contact_radius: f64,
@@ -303,6 +306,11 @@ impl ContactLaw {
         self.effective_modulus
     }
 
+    /// The Kuwabara-Kono dissipative time A (s; 0 without damping).
+    pub fn damping_time(&self) -> f64 {
+        self.damping_time
+    }
+
     /// The reference effective radius R* (m), the one given at construction.
     pub fn effective_radius(&self) -> f64 {
         self.reference.effective_radius
@@ -502,9 +510,8 @@ impl ContactLaw {
         if overlap < self.snap_off * scales.depth || (hertz && overlap <= 0.0) {
             *history = TaborHistory::default();
             return Ok(TaborForce {
-                force: 0.0,
-                contact_radius: 0.0,
                 event: event | 2,
+                ..TaborForce::default()
             });
         }
         if overlap > history.max_overlap {
@@ -522,6 +529,7 @@ impl ContactLaw {
         }
         Ok(TaborForce {
             force,
+            elastic_force: f,
             contact_radius: a,
             event,
         })

@@ -389,6 +389,7 @@ fn errors_are_status_codes_never_unwinding() {
     };
     let mut out = TaborForce {
         force: 5.0,
+        elastic_force: 5.0,
         contact_radius: 1.0,
         event: 9,
     };

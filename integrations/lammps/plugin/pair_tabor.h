@@ -1,6 +1,7 @@
 /* pair_style tabor: tabor's normal contact laws (Hertz, JKR with the fixed-grip or
    load-controlled separation, Maugis-Dugdale at any Tabor parameter, optional
-   Kuwabara-Kono damping) through the tabor-ffi C ABI.
+   Kuwabara-Kono damping) with the friction, rolling and twisting models of LAMMPS's
+   pair_style granular (tabor-tangential), through the tabor-ffi C ABI.
 
    One law per pair of atom types serves every effective radius (the branch is
    tabulated in normalized variables; crates/tabor-ffi), so any polydispersity is
@@ -33,8 +34,9 @@ class PairTabor : public Pair {
   struct Coeff {
     int set = 0;
     TaborLawParams params{};
-    TaborLaw *law = nullptr;    // serves every effective radius
-    double reach = 0.0;         // interaction range at the largest R* of the types
+    TaborFrictionParams friction{};
+    TaborContact *contact = nullptr;    // serves every effective radius
+    double reach = 0.0;                 // interaction range at the largest R* of the types
   };
   std::vector<Coeff> coeffs;    // (ntypes+1)^2, upper triangle used
   double *maxrad;
@@ -44,6 +46,7 @@ class PairTabor : public Pair {
   int ntypes_alloc = 0;
   Coeff &coeff_of(int i, int j) { return coeffs[MIN(i, j) * (ntypes_alloc + 1) + MAX(i, j)]; }
   void free_laws();
+  int evaluate(int i, int j, int update_history, TaborContactForces &out, int &first);
   [[noreturn]] void fail_all(int status, const char *what);
   [[noreturn]] void fail_one(int status, const char *what);
 };
