@@ -46,8 +46,8 @@ pub use law::{
 };
 pub use parse::{parse_line, substitute_variables, LineError, LineKind, ParsedLine};
 pub use plugin::{
-    export_plugin, PluginExport, PluginModel, PluginSpeed, PLUGIN_RESTITUTION_ERROR,
-    PLUGIN_TIME_STEP_FRACTION,
+    export_plugin, plugin_load_command, PluginExport, PluginModel, PluginSpeed,
+    PLUGIN_RESTITUTION_ERROR, PLUGIN_TIME_STEP_FRACTION,
 };
 pub use report::{
     time_step_error, versioned_json, Bodies, Claim, Export, ExportError, Geometry, Limit,

@@ -104,6 +104,18 @@ pub struct PluginExport {
     pub reproduces: Vec<String>,
     /// What it does not (its limits).
     pub does_not_reproduce: Vec<String>,
+    /// Warnings about the export itself (a plugin path that does not exist).
+    pub warnings: Vec<String>,
+}
+
+/// `plugin load PATH` with the path quoted for LAMMPS's parser (spaces allowed;
+/// triple quotes when the path itself holds a double quote).
+pub fn plugin_load_command(plugin: &str) -> String {
+    if plugin.contains('"') {
+        format!("plugin load \"\"\"{plugin}\"\"\"")
+    } else {
+        format!("plugin load \"{plugin}\"")
+    }
 }
 
 fn model_err(e: impl Display) -> ExportError {
@@ -265,10 +277,11 @@ pub fn export_plugin(
     if let Some(a) = a_time {
         coeff += &format!(" damping {}", fmt(a));
     }
+    // every line is legal after create_box with LAMMPS's defaults: the fragment
+    // does not change `newton` (the pair style works with either setting)
     let commands = vec![
-        "newton off".to_string(),
         "comm_modify vel yes".to_string(),
-        format!("plugin load {plugin}"),
+        plugin_load_command(plugin),
         "pair_style tabor".to_string(),
         coeff,
         format!("neighbor {} bin", fmt(skin)),
@@ -307,9 +320,9 @@ pub fn export_plugin(
     reproduces.push("the contact radius and the force along the whole loading and unloading path (tables: |dF|/F_n <= 2e-6 adhesive part, 3e-11 Hertzian part; see crates/tabor-ffi/README.md)".into());
     let mut limits = vec![
         "tangential, rolling and twisting contact: normal forces only, no torques (add your own tangential model with a separate pair style if needed)".to_string(),
-        "energy tally and restart: the pair style tallies no energy and its history (contact flag, turning point) is not written to restart files".to_string(),
-        "newton on is refused; the neighbor skin must stay at least the interaction range (checked at run)".to_string(),
-        "one pair_coeff * * for the scene's pair of bodies; polydisperse continuous size distributions (> 256 distinct R* per type pair) are refused".to_string(),
+        "energy tally: the pair style tallies no energy (its contact histories are written to restart files; after read_restart include this fragment again)".to_string(),
+        "the neighbor skin must stay at least the interaction range (checked at run)".to_string(),
+        "Maugis-Dugdale keeps Lambda fixed for every effective radius of a polydisperse system (the range h = d_n(R*)/Lambda grows as R*^(1/3))".to_string(),
     ];
     if range > 0.0 {
         limits.push(format!(
@@ -342,6 +355,13 @@ pub fn export_plugin(
         commands,
         reproduces,
         does_not_reproduce: limits,
+        warnings: if std::path::Path::new(plugin).exists() {
+            Vec::new()
+        } else {
+            vec![format!(
+                "the plugin {plugin} does not exist (build it with cargo xtask lammps-plugin): plugin load will fail"
+            )]
+        },
     })
 }
 
@@ -358,7 +378,10 @@ impl PluginExport {
             "# tabor export lammps --plugin: scene \"{}\" (sphere-sphere: pair_style tabor, tabor's own force law)",
             self.scene
         ));
-        line("# Include after atom_style sphere / create_box (units si). Normal forces only.");
+        line("# Include after atom_style sphere / create_box (units si); newton on or off.");
+        for w in &self.warnings {
+            line(&format!("# WARNING: {w}"));
+        }
         line(&format!(
             "# law: {}; E* = {:.10e} Pa (1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2){}{}{}",
             self.model.keyword(),

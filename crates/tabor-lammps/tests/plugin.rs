@@ -9,7 +9,9 @@
 use std::f64::consts::PI;
 use std::path::PathBuf;
 use tabor_ffi::{ContactLaw, TaborHistory};
-use tabor_lammps::{export_plugin, ExportError, PluginModel, PLUGIN_RESTITUTION_ERROR};
+use tabor_lammps::{
+    export_plugin, plugin_load_command, ExportError, PluginModel, PLUGIN_RESTITUTION_ERROR,
+};
 use tabor_scene::Scene;
 
 fn scene(path: &str) -> Scene {
@@ -52,9 +54,17 @@ fn maugis_fragment_carries_the_scene_numbers() {
     assert!((n[0] / e_star - 1.0).abs() < 1e-10, "{} {e_star}", n[0]);
     assert!((n[1] / 0.05 - 1.0).abs() < 1e-10);
     assert!((n[2] / 0.55 - 1.0).abs() < 1e-10);
-    assert!(f.contains("\nplugin load /opt/taborplugin.so\n"));
+    assert!(f.contains("\nplugin load \"/opt/taborplugin.so\"\n"));
+    // a path that does not exist is written, with a warning
+    assert!(f.contains("# WARNING: the plugin /opt/taborplugin.so does not exist"));
+    assert_eq!(x.warnings.len(), 1);
+    assert_eq!(
+        plugin_load_command("/my dir/tabor plugin.so"),
+        "plugin load \"/my dir/tabor plugin.so\""
+    );
     assert!(f.contains("\npair_style tabor\n"));
-    assert!(f.contains("\nnewton off\n"));
+    // legal after create_box: no newton line
+    assert!(!f.lines().any(|l| l.starts_with("newton")));
     assert!(f.contains("\ncomm_modify vel yes\n"));
     assert!(f.contains("# REPRODUCES: tabor's force law itself"));
     assert!(f.contains("# DOES NOT REPRODUCE: tangential"));

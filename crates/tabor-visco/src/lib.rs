@@ -33,6 +33,7 @@ mod hertz_damped;
 pub mod kelvin_maxwell_sphere;
 pub mod kelvin_voigt_flat;
 pub mod kelvin_voigt_sphere;
+pub mod kuwabara_kono;
 mod mdr;
 pub mod models;
 mod scaled;

@@ -134,6 +134,10 @@ pub fn run(args: &Args) -> Outcome {
         let plugin = std::fs::canonicalize(plugin).unwrap_or_else(|_| plugin.clone());
         let x = export_plugin(&scene, &plugin.to_string_lossy(), a.speed)
             .map_err(|e| format!("{}: {e}", a.scene.display()))?;
+        // also in the fragment (# WARNING) and the JSON; stderr so it is seen
+        for w in &x.warnings {
+            eprintln!("warning: {w}");
+        }
         return write_out(a, &x, &x.fragment());
     }
     let x = export(&scene, a.speed).map_err(|e| format!("{}: {e}", a.scene.display()))?;
