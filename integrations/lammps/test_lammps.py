@@ -17,7 +17,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-from collide import collide  # noqa: E402
+from collide import collide, collide_oblique  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(HERE))
 TABOR = os.environ.get("TABOR", os.path.join(ROOT, "target", "release", "tabor"))
@@ -181,6 +181,33 @@ def test_plastic_claim_stops_at_the_yield_onset():
     e_tabor = tabor_restitution(path, v)
     RESULTS.append(("unclaimed", "silica_maugis_plastic", v, e_run, e_tabor, e_run - e_tabor, float("nan")))
     assert e_run > 0.99 and e_tabor < 0.8, (e_run, e_tabor)
+
+
+def test_friction_fragment_in_an_oblique_collision():
+    """silica_oblique (load-controlled JKR + [friction]): the exported fragment,
+    included as its header says, against tabor impact --angle: velocities and
+    spins after the collision. Tolerance from the time step, as in
+    test_oblique.py: runs at t_c/8000 and t_c/16000, tabor within twice their
+    difference of the finer one plus 1e-6 of the scale (v, v/R)."""
+    path = bundled("silica_oblique")
+    data, fragment = export(path)
+    assert "tangential mindlin NULL 0 0.3 rolling sds" in data["model_keywords"], data["model_keywords"]
+    for speed, angle in ((0.3, 10.0), (1.0, 30.0)):
+        t = json.loads(tabor("impact", path, "--speed", repr(speed), "--angle", repr(angle), "--json"))
+        dt = t["oblique"]["contact_time"] / 8000.0
+        reach = 2.0 * pulloff(data)
+        coarse = collide_oblique(fragment, data["bodies"], speed, angle, dt, reach)
+        fine = collide_oblique(fragment, data["bodies"], speed, angle, dt / 2.0, reach)
+        r = data["bodies"]["sphere_radius"]
+        for body in ("sphere", "target"):
+            for field, scale in (("velocity", speed), ("angular_velocity", speed / r)):
+                for k in range(3):
+                    ours = t["after"][body][field][k]
+                    lf, lc = fine[body][field][k], coarse[body][field][k]
+                    tol = 2.0 * abs(lc - lf) + 1e-6 * scale
+                    if body == "sphere" and field == "velocity" and k < 2 or field == "angular_velocity" and k == 2 and body == "sphere":
+                        RESULTS.append(("oblique", f"silica_oblique {angle} deg {body}.{field}[{k}]", speed, lf, ours, lf - ours, tol))
+                    assert abs(ours - lf) <= tol, (speed, angle, body, field, k, ours, lf, lc)
 
 
 def test_graded_refused():

@@ -184,6 +184,9 @@ pub(crate) struct Adhesion {
     pub gamma: f64,
     /// The sticking velocity of the scene's elastic-adhesive part (m/s).
     pub sticking_velocity: f64,
+    /// The scene's own pull-off force (N, > 0): (3/2)πwR* for JKR, the most
+    /// tensile force of the Maugis-Dugdale impact branch.
+    pub pull_off: f64,
     pub speed_independent: bool,
 }
 
@@ -255,9 +258,16 @@ pub(crate) fn calibrate_adhesion(
         unit: "m".into(),
         derivation: "LAMMPS keeps the jkr contact to the load-controlled point delta = -(3 pi^2 gamma^2 R*/(16 E*^2))^(1/3); the neighbor list must reach it (pair granular extends its cutoff itself)".into(),
     });
+    let pull_off = match s.scene.tabor_parameter() {
+        Some(l) => -tabor_ffi::ContactLaw::maugis_dugdale(e_star, r, a.work_of_adhesion, l)
+            .map_err(model_err)?
+            .pull_off_force(),
+        None => 1.5 * PI * a.work_of_adhesion * r,
+    };
     Ok(Adhesion {
         gamma,
         sticking_velocity: vc,
+        pull_off,
         speed_independent,
     })
 }

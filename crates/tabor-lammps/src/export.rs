@@ -6,7 +6,10 @@
 use crate::calibrate::{
     calibrate_adhesion, calibrate_damping, lammps_sticking_velocity, setup, undamped_model, Setup,
 };
-use crate::fragment::{commands, model_keywords};
+use crate::fragment::{commands, keywords};
+use crate::friction::{
+    friction_keywords, friction_limits, null_stiffness_fits, scene_friction, FRICTIONLESS,
+};
 use crate::impact::STICKING_TOLERANCE;
 use crate::law::GranularModel;
 use crate::report::{
@@ -65,19 +68,35 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
     };
     let verification = verify(&s, &model, scope, v_ref, sticking)?;
     limits.extend(verification.limits);
+    let friction = scene_friction(scene)?;
+    let friction_kw = friction.as_ref().map(|f| {
+        friction_keywords(
+            f,
+            s.geometry == crate::report::Geometry::Pair
+                && null_stiffness_fits(scene, f, s.e_lammps, s.nu),
+        )
+    });
+    limits.extend(friction_limits(
+        friction.as_ref(),
+        adhesion
+            .as_ref()
+            .map(|a| (lammps_pull_off(&model, s.r), a.pull_off)),
+        !s.lossy.is_empty(),
+    ));
     let lammps_sticking = if s.adhesive {
         lammps_sticking_velocity(&model, &s, sticking.unwrap_or(v_ref), STICKING_TOLERANCE)?
     } else {
         None
     };
     let contact_time = contact_time(&s, &model, v_ref)?;
-    let keywords = model_keywords(&model);
+    let keywords = keywords(&model, friction_kw.as_deref().unwrap_or(FRICTIONLESS));
     Ok(Export {
         scene: scene.name.clone(),
         geometry: s.geometry,
         model,
         commands: commands(s.geometry, &keywords),
         model_keywords: keywords,
+        friction: friction_kw,
         parameters,
         reproduces: verification.claim,
         does_not_reproduce: limits,
@@ -97,6 +116,16 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
         time_step: contact_time * TIME_STEP_FRACTION,
         comparison: verification.comparison,
     })
+}
+
+/// The pull-off force of LAMMPS's `jkr` (N): 3πγR*.
+fn lammps_pull_off(model: &GranularModel, r: f64) -> f64 {
+    match model.normal {
+        crate::law::NormalModel::Jkr { surface_energy, .. } => {
+            3.0 * std::f64::consts::PI * surface_energy * r
+        }
+        _ => 0.0,
+    }
 }
 
 /// E = 2E*(1 − ν²), so that one `pair_coeff * *` mixes back to the scene's E*.

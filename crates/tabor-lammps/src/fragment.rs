@@ -1,6 +1,7 @@
 //! The text of an export: the model keywords LAMMPS reads, the commands, and the
 //! commented fragment (`Export::fragment`).
 
+use crate::friction::FRICTIONLESS;
 use crate::law::{GranularModel, NormalModel};
 use crate::report::{Export, Geometry};
 
@@ -8,8 +9,15 @@ fn fmt_num(x: f64) -> String {
     format!("{x:.10e}")
 }
 
-/// The model keywords LAMMPS reads after `pair_coeff * *` or `wall/gran granular`.
+/// The model keywords LAMMPS reads after `pair_coeff * *` or `wall/gran granular`,
+/// for a frictionless central impact ([`FRICTIONLESS`]).
 pub fn model_keywords(m: &GranularModel) -> String {
+    keywords(m, FRICTIONLESS)
+}
+
+/// The model keywords with the tangential, rolling and twisting keywords `sub`
+/// (`crate::friction::friction_keywords`, or [`FRICTIONLESS`]).
+pub(crate) fn keywords(m: &GranularModel, sub: &str) -> String {
     let normal = match m.normal {
         NormalModel::Hooke { stiffness } => {
             format!("hooke {} {}", fmt_num(stiffness), fmt_num(m.damp))
@@ -50,7 +58,7 @@ pub fn model_keywords(m: &GranularModel) -> String {
         ),
     };
     format!(
-        "{normal} tangential linear_nohistory 0.0 0.0 damping {}{}",
+        "{normal} {sub} damping {}{}",
         m.damping.keyword(),
         if m.limit_damping {
             " limit_damping"
@@ -94,7 +102,13 @@ impl Export {
                 Geometry::Wall => "sphere on a flat wall: fix wall/gran granular",
             }
         ));
-        line("# Include after atom_style sphere / create_box (units si; LAMMPS's defaults, newton unchanged). Frictionless central impact.");
+        line(&format!(
+            "# Include after atom_style sphere / create_box (units si; LAMMPS's defaults, newton unchanged). {}",
+            match &self.friction {
+                Some(f) => format!("Friction, rolling and twisting from the scene's [friction]: pair granular's own sub-models ({f}); the claims below are about the normal restitution."),
+                None => "Frictionless central impact.".to_string(),
+            }
+        ));
         line(&format!(
             "# LAMMPS model: {} + damping {}{}",
             self.model.normal.keyword(),

@@ -2,6 +2,7 @@
 //! `integrations/lammps/plugin`, which evaluates tabor's force laws themselves
 //! (through `tabor-ffi`) instead of LAMMPS's `jkr` with an effective γ.
 
+use crate::friction::{friction_keywords, null_stiffness_fits, scene_friction};
 use crate::report::{ExportError, Geometry};
 use serde::Serialize;
 use std::fmt::Display;
@@ -277,6 +278,25 @@ pub fn export_plugin(
     if let Some(a) = a_time {
         coeff += &format!(" damping {}", fmt(a));
     }
+    // the scene's [friction] with pair granular's keywords (k_t NULL: the plugin
+    // computes 8 G* from E* and `poisson nu`, for two bodies of one material)
+    let friction = scene_friction(scene)?;
+    let friction_kw = friction.as_ref().map(|f| {
+        let nu = scene.sphere.material.poisson_ratio();
+        let null = null_stiffness_fits(scene, f, 2.0 * e_star * (1.0 - nu * nu), nu);
+        format!(
+            "{}{}",
+            if null {
+                format!("poisson {nu} ")
+            } else {
+                String::new()
+            },
+            friction_keywords(f, null)
+        )
+    });
+    if let Some(k) = &friction_kw {
+        coeff += &format!(" {k}");
+    }
     // every line is legal after create_box with LAMMPS's defaults: the fragment
     // does not change `newton` (the pair style works with either setting)
     let commands = vec![
@@ -318,8 +338,17 @@ pub fn export_plugin(
         ));
     }
     reproduces.push("the contact radius and the force along the whole loading and unloading path (tables: |dF|/F_n <= 2e-6 adhesive part, 3e-11 Hertzian part; see crates/tabor-ffi/README.md)".into());
+    if let Some(k) = &friction_kw {
+        reproduces.push(format!(
+            "the scene's friction, rolling and twisting ({k}): tabor's tangential models, which follow pair granular's (the Coulomb limits with tabor's own pull-off force)"
+        ));
+    }
     let mut limits = vec![
-        "tangential, rolling and twisting contact: normal forces only, no torques (add your own tangential model with a separate pair style if needed)".to_string(),
+        if friction_kw.is_some() {
+            "energy per mechanism: LAMMPS reports no work of friction, rolling or twisting (tabor impact --angle does)".to_string()
+        } else {
+            "tangential, rolling and twisting contact: the scene has no [friction], normal forces only (give a [friction] section for pair granular's sub-models)".to_string()
+        },
         "energy tally: the pair style tallies no energy (its contact histories are written to restart files; after read_restart include this fragment again)".to_string(),
         "the neighbor skin must stay at least the interaction range (checked at run)".to_string(),
         "Maugis-Dugdale keeps Lambda fixed for every effective radius of a polydisperse system (the range h = d_n(R*)/Lambda grows as R*^(1/3))".to_string(),

@@ -236,6 +236,9 @@ pub struct Export {
     pub model: GranularModel,
     /// The model keywords (after `pair_coeff * *` or `wall/gran granular`).
     pub model_keywords: String,
+    /// The tangential, rolling and twisting keywords from the scene's `[friction]`
+    /// (part of `model_keywords`), `None` without friction.
+    pub friction: Option<String>,
     /// The LAMMPS commands of the fragment.
     pub commands: Vec<String>,
     /// Every calibrated number and how it was obtained.

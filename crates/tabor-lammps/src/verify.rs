@@ -287,11 +287,6 @@ fn effect_limits(s: &Setup, v_ref: f64, v_top: f64) -> Result<(Vec<Limit>, f64),
             ),
         });
     }
-    limits.push(Limit {
-        effect: "friction".into(),
-        from_speed: None,
-        note: "tangential, rolling and twisting contact: the fragment is for frictionless central impact (tangential linear_nohistory 0 0); set your own".into(),
-    });
     if s.geometry == crate::report::Geometry::Pair
         && s.scene.sphere.material != s.scene.target.material
     {
