@@ -63,9 +63,9 @@ pub fn friction_keywords(f: &Friction, null: bool) -> String {
 
 /// Whether LAMMPS's `mindlin NULL` gives the scene's Mindlin stiffness 8G*, when
 /// it computes G* from the modulus `e` and Poisson ratio `nu` of one material:
-/// G = E/(2(1 + ν)), 1/G* = 2(2 − ν)/G (`pair granular`'s mixing of a `pair_coeff
-/// * *`; `pair_style tabor` computes E*(1 − ν)/(2(2 − ν)) from its E* =
-/// E/(2(1 − ν²)), the same). Only when the scene gives no stiffness of its own.
+/// G = E/(2(1 + ν)), 1/G* = 2(2 − ν)/G (`pair granular`'s mixing of one
+/// `pair_coeff`; `pair_style tabor` computes E*(1 − ν)/(2(2 − ν)) from its
+/// E* = E/(2(1 − ν²)), the same). Only when the scene gives no stiffness of its own.
 pub(crate) fn null_stiffness_fits(scene: &Scene, f: &Friction, e: f64, nu: f64) -> bool {
     let given = scene
         .data()
