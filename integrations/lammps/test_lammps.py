@@ -210,6 +210,38 @@ def test_friction_fragment_in_an_oblique_collision():
                     assert abs(ours - lf) <= tol, (speed, angle, body, field, k, ours, lf, lc)
 
 
+def test_plugin_friction_fragment_in_an_oblique_collision():
+    """The same for `tabor export lammps --plugin` (pair_style tabor with the
+    scene's friction keywords), run when TABOR_PLUGIN names the built plugin
+    (test_plugin.sh runs this test after building it; without it: skipped)."""
+    plugin = os.environ.get("TABOR_PLUGIN", "")
+    if not os.path.isfile(plugin):
+        print("  skipped: TABOR_PLUGIN is not a built plugin (integrations/lammps/test_plugin.sh runs it)")
+        return
+    path = bundled("silica_oblique")
+    data = json.loads(tabor("export", "lammps", path, "--plugin", plugin, "--json"))
+    fragment = tabor("export", "lammps", path, "--plugin", plugin)
+    coeff = next(c for c in data["commands"] if c.startswith("pair_coeff"))
+    assert "poisson 0.17 tangential mindlin NULL 0 0.3 rolling sds" in coeff, coeff
+    bodies = {"sphere_radius": 1e-6, "sphere_density": 2650.0,
+              "target_radius": 1e-6, "target_density": 2650.0}
+    for speed, angle in ((0.3, 10.0), (1.0, 30.0)):
+        t = json.loads(tabor("impact", path, "--speed", repr(speed), "--angle", repr(angle), "--json"))
+        dt = t["oblique"]["contact_time"] / 8000.0
+        reach = 2.0 * data["interaction_range"]
+        coarse = collide_oblique(fragment, bodies, speed, angle, dt, reach)
+        fine = collide_oblique(fragment, bodies, speed, angle, dt / 2.0, reach)
+        for body in ("sphere", "target"):
+            for field, scale in (("velocity", speed), ("angular_velocity", speed / 1e-6)):
+                for k in range(3):
+                    ours = t["after"][body][field][k]
+                    lf, lc = fine[body][field][k], coarse[body][field][k]
+                    tol = 2.0 * abs(lc - lf) + 1e-6 * scale
+                    if body == "sphere" and (field == "velocity" and k < 2 or field == "angular_velocity" and k == 2):
+                        RESULTS.append(("plugin oblique", f"silica_oblique {angle} deg {body}.{field}[{k}]", speed, lf, ours, lf - ours, tol))
+                    assert abs(ours - lf) <= tol, (speed, angle, body, field, k, ours, lf, lc)
+
+
 def test_graded_refused():
     r = subprocess.run([TABOR, "export", "lammps", os.path.join(ROOT, "examples", "scenes",
                                                                 "graded_adhesive.toml")],

@@ -23,5 +23,6 @@ export OBLIQUE_LIBRARY="$TARGET/release/examples/oblique_library"
 export PATH="$VENV/bin:$PATH"
 "$VENV/bin/python" "$HERE/test_plugin.py" "$@"
 "$VENV/bin/python" "$HERE/test_plugin_friction.py"
+"$VENV/bin/python" "$HERE/test_lammps.py" plugin_friction  # the exported --plugin fragment with [friction], oblique (export branch)
 if [ -f "$HERE/test_plugin_cloud.py" ]; then "$VENV/bin/python" "$HERE/test_plugin_cloud.py"; fi
 CLOUD_PLUGIN="$PLUGIN" CLOUD_OUT="$TARGET/lammps-cloud-plugin" bash "$ROOT/examples/lammps/run.sh"
