@@ -66,7 +66,12 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
     } else {
         Scope::CalibrationSpeed
     };
-    let verification = verify(&s, &model, scope, v_ref, sticking)?;
+    let lammps_sticking = if s.adhesive {
+        lammps_sticking_velocity(&model, &s, sticking.unwrap_or(v_ref), STICKING_TOLERANCE)?
+    } else {
+        None
+    };
+    let verification = verify(&s, &model, scope, v_ref, (sticking, lammps_sticking))?;
     limits.extend(verification.limits);
     let friction = scene_friction(scene)?;
     let friction_kw = friction.as_ref().map(|f| {
@@ -83,11 +88,6 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
             .map(|a| (lammps_pull_off(&model, s.r), a.pull_off)),
         !s.lossy.is_empty(),
     ));
-    let lammps_sticking = if s.adhesive {
-        lammps_sticking_velocity(&model, &s, sticking.unwrap_or(v_ref), STICKING_TOLERANCE)?
-    } else {
-        None
-    };
     let contact_time = contact_time(&s, &model, v_ref)?;
     let keywords = keywords(&model, friction_kw.as_deref().unwrap_or(FRICTIONLESS));
     Ok(Export {

@@ -147,6 +147,9 @@ pub enum RangeEnd {
     EffectOnset,
     /// LAMMPS's restitution leaves the error bound there.
     ErrorBound,
+    /// tabor's scene gives no outcome at the next grid speed (the error is in
+    /// [`Export::does_not_reproduce`]).
+    NoAnswer,
 }
 
 /// What an export claims: the speeds over which LAMMPS's restitution stays within

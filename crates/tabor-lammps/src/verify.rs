@@ -101,27 +101,65 @@ pub(crate) struct Verification {
     pub limits: Vec<Limit>,
 }
 
+/// The relative difference of tabor's and the LAMMPS model's sticking velocities
+/// up to which a claim may span them: LAMMPS resolves a sticking velocity to about
+/// its time-step error.
+const STICKING_AGREEMENT: f64 = 1e-3;
+
 /// Compares tabor with `model` around `v_ref`, finds the onsets of the effects the
-/// model leaves out, and draws the claim. `sticking_velocity` is tabor's (to
-/// say whether the claim covers it).
+/// model leaves out, and draws the claim. `(sticking_velocity, lammps_sticking)`
+/// are tabor's and the model's sticking velocities: where they differ (or tabor's
+/// is unknown) the claim starts above both, since between them one model sticks
+/// and the other rebounds.
 pub(crate) fn verify(
     s: &Setup,
     model: &GranularModel,
     scope: Scope,
     v_ref: f64,
-    sticking_velocity: Option<f64>,
+    (sticking_velocity, lammps_sticking): (Option<f64>, Option<f64>),
 ) -> Result<Verification, ExportError> {
     let probe = Probe {
         s,
         lammps: LammpsImpact::new(*model, s.r, s.m).map_err(model_err)?,
         scope,
     };
-    let (speeds, mid) = grid(v_ref, s.v_small_strain);
-    let mut comparison = speeds
+    let (mut speeds, mid) = grid(v_ref, s.v_small_strain);
+    // the grid stops, on each side, before the first speed where tabor's scene
+    // has no answer (named in the limits); at the reference speed it must answer
+    let mut answers: Vec<Result<SpeedComparison, ExportError>> =
+        speeds.iter().map(|&v| probe.compare(v)).collect();
+    if let Err(e) = &answers[mid] {
+        return Err(e.clone());
+    }
+    let first = answers[..mid]
         .iter()
-        .map(|&v| probe.compare(v))
-        .collect::<Result<Vec<_>, _>>()?;
-    let (limits, cap) = effect_limits(s, v_ref, speeds[speeds.len() - 1])?;
+        .rposition(|a| a.is_err())
+        .map_or(0, |i| i + 1);
+    let last = answers[mid..]
+        .iter()
+        .position(|a| a.is_err())
+        .map_or(speeds.len(), |i| mid + i);
+    let mut no_answer = Vec::new();
+    for (i, side) in [(first.checked_sub(1), "below"), (Some(last), "above")] {
+        if let Some(Err(e)) = i.and_then(|i| answers.get(i)) {
+            no_answer.push((side, speeds[i.unwrap_or(0)], e.to_string()));
+        }
+    }
+    let cut = [first > 0, last < speeds.len()];
+    answers.truncate(last);
+    let mut comparison = answers.drain(first..).collect::<Result<Vec<_>, _>>()?;
+    speeds = speeds[first..last].to_vec();
+    let mid = mid - first;
+    let (mut limits, cap) = effect_limits(s, v_ref, speeds[speeds.len() - 1])?;
+    for (side, v, e) in &no_answer {
+        limits.push(Limit {
+            effect: "no tabor answer".into(),
+            from_speed: (*side == "above").then_some(*v),
+            note: format!(
+                "the comparison stops {side} {v:.4e} m/s, where tabor's scene gives no outcome ({e})"
+            ),
+        });
+    }
     let ok: Vec<bool> = comparison.iter().map(|c| probe.within(c)).collect();
     let mut extra_error: f64 = 0.0;
     let mut range = [v_ref, v_ref];
@@ -134,7 +172,11 @@ pub(crate) fn verify(
         }
         range[0] = speeds[lo];
         if lo == 0 {
-            ends[0] = RangeEnd::Grid;
+            ends[0] = if cut[0] {
+                RangeEnd::NoAnswer
+            } else {
+                RangeEnd::Grid
+            };
         } else {
             let (edge, err) = refine(&probe, speeds[lo], speeds[lo - 1])?;
             range[0] = edge;
@@ -147,14 +189,16 @@ pub(crate) fn verify(
         }
         range[1] = speeds[hi];
         if hi + 1 == speeds.len() {
-            ends[1] = if speeds[hi] < v_ref * 10f64.powi(DECADES) * (1.0 - 1e-12) {
+            ends[1] = if cut[1] {
+                RangeEnd::NoAnswer
+            } else if speeds[hi] < v_ref * 10f64.powi(DECADES) * (1.0 - 1e-12) {
                 RangeEnd::SmallStrain
             } else {
                 RangeEnd::Grid
             };
         } else if speeds[hi + 1] > cap {
-            let at_cap = probe.compare(cap)?;
-            if probe.within(&at_cap) {
+            let at_cap = probe.compare(cap).ok().filter(|c| probe.within(c));
+            if let Some(at_cap) = at_cap {
                 range[1] = cap;
                 ends[1] = RangeEnd::EffectOnset;
                 extra_error = extra_error.max(at_cap.difference.abs());
@@ -166,6 +210,17 @@ pub(crate) fn verify(
         } else {
             let (edge, err) = refine(&probe, speeds[hi], speeds[hi + 1])?;
             range[1] = edge;
+            extra_error = extra_error.max(err);
+        }
+    }
+    if let Some(v_l) = lammps_sticking {
+        let agree =
+            sticking_velocity.is_some_and(|v_t| (v_l / v_t - 1.0).abs() <= STICKING_AGREEMENT);
+        let above = v_l.max(sticking_velocity.unwrap_or(0.0));
+        if ok[mid] && !agree && range[0] <= above && above < v_ref {
+            let (edge, err) = refine(&probe, v_ref, above)?;
+            range[0] = edge;
+            ends[0] = RangeEnd::ErrorBound;
             extra_error = extra_error.max(err);
         }
     }
@@ -216,14 +271,17 @@ pub(crate) fn verify(
 /// [`EDGE_RESOLUTION`]; returns it with the largest difference met inside.
 fn refine(probe: &Probe, good: f64, bad: f64) -> Result<(f64, f64), ExportError> {
     let mut worst: f64 = 0.0;
+    // a speed without an answer is outside the claim
     let edge = geometric_edge(
         |v| {
-            let c = probe.compare(v)?;
+            let Ok(c) = probe.compare(v) else {
+                return Ok::<bool, ExportError>(false);
+            };
             let ok = probe.within(&c);
             if ok {
                 worst = worst.max(c.difference.abs());
             }
-            Ok::<bool, ExportError>(ok)
+            Ok(ok)
         },
         good,
         bad,
@@ -305,6 +363,7 @@ fn end_phrase(end: RangeEnd) -> &'static str {
         RangeEnd::SmallStrain => "small strain ends (Hertz d_max = R*)",
         RangeEnd::EffectOnset => "an effect this model leaves out sets in (see DOES NOT REPRODUCE)",
         RangeEnd::ErrorBound => "the difference leaves the bound",
+        RangeEnd::NoAnswer => "tabor's scene gives no outcome (see DOES NOT REPRODUCE)",
     }
 }
 
