@@ -27,7 +27,7 @@ pub use checks::Warning;
 pub use combine::LossSum;
 pub use effective::ElasticMaterial;
 pub use error::Error;
-pub use model::{EnergyLoss, ImpactModel};
+pub use model::{EnergyLoss, ImpactModel, SpeedLimit};
 pub use outcome::{
     impact, restitution_from_loss, sticking_velocity, ImpactOutcome, StickingMethod,
     StickingVelocity,

@@ -151,6 +151,13 @@ pub enum Rule {
     /// The sum of the effects' losses, seed 000 (5.109) generalized; reported with
     /// a warning.
     Superposition,
+    /// Adhesion + plasticity where the adhesive-interpolation or
+    /// adhesive-plastic-excess rule takes its lower bound: the superposition (5.109)
+    /// of the adhesive and the non-adhesive plastic losses, which dissipates more
+    /// than the adhesive interpolation model there; reported with the
+    /// superposition's warning. Never returned by [`rule`] (it depends on the
+    /// speed), only in outcomes.
+    SuperpositionBound,
 }
 
 impl Rule {
@@ -163,6 +170,7 @@ impl Rule {
             Rule::AdhesivePlasticExcess => "adhesive-plastic-excess",
             Rule::ViscousAdhesive => "viscous-adhesive",
             Rule::Superposition => "superposition",
+            Rule::SuperpositionBound => "superposition-bound",
         }
     }
 
@@ -181,6 +189,9 @@ impl Rule {
                 "tabor (crates/tabor-viscoadhesive/README.md): adhesive force + Kuwabara-Kono force (5.66) with the adhesive contact radius"
             }
             Rule::Superposition => "seed 000 (5.109): the losses are added",
+            Rule::SuperpositionBound => {
+                "seed 000 (5.109): the adhesive and plastic losses added, the lower bound of the adhesive interpolation rules where the adhesive interpolation model (5.111)-(5.126) dissipates less (crates/tabor-scene/README.md)"
+            }
         }
     }
 }
