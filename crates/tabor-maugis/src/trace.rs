@@ -2,7 +2,10 @@
 //! loading, unloading, pull-off. For plots, and as the force law of a time-domain
 //! simulation ([`equilibrium_state`]).
 
-use crate::branch::{contact_state, junction_factor, no_contact_pull_off_radius, no_contact_state};
+use crate::branch::{
+    contact_state, junction_factor, no_contact_pull_off_radius, no_contact_state,
+    ContactBranchState,
+};
 use crate::impact::{check_lambda, impact_path, theta_at_depth, PathState, TaborCase};
 use serde::Serialize;
 use std::f64::consts::FRAC_PI_2;
@@ -76,6 +79,32 @@ pub(crate) fn equilibrium_state_on(
     depth: f64,
     cost: &mut Cost,
 ) -> Result<PathState> {
+    equilibrium_state_near(path, depth, None, cost).map(|(s, _)| s)
+}
+
+/// A state on the contact branch where the solve for θ may start: its depth d̂,
+/// θ and the slope dd̂/dθ there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct BranchPoint {
+    pub(crate) depth: f64,
+    pub(crate) theta: f64,
+    pub(crate) depth_slope: f64,
+}
+
+/// [`equilibrium_state_on`] warm-started from `near`, a solved state at a nearby
+/// depth: on the contact branch, Newton's method for `d̂(θ) = depth` starts from
+/// the tangent prediction `θ + (depth − d̂)/(dd̂/dθ)` of `near` (one Newton step
+/// for free) and is kept in the bracket `(0, θ_top]` by bisection; it stops when the
+/// Newton correction is below 1e-15 θ and returns the state evaluated there (two or
+/// three evaluations of the branch for the steps of an ODE integrator, against
+/// eight to ten from a cold start). Also returns the point to start the next solve
+/// from (`None` on the no-contact part, which is solved in closed form).
+pub(crate) fn equilibrium_state_near(
+    path: &crate::impact::ImpactPath,
+    depth: f64,
+    near: Option<BranchPoint>,
+    cost: &mut Cost,
+) -> Result<(PathState, Option<BranchPoint>)> {
     let lambda = path.lambda;
     if depth < path.pull_off.depth {
         return Err(Error::invalid(
@@ -95,29 +124,87 @@ pub(crate) fn equilibrium_state_on(
             let disc = (9.0 * bc * bc + 6.0 * c).max(0.0);
             let b = (3.0 * bc + disc.sqrt()) / 3.0;
             let s = no_contact_state(lambda, b);
-            return Ok(PathState {
-                contact_radius: 0.0,
-                cohesive_radius: b,
-                depth: s.depth,
-                force: s.force,
-                theta: None,
-            });
+            return Ok((
+                PathState {
+                    contact_radius: 0.0,
+                    cohesive_radius: b,
+                    depth: s.depth,
+                    force: s.force,
+                    theta: None,
+                },
+                None,
+            ));
         }
     }
     let theta_top = path.pull_off.theta.unwrap_or(FRAC_PI_2);
     if depth == path.pull_off.depth && path.pull_off.theta.is_some() {
-        return Ok(path.pull_off);
+        return Ok((path.pull_off, None));
     }
-    let theta = theta_at_depth(lambda, depth, theta_top, cost)?;
-    let s = contact_state(lambda, theta);
-    Ok(PathState {
+    let s = match near.and_then(|p| theta_near(lambda, depth, theta_top, p, cost)) {
+        Some(s) => s,
+        None => contact_state(lambda, theta_at_depth(lambda, depth, theta_top, cost)?),
+    };
+    let state = PathState {
         contact_radius: s.contact_radius,
         cohesive_radius: s.cohesive_radius,
         depth: s.depth,
         force: s.force,
-        theta: Some(theta),
-    })
+        theta: Some(s.theta),
+    };
+    let next = BranchPoint {
+        depth: s.depth,
+        theta: s.theta,
+        depth_slope: s.depth_slope,
+    };
+    Ok((state, Some(next)))
 }
+
+/// The contact-branch state at depth `target` by Newton's method from the tangent
+/// prediction of `near`, in the bracket `(0, θ_top]` where d̂ decreases in θ; `None`
+/// when the start is unusable or the iteration does not settle (the caller then
+/// starts cold).
+fn theta_near(
+    lambda: f64,
+    target: f64,
+    theta_top: f64,
+    near: BranchPoint,
+    cost: &mut Cost,
+) -> Option<ContactBranchState> {
+    let (mut lo, mut hi) = (0.0, theta_top);
+    let mut theta = near.theta + (target - near.depth) / near.depth_slope;
+    if !(theta > lo && theta < hi) {
+        theta = near.theta;
+    }
+    if !(theta > lo && theta <= hi) {
+        return None;
+    }
+    for _ in 0..WARM_MAX_STEPS {
+        let s = contact_state(lambda, theta);
+        *cost += Cost::new(1, 1);
+        let residual = s.depth - target;
+        if residual > 0.0 {
+            lo = theta;
+        } else {
+            hi = theta;
+        }
+        let step = residual / s.depth_slope;
+        if residual == 0.0 || step.abs() <= 1e-15 * theta {
+            return Some(s);
+        }
+        theta -= step;
+        if !(theta > lo && theta < hi) {
+            theta = 0.5 * (lo + hi);
+        }
+        if !step.is_finite() || hi - lo <= 1e-15 * theta {
+            return None;
+        }
+    }
+    None
+}
+
+/// Steps of [`theta_near`] before it gives up (Newton from a nearby state takes a
+/// handful; bisection would need about 50 to reach 1e-15).
+const WARM_MAX_STEPS: usize = 60;
 
 /// Traces F̂(d̂), â and b̂ along an impact at Tabor parameter Λ that reaches the
 /// maximum depth `max_depth` (d̂ ≥ −1/Λ), with `points` points on each of the
