@@ -5,6 +5,9 @@
 //! - [`DormandPrince`] (module `dormand_prince`): explicit Runge-Kutta 5(4) with a
 //!   4th-order dense output, for non-stiff systems; [`solve`] and
 //!   [`solve_until_event`] integrate with it;
+//! - [`DormandPrince853`] (module `dop853`): explicit Runge-Kutta of order 8 with a
+//!   7th-order dense output prepared on demand, for tight tolerances (the impact
+//!   simulator of `tabor-dynamics`);
 //! - [`rosenbrock`]: the L-stable Rosenbrock methods Rodas5P (default) and RODAS4,
 //!   for stiff systems.
 //!
@@ -16,9 +19,11 @@
 //!   step with Brent's method ([`crate::root_finding::brent`]), so locating them
 //!   costs no evaluations of `f`;
 //! - [`DenseStepper`]: the interface of a one-step integrator with dense output;
-//! - [`drive`]: the one step-and-locate-event loop, with an observer called after
-//!   every accepted step (to record a trajectory or watch the state); every solver
-//!   and phase integration in the workspace is built on it;
+//! - [`drive`] and [`drive_events`]: the one step-and-locate-event loop (one event
+//!   function, or several of which the earliest crossing wins), with an observer
+//!   called after every accepted step (to record a trajectory or watch the state);
+//!   every solver, phase integration and the impact simulator of the workspace is
+//!   built on it;
 //! - [`OdeSolution`], [`Integration`]: what a driver returns.
 //!
 //! The state is a fixed-size array `[f64; N]` (no allocation per step).
