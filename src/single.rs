@@ -82,14 +82,14 @@ impl Error {
 pub(crate) fn required(
     value: Option<f64>,
     name: &str,
-    model: &str,
+    model: impl std::fmt::Display,
     naming: Naming,
 ) -> Result<f64, Error> {
     value.ok_or_else(|| {
         Error::Input(format!(
             "missing {}: required by {}",
             naming.input(name),
-            naming.choice("model", model)
+            naming.choice("model", &model.to_string())
         ))
     })
 }

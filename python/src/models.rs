@@ -347,9 +347,9 @@ pub fn visco<'py>(
     let wanted = model.replace('_', "-");
     let which = ViscoModel::ALL
         .into_iter()
-        .find(|m| m.name() == wanted)
+        .find(|m| m.as_str() == wanted)
         .ok_or_else(|| {
-            let names: Vec<&str> = ViscoModel::ALL.iter().map(|m| m.name()).collect();
+            let names: Vec<&str> = ViscoModel::ALL.iter().map(|m| m.as_str()).collect();
             PyValueError::new_err(format!(
                 "invalid model = \"{model}\": expected one of {}",
                 names.join(", ")

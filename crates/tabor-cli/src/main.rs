@@ -7,6 +7,7 @@
 //! code 0. Output conventions: `output.rs` and the crate README.
 
 mod cmd;
+mod menu;
 mod output;
 
 use clap::{CommandFactory, Parser, Subcommand};

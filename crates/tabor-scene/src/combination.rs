@@ -153,19 +153,20 @@ pub enum Rule {
     Superposition,
 }
 
-impl Rule {
-    /// The rule's name in outputs.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Rule::Elastic => "elastic",
-            Rule::Single => "single-effect",
-            Rule::AdhesiveInterpolation => "adhesive-interpolation",
-            Rule::AdhesivePlasticExcess => "adhesive-plastic-excess",
-            Rule::ViscousAdhesive => "viscous-adhesive",
-            Rule::Superposition => "superposition",
-        }
-    }
+tabor_restitution::menu! {
+    Rule, "combination rule";
+    Elastic => "elastic", "no dissipative effect: the elastic impact (5.5)-(5.12)";
+    Single => "single-effect", "one effect: its own model";
+    AdhesiveInterpolation => "adhesive-interpolation",
+        "JKR fixed grip + interpolation plasticity: (5.111)-(5.126), at least the superposition (5.109)";
+    AdhesivePlasticExcess => "adhesive-plastic-excess",
+        "a range or load-controlled adhesion + plasticity: elastic adhesive loss + the plastic part of (5.111)-(5.126)";
+    ViscousAdhesive => "viscous-adhesive",
+        "adhesion + Kelvin-Voigt viscosity: adhesive force + Kuwabara-Kono force (5.66), simulated";
+    Superposition => "superposition", "the sum of the effects' losses (5.109)";
+}
 
+impl Rule {
     /// Where the rule comes from.
     pub fn source(self) -> &'static str {
         match self {

@@ -55,6 +55,13 @@ pub enum DampingLaw {
     HuntCrossley,
 }
 
+tabor_restitution::menu! {
+    DampingLaw, "damping law";
+    LeeHerrmann => "lee-herrmann", "linear damping, β = 0 (5.72)";
+    Tsuji => "tsuji", "β = 1/4 (5.72), with (5.73)";
+    HuntCrossley => "hunt-crossley", "β = 3/2 (5.72)";
+}
+
 impl DampingLaw {
     /// The exponent β of (5.72).
     ///

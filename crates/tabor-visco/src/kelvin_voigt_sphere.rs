@@ -48,14 +48,10 @@ pub enum SphereModel {
     Rigorous,
 }
 
-impl SphereModel {
-    /// A short name ("kuwabara-kono", "rigorous").
-    pub fn as_str(self) -> &'static str {
-        match self {
-            SphereModel::KuwabaraKono => "kuwabara-kono",
-            SphereModel::Rigorous => "rigorous",
-        }
-    }
+tabor_restitution::menu! {
+    SphereModel, "Kelvin-Voigt sphere model";
+    KuwabaraKono => "kuwabara-kono", "Kuwabara-Kono: (5.66) during the whole impact";
+    Rigorous => "rigorous", "compression (5.64)-(5.66) and restitution (5.64), (5.67) apart (MDR)";
 }
 
 /// The scaled damping coefficient `c = 8 (15/64)^(3/5) δ` of the scaled (5.66).
