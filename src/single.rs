@@ -6,8 +6,9 @@
 //!
 //! A bad input is reported as the library's
 //! [`Error`](crate::restitution::Error) (which names the library parameter, e.g.
-//! `effective_modulus`); each front end renders it under its own name for the
-//! input (`--modulus` on the command line, `modulus` in Python).
+//! `effective_modulus`); [`INPUT_NAMES`] is the one table from those names to the
+//! inputs' names, and [`Naming`] spells an input as each front end does
+//! (`--modulus` on the command line, `modulus` in Python): [`Error::render`].
 
 pub mod effective;
 pub mod jkr;
@@ -26,7 +27,72 @@ pub enum Naming {
     Keywords,
 }
 
+/// The library's parameter names (as [`InvalidParameter`](restitution::Error::InvalidParameter)
+/// spells them) that belong to an input of the `*Args` here, with the input's
+/// name (snake_case, the field of the `*Args`; the flag and the keyword are
+/// spelled from it by [`Naming::input`]). The one such table: the command line
+/// and the Python package both render errors through it. A library name without
+/// an entry is printed as the library spells it. (`tabor effective` names the
+/// parameters of its two bodies itself, as its inputs differ between them.)
+pub const INPUT_NAMES: &[(&str, &str)] = &[
+    ("effective_modulus", "modulus"),
+    ("effective_radius", "radius"),
+    ("effective_mass", "mass"),
+    ("mass", "mass"),
+    ("work_of_adhesion", "work_of_adhesion"),
+    ("impact_speed", "speed"),
+    ("tolerance", "tolerance"),
+    ("yield_stress", "yield_stress"),
+    ("poisson_ratio", "poisson_ratio"),
+    ("density", "density"),
+    ("adhesion_parameter", "adhesion_parameter"),
+    ("restitution", "restitution"),
+    ("stiffness", "stiffness"),
+    ("exponent", "exponent"),
+    ("rounding", "rounding"),
+    ("damping_ratio", "damping_ratio"),
+    ("shear_damping_ratio", "damping_ratio"),
+    ("viscous_parameter", "viscous_parameter"),
+    ("modulus_ratio", "modulus_ratio"),
+    ("damping", "damping"),
+    ("damping_exponent", "damping_exponent"),
+    ("alpha", "alpha"),
+    ("bulk_damping_ratio", "bulk_damping_ratio"),
+    ("maugis_parameter", "maugis_parameter"),
+    ("tabor_parameter_mu", "tabor_mu"),
+];
+
+/// The input (snake_case) of a library parameter name, if it has one.
+pub fn input_name(parameter: &str) -> Option<&'static str> {
+    INPUT_NAMES
+        .iter()
+        .find(|(name, _)| *name == parameter)
+        .map(|(_, input)| *input)
+}
+
 impl Naming {
+    /// A library parameter name as this front end spells its input (as the
+    /// library spells it when it is no input).
+    pub fn parameter(self, parameter: &str) -> String {
+        input_name(parameter).map_or_else(|| parameter.to_string(), |input| self.input(input))
+    }
+
+    /// A library error as one line, its bad parameter named as this front end
+    /// spells the input.
+    pub fn library_error(self, e: restitution::Error) -> String {
+        match e {
+            restitution::Error::InvalidParameter {
+                parameter,
+                value,
+                requirement,
+            } => format!(
+                "invalid {} = {value:e}: {requirement}",
+                self.parameter(parameter)
+            ),
+            other => other.to_string(),
+        }
+    }
+
     /// The input `name` (snake_case) as this front end spells it.
     pub fn input(self, name: &str) -> String {
         match self {
@@ -70,6 +136,12 @@ impl From<restitution::Error> for Error {
 }
 
 impl Error {
+    /// One line, a library error's parameter named as `naming` spells the input
+    /// ([`Naming::library_error`]).
+    pub fn render(self, naming: Naming) -> String {
+        self.message(|e| naming.library_error(e))
+    }
+
     /// One line: `library` renders a library error, an input problem is as is.
     pub fn message(self, library: impl FnOnce(restitution::Error) -> String) -> String {
         match self {
@@ -92,4 +164,32 @@ pub(crate) fn required(
             naming.choice("model", &model.to_string())
         ))
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_library_name_has_one_input() {
+        for (i, (name, _)) in INPUT_NAMES.iter().enumerate() {
+            assert!(
+                INPUT_NAMES[i + 1..].iter().all(|(other, _)| other != name),
+                "{name} twice"
+            );
+        }
+        assert_eq!(Naming::Flags.parameter("effective_modulus"), "--modulus");
+        assert_eq!(Naming::Keywords.parameter("impact_speed"), "speed");
+        assert_eq!(Naming::Flags.parameter("tabor_parameter_mu"), "--tabor-mu");
+        assert_eq!(Naming::Flags.parameter("unknown_name"), "unknown_name");
+        let e = restitution::Error::invalid("effective_mass", -1.0, "must be > 0");
+        assert_eq!(
+            Error::from(e.clone()).render(Naming::Flags),
+            "invalid --mass = -1e0: must be > 0"
+        );
+        assert_eq!(
+            Error::from(e).render(Naming::Keywords),
+            "invalid mass = -1e0: must be > 0"
+        );
+    }
 }

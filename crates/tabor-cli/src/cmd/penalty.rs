@@ -4,7 +4,7 @@
 //! the law actually achieves in a simulated impact.
 
 use crate::menu;
-use crate::output::{message, print_json, print_table, stdout, Outcome};
+use crate::output::{print_json, print_table, stdout, Outcome};
 use std::io::Write;
 use tabor::single::penalty::{penalty, PenaltyArgs, PenaltyLaw};
 use tabor::single::Naming;
@@ -58,7 +58,7 @@ pub fn run(args: &Args) -> Outcome {
         },
         Naming::Flags,
     )
-    .map_err(|e| e.message(message))?;
+    .map_err(|e| e.render(Naming::Flags))?;
     if args.json {
         return print_json(&out);
     }

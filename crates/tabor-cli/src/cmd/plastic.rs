@@ -3,7 +3,7 @@
 //! restitution, yield velocity and, for the adhesive models, sticking velocity.
 
 use crate::menu;
-use crate::output::{message, print_json, print_table, stdout, Outcome};
+use crate::output::{print_json, print_table, stdout, Outcome};
 use std::io::Write;
 use tabor::single::plastic::{model_inputs, plastic, PlasticArgs, PlasticModel};
 use tabor::single::Naming;
@@ -82,7 +82,7 @@ pub fn run(args: &Args) -> Outcome {
         },
         Naming::Flags,
     )
-    .map_err(|e| e.message(message))?;
+    .map_err(|e| e.render(Naming::Flags))?;
     if args.json {
         return print_json(&out);
     }
