@@ -4,6 +4,7 @@
 
 use super::{required, Error, Naming};
 use crate::jkr::JkrSphere;
+use crate::numerics::tolerance;
 pub use crate::plastic::PlasticModel;
 use crate::plastic::{
     AdhesiveInterpolationImpact, AdhesivePlasticContact, Clamping, DimensionlessFit, Interpolation,
@@ -157,7 +158,8 @@ pub fn plastic(a: &PlasticArgs, naming: Naming) -> Result<Plastic, Error> {
                 let n = non_adhesive(a, a.plastic_model, naming)?;
                 let sphere = JkrSphere::new(a.modulus, a.radius, dg)?;
                 let sup = Superposition::new(n.model, sphere)?;
-                elastic_sticking = Some(sticking_velocity(sup.adhesive(), 1e-12)?.speed);
+                elastic_sticking =
+                    Some(sticking_velocity(sup.adhesive(), tolerance::DEFAULT_TOLERANCE)?.speed);
                 (Box::new(sup), n.yield_velocity, n.clamping)
             }
             PlasticModel::AdhesiveInterpolation => {
@@ -198,7 +200,7 @@ pub fn plastic(a: &PlasticArgs, naming: Naming) -> Result<Plastic, Error> {
         which,
         PlasticModel::Superposition | PlasticModel::AdhesiveInterpolation
     ) {
-        Some(sticking_velocity(&*model, 1e-10)?.speed)
+        Some(sticking_velocity(&*model, tolerance::ACCURACY)?.speed)
     } else {
         None
     };

@@ -6,8 +6,8 @@
 //! closes stdout early (`tabor … | head -1`) ends the program quietly with exit
 //! code 0. Output conventions: `output.rs` and the crate README.
 
+mod args;
 mod cmd;
-mod menu;
 mod output;
 
 use clap::{CommandFactory, Parser, Subcommand};

@@ -22,7 +22,9 @@
 //! - [`NumericsError`]: typed failures (no bracket, no convergence, non-finite value,
 //!   invalid argument) instead of NaN or panics.
 //!
-//! Every routine takes a tolerance and returns the value with what it spent.
+//! Every routine takes a tolerance and returns the value with what it spent; every
+//! default tolerance of the workspace comes from [`tolerance`] (one constant,
+//! [`tolerance::DEFAULT_TOLERANCE`]).
 
 pub mod chebyshev;
 mod cost;
@@ -31,6 +33,7 @@ pub mod ode;
 pub mod quadrature;
 pub mod root_finding;
 pub mod special;
+pub mod tolerance;
 
 pub use ode::rosenbrock;
 

@@ -285,7 +285,7 @@ impl ContactCharacteristic {
         };
         let tol = QuadTolerance {
             absolute: scale * 1e-15,
-            relative: 1e-12,
+            relative: tabor_numerics::tolerance::DEFAULT_TOLERANCE,
         };
         let mut joules = 0.0;
         let mut error = 0.0;

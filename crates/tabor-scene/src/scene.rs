@@ -188,8 +188,9 @@ pub struct Scene {
     pub effective_mass: f64,
 }
 
-/// The default requested relative accuracy.
-pub const DEFAULT_ACCURACY: f64 = 1e-10;
+/// The default requested relative accuracy (1e-10, from
+/// `tabor_numerics::tolerance`).
+pub const DEFAULT_ACCURACY: f64 = tabor_numerics::tolerance::ACCURACY;
 
 fn body(section: &str, b: &BodyFile, is_target: bool) -> Result<Body, SceneError> {
     let material =

@@ -32,6 +32,7 @@ use crate::scaled::{positive_up_to, ScaledImpact, ScaledPoint};
 use serde::Serialize;
 use tabor_numerics::root_finding::{brent, RootTolerance};
 use tabor_numerics::special::beta;
+use tabor_numerics::tolerance::ACCURACY;
 use tabor_restitution::{validate, Error, Result};
 
 /// Largest viscous parameter δ accepted.
@@ -110,11 +111,12 @@ pub fn first_order_restitution(viscous_parameter: f64) -> Result<f64> {
 }
 
 /// The coefficient of restitution ε(δ) of a sphere on a Kelvin-Voigt half-space,
-/// integrated with relative tolerance 1e-10.
+/// integrated with relative tolerance
+/// [`ACCURACY`](tabor_numerics::tolerance::ACCURACY) (1e-10).
 ///
 /// Seed 000, eqs. (5.64)-(5.68), Fig. 5.4.
 pub fn restitution(viscous_parameter: f64, model: SphereModel) -> Result<f64> {
-    Ok(solve(viscous_parameter, model, 1e-10)?.restitution)
+    Ok(solve(viscous_parameter, model, ACCURACY)?.restitution)
 }
 
 /// The impact of a sphere on a Kelvin-Voigt half-space in the scaled variables of

@@ -2,10 +2,11 @@
 //! adhesive energy loss, the sticking velocity and, for a given impact speed, the
 //! maximum contact radius and the coefficient of restitution.
 
-use crate::menu;
+use crate::args::{self, Tolerance};
 use crate::output::{message, print_json, print_table, stdout, Outcome};
 use std::io::Write;
 use tabor::jkr::SeparationRule;
+use tabor::numerics::tolerance;
 use tabor::single::jkr::{jkr, JkrArgs};
 
 /// Arguments of `tabor jkr`. All inputs are effective quantities of the collision.
@@ -32,12 +33,13 @@ pub struct Args {
     #[arg(long, allow_negative_numbers = true)]
     speed: Option<f64>,
     /// Where contact breaks
-    #[arg(long, value_parser = menu::parser(&SeparationRule::ALL, |_| String::new()),
+    #[arg(long, value_parser = args::menu(&SeparationRule::ALL, |_| String::new()),
         default_value_t = SeparationRule::FixedGrip)]
     separation: SeparationRule,
     /// Relative tolerance of quadratures and root searches, in [1e-15, 0.5]
-    #[arg(long, allow_negative_numbers = true, default_value = "1e-12")]
-    tolerance: f64,
+    #[arg(long, allow_negative_numbers = true,
+        default_value_t = Tolerance(tolerance::DEFAULT_TOLERANCE))]
+    tolerance: Tolerance,
     /// Print one JSON object instead of a table
     #[arg(long)]
     json: bool,
@@ -52,7 +54,7 @@ pub fn run(args: &Args) -> Outcome {
         mass: args.mass,
         speed: args.speed,
         separation: args.separation,
-        tolerance: args.tolerance,
+        tolerance: args.tolerance.0,
     })
     .map_err(message)?;
     if args.json {

@@ -1,10 +1,12 @@
 //! `tabor maugis-loss`: the Maugis-Dugdale adhesive loss W(Λ) (seed 000 eq. (5.43),
 //! Fig. 5.2) as a tab-separated table.
 
+use crate::args::Tolerance;
 use crate::output::{message, number, print_json_array, stdout, Outcome, VERSION};
 use serde::Serialize;
 use tabor::maugis::units::{tabor_parameter_from_maugis, tabor_parameter_from_tabor_mu};
 use tabor::maugis::{jkr_normalized_loss, loss_over_jkr_fast, normalized_loss, TaborCase};
+use tabor::numerics::tolerance;
 use tabor::restitution::Error;
 
 /// Arguments of `tabor maugis-loss`.
@@ -45,8 +47,8 @@ pub struct Args {
     #[arg(long)]
     log: bool,
     /// Relative tolerance of the direct evaluation
-    #[arg(long, default_value_t = 1e-12, allow_negative_numbers = true)]
-    tolerance: f64,
+    #[arg(long, default_value_t = Tolerance(tolerance::DEFAULT_TOLERANCE), allow_negative_numbers = true)]
+    tolerance: Tolerance,
     /// Use the precomputed fast tier (relative error < 1e-10) instead
     #[arg(long)]
     fast: bool,
@@ -171,7 +173,7 @@ fn row(args: &Args, (lambda, origin): (f64, Origin)) -> Result<Row, String> {
             method: "fast tier (Chebyshev interpolant, relative error < 1e-10)",
         }
     } else {
-        let w = normalized_loss(lambda, args.tolerance).map_err(|e| origin.message(e))?;
+        let w = normalized_loss(lambda, args.tolerance.0).map_err(|e| origin.message(e))?;
         Row {
             lambda,
             case: w.case.number(),

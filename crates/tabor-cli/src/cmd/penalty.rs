@@ -3,7 +3,7 @@
 //! Lankarani-Nikravesh or Flores law for a nominal restitution, and the restitution
 //! the law actually achieves in a simulated impact.
 
-use crate::menu;
+use crate::args;
 use crate::output::{print_json, print_table, stdout, Outcome};
 use std::io::Write;
 use tabor::single::penalty::{penalty, PenaltyArgs, PenaltyLaw};
@@ -18,7 +18,7 @@ use tabor::single::Naming;
 )]
 pub struct Args {
     /// The penalty law
-    #[arg(long, value_parser = menu::parser(&PenaltyLaw::ALL, |_| String::new()))]
+    #[arg(long, value_parser = args::menu(&PenaltyLaw::ALL, |_| String::new()))]
     law: PenaltyLaw,
     /// Nominal coefficient of restitution e, in (0, 1]
     #[arg(long, allow_negative_numbers = true)]

@@ -2,7 +2,7 @@
 //! sections 5.5-5.6, (5.101)-(5.126); seed 001, eqs. (12), (18), (19)): energy loss,
 //! restitution, yield velocity and, for the adhesive models, sticking velocity.
 
-use crate::menu;
+use crate::args;
 use crate::output::{print_json, print_table, stdout, Outcome};
 use std::io::Write;
 use tabor::single::plastic::{model_inputs, plastic, PlasticArgs, PlasticModel};
@@ -25,7 +25,7 @@ use tabor::single::Naming;
 )]
 pub struct Args {
     /// The model
-    #[arg(long, value_parser = menu::parser(&PlasticModel::ALL, |m| menu::needs(model_inputs(m))))]
+    #[arg(long, value_parser = args::menu(&PlasticModel::ALL, |m| args::needs(model_inputs(m))))]
     model: PlasticModel,
     /// Effective modulus E* (Pa)
     #[arg(long, allow_negative_numbers = true)]
@@ -56,7 +56,7 @@ pub struct Args {
     #[arg(long, allow_negative_numbers = true)]
     adhesion_parameter: Option<f64>,
     /// The non-adhesive model of --model superposition
-    #[arg(long, value_parser = menu::parser(PlasticModel::NON_ADHESIVE, |m| menu::needs(model_inputs(m))),
+    #[arg(long, value_parser = args::menu(PlasticModel::NON_ADHESIVE, |m| args::needs(model_inputs(m))),
         default_value_t = PlasticModel::Interpolation)]
     plastic_model: PlasticModel,
     /// Print one JSON object instead of a table

@@ -2,9 +2,10 @@
 //! the coefficient of restitution as a function of each model's dimensionless
 //! parameters.
 
-use crate::menu;
+use crate::args::{self, Tolerance};
 use crate::output::{print_json, print_table, stdout, Outcome};
 use std::io::Write;
+use tabor::numerics::tolerance;
 use tabor::single::visco::{model_inputs, visco, ViscoArgs, ViscoModel};
 use tabor::single::Naming;
 
@@ -17,7 +18,7 @@ use tabor::single::Naming;
 )]
 pub struct Args {
     /// The model
-    #[arg(long, value_parser = menu::parser(&ViscoModel::ALL, |m| menu::needs(model_inputs(m))))]
+    #[arg(long, value_parser = args::menu(&ViscoModel::ALL, |m| args::needs(model_inputs(m))))]
     model: ViscoModel,
     /// Damping ratio D (flat punch; D1 of the compressible model), > 0
     #[arg(long, allow_negative_numbers = true)]
@@ -44,8 +45,9 @@ pub struct Args {
     #[arg(long, allow_negative_numbers = true)]
     bulk_damping_ratio: Option<f64>,
     /// Relative integration tolerance, in [1e-15, 0.5]
-    #[arg(long, allow_negative_numbers = true, default_value = "1e-10")]
-    tolerance: f64,
+    #[arg(long, allow_negative_numbers = true,
+        default_value_t = Tolerance(tolerance::ACCURACY))]
+    tolerance: Tolerance,
     /// Print one JSON object instead of a table
     #[arg(long)]
     json: bool,
@@ -64,7 +66,7 @@ pub fn run(args: &Args) -> Outcome {
             alpha: args.alpha,
             poisson_ratio: args.poisson_ratio,
             bulk_damping_ratio: args.bulk_damping_ratio,
-            tolerance: args.tolerance,
+            tolerance: args.tolerance.0,
         },
         Naming::Flags,
     )
