@@ -5,7 +5,7 @@
 //! - [`roots`](crate::root_finding): Brent's method (from the `roots` crate) with
 //!   bracket validation and automatic bracket expansion, and a safeguarded Newton
 //!   iteration for smooth problems;
-//! - [`quadrature`](crate::quadrature) — Clenshaw-Curtis (from the `quadrature` crate)
+//! - [`quadrature`] — Clenshaw-Curtis (from the `quadrature` crate)
 //!   for smooth integrands, tanh-sinh for integrands with endpoint singularities, and
 //!   fixed Gauss-Legendre rules for hot loops;
 //! - [`special`]: Gamma and Beta functions (from `statrs`), the incomplete beta

@@ -14,7 +14,7 @@
 //!
 //! It also holds the effective properties of a collision ([`effective`]) and the
 //! input validation every model uses ([`validate`]), and the surface every choice
-//! menu shares ([`menu`]: `ALL`, `as_str`, `FromStr`).
+//! menu shares ([`menu`](mod@menu): `ALL`, `as_str`, `FromStr`).
 
 pub mod checks;
 pub mod combine;

@@ -125,7 +125,7 @@ fn check_exponent(exponent: f64) -> Result<f64> {
 
 /// The coefficient of restitution of the law (5.72) with exponent β ∈ [0, 3/2] and
 /// scaled damping γ ∈ (0, 1e3], integrated with relative tolerance
-/// [`ACCURACY`](tabor_numerics::tolerance::ACCURACY) (1e-10).
+/// [`ACCURACY`] (1e-10).
 ///
 /// Seed 000, eq. (5.72).
 pub fn restitution(exponent: f64, damping: f64) -> Result<f64> {

@@ -112,7 +112,7 @@ pub fn first_order_restitution(viscous_parameter: f64) -> Result<f64> {
 
 /// The coefficient of restitution ε(δ) of a sphere on a Kelvin-Voigt half-space,
 /// integrated with relative tolerance
-/// [`ACCURACY`](tabor_numerics::tolerance::ACCURACY) (1e-10).
+/// [`ACCURACY`] (1e-10).
 ///
 /// Seed 000, eqs. (5.64)-(5.68), Fig. 5.4.
 pub fn restitution(viscous_parameter: f64, model: SphereModel) -> Result<f64> {

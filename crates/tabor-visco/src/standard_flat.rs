@@ -87,7 +87,7 @@ pub fn parameters(
 
 /// The exact coefficient of restitution of the flat punch on a standard medium,
 /// ε(β, δ), integrated with relative tolerance
-/// [`ACCURACY`](tabor_numerics::tolerance::ACCURACY) (1e-10).
+/// [`ACCURACY`] (1e-10).
 ///
 /// Seed 000, eqs. (5.76)-(5.81), Fig. 5.11.
 pub fn restitution(modulus_ratio: f64, viscous_parameter: f64) -> Result<f64> {
