@@ -18,6 +18,28 @@ pub mod visco;
 
 use crate::restitution;
 
+/// The library's parameter names (as [`restitution::Error::InvalidParameter`]
+/// spells them) and the input (flag or keyword, snake_case) that gives each: the
+/// one table of every front end (`--modulus` on the command line, `modulus` in
+/// Python, through [`Naming::input`]). `effective` names its own inputs, as they
+/// differ between the two bodies. A name without an entry is its own input.
+pub const INPUT_NAMES: &[(&str, &str)] = &[
+    ("effective_modulus", "modulus"),
+    ("effective_radius", "radius"),
+    ("effective_mass", "mass"),
+    ("impact_speed", "speed"),
+    ("shear_damping_ratio", "damping_ratio"),
+    ("tabor_parameter_mu", "tabor_mu"),
+];
+
+/// The input that gives the library parameter `parameter` ([`INPUT_NAMES`]).
+pub fn input_name(parameter: &str) -> &str {
+    INPUT_NAMES
+        .iter()
+        .find(|(library, _)| *library == parameter)
+        .map_or(parameter, |(_, input)| input)
+}
+
 /// How a front end names the inputs in messages and warnings.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Naming {
@@ -27,56 +49,7 @@ pub enum Naming {
     Keywords,
 }
 
-/// The library's parameter names (as [`InvalidParameter`](restitution::Error::InvalidParameter)
-/// spells them) that belong to an input of the `*Args` here, with the input's
-/// name (snake_case, the field of the `*Args`; the flag and the keyword are
-/// spelled from it by [`Naming::input`]). The one such table: the command line
-/// and the Python package both render errors through it. A library name without
-/// an entry is printed as the library spells it. (`tabor effective` names the
-/// parameters of its two bodies itself, as its inputs differ between them.)
-pub const INPUT_NAMES: &[(&str, &str)] = &[
-    ("effective_modulus", "modulus"),
-    ("effective_radius", "radius"),
-    ("effective_mass", "mass"),
-    ("mass", "mass"),
-    ("work_of_adhesion", "work_of_adhesion"),
-    ("impact_speed", "speed"),
-    ("tolerance", "tolerance"),
-    ("yield_stress", "yield_stress"),
-    ("poisson_ratio", "poisson_ratio"),
-    ("density", "density"),
-    ("adhesion_parameter", "adhesion_parameter"),
-    ("restitution", "restitution"),
-    ("stiffness", "stiffness"),
-    ("exponent", "exponent"),
-    ("rounding", "rounding"),
-    ("damping_ratio", "damping_ratio"),
-    ("shear_damping_ratio", "damping_ratio"),
-    ("viscous_parameter", "viscous_parameter"),
-    ("modulus_ratio", "modulus_ratio"),
-    ("damping", "damping"),
-    ("damping_exponent", "damping_exponent"),
-    ("alpha", "alpha"),
-    ("bulk_damping_ratio", "bulk_damping_ratio"),
-    ("maugis_parameter", "maugis_parameter"),
-    ("tabor_parameter_mu", "tabor_mu"),
-];
-
-/// The input (snake_case) of a library parameter name, if it has one.
-pub fn input_name(parameter: &str) -> Option<&'static str> {
-    INPUT_NAMES
-        .iter()
-        .find(|(name, _)| *name == parameter)
-        .map(|(_, input)| *input)
-}
-
 impl Naming {
-    /// A library parameter name as this front end spells its input (as the
-    /// library spells it when it is no input).
-    pub fn parameter(self, parameter: &str) -> String {
-        input_name(parameter).map_or_else(|| parameter.to_string(), |input| self.input(input))
-    }
-
     /// A library error as one line, its bad parameter named as this front end
     /// spells the input.
     pub fn library_error(self, e: restitution::Error) -> String {
@@ -99,6 +72,11 @@ impl Naming {
             Naming::Flags => format!("--{}", name.replace('_', "-")),
             Naming::Keywords => name.to_string(),
         }
+    }
+
+    /// The library parameter `parameter` as this front end spells its input.
+    pub fn parameter(self, parameter: &str) -> String {
+        self.input(input_name(parameter))
     }
 
     /// A choice `value` mentioned on its own: as is for flags, quoted for keywords.
@@ -181,7 +159,6 @@ mod tests {
         assert_eq!(Naming::Flags.parameter("effective_modulus"), "--modulus");
         assert_eq!(Naming::Keywords.parameter("impact_speed"), "speed");
         assert_eq!(Naming::Flags.parameter("tabor_parameter_mu"), "--tabor-mu");
-        assert_eq!(Naming::Flags.parameter("unknown_name"), "unknown_name");
         let e = restitution::Error::invalid("effective_mass", -1.0, "must be > 0");
         assert_eq!(
             Error::from(e.clone()).render(Naming::Flags),

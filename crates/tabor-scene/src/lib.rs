@@ -32,24 +32,30 @@
 //! with a warning). The one rule per combination of effects: [`rule`] and the
 //! crate README.
 
+mod builder;
 mod combination;
+mod error;
 pub mod file;
+mod inputs;
 mod models;
 mod outcome;
+mod parameter;
 mod scene;
 mod select;
+mod simulate;
 mod sweep;
-mod visco_contact;
-mod viscous_adhesive;
 
+pub use builder::{ElasticSphere, SceneBuilder};
 pub use combination::{
     rule, AdhesionKind, Combination, EffectKind, EffectSet, PlasticityKind, Refusal, Rule,
     ViscoKind,
 };
+pub use error::SceneError;
 pub use file::{Format, ParseError, SceneFile};
-pub use outcome::{Effect, Outcome};
-pub use scene::{
-    Adhesion, AdhesionRange, AdhesivePlasticity, Body, ElasticSphere, PlasticityModel, Scene,
-    SceneBuilder, SceneError, DEFAULT_ACCURACY,
+pub use inputs::{
+    Adhesion, AdhesionRange, AdhesivePlasticity, Body, PlasticityModel, DEFAULT_ACCURACY,
 };
-pub use sweep::{spaced, sweep, SweepParameter};
+pub use outcome::{Effect, Outcome};
+pub use parameter::SweepParameter;
+pub use scene::Scene;
+pub use sweep::{spaced, sweep};

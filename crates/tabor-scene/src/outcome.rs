@@ -2,17 +2,16 @@
 //! used and skipped, the combination rule and the warnings.
 
 use crate::combination::{Combination, EffectKind, Rule};
-use crate::models::{err, AdhesiveModel, Plastic};
-use crate::scene::{Scene, SceneError};
+use crate::error::SceneError;
 use crate::select::{is_superposed, Prepared, Selection};
 use serde::Serialize;
-use tabor_dynamics::{simulate_impact, ForceLaw, ImpactSimulation, SimulationSettings};
-use tabor_elastic::ElasticContact;
-use tabor_jkr::JkrForceLaw;
-use tabor_maugis::MaugisDugdaleForceLaw;
 use tabor_numerics::Cost;
 use tabor_restitution::checks::{elastic_limit_check, quasi_static_check};
-use tabor_restitution::{restitution_from_loss, Error, ImpactModel, Warning};
+use tabor_restitution::{restitution_from_loss, ImpactModel, Warning};
+
+fn err(e: tabor_restitution::Error) -> SceneError {
+    SceneError::model(e)
+}
 
 /// One physical effect and whether the scene uses it at the impact speed.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -71,8 +70,8 @@ pub struct Outcome {
 }
 
 fn effect_list(prepared: &Prepared, selection: &Selection) -> Vec<Effect> {
-    let models = &prepared.models;
-    let scene = prepared.scene;
+    let models = prepared.models();
+    let inputs = prepared.inputs();
     let mut effects = vec![Effect {
         name: EffectKind::Elasticity,
         used: true,
@@ -85,7 +84,7 @@ fn effect_list(prepared: &Prepared, selection: &Selection) -> Vec<Effect> {
             EffectKind::Adhesion,
             models.adhesive.as_ref().map(|a| a.model.model().name()),
             models.adhesive.as_ref().map(|a| a.why.clone()),
-            match &scene.adhesion {
+            match &inputs.adhesion {
                 None => "no [adhesion] section: the surfaces do not adhere",
                 Some(_) => "the work of adhesion is 0",
             },
@@ -155,7 +154,7 @@ fn effect_list(prepared: &Prepared, selection: &Selection) -> Vec<Effect> {
 /// The superposition's warning: which effects are added, and its measured error
 /// against a coupled reference where one exists.
 fn superposition_warning(prepared: &Prepared, selection: &Selection, speed: f64) -> Warning {
-    let models = &prepared.models;
+    let models = prepared.models();
     let used = &selection.used;
     let mut message = format!(
         "the losses of {} are added (superposition (5.109))",
@@ -195,7 +194,7 @@ fn superposition_warning(prepared: &Prepared, selection: &Selection, speed: f64)
 
 fn viscous_adhesive_remark(prepared: &Prepared, speed: f64) -> Option<Warning> {
     let s = prepared
-        .models
+        .models()
         .viscous_adhesive
         .as_ref()?
         .superposition(speed)
@@ -210,13 +209,11 @@ fn viscous_adhesive_remark(prepared: &Prepared, speed: f64) -> Option<Warning> {
 }
 
 impl Prepared<'_> {
-    /// The outcome at `speed` (validated, > 0).
-    pub(crate) fn outcome_at(&self, speed: f64) -> Result<Outcome, SceneError> {
-        let scene = self.scene;
-        let v = tabor_restitution::validate::positive("speed", speed)
-            .map_err(|e| SceneError::field("impact.speed", e.to_string()))?;
+    /// The outcome at `v` (a validated speed, m/s).
+    pub(crate) fn outcome_at(&self, v: f64) -> Result<Outcome, SceneError> {
+        let scene = self.inputs();
         let selection = self.select(v)?;
-        let m = self.models.mass;
+        let m = self.models().mass;
         let kinetic = 0.5 * m * v * v;
         let joules = tabor_restitution::validate::non_negative(
             "energy_loss",
@@ -260,7 +257,7 @@ impl Prepared<'_> {
         let combination = selection.combination();
         let e = selection.evaluation;
         Ok(Outcome {
-            scene: scene.name.clone(),
+            scene: self.name.to_string(),
             impact_speed: v,
             restitution,
             sticks: restitution == 0.0,
@@ -289,167 +286,46 @@ impl Prepared<'_> {
         }
         let reference = whole.speed_scale();
         Ok(Some(
-            self.models
-                .evaluate(&self.models.candidates, reference)
-                .map_err(|e| self.scene.locate(e))?
+            self.models()
+                .evaluate(&self.models().candidates, reference)
+                .map_err(|e| self.locate(e))?
                 .loss
                 .joules,
         ))
     }
 
-    /// The restitution at `speed` for the speed-independent loss `loss` (J): what
-    /// [`Prepared::restitution`] computes, without re-evaluating the model. The
-    /// selection's rule: a loss below `accuracy` × the kinetic energy is dropped.
+    /// The restitution at `v` (a validated speed) for the speed-independent loss
+    /// `loss` (J): what [`Prepared::restitution_with_error`] computes, without
+    /// re-evaluating the model. The selection's rule: a loss below `accuracy` × the
+    /// kinetic energy is dropped.
     pub(crate) fn restitution_with_constant_loss(
         &self,
         loss: f64,
-        speed: f64,
+        v: f64,
     ) -> Result<f64, SceneError> {
-        let kinetic = 0.5 * self.models.mass * speed * speed;
-        if !(speed > 0.0 && kinetic.is_finite() && kinetic > 0.0) {
+        let models = self.models();
+        let kinetic = 0.5 * models.mass * v * v;
+        if !(kinetic.is_finite() && kinetic > 0.0) {
             // the full path reports the exact error
-            return self.restitution(speed);
+            return Ok(self.restitution_with_error(v)?.0);
         }
-        if loss.abs() < self.models.accuracy * kinetic {
+        if loss.abs() < models.accuracy * kinetic {
             return Ok(1.0);
         }
-        restitution_from_loss(loss, self.models.mass, speed).map_err(err)
+        restitution_from_loss(loss, models.mass, v).map_err(err)
     }
 
-    /// The restitution at `speed`, without the outcome's reports.
-    pub(crate) fn restitution(&self, speed: f64) -> Result<f64, SceneError> {
-        Ok(self.restitution_with_error(speed)?.0)
-    }
-
-    /// The restitution at `speed` and the estimated error of the loss as a
-    /// fraction of the kinetic energy (the error of 1 − ε²).
-    pub(crate) fn restitution_with_error(&self, speed: f64) -> Result<(f64, f64), SceneError> {
-        let v = tabor_restitution::validate::positive("speed", speed)
-            .map_err(|e| SceneError::field("impact.speed", e.to_string()))?;
+    /// The restitution at `v` (a validated speed) and the estimated error of the
+    /// loss as a fraction of the kinetic energy (the error of 1 − ε²), without the
+    /// outcome's reports.
+    pub(crate) fn restitution_with_error(&self, v: f64) -> Result<(f64, f64), SceneError> {
         let selection = self.select(v)?;
         let loss = &selection.evaluation.loss;
-        let kinetic = 0.5 * self.models.mass * v * v;
+        let mass = self.models().mass;
+        let kinetic = 0.5 * mass * v * v;
         Ok((
-            restitution_from_loss(loss.joules, self.models.mass, v).map_err(err)?,
+            restitution_from_loss(loss.joules, mass, v).map_err(err)?,
             loss.error_estimate / kinetic,
         ))
-    }
-}
-
-impl Scene {
-    /// The outcome at the scene's impact speed (an error names `impact.speed` when
-    /// the scene has none).
-    pub fn outcome(&self) -> Result<Outcome, SceneError> {
-        let v = self
-            .speed
-            .ok_or_else(|| SceneError::field("impact.speed", "is required for an impact (m/s)"))?;
-        self.outcome_at(v)
-    }
-
-    /// The outcome at impact speed `speed` (m/s).
-    pub fn outcome_at(&self, speed: f64) -> Result<Outcome, SceneError> {
-        Prepared::new(self)?.outcome_at(speed)
-    }
-
-    /// The coefficient of restitution at `speed` (m/s) with the estimated error of
-    /// the loss as a fraction of the kinetic energy (the error of 1 − ε²), without
-    /// the outcome's sticking velocity and reports.
-    pub fn restitution_with_error(&self, speed: f64) -> Result<(f64, f64), SceneError> {
-        Prepared::new(self)?.restitution_with_error(speed)
-    }
-
-    /// The combination (rule and effects used) that answers at impact speed `speed`
-    /// (m/s), without computing the outcome's sticking velocity.
-    pub fn combination_at(&self, speed: f64) -> Result<Combination, SceneError> {
-        let v = tabor_restitution::validate::positive("speed", speed)
-            .map_err(|e| SceneError::field("impact.speed", e.to_string()))?;
-        Ok(Prepared::new(self)?.select(v)?.combination())
-    }
-
-    /// The sticking velocity (m/s) of the scene's model (the root of ε(v) = 0 of the
-    /// model that answers at each speed), or `None` when the bodies never stick.
-    pub fn sticking_velocity(&self) -> Result<Option<f64>, SceneError> {
-        Ok(Prepared::new(self)?.sticking()?.0)
-    }
-
-    /// Simulates the impact at `speed` in the time domain with the force law of the
-    /// model the scene selects at that speed, and returns the simulation with the
-    /// analytic outcome of the same model.
-    pub fn simulate(
-        &self,
-        speed: f64,
-        settings: &SimulationSettings,
-    ) -> Result<(ImpactSimulation, Outcome), SceneError> {
-        let prepared = Prepared::new(self)?;
-        let outcome = prepared.outcome_at(speed)?;
-        let models = &prepared.models;
-        // the rule and the effects used at this speed, as the outcome reports them
-        let rule = outcome.combination.rule;
-        let uses = |effect| outcome.combination.effects.contains(&effect);
-        let no_law = |what: &str| {
-            SceneError::model(Error::Model {
-                model: "scene",
-                message: format!("no time-domain force law for {what}"),
-            })
-        };
-        let mut law: Box<dyn ForceLaw> = match rule {
-            Rule::Elastic => Box::new(match self.target.gradation {
-                Some((k, c)) => {
-                    ElasticContact::graded_sphere(c, k, self.effective_radius).map_err(err)?
-                }
-                None => ElasticContact::hertz(self.effective_modulus, self.effective_radius)
-                    .map_err(err)?,
-            }),
-            Rule::Single if uses(EffectKind::Adhesion) => {
-                match models.adhesive.as_ref().map(|a| &a.model) {
-                    // the rule of the selected model (fixed grip when it stands in for
-                    // Maugis-Dugdale)
-                    Some(AdhesiveModel::Jkr(j)) => {
-                        Box::new(JkrForceLaw::new(*j.contact(), j.separation()))
-                    }
-                    Some(AdhesiveModel::Maugis(md)) => {
-                        Box::new(MaugisDugdaleForceLaw::new(md).map_err(err)?)
-                    }
-                    Some(AdhesiveModel::Graded(_)) => return Err(no_law("JKR on a graded medium")),
-                    None => return Err(no_law("this scene")),
-                }
-            }
-            Rule::Single if uses(EffectKind::Plasticity) => match &models.plastic {
-                Some(Plastic::Thornton(p)) => Box::new(p.force_law()),
-                Some(Plastic::Interpolation(p)) => Box::new(p.force_law()),
-                Some(Plastic::JacksonGreen(_)) => Box::new(
-                    tabor_plastic::PlasticContact::new(
-                        self.effective_modulus,
-                        self.effective_radius,
-                        self.yield_stress().unwrap_or(f64::NAN),
-                    )
-                    .and_then(|contact| {
-                        tabor_plastic::JacksonGreen::new(contact, self.plastic_poisson_ratio())
-                    })
-                    .map_err(err)?
-                    .force_law(),
-                ),
-                _ => return Err(no_law("seed 001's dimensionless fit")),
-            },
-            Rule::AdhesiveInterpolation => match &models.adhesive_interpolation {
-                Some(a) => Box::new(a.force_law()),
-                None => return Err(no_law("this combination")),
-            },
-            Rule::ViscousAdhesive => crate::viscous_adhesive::force_law(models)?,
-            Rule::Single => {
-                return Err(no_law(
-                    "the viscoelastic contact (its models are solved in scaled form by the MDR)",
-                ))
-            }
-            Rule::AdhesivePlasticExcess | Rule::Superposition => {
-                return Err(no_law(&format!(
-                    "the {} rule (a sum of losses, not of forces)",
-                    rule.as_str()
-                )))
-            }
-        };
-        let sim =
-            simulate_impact(law.as_mut(), self.effective_mass, speed, settings).map_err(err)?;
-        Ok((sim, outcome))
     }
 }

@@ -1,85 +1,10 @@
 //! Sweeps: the outcome of a scene over many values of one parameter, in parallel.
 
-use crate::file::AdhesionFile;
+use crate::error::{impact_speed, SceneError};
 use crate::outcome::Outcome;
-use crate::scene::{Scene, SceneError};
-use crate::select::Prepared;
+use crate::parameter::SweepParameter;
+use crate::scene::Scene;
 use rayon::prelude::*;
-use serde::Serialize;
-
-/// A scene parameter that a sweep varies.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum SweepParameter {
-    /// The impact speed (m/s).
-    Speed,
-    /// The sphere's radius (m).
-    SphereRadius,
-    /// The work of adhesion (J/m²).
-    WorkOfAdhesion,
-    /// The Tabor parameter Λ (replaces any range given).
-    TaborParameter,
-    /// The target's yield stress (Pa).
-    YieldStress,
-}
-
-impl SweepParameter {
-    /// The parameter named as on the command line (`speed`, `sphere-radius`,
-    /// `work-of-adhesion`, `tabor-parameter`, `yield-stress`).
-    pub fn from_name(name: &str) -> Option<Self> {
-        Some(match name {
-            "speed" => SweepParameter::Speed,
-            "sphere-radius" => SweepParameter::SphereRadius,
-            "work-of-adhesion" => SweepParameter::WorkOfAdhesion,
-            "tabor-parameter" => SweepParameter::TaborParameter,
-            "yield-stress" => SweepParameter::YieldStress,
-            _ => return None,
-        })
-    }
-
-    /// The name as on the command line.
-    pub fn name(&self) -> &'static str {
-        match self {
-            SweepParameter::Speed => "speed",
-            SweepParameter::SphereRadius => "sphere-radius",
-            SweepParameter::WorkOfAdhesion => "work-of-adhesion",
-            SweepParameter::TaborParameter => "tabor-parameter",
-            SweepParameter::YieldStress => "yield-stress",
-        }
-    }
-}
-
-impl Scene {
-    /// The same scene with `parameter` set to `value`, validated again.
-    pub fn with_parameter(
-        &self,
-        parameter: SweepParameter,
-        value: f64,
-    ) -> Result<Scene, SceneError> {
-        let mut data = self.data.clone();
-        match parameter {
-            SweepParameter::Speed => return self.with_speed(value),
-            SweepParameter::SphereRadius => data.sphere.radius = Some(value),
-            SweepParameter::WorkOfAdhesion => {
-                data.adhesion
-                    .get_or_insert_with(AdhesionFile::default)
-                    .work_of_adhesion = value
-            }
-            SweepParameter::TaborParameter => {
-                let a = data.adhesion.get_or_insert_with(AdhesionFile::default);
-                a.range = None;
-                a.cohesive_stress = None;
-                a.maugis_parameter = None;
-                a.tabor_mu = None;
-                a.tabor_parameter = Some(value);
-            }
-            SweepParameter::YieldStress => data.target.yield_stress = Some(value),
-        }
-        let mut s = Scene::from_data(data).map_err(|e| self.locate(e))?;
-        s.name = self.name.clone();
-        Ok(s)
-    }
-}
 
 /// The outcome of `scene` for each value of `parameter`, computed in parallel on
 /// rayon's pool (deterministic: each point is independent of the others and of the
@@ -95,14 +20,14 @@ where
 {
     if parameter == SweepParameter::Speed {
         // one scene: its models and its sticking velocity are built once
-        let prepared = match Prepared::new(scene) {
+        let prepared = match scene.prepared() {
             Ok(p) => p,
             Err(e) => return values.iter().map(|_| Err(e.clone())).collect(),
         };
         return values
             .par_iter()
             .map(|&v| {
-                let result = prepared.outcome_at(v);
+                let result = impact_speed(v).and_then(|v| prepared.outcome_at(v));
                 on_point();
                 result
             })
@@ -158,34 +83,4 @@ pub fn spaced(from: f64, to: f64, points: usize, log: bool) -> Result<Vec<f64>, 
             x.clamp(lo, hi)
         })
         .collect())
-}
-
-impl Scene {
-    /// The coefficient of restitution (5.37) at each of `speeds` (m/s), computed in
-    /// parallel on rayon's pool, by the same model and combination rule as
-    /// [`Scene::outcome_at`] at that speed (the models are built once). The first
-    /// invalid speed or failing point is returned with its index.
-    ///
-    /// When the scene's loss does not depend on the speed (elastic adhesion alone),
-    /// the loss is computed once and each point is the closed form (5.37) with the
-    /// same negligible-effect rule as the outcome (bit-identical to it).
-    pub fn restitutions(&self, speeds: &[f64]) -> Result<Vec<f64>, (usize, SceneError)> {
-        let prepared = Prepared::new(self).map_err(|e| (0, e))?;
-        match prepared.constant_loss().map_err(|e| (0, e))? {
-            Some(loss) => speeds
-                .par_iter()
-                .enumerate()
-                .map(|(i, &v)| {
-                    prepared
-                        .restitution_with_constant_loss(loss, v)
-                        .map_err(|e| (i, e))
-                })
-                .collect(),
-            None => speeds
-                .par_iter()
-                .enumerate()
-                .map(|(i, &v)| prepared.restitution(v).map_err(|e| (i, e)))
-                .collect(),
-        }
-    }
 }

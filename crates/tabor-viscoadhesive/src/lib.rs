@@ -26,6 +26,6 @@ mod model;
 
 pub use adhesive::AdhesiveForceLaw;
 pub use law::{SeparationPotential, ViscousDamping};
-pub use model::{Adhesion, Superposition, ViscoadhesiveImpact};
+pub use model::{Adhesion, AdhesiveImpact, Superposition, ViscoadhesiveImpact};
 pub use tabor_jkr::SeparationRule;
 pub use tabor_restitution::{Error, Result};

@@ -26,19 +26,36 @@ pub enum Adhesion {
     },
 }
 
-/// The elastic adhesive model behind the coupled one (for its loss and for the
-/// superposition comparison).
+/// The elastic adhesive impact behind the coupled one, as built by its own crate
+/// (for [`ViscoadhesiveImpact::of`], its loss and the superposition comparison).
 #[derive(Clone, Debug, PartialEq)]
-enum AdhesiveImpact {
+pub enum AdhesiveImpact {
+    /// JKR (seed 000 eqs. (5.33)-(5.36)) with its separation rule.
     Jkr(JkrImpact<JkrSphere>),
-    MaugisDugdale(MaugisDugdaleImpact),
+    /// Maugis-Dugdale (seed 000 eqs. (5.40)-(5.46)) and the JKR sphere (E*, R, Δγ)
+    /// it was built on.
+    MaugisDugdale(MaugisDugdaleImpact, JkrSphere),
 }
 
 impl AdhesiveImpact {
     fn energy_loss(&self, impact_speed: f64) -> Result<EnergyLoss> {
         match self {
             AdhesiveImpact::Jkr(j) => j.energy_loss(impact_speed),
-            AdhesiveImpact::MaugisDugdale(m) => m.energy_loss(impact_speed),
+            AdhesiveImpact::MaugisDugdale(m, _) => m.energy_loss(impact_speed),
+        }
+    }
+
+    fn sphere(&self) -> &JkrSphere {
+        match self {
+            AdhesiveImpact::Jkr(j) => j.contact(),
+            AdhesiveImpact::MaugisDugdale(_, s) => s,
+        }
+    }
+
+    fn effective_mass(&self) -> f64 {
+        match self {
+            AdhesiveImpact::Jkr(j) => j.effective_mass(),
+            AdhesiveImpact::MaugisDugdale(m, _) => m.effective_mass(),
         }
     }
 }
@@ -92,33 +109,65 @@ impl ViscoadhesiveImpact {
         let r = validate::positive("effective_radius", effective_radius)?;
         let m = validate::positive("effective_mass", effective_mass)?;
         let dg = validate::positive("work_of_adhesion", work_of_adhesion)?;
+        validate::positive("contact_viscosity", contact_viscosity)?;
+        let tol = validate::tolerance("tolerance", tolerance)?;
+        let sphere = JkrSphere::new(e, r, dg)?;
+        let adhesive = match adhesion {
+            Adhesion::Jkr(rule) => {
+                AdhesiveImpact::Jkr(JkrImpact::new(sphere, m)?.with_separation(rule))
+            }
+            Adhesion::MaugisDugdale { tabor_parameter } => AdhesiveImpact::MaugisDugdale(
+                MaugisDugdaleImpact::new(MaugisContact::new(sphere, tabor_parameter)?, m)?,
+                sphere,
+            ),
+        };
+        Self::of(adhesive, contact_viscosity, tol)
+    }
+
+    /// The model on an elastic adhesive impact built by its own crate (JKR with its
+    /// separation rule, or Maugis-Dugdale with its sphere): E*, R, Δγ and m are the
+    /// impact's, so the contact is not built a second time. `contact_viscosity` and
+    /// `tolerance` as in [`ViscoadhesiveImpact::new`]; the adhesive impact is
+    /// evaluated at `tolerance` too.
+    ///
+    /// Seed 000 eqs. (5.33)-(5.36) / (5.40)-(5.46) plus (5.66); README eq. (V1).
+    pub fn of(adhesive: AdhesiveImpact, contact_viscosity: f64, tolerance: f64) -> Result<Self> {
         let eta = validate::positive("contact_viscosity", contact_viscosity)?;
         let tol = validate::tolerance("tolerance", tolerance)?;
         let mut settings = SimulationSettings::with_tolerance(tol)?;
         settings.record_trajectory = false;
-        let (adhesive, law) = match adhesion {
-            Adhesion::Jkr(rule) => {
-                let sphere = JkrSphere::new(e, r, dg)?;
-                let imp = JkrImpact::new(sphere, m)?
-                    .with_separation(rule)
-                    .with_tolerance(tol)?;
-                (AdhesiveImpact::Jkr(imp), LawSpec::Jkr(sphere, rule))
+        let sphere = *adhesive.sphere();
+        let m = adhesive.effective_mass();
+        let (adhesive, adhesion, law) = match adhesive {
+            AdhesiveImpact::Jkr(imp) => {
+                let rule = imp.separation();
+                (
+                    AdhesiveImpact::Jkr(imp.with_tolerance(tol)?),
+                    Adhesion::Jkr(rule),
+                    LawSpec::Jkr(sphere, rule),
+                )
             }
-            Adhesion::MaugisDugdale { tabor_parameter } => {
-                let md = MaugisDugdaleImpact::new(
-                    MaugisContact::new(JkrSphere::new(e, r, dg)?, tabor_parameter)?,
-                    m,
-                )?
-                .with_tolerance(tol)?;
+            AdhesiveImpact::MaugisDugdale(md, s) => {
+                if md.scales() != s.scales() {
+                    return Err(Error::Model {
+                        model: MODEL,
+                        message: "the Maugis-Dugdale impact was not built on the given sphere"
+                            .into(),
+                    });
+                }
+                let md = md.with_tolerance(tol)?;
                 let law = MaugisDugdaleForceLaw::new(&md)?;
                 let law = LawSpec::maugis_dugdale(law, md.scales().depth)?;
-                (AdhesiveImpact::MaugisDugdale(md), law)
+                let adhesion = Adhesion::MaugisDugdale {
+                    tabor_parameter: md.tabor_parameter(),
+                };
+                (AdhesiveImpact::MaugisDugdale(md, s), adhesion, law)
             }
         };
         Ok(ViscoadhesiveImpact {
-            effective_modulus: e,
-            effective_radius: r,
-            work_of_adhesion: dg,
+            effective_modulus: sphere.effective_modulus(),
+            effective_radius: sphere.effective_radius(),
+            work_of_adhesion: sphere.work_of_adhesion(),
             effective_mass: m,
             contact_viscosity: eta,
             adhesion,
