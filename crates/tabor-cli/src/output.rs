@@ -106,14 +106,20 @@ struct Versioned<'a, T: Serialize> {
     value: &'a T,
 }
 
-/// Prints `value` (a struct or map) as one pretty JSON object on stdout, with a
-/// `tabor_version` field.
-pub fn print_json<T: Serialize>(value: &T) -> Outcome {
-    let text = serde_json::to_string_pretty(&Versioned {
+/// `value` (a struct or map) as one pretty JSON object with a `tabor_version`
+/// field: the one JSON shape of a command, whether printed or written to a file.
+pub fn json_text<T: Serialize>(value: &T) -> Result<String, Failure> {
+    Ok(serde_json::to_string_pretty(&Versioned {
         tabor_version: VERSION,
         value,
     })
-    .map_err(|e| e.to_string())?;
+    .map_err(|e| e.to_string())?)
+}
+
+/// Prints `value` (a struct or map) as one pretty JSON object on stdout, with a
+/// `tabor_version` field ([`json_text`]).
+pub fn print_json<T: Serialize>(value: &T) -> Outcome {
+    let text = json_text(value)?;
     let mut out = stdout();
     writeln!(out, "{text}")?;
     out.finish()
