@@ -95,7 +95,7 @@ pub fn penalty(a: &PenaltyArgs, naming: Naming) -> Result<Penalty, Error> {
                         Naming::Keywords => format!("{n:e}"),
                     };
                     return Err(Error::Input(format!(
-                        "invalid {} = {value}: the seed-002 characteristic is linear (n = 1)",
+                        "invalid {} = {value}: the contact characteristic is linear (n = 1)",
                         naming.input("exponent")
                     )));
                 }
@@ -105,7 +105,7 @@ pub fn penalty(a: &PenaltyArgs, naming: Naming) -> Result<Penalty, Error> {
             let closed = law.restitution(a.speed)?;
             let sim = simulate(&mut law, a)?;
             Penalty {
-                law: "seed-002 contact characteristic",
+                law: "numpedia contact characteristic",
                 nominal_restitution: e,
                 achieved_restitution: sim.restitution,
                 closed_form_restitution: closed,

@@ -207,11 +207,11 @@ pub fn plastic(a: &PlasticArgs, naming: Naming) -> Result<Plastic, Error> {
     let outcome = impact(&*model, a.speed)?;
     match clamping {
         Some(Clamping::ToOne) => warnings.push(
-            "seed 001 fit gave a restitution above 1 (just above its yield velocity): clamped to 1"
+            "the dimensionless FEM fit gave a restitution above 1 (just above its yield velocity): clamped to 1"
                 .into(),
         ),
         Some(Clamping::ToZero) => warnings
-            .push("seed 001 fit gave a negative restitution: clamped to 0 (sticking)".into()),
+            .push("the dimensionless FEM fit gave a negative restitution: clamped to 0 (sticking)".into()),
         _ => {}
     }
     if a.speed <= yield_velocity && which != PlasticModel::AdhesiveInterpolation {

@@ -23,7 +23,7 @@ pub enum PenaltyLaw {
 tabor_restitution::menu! {
     PenaltyLaw, "penalty law";
     Characteristic => "characteristic",
-        "seed 002: F = k κ(h, ε) l(v, V); the loss speed V is calibrated exactly";
+        "the numpedia contact characteristic F = k κ(h, ε) l(v, V); the loss speed V is calibrated exactly";
     HuntCrossley => "hunt-crossley", "F = K δⁿ (1 + χ δ̇), χ = 3(1 − e)/(2 v0) (Hunt & Crossley 1975)";
     LankaraniNikravesh => "lankarani-nikravesh", "χ = 3(1 − e²)/(4 v0) (Lankarani & Nikravesh 1990)";
     Flores => "flores", "χ = 8(1 − e)/(5 e v0) (Flores et al. 2011)";

@@ -34,7 +34,7 @@ tabor_restitution::menu! {
     Thornton => "thornton", "Thornton (5.101)-(5.106)";
     Interpolation => "interpolation", "interpolation model, Q = 5, D = 80 (5.107)";
     JacksonGreen => "jackson-green", "Jackson-Green FEM-based law, time-domain simulation (5.108)";
-    DimensionlessFit => "dimensionless-fit", "seed 001's fitted restitution (12), (18), (19)";
+    DimensionlessFit => "dimensionless-fit", "dimensionless FEM fit of the restitution (Chin. J. Theor. Appl. Mech.), its eqs. (12), (18), (19)";
     AdhesiveInterpolation => "adhesive-interpolation", "adhesive interpolation model (5.111)-(5.126)";
     Superposition => "superposition", "a non-adhesive model's loss plus the JKR loss (5.109)-(5.110)";
 }

@@ -74,7 +74,7 @@ impl Prepared<'_> {
                     .map_err(err)?
                     .force_law(),
                 ),
-                _ => return Err(no_law("seed 001's dimensionless fit")),
+                _ => return Err(no_law("the dimensionless FEM fit")),
             },
             Rule::AdhesiveInterpolation => match &models.adhesive_interpolation {
                 Some(a) => Box::new(a.force_law()),

@@ -13,7 +13,7 @@ use tabor::restitution::Error;
 #[derive(clap::Args)]
 #[command(
     after_help = "Three ways to give the Tabor parameter, each repeatable and mixable:\n  \
---lambda            the seed's Λ = d_n/h (the column `lambda`)\n  \
+--lambda            Willert's (2020) Λ = d_n/h (the column `lambda`)\n  \
 --maugis-parameter  Maugis' λ = 2σ0 (R/(πΔγK²))^(1/3), K = 4E*/3; Λ = 0.6861 λ\n  \
 --tabor-mu          Tabor's μ = (RΔγ²/(E*² z0³))^(1/3), through the Dugdale equivalence \
 λ ≈ 1.157 μ (an approximation)\n\

@@ -17,7 +17,7 @@ use tabor::single::Naming;
     Which model needs which flag:\n  \
     thornton, interpolation      --modulus --radius --mass --yield-stress --speed\n  \
     jackson-green                + --poisson-ratio (of the yielding body; hardness H/sigma_Y = 2.67)\n  \
-    dimensionless-fit            + --density (of the sphere, seed 001)\n  \
+    dimensionless-fit            + --density (of the sphere; the dimensionless FEM fit)\n  \
     adhesive-interpolation       + --work-of-adhesion (or --adhesion-parameter to give Phi)\n  \
     superposition                + --work-of-adhesion, --plastic-model (default interpolation)\n\
     With --json the output has model, restitution, energy_loss, yield_velocity, \
