@@ -5,7 +5,7 @@
 //! - [`roots`](crate::root_finding): Brent's method (from the `roots` crate) with
 //!   bracket validation and automatic bracket expansion, and a safeguarded Newton
 //!   iteration for smooth problems;
-//! - [`quadrature`](crate::quadrature) — Clenshaw-Curtis (from the `quadrature` crate)
+//! - [`quadrature`] — Clenshaw-Curtis (from the `quadrature` crate)
 //!   for smooth integrands, tanh-sinh for integrands with endpoint singularities, and
 //!   fixed Gauss-Legendre rules for hot loops;
 //! - [`special`]: Gamma and Beta functions (from `statrs`), the incomplete beta
@@ -23,7 +23,9 @@
 //! - [`NumericsError`]: typed failures (no bracket, no convergence, non-finite value,
 //!   invalid argument) instead of NaN or panics.
 //!
-//! Every routine takes a tolerance and returns the value with what it spent.
+//! Every routine takes a tolerance and returns the value with what it spent; every
+//! default tolerance of the workspace comes from [`tolerance`] (one constant,
+//! [`tolerance::DEFAULT_TOLERANCE`]).
 
 pub mod chebyshev;
 mod cost;
@@ -32,6 +34,7 @@ pub mod ode;
 pub mod quadrature;
 pub mod root_finding;
 pub mod special;
+pub mod tolerance;
 
 pub use ode::rosenbrock;
 
