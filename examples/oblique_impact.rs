@@ -7,10 +7,10 @@
 //! (`docs/figures/oblique_impact_lammps.csv`, written by
 //! `integrations/lammps/test_oblique.py --figure-points`).
 //!
-//! β = −c'/c is the tangential restitution of the contact point (−1: frictionless,
-//! > 0: the contact point reverses), Ψ = κ tan α / μ with κ = 4G*/E* (MBF 1976,
-//! Thornton's normalization). Where the spheres slide throughout (Ψ ≥ 7κ/(1 + e_n)·2
-//! for elastic spheres) every Coulomb model is on MBF's line
+//! β = −c'/c is the tangential restitution of the contact point (−1 when
+//! frictionless, positive when the contact point reverses), Ψ = κ tan α / μ with
+//! κ = 4G*/E* (MBF 1976, Thornton's normalization). Where the spheres slide
+//! throughout (Ψ ≥ 7κ for elastic spheres) every Coulomb model is on MBF's line
 //! β = −1 + (1 + e_n)(1 + 1/K) μ/tan α, K = 2/5; below it MBF resolve micro-slip,
 //! which LAMMPS's `mindlin` does not have (see `crates/tabor-tangential/README.md`).
 //!
