@@ -8,7 +8,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use tabor::dynamics::SimulationSettings;
 use tabor::scene::{spaced, Scene, SweepParameter};
-use tabor::tangential::oblique::{AfterImpact, EnergyLosses, ObliqueOutcome};
+use tabor::tangential::oblique::ObliqueOutcome;
 
 fn load(path: &Path) -> Result<Scene, String> {
     Scene::from_path(path).map_err(|e| format!("{}: {e}", path.display()))
@@ -34,30 +34,6 @@ pub struct ImpactArgs {
     json: bool,
 }
 
-/// The oblique fields of `tabor impact --json`, added to the central-impact ones.
-#[derive(Serialize)]
-struct ObliqueFields<'a> {
-    angle: f64,
-    normal_restitution: f64,
-    tangential_restitution: Option<f64>,
-    rebound_angle: Option<f64>,
-    energy_lost_by_mechanism: &'a EnergyLosses,
-    after: &'a AfterImpact,
-    oblique: ObliqueSummary<'a>,
-}
-
-#[derive(Serialize)]
-struct ObliqueSummary<'a> {
-    law: &'a str,
-    speed: f64,
-    sticks: bool,
-    energy_loss: f64,
-    kinetic_energy: f64,
-    energy_error: f64,
-    contact_time: f64,
-    slip_switches: usize,
-}
-
 /// The scene's oblique impact at `speed` and `angle` (degrees), when it is one:
 /// the central outcome at the normal speed and the simulated oblique one.
 fn oblique_at(
@@ -77,35 +53,15 @@ fn oblique_at(
     Ok(Some((central, oblique)))
 }
 
-/// The JSON object of an oblique impact: the central fields plus [`ObliqueFields`].
-fn oblique_json(
-    central: &tabor::scene::Outcome,
-    o: &ObliqueOutcome,
-) -> Result<serde_json::Value, String> {
-    let mut value = serde_json::to_value(central).map_err(|e| e.to_string())?;
-    let extra = serde_json::to_value(ObliqueFields {
-        angle: o.angle,
-        normal_restitution: o.normal_restitution,
-        tangential_restitution: o.tangential_restitution,
-        rebound_angle: o.rebound_angle,
-        energy_lost_by_mechanism: &o.losses,
-        after: &o.after,
-        oblique: ObliqueSummary {
-            law: &o.law,
-            speed: o.speed,
-            sticks: o.sticks,
-            energy_loss: o.energy_loss,
-            kinetic_energy: o.kinetic_energy,
-            energy_error: o.energy_error,
-            contact_time: o.contact_time,
-            slip_switches: o.slip_switches,
-        },
-    })
-    .map_err(|e| e.to_string())?;
-    if let (Some(map), serde_json::Value::Object(more)) = (value.as_object_mut(), extra) {
-        map.extend(more);
+/// The JSON report of an oblique impact (`Scene::oblique_report`).
+fn oblique_json(scene: &Scene, path: &Path, speed: f64, angle: f64) -> Outcome {
+    match scene
+        .oblique_report(speed, angle)
+        .map_err(|e| format!("{}: {e}", path.display()))?
+    {
+        Some((value, _)) => print_json(&value),
+        None => Err("not an oblique impact".into()),
     }
-    Ok(value)
 }
 
 /// Runs `tabor impact`.
@@ -119,7 +75,7 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
             .ok_or_else(|| format!("{}: give --speed or [impact] speed", args.scene.display()))?;
         if let Some((central, o)) = oblique_at(&scene, &args.scene, speed, angle)? {
             if args.json {
-                return print_json(&oblique_json(&central, &o)?);
+                return oblique_json(&scene, &args.scene, speed, angle);
             }
             let mut out = stdout();
             writeln!(out, "scene                  {}", central.scene)?;
@@ -535,11 +491,11 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
         .or(scene.speed)
         .ok_or_else(|| format!("{}: give --speed or [impact] speed", args.scene.display()))?;
     let angle = args.angle.or(scene.angle()).unwrap_or(0.0);
-    if let Some((central, o)) = oblique_at(&scene, &args.scene, speed, angle)? {
+    if angle != 0.0 || scene.is_oblique() {
         if args.out.is_some() {
             return Err("--out: the oblique impact has no trajectory record yet".into());
         }
-        return print_json(&oblique_json(&central, &o)?);
+        return oblique_json(&scene, &args.scene, speed, angle);
     }
     let mut settings =
         SimulationSettings::with_tolerance(args.tolerance).map_err(|e| e.to_string())?;
