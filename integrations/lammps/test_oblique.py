@@ -20,6 +20,8 @@ integration tolerance and LAMMPS's rounding.
 
 Runs under pytest or as a plain script (`python test_oblique.py`, what test.sh
 does); needs TABOR (the tabor binary) and LD_LIBRARY_PATH=<venv>/lib.
+`python test_oblique.py --figure-points docs/figures/oblique_impact_lammps.csv`
+writes the LAMMPS points of the example `oblique_impact`.
 """
 
 import json
@@ -74,9 +76,12 @@ CASES = [  # (speed m/s, angle degrees, sphere spin about z rad/s)
 ]
 
 
-def tabor_oblique(speed, angle, spin):
+def tabor_oblique(speed, angle, spin, adhesive=True):
+    scene = SCENE.replace("SPIN", repr(spin))
+    if not adhesive:
+        scene = scene.replace(f"[adhesion]\nwork_of_adhesion = {W}\nseparation = \"load-controlled\"\n", "")
     with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as f:
-        f.write(SCENE.replace("SPIN", repr(spin)))
+        f.write(scene)
         path = f.name
     try:
         out = subprocess.run(
@@ -87,7 +92,7 @@ def tabor_oblique(speed, angle, spin):
     return json.loads(out)
 
 
-def lammps_oblique(speed, angle, spin, dt):
+def lammps_oblique(speed, angle, spin, dt, normal=None):
     """One collision in LAMMPS; returns the CoM-frame velocity and spin of both
     spheres after they have parted."""
     lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
@@ -112,7 +117,7 @@ def lammps_oblique(speed, angle, spin, dt):
             f"set atom 2 vx {-0.5 * u[0]} vy {-0.5 * u[1]} vz 0",
             f"set atom 1 omega 0 0 {spin}",
             "pair_style granular",
-            f"pair_coeff * * jkr {E} 0.0 {NU} {gamma} damping viscoelastic "
+            f"pair_coeff * * {normal or f'jkr {E} 0.0 {NU} {gamma}'} damping viscoelastic "
             f"tangential mindlin NULL 0.0 {MU} rolling sds {K_ROLL} 0.0 {MU_ROLL} "
             "twisting marshall",
             "fix 1 all nve/sphere",
@@ -209,5 +214,31 @@ def main():
     return 1 if failed else 0
 
 
+def figure_points(path):
+    """LAMMPS's tangential restitution beta against Psi for the example
+    `oblique_impact` (Hertz and JKR, 1 m/s, dt = t_c/8000): model,psi,beta."""
+    e_star = E / (2.0 * (1.0 - NU * NU))
+    g_star = 1.0 / (2.0 * 2.0 * (2.0 - NU) * (1.0 + NU) / E)
+    kappa = 4.0 * g_star / e_star
+    rows = ["model,psi,tangential_restitution"]
+    for model, adhesive, normal in [("Hertz", False, f"hertz/material {E} 0.0 {NU}"),
+                                    ("JKR", True, None)]:
+        for psi in [0.1, 0.3, 1.0, 2.0, 3.0, 5.0, 8.0]:
+            angle = math.degrees(math.atan(psi * MU / kappa))
+            t = tabor_oblique(1.0, angle, 0.0, adhesive)
+            dt = t["oblique"]["contact_time"] / STEPS_PER_CONTACT
+            out = lammps_oblique(1.0, angle, 0.0, dt, normal)
+            u_y = out["sphere"]["velocity"][1] - out["target"]["velocity"][1]
+            w = out["sphere"]["angular_velocity"][2] + out["target"]["angular_velocity"][2]
+            beta = -(u_y + R * w) / (1.0 * math.sin(math.radians(angle)))
+            rows.append(f"{model},{psi},{beta!r}")
+            print(rows[-1], "tabor", t["tangential_restitution"])
+    with open(path, "w") as f:
+        f.write("\n".join(rows) + "\n")
+
+
 if __name__ == "__main__":
+    if len(sys.argv) == 3 and sys.argv[1] == "--figure-points":
+        figure_points(sys.argv[2])
+        sys.exit(0)
     sys.exit(main())

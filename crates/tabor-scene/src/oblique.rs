@@ -191,7 +191,10 @@ impl Scene {
                 let law = m.force_law();
                 (Box::new(law.inner().clone()), 2.0 * law.contact_viscosity())
             }
-            Rule::AdhesiveInterpolation | Rule::AdhesivePlasticExcess | Rule::Superposition => {
+            Rule::AdhesiveInterpolation
+            | Rule::AdhesivePlasticExcess
+            | Rule::Superposition
+            | Rule::SuperpositionBound => {
                 return Err(SceneError::model(Error::Model {
                     model: "oblique impact",
                     message: format!(
@@ -249,6 +252,77 @@ impl Scene {
         problem
             .simulate(law.as_mut(), v, alpha, &settings)
             .map_err(err)
+    }
+}
+
+/// The oblique fields added to the central-impact ones.
+#[derive(serde::Serialize)]
+struct ObliqueFields<'a> {
+    angle: f64,
+    normal_restitution: f64,
+    tangential_restitution: Option<f64>,
+    rebound_angle: Option<f64>,
+    energy_lost_by_mechanism: &'a tabor_tangential::oblique::EnergyLosses,
+    after: &'a tabor_tangential::oblique::AfterImpact,
+    oblique: ObliqueSummary<'a>,
+}
+
+#[derive(serde::Serialize)]
+struct ObliqueSummary<'a> {
+    law: &'a str,
+    speed: f64,
+    sticks: bool,
+    energy_loss: f64,
+    kinetic_energy: f64,
+    energy_error: f64,
+    contact_time: f64,
+    slip_switches: usize,
+}
+
+impl Scene {
+    /// The report of `tabor impact --json` (and Python's `Scene.outcome`) at
+    /// relative speed `speed` (m/s) and angle `angle` (degrees): `None` for a
+    /// central impact without friction or spin (angle 0, not
+    /// [`Scene::is_oblique`]: today's outcome answers), else the central-impact
+    /// fields of the normal speed `v cos α` plus `angle`, `normal_restitution`,
+    /// `tangential_restitution`, `rebound_angle`, `energy_lost_by_mechanism`,
+    /// `after` (CoM frame, SI) and `oblique` (law, energy error, contact time,
+    /// stick/slip switches), with the central outcome for its warnings.
+    pub fn oblique_report(
+        &self,
+        speed: f64,
+        angle: f64,
+    ) -> Result<Option<(serde_json::Value, crate::Outcome)>, SceneError> {
+        if angle == 0.0 && !self.is_oblique() {
+            return Ok(None);
+        }
+        let o = self.oblique(speed, angle)?;
+        let central = self.outcome_at(speed * angle.to_radians().cos())?;
+        let json = |e: serde_json::Error| SceneError::field("scene", e.to_string());
+        let mut value = serde_json::to_value(&central).map_err(json)?;
+        let extra = serde_json::to_value(ObliqueFields {
+            angle: o.angle,
+            normal_restitution: o.normal_restitution,
+            tangential_restitution: o.tangential_restitution,
+            rebound_angle: o.rebound_angle,
+            energy_lost_by_mechanism: &o.losses,
+            after: &o.after,
+            oblique: ObliqueSummary {
+                law: &o.law,
+                speed: o.speed,
+                sticks: o.sticks,
+                energy_loss: o.energy_loss,
+                kinetic_energy: o.kinetic_energy,
+                energy_error: o.energy_error,
+                contact_time: o.contact_time,
+                slip_switches: o.slip_switches,
+            },
+        })
+        .map_err(json)?;
+        if let (Some(map), serde_json::Value::Object(more)) = (value.as_object_mut(), extra) {
+            map.extend(more);
+        }
+        Ok(Some((value, central)))
     }
 }
 

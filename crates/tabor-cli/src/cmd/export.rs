@@ -2,7 +2,11 @@
 //! (`--check`) the restitution a user's LAMMPS granular line really produces.
 //! Derivations: `crates/tabor-lammps/README.md`.
 
+<<<<<<< HEAD
 use crate::output::{stdout, Outcome};
+=======
+use crate::output::{json_text, print_json, stdout, Outcome};
+>>>>>>> main
 use std::io::Write;
 use std::path::PathBuf;
 use tabor::lammps::{check, export, export_plugin, versioned_json, Check};
@@ -148,12 +152,19 @@ pub fn run(args: &Args) -> Outcome {
 fn write_out(a: &LammpsArgs, x: &impl serde::Serialize, fragment: &str) -> Outcome {
     // one JSON shape, printed or written (tabor::lammps::versioned_json)
     match (&a.out, a.json) {
+<<<<<<< HEAD
         (None, true) => emit(&versioned_json(x, tabor::VERSION).map_err(|e| e.to_string())?),
         (Some(path), true) => {
             let text = versioned_json(x, tabor::VERSION).map_err(|e| e.to_string())?;
             std::fs::write(path, text)
                 .map_err(|e| format!("cannot write {}: {e}", path.display()).into())
         }
+=======
+        (None, true) => print_json(x),
+        // the same object as on stdout
+        (Some(path), true) => std::fs::write(path, json_text(x)? + "\n")
+            .map_err(|e| format!("cannot write {}: {e}", path.display()).into()),
+>>>>>>> main
         (Some(path), false) => std::fs::write(path, fragment)
             .map_err(|e| format!("cannot write {}: {e}", path.display()).into()),
         (None, false) => emit(fragment),

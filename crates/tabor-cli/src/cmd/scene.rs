@@ -8,7 +8,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use tabor::dynamics::SimulationSettings;
 use tabor::scene::{spaced, Scene, SweepParameter};
-use tabor::tangential::oblique::{AfterImpact, EnergyLosses, ObliqueOutcome};
+use tabor::tangential::oblique::ObliqueOutcome;
 
 fn load(path: &Path) -> Result<Scene, String> {
     Scene::from_path(path).map_err(|e| format!("{}: {e}", path.display()))
@@ -34,30 +34,6 @@ pub struct ImpactArgs {
     json: bool,
 }
 
-/// The oblique fields of `tabor impact --json`, added to the central-impact ones.
-#[derive(Serialize)]
-struct ObliqueFields<'a> {
-    angle: f64,
-    normal_restitution: f64,
-    tangential_restitution: Option<f64>,
-    rebound_angle: Option<f64>,
-    energy_lost_by_mechanism: &'a EnergyLosses,
-    after: &'a AfterImpact,
-    oblique: ObliqueSummary<'a>,
-}
-
-#[derive(Serialize)]
-struct ObliqueSummary<'a> {
-    law: &'a str,
-    speed: f64,
-    sticks: bool,
-    energy_loss: f64,
-    kinetic_energy: f64,
-    energy_error: f64,
-    contact_time: f64,
-    slip_switches: usize,
-}
-
 /// The scene's oblique impact at `speed` and `angle` (degrees), when it is one:
 /// the central outcome at the normal speed and the simulated oblique one.
 fn oblique_at(
@@ -77,35 +53,15 @@ fn oblique_at(
     Ok(Some((central, oblique)))
 }
 
-/// The JSON object of an oblique impact: the central fields plus [`ObliqueFields`].
-fn oblique_json(
-    central: &tabor::scene::Outcome,
-    o: &ObliqueOutcome,
-) -> Result<serde_json::Value, String> {
-    let mut value = serde_json::to_value(central).map_err(|e| e.to_string())?;
-    let extra = serde_json::to_value(ObliqueFields {
-        angle: o.angle,
-        normal_restitution: o.normal_restitution,
-        tangential_restitution: o.tangential_restitution,
-        rebound_angle: o.rebound_angle,
-        energy_lost_by_mechanism: &o.losses,
-        after: &o.after,
-        oblique: ObliqueSummary {
-            law: &o.law,
-            speed: o.speed,
-            sticks: o.sticks,
-            energy_loss: o.energy_loss,
-            kinetic_energy: o.kinetic_energy,
-            energy_error: o.energy_error,
-            contact_time: o.contact_time,
-            slip_switches: o.slip_switches,
-        },
-    })
-    .map_err(|e| e.to_string())?;
-    if let (Some(map), serde_json::Value::Object(more)) = (value.as_object_mut(), extra) {
-        map.extend(more);
+/// The JSON report of an oblique impact (`Scene::oblique_report`).
+fn oblique_json(scene: &Scene, path: &Path, speed: f64, angle: f64) -> Outcome {
+    match scene
+        .oblique_report(speed, angle)
+        .map_err(|e| format!("{}: {e}", path.display()))?
+    {
+        Some((value, _)) => print_json(&value),
+        None => Err("not an oblique impact".into()),
     }
-    Ok(value)
 }
 
 /// Runs `tabor impact`.
@@ -119,7 +75,7 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
             .ok_or_else(|| format!("{}: give --speed or [impact] speed", args.scene.display()))?;
         if let Some((central, o)) = oblique_at(&scene, &args.scene, speed, angle)? {
             if args.json {
-                return print_json(&oblique_json(&central, &o)?);
+                return oblique_json(&scene, &args.scene, speed, angle);
             }
             let mut out = stdout();
             writeln!(out, "scene                  {}", central.scene)?;
@@ -185,8 +141,13 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
     writeln!(out, "impact speed      {:e} m/s", o.impact_speed)?;
     writeln!(out, "restitution       {}", o.restitution)?;
     writeln!(out, "sticks            {}", o.sticks)?;
+    let sticking_warning = o
+        .warnings
+        .iter()
+        .any(|w| matches!(w.code, "sticks-up-to-limit" | "sticking-velocity-unknown"));
     match o.sticking_velocity {
         Some(v) => writeln!(out, "sticking velocity {v:e} m/s")?,
+        None if sticking_warning => writeln!(out, "sticking velocity none (see the warning)")?,
         None => writeln!(out, "sticking velocity none (the bodies never stick)")?,
     }
     writeln!(
@@ -330,6 +291,13 @@ pub fn sweep(args: &SweepArgs) -> Outcome {
             )
         }
     };
+    scene.check_parameter(parameter).map_err(|e| {
+        format!(
+            "{}: --parameter {}: {e}",
+            args.scene.display(),
+            parameter.name()
+        )
+    })?;
     if parameter == SweepParameter::Angle || scene.is_oblique() {
         return oblique_sweep(&scene, args, parameter, &values);
     }
@@ -463,28 +431,43 @@ struct Sticking {
     scene: String,
     sticking_velocity: Option<f64>,
     sticks_ever: bool,
+    /// When the bodies stick at every speed the model is valid for: its limit
+    /// (m/s) and what ends its validity.
+    sticks_up_to: Option<f64>,
+    limit_reason: Option<&'static str>,
 }
 
 /// Runs `tabor sticking`.
 pub fn sticking(args: &StickingArgs) -> Outcome {
     let scene = load(&args.scene)?;
-    let v = scene
-        .sticking_velocity()
+    let sticking = scene
+        .sticking()
         .map_err(|e| format!("{}: {e}", args.scene.display()))?;
+    let (sticks_up_to, limit_reason) = match sticking {
+        tabor::scene::Sticking::UpToLimit { limit, reason } => (Some(limit), Some(reason)),
+        _ => (None, None),
+    };
     let out = Sticking {
         scene: scene.name.clone(),
-        sticking_velocity: v,
-        sticks_ever: v.is_some(),
+        sticking_velocity: sticking.velocity(),
+        sticks_ever: sticking.sticks_ever(),
+        sticks_up_to,
+        limit_reason,
     };
     if args.json {
         return print_json(&out);
     }
-    let mut out = stdout();
-    match v {
-        Some(v) => writeln!(out, "sticking velocity {v:e} m/s")?,
-        None => writeln!(out, "the bodies never stick")?,
+    let mut stdout = stdout();
+    match (out.sticking_velocity, out.sticks_up_to) {
+        (Some(v), _) => writeln!(stdout, "sticking velocity {v:e} m/s")?,
+        (None, Some(limit)) => writeln!(
+            stdout,
+            "the bodies stick at every speed up to {limit:e} m/s ({}): no sticking velocity within the model's validity",
+            out.limit_reason.unwrap_or("validity limit")
+        )?,
+        (None, None) => writeln!(stdout, "the bodies never stick")?,
     }
-    out.finish()
+    stdout.finish()
 }
 
 /// Arguments of `tabor trajectory`.
@@ -504,8 +487,8 @@ pub struct TrajectoryArgs {
     #[arg(long)]
     out: Option<PathBuf>,
     /// Requested relative accuracy of the simulated outcome
-    #[arg(long, default_value_t = 1e-9, allow_negative_numbers = true)]
-    tolerance: f64,
+    #[arg(long, default_value_t = crate::args::Tolerance(tabor::numerics::tolerance::COSTLY_TOLERANCE), allow_negative_numbers = true)]
+    tolerance: crate::args::Tolerance,
     /// Print one JSON object
     #[arg(long)]
     json: bool,
@@ -515,6 +498,11 @@ pub struct TrajectoryArgs {
 struct Trajectory {
     scene: String,
     law: String,
+    /// The rule that answers at this speed (whose outcome is `restitution_analytic`).
+    rule: &'static str,
+    /// Whether `law` is the rule's own force law; when not, `warnings` says which
+    /// model is simulated and by how much its restitution differs.
+    law_is_the_rules: bool,
     impact_speed: f64,
     restitution: f64,
     restitution_analytic: f64,
@@ -525,6 +513,7 @@ struct Trajectory {
     energy_loss: f64,
     energy_error: f64,
     points: usize,
+    warnings: Vec<tabor::restitution::Warning>,
 }
 
 /// Runs `tabor trajectory`.
@@ -535,14 +524,14 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
         .or(scene.speed)
         .ok_or_else(|| format!("{}: give --speed or [impact] speed", args.scene.display()))?;
     let angle = args.angle.or(scene.angle()).unwrap_or(0.0);
-    if let Some((central, o)) = oblique_at(&scene, &args.scene, speed, angle)? {
+    if angle != 0.0 || scene.is_oblique() {
         if args.out.is_some() {
             return Err("--out: the oblique impact has no trajectory record yet".into());
         }
-        return print_json(&oblique_json(&central, &o)?);
+        return oblique_json(&scene, &args.scene, speed, angle);
     }
     let mut settings =
-        SimulationSettings::with_tolerance(args.tolerance).map_err(|e| e.to_string())?;
+        SimulationSettings::with_tolerance(args.tolerance.0).map_err(|e| e.to_string())?;
     settings.record_trajectory = args.out.is_some();
     let (sim, outcome) = scene
         .simulate(speed, &settings)
@@ -572,9 +561,17 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
         }
         csv.flush().map_err(|e| fail(e.into()))?;
     }
+    let warnings: Vec<_> = outcome
+        .warnings
+        .iter()
+        .filter(|w| w.code == "trajectory-other-model")
+        .cloned()
+        .collect();
     let out = Trajectory {
         scene: scene.name.clone(),
         law: sim.law.clone(),
+        rule: outcome.combination.rule.as_str(),
+        law_is_the_rules: warnings.is_empty(),
         impact_speed: speed,
         restitution: sim.restitution,
         restitution_analytic: outcome.restitution,
@@ -585,6 +582,7 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
         energy_loss: sim.energy_loss,
         energy_error: sim.energy_error,
         points: sim.trajectory.len(),
+        warnings,
     };
     if args.json {
         return print_json(&out);
@@ -602,5 +600,8 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
         None => writeln!(stdout, "contact time         - (the bodies stick)")?,
     }
     writeln!(stdout, "energy bookkeeping   {:.1e}", out.energy_error)?;
+    for w in &out.warnings {
+        writeln!(stdout, "warning [{}]: {}", w.code, w.message)?;
+    }
     stdout.finish()
 }
