@@ -52,7 +52,7 @@ pub use plugin::{
     PLUGIN_RESTITUTION_ERROR, PLUGIN_TIME_STEP_FRACTION,
 };
 pub use report::{
-    time_step_error, versioned_json, Bodies, Claim, Export, ExportError, Geometry, Limit,
-    Parameter, RangeEnd, Scope, SpeedComparison, CALIBRATED_RELATIVE_ERROR, LOSS_STEP_ERROR,
-    REPRODUCES, SMALL_STRAIN_OVERLAP, TIME_STEP_ERROR, TIME_STEP_FRACTION,
+    time_step_error, Bodies, Claim, Export, ExportError, Geometry, Limit, Parameter, RangeEnd,
+    Scope, SpeedComparison, CALIBRATED_RELATIVE_ERROR, LOSS_STEP_ERROR, REPRODUCES,
+    SMALL_STRAIN_OVERLAP, TIME_STEP_ERROR, TIME_STEP_FRACTION,
 };

@@ -272,25 +272,3 @@ pub struct Export {
     /// tabor versus the LAMMPS model over speeds around the reference.
     pub comparison: Vec<SpeedComparison>,
 }
-
-/// A value with the tabor version as an extra first field.
-#[derive(Serialize)]
-struct Versioned<'a, T: Serialize> {
-    tabor_version: &'a str,
-    #[serde(flatten)]
-    value: &'a T,
-}
-
-/// The one JSON shape of `tabor export lammps --json` (an export, a plugin export
-/// or a check), whether printed or written with `--out`: the value's fields with
-/// `tabor_version` first, pretty-printed, ending in a newline.
-pub fn versioned_json<T: Serialize>(
-    value: &T,
-    tabor_version: &str,
-) -> Result<String, serde_json::Error> {
-    serde_json::to_string_pretty(&Versioned {
-        tabor_version,
-        value,
-    })
-    .map(|s| s + "\n")
-}

@@ -14,14 +14,10 @@
 //! - [`ode`]: adaptive integrators for small ODE systems with dense output and
 //!   event location, explicit (Dormand-Prince 5(4), DOP853) and, in [`rosenbrock`] (also
 //!   reachable as `ode::rosenbrock`), L-stable for stiff systems (Rodas5P by
-<<<<<<< HEAD
-//!   default, RODAS4 on request), all run by one driver ([`ode::drive`]);
-//! - [`search`]: the edge of a yes/no property of a positive argument, by bisection
-//!   in its logarithm (where two models stop agreeing within a bound);
-=======
 //!   default, RODAS4 on request), all run by one loop ([`ode::drive`],
 //!   [`ode::drive_events`]);
->>>>>>> main
+//! - [`search`]: the edge of a yes/no property of a positive argument, by bisection
+//!   in its logarithm (where two models stop agreeing within a bound);
 //! - [`chebyshev`]: Chebyshev interpolation (single and piecewise) for precomputed
 //!   fast tiers of expensive smooth functions;
 //! - [`Cost`]: evaluations and iterations that callers accumulate, so the library can

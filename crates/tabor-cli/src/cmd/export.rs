@@ -2,14 +2,10 @@
 //! (`--check`) the restitution a user's LAMMPS granular line really produces.
 //! Derivations: `crates/tabor-lammps/README.md`.
 
-<<<<<<< HEAD
-use crate::output::{stdout, Outcome};
-=======
 use crate::output::{json_text, print_json, stdout, Outcome};
->>>>>>> main
 use std::io::Write;
 use std::path::PathBuf;
-use tabor::lammps::{check, export, export_plugin, versioned_json, Check};
+use tabor::lammps::{check, export, export_plugin, Check};
 use tabor::scene::Scene;
 
 /// Arguments of `tabor export`.
@@ -128,7 +124,7 @@ pub fn run(args: &Args) -> Outcome {
         let c = check(&scene, line, a.speed, &a.vars)
             .map_err(|e| format!("{}: {e}", a.scene.display()))?;
         if a.json {
-            return emit(&versioned_json(&c, tabor::VERSION).map_err(|e| e.to_string())?);
+            return print_json(&c);
         }
         return emit(&check_report(&c));
     }
@@ -150,21 +146,11 @@ pub fn run(args: &Args) -> Outcome {
 
 /// Prints or writes an export: JSON (`--json`) or the fragment, to `--out` or stdout.
 fn write_out(a: &LammpsArgs, x: &impl serde::Serialize, fragment: &str) -> Outcome {
-    // one JSON shape, printed or written (tabor::lammps::versioned_json)
     match (&a.out, a.json) {
-<<<<<<< HEAD
-        (None, true) => emit(&versioned_json(x, tabor::VERSION).map_err(|e| e.to_string())?),
-        (Some(path), true) => {
-            let text = versioned_json(x, tabor::VERSION).map_err(|e| e.to_string())?;
-            std::fs::write(path, text)
-                .map_err(|e| format!("cannot write {}: {e}", path.display()).into())
-        }
-=======
         (None, true) => print_json(x),
         // the same object as on stdout
         (Some(path), true) => std::fs::write(path, json_text(x)? + "\n")
             .map_err(|e| format!("cannot write {}: {e}", path.display()).into()),
->>>>>>> main
         (Some(path), false) => std::fs::write(path, fragment)
             .map_err(|e| format!("cannot write {}: {e}", path.display()).into()),
         (None, false) => emit(fragment),
