@@ -17,6 +17,28 @@ pub mod visco;
 
 use crate::restitution;
 
+/// The library's parameter names (as [`restitution::Error::InvalidParameter`]
+/// spells them) and the input (flag or keyword, snake_case) that gives each: the
+/// one table of every front end (`--modulus` on the command line, `modulus` in
+/// Python, through [`Naming::input`]). `effective` names its own inputs, as they
+/// differ between the two bodies. A name without an entry is its own input.
+pub const INPUT_NAMES: &[(&str, &str)] = &[
+    ("effective_modulus", "modulus"),
+    ("effective_radius", "radius"),
+    ("effective_mass", "mass"),
+    ("impact_speed", "speed"),
+    ("shear_damping_ratio", "damping_ratio"),
+    ("tabor_parameter_mu", "tabor_mu"),
+];
+
+/// The input that gives the library parameter `parameter` ([`INPUT_NAMES`]).
+pub fn input_name(parameter: &str) -> &str {
+    INPUT_NAMES
+        .iter()
+        .find(|(library, _)| *library == parameter)
+        .map_or(parameter, |(_, input)| input)
+}
+
 /// How a front end names the inputs in messages and warnings.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Naming {
@@ -33,6 +55,11 @@ impl Naming {
             Naming::Flags => format!("--{}", name.replace('_', "-")),
             Naming::Keywords => name.to_string(),
         }
+    }
+
+    /// The library parameter `parameter` as this front end spells its input.
+    pub fn parameter(self, parameter: &str) -> String {
+        self.input(input_name(parameter))
     }
 
     /// A choice `value` mentioned on its own: as is for flags, quoted for keywords.
