@@ -445,9 +445,11 @@ impl ContactLaw {
         match &self.exact {
             Exact::Hertz => {
                 let d = overlap.max(0.0);
-                let r = self.reference.effective_radius;
-                let a = (r * d).sqrt();
-                Ok((4.0 / 3.0 * self.effective_modulus * a * d, a))
+                let sqrt_r = self.reference.sqrt_radius;
+                Ok((
+                    tabor_elastic::hertz_force(self.effective_modulus, sqrt_r, d),
+                    sqrt_r * d.sqrt(),
+                ))
             }
             Exact::Jkr(law) => {
                 let d = overlap.max(law.separation_depth());
