@@ -810,7 +810,11 @@ impl ObliqueImpact {
         let v_n = v * alpha.cos();
         let m_i = self.sphere.mass;
         let m_j = self.target.mass;
-        let m_eff = if flat { m_i } else { m_i * m_j / (m_i + m_j) };
+        let m_eff = if m_j.is_infinite() {
+            m_i
+        } else {
+            m_i * m_j / (m_i + m_j)
+        };
         law.begin_impact(m_eff, v_n)?;
         let length = validate::positive("overlap_scale", law.overlap_scale(m_eff, v_n)?)?;
         let time = length / v_n;
@@ -1476,7 +1480,7 @@ impl<'a> Setup<'a> {
         }
         let energy_loss = kinetic0 - kinetic;
         let energy_error = (energy_loss - losses.total()).abs() / kinetic0;
-        let (fi, fj) = if self.flat {
+        let (fi, fj) = if self.m_j.is_infinite() {
             (1.0, 0.0)
         } else {
             (

@@ -87,3 +87,48 @@ fn gross_sliding_is_rigid_body_coulomb() {
         assert!(out.energy_error < 1e-8, "{}", out.energy_error);
     }
 }
+
+/// Maw, Barber & Fawcett (1976), Wear 38, 101: the tangential restitution β of the
+/// contact point against the normalized angle Ψ = κ tan α / μ, κ = 4G*/E*
+/// (= 2(1 − ν)/(2 − ν) for equal materials), for a solid sphere (K = 2/5).
+///
+/// Expected agreement. Where the sphere slides throughout (Ψ ≥ 7κ, the contact
+/// point never stops), every Coulomb model gives MBF's line β = −1 + 7κ/Ψ exactly
+/// (the impulse ratio is μ): the library must reproduce it to the integration
+/// tolerance. Below it MBF resolve the Mindlin-Deresiewicz micro-slip annulus,
+/// which LAMMPS's `mindlin` (the model here) does not have, and LAMMPS's
+/// total-displacement form loads 3/2 times stiffer than Mindlin's incremental
+/// law: only MBF's shape is expected, not their numbers — β rises above the
+/// sliding line's zero to a positive maximum (the contact point reverses) and
+/// tends to a stick limit independent of Ψ as Ψ → 0. The example
+/// `oblique_impact` plots the curves.
+#[test]
+fn maw_barber_fawcett_sliding_line_and_shape() {
+    let mu = 0.2;
+    let (imp, mut law) = on_flat(mu);
+    let shear = EffectiveShear::of_pair(E_Y, NU, E_Y, NU).unwrap().modulus();
+    let kappa = 4.0 * shear / effective_modulus_flat();
+    assert!((kappa - 2.0 * (1.0 - NU) / (2.0 - NU)).abs() < 1e-12);
+    let beta = |psi: f64, law: &mut ElasticContact| {
+        let angle = (psi * mu / kappa).atan().to_degrees();
+        let out = imp.simulate(law, 0.5, angle, &settings()).unwrap();
+        assert!(out.energy_error < 1e-8);
+        (out.tangential_restitution.unwrap(), out.slip_switches)
+    };
+    // the sliding line: beyond Ψ = 7κ the contact point never stops
+    for psi in [7.5 * kappa, 10.0, 20.0] {
+        let (b, switches) = beta(psi, &mut law);
+        assert_eq!(switches, 0, "Ψ = {psi}: slides throughout");
+        assert_relative_eq!(b, -1.0 + 7.0 * kappa / psi, max_relative = 1e-8);
+    }
+    // below it: a positive maximum (the contact point reverses) ...
+    let maximum = [2.0, 3.0, 4.0]
+        .iter()
+        .map(|&p| beta(p, &mut law).0)
+        .fold(f64::NEG_INFINITY, f64::max);
+    assert!(maximum > 0.1 && maximum < 1.0, "maximum β = {maximum}");
+    // ... and a stick limit that no longer depends on Ψ
+    let (b1, _) = beta(0.01, &mut law);
+    let (b2, _) = beta(0.02, &mut law);
+    assert!((b1 - b2).abs() < 1e-3, "β(0.01) = {b1}, β(0.02) = {b2}");
+}
