@@ -445,9 +445,11 @@ impl ContactLaw {
         match &self.exact {
             Exact::Hertz => {
                 let d = overlap.max(0.0);
-                let r = self.reference.effective_radius;
-                let a = (r * d).sqrt();
-                Ok((4.0 / 3.0 * self.effective_modulus * a * d, a))
+                let sqrt_r = self.reference.sqrt_radius;
+                Ok((
+                    tabor_elastic::hertz_force(self.effective_modulus, sqrt_r, d),
+                    sqrt_r * d.sqrt(),
+                ))
             }
             Exact::Jkr(law) => {
                 let d = overlap.max(law.separation_depth());
@@ -536,40 +538,12 @@ impl ContactLaw {
     }
 }
 
-/// The minimum over x ≥ 0 of `f(x)` (the branch force at s = x), located on a grid
-/// of the fine segment and refined by golden section.
+/// The minimum over 0 ≤ x ≤ S_FINE of `f(x)` (the branch force at s = x): a grid of
+/// 4096 cells of the fine segment, refined by golden section
+/// (`tabor_numerics::minimize`).
 fn branch_minimum(f: &dyn Fn(f64) -> Result<f64>) -> Result<f64> {
-    let n = 4096;
-    let h = crate::table::S_FINE / n as f64;
-    let mut best = (0usize, f(0.0)?);
-    for i in 1..=n {
-        let v = f(h * i as f64)?;
-        if v < best.1 {
-            best = (i, v);
-        }
-    }
-    let (mut lo, mut hi) = (
-        h * best.0.saturating_sub(1) as f64,
-        h * (best.0 + 1).min(n) as f64,
-    );
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    let mut x1 = hi - g * (hi - lo);
-    let mut x2 = lo + g * (hi - lo);
-    let (mut f1, mut f2) = (f(x1)?, f(x2)?);
-    for _ in 0..80 {
-        if f1 < f2 {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - g * (hi - lo);
-            f1 = f(x1)?;
-        } else {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + g * (hi - lo);
-            f2 = f(x2)?;
-        }
-    }
-    Ok(best.1.min(f1).min(f2))
+    Ok(
+        tabor_numerics::minimize::grid_then_golden(f, 0.0, crate::table::S_FINE, 4096, 1e-14)?
+            .value,
+    )
 }

@@ -148,6 +148,58 @@ fn guard(f: impl FnOnce() -> i32) -> i32 {
     }
 }
 
+/// Hands `made` to C as an owned pointer in `*out` (free with [`free_boxed`]), or
+/// returns the error's status.
+///
+/// # Safety
+/// `out` non-null and writable.
+unsafe fn hand_out<T>(made: tabor_restitution::Result<T>, out: *mut *mut T) -> i32 {
+    match made {
+        Ok(value) => {
+            // SAFETY: non-null and writable per the contract
+            unsafe { *out = Box::into_raw(Box::new(value)) };
+            TABOR_OK
+        }
+        Err(e) => status_of(&e),
+    }
+}
+
+/// Frees a pointer from [`hand_out`]; null is ignored; nothing unwinds.
+///
+/// # Safety
+/// `p` null or from [`hand_out`], not yet freed.
+unsafe fn free_boxed<T>(p: *mut T) {
+    if p.is_null() {
+        return;
+    }
+    let _ = catch_unwind(AssertUnwindSafe(|| {
+        // SAFETY: from Box::into_raw in hand_out, freed once per the contract
+        drop(unsafe { Box::from_raw(p) });
+    }));
+}
+
+/// One step of a per-contact evaluation: `step` works on a copy of `*history`;
+/// on success the copy and the result are written back, on error `*out` is zeroed,
+/// the history left unchanged and the error's status returned.
+fn advance<H: Copy, O: Default>(
+    history: &mut H,
+    out: &mut O,
+    step: impl FnOnce(&mut H) -> tabor_restitution::Result<O>,
+) -> i32 {
+    let mut h = *history;
+    match step(&mut h) {
+        Ok(o) => {
+            *history = h;
+            *out = o;
+            TABOR_OK
+        }
+        Err(e) => {
+            *out = O::default();
+            status_of(&e)
+        }
+    }
+}
+
 /// Builds the Rust law of `params`.
 pub fn law_from_params(p: &TaborLawParams) -> tabor_restitution::Result<ContactLaw> {
     let law = match p.model {
@@ -202,14 +254,8 @@ pub unsafe extern "C" fn tabor_law_new(
         }
         // SAFETY: non-null, valid per the contract
         let p = unsafe { *params };
-        match law_from_params(&p) {
-            Ok(law) => {
-                // SAFETY: `out` is non-null and writable per the contract
-                unsafe { *out = Box::into_raw(Box::new(TaborLaw(law))) };
-                TABOR_OK
-            }
-            Err(e) => status_of(&e),
-        }
+        // SAFETY: `out` non-null and writable per the contract
+        unsafe { hand_out(law_from_params(&p).map(TaborLaw), out) }
     })
 }
 
@@ -219,13 +265,8 @@ pub unsafe extern "C" fn tabor_law_new(
 /// `law` must be null or a pointer from [`tabor_law_new`] not yet freed.
 #[no_mangle]
 pub unsafe extern "C" fn tabor_law_free(law: *mut TaborLaw) {
-    if law.is_null() {
-        return;
-    }
-    let _ = catch_unwind(AssertUnwindSafe(|| {
-        // SAFETY: from Box::into_raw in tabor_law_new, freed once per the contract
-        drop(unsafe { Box::from_raw(law) });
-    }));
+    // SAFETY: forwarded contract
+    unsafe { free_boxed(law) }
 }
 
 /// One time step of one contact: the normal force at overlap δ (m, > 0 in
@@ -243,26 +284,14 @@ pub unsafe extern "C" fn tabor_law_evaluate(
     history: *mut TaborHistory,
     out: *mut TaborForce,
 ) -> i32 {
-    guard(|| {
-        if law.is_null() || history.is_null() || out.is_null() {
-            set_error("tabor_law_evaluate: null pointer".into());
-            return TABOR_ERR_NULL;
-        }
-        // SAFETY: valid per the contract
-        let (law, history, out) = unsafe { (&(*law).0, &mut *history, &mut *out) };
-        let mut h = *history;
-        match law.evaluate(overlap, overlap_rate, &mut h) {
-            Ok(f) => {
-                *history = h;
-                *out = f;
-                TABOR_OK
-            }
-            Err(e) => {
-                *out = TaborForce::default();
-                status_of(&e)
-            }
-        }
-    })
+    if law.is_null() {
+        set_error("tabor_law_evaluate: null pointer".into());
+        return TABOR_ERR_NULL;
+    }
+    // SAFETY: non-null, valid per the contract
+    let r = unsafe { (*law).0.effective_radius() };
+    // SAFETY: forwarded contract
+    unsafe { tabor_law_evaluate_at(law, r, overlap, overlap_rate, history, out) }
 }
 
 /// [`tabor_law_evaluate`] at effective radius R* = `effective_radius` (m, finite
@@ -287,21 +316,10 @@ pub unsafe extern "C" fn tabor_law_evaluate_at(
         }
         // SAFETY: valid per the contract
         let (law, history, out) = unsafe { (&(*law).0, &mut *history, &mut *out) };
-        let mut h = *history;
-        let result = law
-            .scales(effective_radius)
-            .and_then(|s| law.evaluate_scaled(&s, overlap, overlap_rate, &mut h));
-        match result {
-            Ok(f) => {
-                *history = h;
-                *out = f;
-                TABOR_OK
-            }
-            Err(e) => {
-                *out = TaborForce::default();
-                status_of(&e)
-            }
-        }
+        advance(history, out, |h| {
+            let s = law.scales(effective_radius)?;
+            law.evaluate_scaled(&s, overlap, overlap_rate, h)
+        })
     })
 }
 
@@ -379,16 +397,11 @@ pub unsafe extern "C" fn tabor_contact_new(
             // SAFETY: non-null, valid per the contract
             unsafe { *friction }
         };
-        let model = law_from_params(&p)
-            .and_then(|law| friction_from_params(&f).map(|fr| ContactModel::new(law, fr)));
-        match model {
-            Ok(m) => {
-                // SAFETY: `out` is non-null and writable per the contract
-                unsafe { *out = Box::into_raw(Box::new(TaborContact(m))) };
-                TABOR_OK
-            }
-            Err(e) => status_of(&e),
-        }
+        let model = law_from_params(&p).and_then(|law| {
+            friction_from_params(&f).map(|fr| TaborContact(ContactModel::new(law, fr)))
+        });
+        // SAFETY: `out` non-null and writable per the contract
+        unsafe { hand_out(model, out) }
     })
 }
 
@@ -398,13 +411,8 @@ pub unsafe extern "C" fn tabor_contact_new(
 /// `contact` null or from [`tabor_contact_new`], not yet freed.
 #[no_mangle]
 pub unsafe extern "C" fn tabor_contact_free(contact: *mut TaborContact) {
-    if contact.is_null() {
-        return;
-    }
-    let _ = catch_unwind(AssertUnwindSafe(|| {
-        // SAFETY: from Box::into_raw in tabor_contact_new, freed once per the contract
-        drop(unsafe { Box::from_raw(contact) });
-    }));
+    // SAFETY: forwarded contract
+    unsafe { free_boxed(contact) }
 }
 
 /// One time step of one contact: normal force, tangential force and torques
@@ -430,18 +438,7 @@ pub unsafe extern "C" fn tabor_contact_step(
         // SAFETY: valid per the contract
         let (model, state, history, out) =
             unsafe { (&(*contact).0, &*state, &mut *history, &mut *out) };
-        let mut h = *history;
-        match model.step(state, &mut h) {
-            Ok(f) => {
-                *history = h;
-                *out = f;
-                TABOR_OK
-            }
-            Err(e) => {
-                *out = TaborContactForces::default();
-                status_of(&e)
-            }
-        }
+        advance(history, out, |h| model.step(state, h))
     })
 }
 

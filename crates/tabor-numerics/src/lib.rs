@@ -20,6 +20,8 @@
 //!   in its logarithm (where two models stop agreeing within a bound);
 //! - [`chebyshev`]: Chebyshev interpolation (single and piecewise) for precomputed
 //!   fast tiers of expensive smooth functions;
+//! - [`minimize`]: the global minimum of a function on an interval (grid, then
+//!   golden-section search);
 //! - [`Cost`]: evaluations and iterations that callers accumulate, so the library can
 //!   show what accuracy costs;
 //! - [`NumericsError`]: typed failures (no bracket, no convergence, non-finite value,
@@ -32,6 +34,7 @@
 pub mod chebyshev;
 mod cost;
 mod error;
+pub mod minimize;
 pub mod ode;
 pub mod quadrature;
 pub mod root_finding;
