@@ -16,7 +16,7 @@ use tabor_restitution::effective::{
 use tabor_restitution::{validate, ElasticMaterial, Error};
 
 /// The default requested relative accuracy.
-pub const DEFAULT_ACCURACY: f64 = 1e-10;
+pub const DEFAULT_ACCURACY: f64 = tabor_numerics::tolerance::ACCURACY;
 
 /// A body of the scene, validated.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -318,6 +318,18 @@ fn adhesion(a: &AdhesionFile, e: f64, r: f64) -> Result<Adhesion, SceneError> {
             "adhesion",
             "give at most one of range, cohesive_stress, tabor_parameter, maugis_parameter, tabor_mu",
         ));
+    }
+    // every number given is checked, also where it does not enter (Δγ = 0)
+    for (key, value) in [
+        ("range", a.range),
+        ("cohesive_stress", a.cohesive_stress),
+        ("tabor_parameter", a.tabor_parameter),
+        ("maugis_parameter", a.maugis_parameter),
+        ("tabor_mu", a.tabor_mu),
+    ] {
+        if let Some(x) = value {
+            validate::positive(key, x).map_err(in_field("adhesion", key))?;
+        }
     }
     let range = if w == 0.0 || given == 0 {
         AdhesionRange::Jkr

@@ -191,7 +191,10 @@ impl Scene {
                 let law = m.force_law();
                 (Box::new(law.inner().clone()), 2.0 * law.contact_viscosity())
             }
-            Rule::AdhesiveInterpolation | Rule::AdhesivePlasticExcess | Rule::Superposition => {
+            Rule::AdhesiveInterpolation
+            | Rule::AdhesivePlasticExcess
+            | Rule::Superposition
+            | Rule::SuperpositionBound => {
                 return Err(SceneError::model(Error::Model {
                     model: "oblique impact",
                     message: format!(

@@ -146,7 +146,11 @@ fn build_plastic(scene: &Inputs) -> Result<Option<Plastic>, SceneError> {
             PlasticContact::new(e, r, sy)
                 .and_then(|contact| JacksonGreen::new(contact, scene.plastic_poisson_ratio()))
                 .map_err(in_yield)?
-                .impact(m, SimulationSettings::default())
+                .impact(
+                    m,
+                    // the scene's accuracy, as every other model it builds
+                    SimulationSettings::with_tolerance(scene.accuracy).map_err(err)?,
+                )
                 .map_err(err)?,
         )),
         PlasticityModel::DimensionlessFit => {
@@ -232,7 +236,7 @@ impl Models {
                         {
                             return Err(SceneError::field(
                                 "adhesion.work_of_adhesion",
-                                format!("adhesion with plasticity (the adhesive interpolation model (5.111)-(5.126)): {e}"),
+                                format!("adhesion with plasticity (the adhesive interpolation model (5.111)-(5.126)): {e}; the model does not cover this scene: set [plasticity] adhesive_model = \"superposition\" to add the adhesive and the plastic losses instead (seed 000 (5.109), reported with a warning)"),
                             ))
                         }
                         // only used to measure the superposition's error
