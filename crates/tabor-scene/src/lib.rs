@@ -23,8 +23,12 @@
 //! used when a yield stress is given and the impact exceeds the yield onset
 //! (adhesive or not); with adhesion it is the adhesive interpolation model
 //! (superposition on request). Viscoelasticity (an incompressible Kelvin-Voigt
-//! body, rigorous model) is used when a viscosity is given and its loss matters;
-//! combined with other losses it is added to them, with a warning.
+//! body on its partner, by the correspondence principle: a standard medium, or a
+//! Kelvin-Voigt contact for two bodies of equal relaxation time) is used when a
+//! viscosity is given and its loss matters; with adhesion on a Kelvin-Voigt contact
+//! it is the coupled viscous-adhesive model, otherwise it acts on the energy the
+//! other effects leave (the `superposition` rule, with a warning). The rules are
+//! listed in [`rule`] and the crate README.
 
 mod builder;
 mod combination;
