@@ -274,7 +274,7 @@ fn restitution_vs_speed_matches_the_models() {
                 assert!(close(e, t.restitution(v).unwrap(), 1e-9), "{row:?}");
                 checked += 1;
             }
-            "seed 001 fit" => {
+            "dimensionless FEM fit" => {
                 // seed 001 eqs. (18), (19) written out, with its Table 3 constants
                 let e3 = ALUMINA_TABLE_3.effective_modulus_with(&p3).unwrap();
                 let s3 = p3.yield_stress.unwrap();

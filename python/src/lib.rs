@@ -1,20 +1,39 @@
 //! `tabor._tabor`: the native core of the Python package `tabor`.
 //!
-//! The Python layer (`python/tabor/__init__.py`) broadcasts every array argument
-//! with numpy and hands this module flat, contiguous float64 arrays of length 1 or
-//! n (a length-1 array stands for a broadcast scalar) together with the broadcast
-//! shape, which is used only to name the index of a bad element. Every batch runs
-//! with the GIL released, in parallel on rayon's pool; the first failing element
-//! (lowest index) is reported as a `ValueError` with the library's message, which
-//! names the parameter and its value. A panic inside the library is caught per
-//! element and raised as a `RuntimeError` instead of crossing the boundary.
+//! The Python layer (`python/tabor/__init__.py`) checks the argument types,
+//! broadcasts every array argument with numpy and hands this module flat,
+//! contiguous float64 arrays of length 1 or n (a length-1 array stands for a
+//! broadcast scalar) with the broadcast shape, which is used only to name the
+//! index of a bad element. Every batch fills typed output columns directly
+//! ([`output`], [`columns`]) in chunks on rayon's pool with the GIL released,
+//! checking for Ctrl-C while it works ([`batch`]). Failures become
+//! `tabor.InputError`, `tabor.ModelValidityError` or `tabor.ConvergenceError`
+//! ([`failure`]); a panic inside the library is a `RuntimeError`, never a crash.
 
+mod batch;
+mod columns;
 mod convert;
+mod failure;
 mod maugis;
 mod models;
+mod output;
 mod scene;
 
 use pyo3::prelude::*;
+
+/// Sets the default number of threads of every batch (None: rayon's global pool,
+/// sized by `RAYON_NUM_THREADS` or the number of cores).
+#[pyfunction]
+#[pyo3(signature = (threads=None))]
+fn set_num_threads(threads: Option<usize>) -> PyResult<()> {
+    batch::set_default_threads(threads).map_err(|m| failure::Failure::input(m).into_pyerr_static())
+}
+
+/// The number of threads a batch uses by default.
+#[pyfunction]
+fn get_num_threads() -> usize {
+    batch::default_threads()
+}
 
 /// The native module `tabor._tabor`.
 #[pymodule]
@@ -23,15 +42,18 @@ fn _tabor(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(maugis::maugis_dugdale_curve, m)?)?;
     m.add_function(wrap_pyfunction!(maugis::tabor_parameter_from_maugis, m)?)?;
     m.add_function(wrap_pyfunction!(maugis::tabor_parameter_from_tabor_mu, m)?)?;
+    m.add_function(wrap_pyfunction!(maugis::maugis_parameter_from_tabor, m)?)?;
     m.add_function(wrap_pyfunction!(maugis::maugis_parameter, m)?)?;
+    m.add_function(wrap_pyfunction!(maugis::force_displacement, m)?)?;
     m.add_function(wrap_pyfunction!(maugis::jkr_normalized_loss, m)?)?;
-    m.add_function(wrap_pyfunction!(models::effective, m)?)?;
-    m.add_function(wrap_pyfunction!(models::jkr, m)?)?;
-    m.add_function(wrap_pyfunction!(models::plastic, m)?)?;
-    m.add_function(wrap_pyfunction!(models::visco, m)?)?;
-    m.add_function(wrap_pyfunction!(models::penalty, m)?)?;
+    m.add_function(wrap_pyfunction!(models::model, m)?)?;
+    m.add_function(wrap_pyfunction!(set_num_threads, m)?)?;
+    m.add_function(wrap_pyfunction!(get_num_threads, m)?)?;
     m.add_class::<scene::Scene>()?;
-    m.add("VERSION", tabor::VERSION)?;
+    m.add("SPECS", models::specs(m.py())?)?;
+    m.add("VERSION", env!("CARGO_PKG_VERSION"))?;
+    m.add("LIBRARY_VERSION", tabor::VERSION)?;
+    m.add("MIN_MAUGIS_PARAMETER", maugis::MIN_MAUGIS_PARAMETER)?;
     m.add(
         "LAMBDA_PER_MAUGIS_PARAMETER",
         tabor::maugis::units::LAMBDA_PER_MAUGIS_PARAMETER,

@@ -1,446 +1,597 @@
-//! The single-model functions, mirroring the CLI subcommands `effective`, `jkr`,
-//! `plastic`, `visco` and `penalty` (crates/tabor-cli/src/cmd): the same inputs (as
-//! keyword arguments named like the flags), the same outputs (as columns), the
-//! same validation. The computations are shared with the CLI in `tabor::single`;
-//! this module only broadcasts the numpy inputs and converts the records.
+//! The single-model functions `effective`, `jkr`, `plastic`, `visco`, `penalty`
+//! (the CLI subcommands of the same names, computed by `tabor::single`), driven by
+//! one table per model: each keyword once, with its kind, default and help line.
+//! The Python layer builds the functions' signatures, docs and type stubs from the
+//! same tables (`_tabor.SPECS`); a library error names the keyword through
+//! `tabor::single::input_name`.
 
-use crate::convert::{batch, records_to_columns, Col};
+use crate::batch::Options;
+use crate::failure::Failure;
+use crate::output::{push, Call, Col};
 use numpy::PyReadonlyArray1;
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
-use serde::Serialize;
-use serde_json::Value;
+use pyo3::types::{PyDict, PyList, PyTuple};
+use tabor::jkr::SeparationRule;
 use tabor::restitution::Error;
-use tabor::single::effective::{effective as effective_record, EffectiveArgs};
-use tabor::single::jkr::{jkr as jkr_record, JkrArgs};
-use tabor::single::penalty::{penalty as penalty_record, PenaltyArgs, PenaltyLaw};
-use tabor::single::plastic::{plastic as plastic_record, PlasticArgs, PlasticModel};
-use tabor::single::visco::{visco as visco_record, ViscoArgs, ViscoModel};
-use tabor::single::Naming;
+use tabor::single::effective::{effective, EffectiveArgs};
+use tabor::single::jkr::{jkr, JkrArgs};
+use tabor::single::penalty::{penalty, PenaltyArgs, PenaltyLaw};
+use tabor::single::plastic::{plastic, PlasticArgs, PlasticModel};
+use tabor::single::visco::{visco, ViscoArgs, ViscoModel};
+use tabor::single::{input_name, Naming};
 
-type Arr<'py> = PyReadonlyArray1<'py, f64>;
-
-/// Flat columns of the required and optional arguments, and the batch length.
-struct Inputs<'a> {
-    required: Vec<Col<'a>>,
-    optional: Vec<Option<Col<'a>>>,
-    n: usize,
+/// How a keyword is given.
+pub enum Kind<A> {
+    /// A number (array_like); required when `default` is None.
+    Number {
+        /// The default value.
+        default: Option<f64>,
+        /// Stores the element's value.
+        set: fn(&mut A, f64),
+    },
+    /// An optional number (array_like or None).
+    Optional {
+        /// Stores the element's value.
+        set: fn(&mut A, Option<f64>),
+    },
+    /// A bool (strictly `True`/`False`), default False.
+    Flag {
+        /// Stores the value.
+        set: fn(&mut A, bool),
+    },
+    /// One of `choices` (a str); required when `default` is None.
+    Choice {
+        /// The default.
+        default: Option<&'static str>,
+        /// The names accepted (underscores may stand for hyphens).
+        choices: &'static [&'static str],
+        /// Stores the choice with this index in `choices`.
+        set: fn(&mut A, usize),
+    },
 }
 
-fn inputs<'a>(
-    required: &[(&str, &'a Arr<'a>)],
-    optional: &[(&str, Option<&'a Arr<'a>>)],
-) -> PyResult<Inputs<'a>> {
-    let mut n = 1usize;
-    let mut check = |name: &str, a: &'a Arr<'a>| -> PyResult<Col<'a>> {
-        let s = a
-            .as_slice()
-            .map_err(|e| PyValueError::new_err(format!("{name}: {e}")))?;
-        if s.len() != 1 {
-            if n != 1 && s.len() != n {
-                return Err(PyValueError::new_err(format!(
-                    "{name}: length {} does not match the batch length {n}",
-                    s.len()
-                )));
-            }
-            n = s.len();
-        }
-        Ok(Col(s))
-    };
-    let mut req = Vec::new();
-    for (name, a) in required {
-        req.push(check(name, a)?);
-    }
-    let mut opt = Vec::new();
-    for (name, a) in optional {
-        opt.push(match a {
-            Some(a) => Some(check(name, a)?),
-            None => None,
-        });
-    }
-    Ok(Inputs {
-        required: req,
-        optional: opt,
-        n,
-    })
+/// One keyword of a model function.
+pub struct Input<A> {
+    /// The keyword (snake_case, the CLI flag without `--`).
+    pub name: &'static str,
+    /// The help line (with the unit).
+    pub help: &'static str,
+    /// How it is given.
+    pub kind: Kind<A>,
 }
 
-/// The library error with its parameter renamed to the Python keyword.
-fn renamed(map: &'static [(&'static str, &'static str)]) -> impl Fn(Error) -> String + Copy {
-    move |e| match e {
+/// A model function: its keywords and its computation.
+pub struct Model<A: 'static, R> {
+    /// The function's name (= the CLI subcommand).
+    pub name: &'static str,
+    /// The keywords, in the order of the signature.
+    pub inputs: &'static [Input<A>],
+    /// The inputs before the keywords are applied.
+    pub blank: fn() -> A,
+    /// Validates and computes one element.
+    pub compute: fn(&A) -> Result<R, Failure>,
+}
+
+/// A library error with its parameter named as the keyword that gives it.
+fn library(e: Error) -> Failure {
+    let message = match &e {
         Error::InvalidParameter {
             parameter,
             value,
             requirement,
-        } => {
-            let name = map
-                .iter()
-                .find(|(lib, _)| *lib == parameter)
-                .map_or(parameter, |(_, py)| *py);
-            format!("invalid {name} = {value:e}: {requirement}")
-        }
+        } => format!(
+            "invalid {} = {value:e}: {requirement}",
+            input_name(parameter)
+        ),
         other => other.to_string(),
+    };
+    Failure::library(&e, message)
+}
+
+fn single(e: tabor::single::Error) -> Failure {
+    match e {
+        tabor::single::Error::Library(e) => library(e),
+        tabor::single::Error::Input(m) => Failure::input(m),
     }
-}
-
-fn json<T: Serialize>(v: &T) -> Result<Value, String> {
-    serde_json::to_value(v).map_err(|e| e.to_string())
-}
-
-fn opt_at(c: &Option<Col<'_>>, i: usize) -> Option<f64> {
-    c.as_ref().map(|c| c.at(i))
 }
 
 // ---------------------------------------------------------------------------------
-// effective
+// the tables
 
-/// `tabor effective` per element (see `tabor.effective`).
-#[pyfunction]
-#[pyo3(signature = (youngs_modulus, poisson_ratio, radius, density, mass, target_youngs_modulus,
-    target_poisson_ratio, rigid_target, target_radius, target_density, target_mass, shape))]
-#[allow(clippy::too_many_arguments)]
-pub fn effective<'py>(
-    py: Python<'py>,
-    youngs_modulus: Arr<'py>,
-    poisson_ratio: Arr<'py>,
-    radius: Arr<'py>,
-    density: Option<Arr<'py>>,
-    mass: Option<Arr<'py>>,
-    target_youngs_modulus: Option<Arr<'py>>,
-    target_poisson_ratio: Option<Arr<'py>>,
-    rigid_target: bool,
-    target_radius: Option<Arr<'py>>,
-    target_density: Option<Arr<'py>>,
-    target_mass: Option<Arr<'py>>,
-    shape: Vec<usize>,
-) -> PyResult<Bound<'py, PyDict>> {
-    if density.is_some() && mass.is_some() {
-        return Err(PyValueError::new_err("give density or mass, not both"));
-    }
-    if rigid_target && (target_youngs_modulus.is_some() || target_poisson_ratio.is_some()) {
-        return Err(PyValueError::new_err(
-            "rigid_target=True conflicts with target_youngs_modulus and target_poisson_ratio",
-        ));
-    }
-    if target_density.is_some() && target_mass.is_some() {
-        return Err(PyValueError::new_err(
-            "give target_density or target_mass, not both",
-        ));
-    }
-    let inp = inputs(
-        &[
-            ("youngs_modulus", &youngs_modulus),
-            ("poisson_ratio", &poisson_ratio),
-            ("radius", &radius),
-        ],
-        &[
-            ("density", density.as_ref()),
-            ("mass", mass.as_ref()),
-            ("target_youngs_modulus", target_youngs_modulus.as_ref()),
-            ("target_poisson_ratio", target_poisson_ratio.as_ref()),
-            ("target_radius", target_radius.as_ref()),
-            ("target_density", target_density.as_ref()),
-            ("target_mass", target_mass.as_ref()),
-        ],
-    )?;
-    let records = batch(py, inp.n, &shape, |i| {
-        let [e1, nu1, r1] = [0, 1, 2].map(|k| inp.required[k].at(i));
-        let o = |k: usize| opt_at(&inp.optional[k], i);
-        let a = EffectiveArgs {
-            youngs_modulus: e1,
-            poisson_ratio: nu1,
-            radius: r1,
-            density: o(0),
-            mass: o(1),
-            target_youngs_modulus: o(2),
-            target_poisson_ratio: o(3),
-            rigid_target,
-            target_radius: o(4),
-            target_density: o(5),
-            target_mass: o(6),
-        };
-        json(&effective_record(&a, Naming::Keywords).map_err(|e| e.message(|e| e.to_string()))?)
-    })?;
-    records_to_columns(py, &records)
-}
+/// `effective` names the library's own parameters (its keywords differ between the
+/// two bodies), so its errors are not renamed.
+pub static EFFECTIVE: Model<EffectiveArgs, tabor::single::effective::Effective> = Model {
+    name: "effective",
+    inputs: &[
+        Input {
+            name: "youngs_modulus",
+            help: "Young's modulus of the sphere (Pa)",
+            kind: Kind::Number {
+                default: None,
+                set: |a, x| a.youngs_modulus = x,
+            },
+        },
+        Input {
+            name: "poisson_ratio",
+            help: "Poisson's ratio of the sphere",
+            kind: Kind::Number {
+                default: None,
+                set: |a, x| a.poisson_ratio = x,
+            },
+        },
+        Input {
+            name: "radius",
+            help: "radius of the sphere (m)",
+            kind: Kind::Number {
+                default: None,
+                set: |a, x| a.radius = x,
+            },
+        },
+        Input {
+            name: "density",
+            help: "density of the sphere (kg/m³); or give mass",
+            kind: Kind::Optional {
+                set: |a, x| a.density = x,
+            },
+        },
+        Input {
+            name: "mass",
+            help: "mass of the sphere (kg)",
+            kind: Kind::Optional {
+                set: |a, x| a.mass = x,
+            },
+        },
+        Input {
+            name: "target_youngs_modulus",
+            help: "Young's modulus of the target (Pa); default: the sphere's",
+            kind: Kind::Optional {
+                set: |a, x| a.target_youngs_modulus = x,
+            },
+        },
+        Input {
+            name: "target_poisson_ratio",
+            help: "Poisson's ratio of the target; default: the sphere's",
+            kind: Kind::Optional {
+                set: |a, x| a.target_poisson_ratio = x,
+            },
+        },
+        Input {
+            name: "rigid_target",
+            help: "the target is rigid",
+            kind: Kind::Flag {
+                set: |a, x| a.rigid_target = x,
+            },
+        },
+        Input {
+            name: "target_radius",
+            help: "radius of the target (m); omit for a flat half-space",
+            kind: Kind::Optional {
+                set: |a, x| a.target_radius = x,
+            },
+        },
+        Input {
+            name: "target_density",
+            help: "density of the target (kg/m³); default: the sphere's",
+            kind: Kind::Optional {
+                set: |a, x| a.target_density = x,
+            },
+        },
+        Input {
+            name: "target_mass",
+            help: "mass of the target (kg); omit for an immovable target",
+            kind: Kind::Optional {
+                set: |a, x| a.target_mass = x,
+            },
+        },
+    ],
+    blank: || EffectiveArgs {
+        youngs_modulus: f64::NAN,
+        poisson_ratio: f64::NAN,
+        radius: f64::NAN,
+        density: None,
+        mass: None,
+        target_youngs_modulus: None,
+        target_poisson_ratio: None,
+        rigid_target: false,
+        target_radius: None,
+        target_density: None,
+        target_mass: None,
+    },
+    compute: |a| {
+        if a.density.is_some() && a.mass.is_some() {
+            return Err(Failure::input("give density or mass, not both"));
+        }
+        if a.rigid_target && (a.target_youngs_modulus.is_some() || a.target_poisson_ratio.is_some())
+        {
+            return Err(Failure::input(
+                "rigid_target=True conflicts with target_youngs_modulus and target_poisson_ratio",
+            ));
+        }
+        if a.target_density.is_some() && a.target_mass.is_some() {
+            return Err(Failure::input(
+                "give target_density or target_mass, not both",
+            ));
+        }
+        effective(a, Naming::Keywords).map_err(|e| match e {
+            tabor::single::Error::Library(e) => {
+                let m = e.to_string();
+                Failure::library(&e, m)
+            }
+            tabor::single::Error::Input(m) => Failure::input(m),
+        })
+    },
+};
 
-// ---------------------------------------------------------------------------------
-// jkr
+const SEPARATION: [SeparationRule; 2] = [SeparationRule::FixedGrip, SeparationRule::LoadControlled];
 
-const JKR_NAMES: &[(&str, &str)] = &[
-    ("effective_modulus", "modulus"),
-    ("effective_radius", "radius"),
-    ("effective_mass", "mass"),
-    ("impact_speed", "speed"),
+/// `jkr`.
+pub static JKR: Model<JkrArgs, tabor::single::jkr::Jkr> = Model {
+    name: "jkr",
+    inputs: &[
+        Input { name: "modulus", help: "effective modulus E* (Pa)", kind: Kind::Number { default: None, set: |a, x| a.modulus = x } },
+        Input { name: "radius", help: "effective radius R (m)", kind: Kind::Number { default: None, set: |a, x| a.radius = x } },
+        Input { name: "work_of_adhesion", help: "work of adhesion Δγ (J/m²)", kind: Kind::Number { default: None, set: |a, x| a.work_of_adhesion = x } },
+        Input { name: "mass", help: "effective (reduced) mass m (kg)", kind: Kind::Number { default: None, set: |a, x| a.mass = x } },
+        Input { name: "speed", help: "impact speed v0 (m/s); adds impact_speed, max_contact_radius, restitution, sticks", kind: Kind::Optional { set: |a, x| a.speed = x } },
+        Input { name: "separation", help: "where contact breaks: fixed grip (force −(5/6)πΔγR, the seed's (5.36)) or load control (−(3/2)πΔγR)", kind: Kind::Choice { default: Some("fixed-grip"), choices: &["fixed-grip", "load-controlled"], set: |a, k| a.separation = SEPARATION[k] } },
+        Input { name: "tolerance", help: "relative tolerance, in [1e-15, 0.5]", kind: Kind::Number { default: Some(1e-12), set: |a, x| a.tolerance = x } },
+    ],
+    blank: || JkrArgs {
+        modulus: f64::NAN,
+        radius: f64::NAN,
+        work_of_adhesion: f64::NAN,
+        mass: f64::NAN,
+        speed: None,
+        separation: SeparationRule::FixedGrip,
+        tolerance: f64::NAN,
+    },
+    compute: |a| jkr(a).map_err(library),
+};
+
+const PLASTIC_MODELS: [PlasticModel; 6] = [
+    PlasticModel::Thornton,
+    PlasticModel::Interpolation,
+    PlasticModel::JacksonGreen,
+    PlasticModel::DimensionlessFit,
+    PlasticModel::AdhesiveInterpolation,
+    PlasticModel::Superposition,
 ];
 
-fn separation_rule(name: &str) -> PyResult<tabor::jkr::SeparationRule> {
-    match name.replace('_', "-").as_str() {
-        "fixed-grip" => Ok(tabor::jkr::SeparationRule::FixedGrip),
-        "load-controlled" => Ok(tabor::jkr::SeparationRule::LoadControlled),
-        _ => Err(PyValueError::new_err(format!(
-            "invalid separation = \"{name}\": expected \"fixed-grip\" or \"load-controlled\""
-        ))),
+/// `plastic`.
+pub static PLASTIC: Model<PlasticArgs, tabor::single::plastic::Plastic> = Model {
+    name: "plastic",
+    inputs: &[
+        Input { name: "model", help: "thornton (5.101)-(5.106), interpolation (5.107), jackson-green (5.108, needs poisson_ratio), dimensionless-fit (seed 001, needs density), adhesive-interpolation (5.111)-(5.126, needs work_of_adhesion or adhesion_parameter), superposition (5.109)-(5.110, needs work_of_adhesion)", kind: Kind::Choice { default: None, choices: &["thornton", "interpolation", "jackson-green", "dimensionless-fit", "adhesive-interpolation", "superposition"], set: |a, k| a.model = PLASTIC_MODELS[k] } },
+        Input { name: "modulus", help: "effective modulus E* (Pa)", kind: Kind::Number { default: None, set: |a, x| a.modulus = x } },
+        Input { name: "radius", help: "effective radius R (m)", kind: Kind::Number { default: None, set: |a, x| a.radius = x } },
+        Input { name: "mass", help: "effective (reduced) mass m (kg)", kind: Kind::Number { default: None, set: |a, x| a.mass = x } },
+        Input { name: "yield_stress", help: "yield stress σ_Y of the yielding body (Pa)", kind: Kind::Number { default: None, set: |a, x| a.yield_stress = x } },
+        Input { name: "speed", help: "impact speed v0 (m/s)", kind: Kind::Number { default: None, set: |a, x| a.speed = x } },
+        Input { name: "poisson_ratio", help: "Poisson's ratio of the yielding body (jackson-green)", kind: Kind::Optional { set: |a, x| a.poisson_ratio = x } },
+        Input { name: "density", help: "density of the sphere, kg/m³ (dimensionless-fit)", kind: Kind::Optional { set: |a, x| a.density = x } },
+        Input { name: "work_of_adhesion", help: "work of adhesion Δγ (J/m²)", kind: Kind::Optional { set: |a, x| a.work_of_adhesion = x } },
+        Input { name: "adhesion_parameter", help: "adhesion parameter Φ, instead of computing it (adhesive-interpolation)", kind: Kind::Optional { set: |a, x| a.adhesion_parameter = x } },
+        Input { name: "plastic_model", help: "the non-adhesive model under superposition", kind: Kind::Choice { default: Some("interpolation"), choices: &["thornton", "interpolation", "jackson-green", "dimensionless-fit"], set: |a, k| a.plastic_model = PLASTIC_MODELS[k] } },
+    ],
+    blank: || PlasticArgs {
+        model: PlasticModel::Interpolation,
+        modulus: f64::NAN,
+        radius: f64::NAN,
+        mass: f64::NAN,
+        yield_stress: f64::NAN,
+        speed: f64::NAN,
+        poisson_ratio: None,
+        density: None,
+        work_of_adhesion: None,
+        adhesion_parameter: None,
+        plastic_model: PlasticModel::Interpolation,
+    },
+    compute: |a| plastic(a, Naming::Keywords).map_err(single),
+};
+
+/// `visco`.
+pub static VISCO: Model<ViscoArgs, tabor::single::visco::Visco> = Model {
+    name: "visco",
+    inputs: &[
+        Input { name: "model", help: "kelvin-voigt-flat (5.61)-(5.63, damping_ratio), kuwabara-kono (5.66, viscous_parameter), kelvin-voigt-sphere (5.64)-(5.67, viscous_parameter), lee-herrmann (5.72, damping), tsuji (5.73, alpha), hunt-crossley (5.72, damping), power-damping (5.72, damping_exponent, damping), standard-flat (5.76)-(5.83), standard-sphere (5.84)-(5.90), kelvin-maxwell-sphere (5.91)-(5.92) (modulus_ratio, viscous_parameter), compressible-flat (5.96)-(5.100, poisson_ratio, damping_ratio, optional bulk_damping_ratio)", kind: Kind::Choice { default: None, choices: &["kelvin-voigt-flat", "kuwabara-kono", "kelvin-voigt-sphere", "lee-herrmann", "tsuji", "hunt-crossley", "power-damping", "standard-flat", "standard-sphere", "kelvin-maxwell-sphere", "compressible-flat"], set: |a, k| a.model = ViscoModel::ALL[k] } },
+        Input { name: "damping_ratio", help: "damping ratio D (> 0)", kind: Kind::Optional { set: |a, x| a.damping_ratio = x } },
+        Input { name: "viscous_parameter", help: "viscous parameter δ (> 0)", kind: Kind::Optional { set: |a, x| a.viscous_parameter = x } },
+        Input { name: "modulus_ratio", help: "modulus ratio β = G∞/G1, in [1e-5, 1e4]", kind: Kind::Optional { set: |a, x| a.modulus_ratio = x } },
+        Input { name: "damping", help: "scaled damping γ of (5.72), in (0, 1e3]", kind: Kind::Optional { set: |a, x| a.damping = x } },
+        Input { name: "damping_exponent", help: "damping exponent β of (5.72), in [0, 1.5]", kind: Kind::Optional { set: |a, x| a.damping_exponent = x } },
+        Input { name: "alpha", help: "Tsuji's α of (5.73), > 0", kind: Kind::Optional { set: |a, x| a.alpha = x } },
+        Input { name: "poisson_ratio", help: "static Poisson's ratio ν, in (-1, 0.5)", kind: Kind::Optional { set: |a, x| a.poisson_ratio = x } },
+        Input { name: "bulk_damping_ratio", help: "bulk damping ratio D2; default (5.100)", kind: Kind::Optional { set: |a, x| a.bulk_damping_ratio = x } },
+        Input { name: "tolerance", help: "relative integration tolerance, in [1e-15, 0.5]", kind: Kind::Number { default: Some(1e-10), set: |a, x| a.tolerance = x } },
+    ],
+    blank: || ViscoArgs {
+        model: ViscoModel::KelvinVoigtFlat,
+        damping_ratio: None,
+        viscous_parameter: None,
+        modulus_ratio: None,
+        damping: None,
+        damping_exponent: None,
+        alpha: None,
+        poisson_ratio: None,
+        bulk_damping_ratio: None,
+        tolerance: f64::NAN,
+    },
+    compute: |a| visco(a, Naming::Keywords).map_err(single),
+};
+
+const PENALTY_LAWS: [PenaltyLaw; 4] = [
+    PenaltyLaw::Characteristic,
+    PenaltyLaw::HuntCrossley,
+    PenaltyLaw::LankaraniNikravesh,
+    PenaltyLaw::Flores,
+];
+
+/// `penalty`.
+pub static PENALTY: Model<PenaltyArgs, tabor::single::penalty::Penalty> = Model {
+    name: "penalty",
+    inputs: &[
+        Input {
+            name: "law",
+            help: "characteristic (seed 002), hunt-crossley, lankarani-nikravesh or flores",
+            kind: Kind::Choice {
+                default: None,
+                choices: &[
+                    "characteristic",
+                    "hunt-crossley",
+                    "lankarani-nikravesh",
+                    "flores",
+                ],
+                set: |a, k| a.law = PENALTY_LAWS[k],
+            },
+        },
+        Input {
+            name: "restitution",
+            help: "nominal restitution e, in (0, 1]",
+            kind: Kind::Number {
+                default: None,
+                set: |a, x| a.restitution = x,
+            },
+        },
+        Input {
+            name: "stiffness",
+            help: "stiffness K (N/m^n; N/m for the characteristic)",
+            kind: Kind::Number {
+                default: Some(1e7),
+                set: |a, x| a.stiffness = x,
+            },
+        },
+        Input {
+            name: "exponent",
+            help: "force exponent n of K δⁿ (default 1.5; the characteristic is linear)",
+            kind: Kind::Optional {
+                set: |a, x| a.exponent = x,
+            },
+        },
+        Input {
+            name: "rounding",
+            help: "rounding half-width ε of the characteristic (m)",
+            kind: Kind::Number {
+                default: Some(0.0),
+                set: |a, x| a.rounding = x,
+            },
+        },
+        Input {
+            name: "mass",
+            help: "effective mass (kg)",
+            kind: Kind::Number {
+                default: Some(1.0),
+                set: |a, x| a.mass = x,
+            },
+        },
+        Input {
+            name: "speed",
+            help: "impact speed v0 (m/s)",
+            kind: Kind::Number {
+                default: Some(1.0),
+                set: |a, x| a.speed = x,
+            },
+        },
+    ],
+    blank: || PenaltyArgs {
+        law: PenaltyLaw::HuntCrossley,
+        restitution: f64::NAN,
+        stiffness: f64::NAN,
+        exponent: None,
+        rounding: f64::NAN,
+        mass: f64::NAN,
+        speed: f64::NAN,
+    },
+    compute: |a| penalty(a, Naming::Keywords).map_err(single),
+};
+
+// ---------------------------------------------------------------------------------
+// the tables in Python
+
+fn spec<'py, A>(py: Python<'py>, inputs: &[Input<A>]) -> PyResult<Bound<'py, PyList>> {
+    let list = PyList::empty(py);
+    for i in inputs {
+        let none = py.None().into_bound(py);
+        let (kind, default, choices): (&str, Bound<'py, PyAny>, Bound<'py, PyAny>) = match &i.kind {
+            Kind::Number { default, .. } => (
+                "number",
+                default.into_pyobject(py)?.into_any(),
+                none.clone(),
+            ),
+            Kind::Optional { .. } => ("optional", none.clone(), none.clone()),
+            Kind::Flag { .. } => (
+                "flag",
+                false.into_pyobject(py)?.to_owned().into_any(),
+                none.clone(),
+            ),
+            Kind::Choice {
+                default, choices, ..
+            } => (
+                "choice",
+                default.into_pyobject(py)?.into_any(),
+                PyTuple::new(py, choices.iter())?.into_any(),
+            ),
+        };
+        list.append((i.name, kind, default, choices, i.help))?;
     }
+    Ok(list)
 }
 
-/// `tabor jkr` per element (see `tabor.jkr`).
-#[pyfunction]
-#[pyo3(signature = (modulus, radius, work_of_adhesion, mass, speed, separation, tolerance, shape))]
-#[allow(clippy::too_many_arguments)]
-pub fn jkr<'py>(
-    py: Python<'py>,
-    modulus: Arr<'py>,
-    radius: Arr<'py>,
-    work_of_adhesion: Arr<'py>,
-    mass: Arr<'py>,
-    speed: Option<Arr<'py>>,
-    separation: &str,
-    tolerance: Arr<'py>,
-    shape: Vec<usize>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let rule = separation_rule(separation)?;
-    let inp = inputs(
-        &[
-            ("modulus", &modulus),
-            ("radius", &radius),
-            ("work_of_adhesion", &work_of_adhesion),
-            ("mass", &mass),
-            ("tolerance", &tolerance),
-        ],
-        &[("speed", speed.as_ref())],
-    )?;
-    let message = renamed(JKR_NAMES);
-    let records = batch(py, inp.n, &shape, |i| {
-        let [e, r, w, m, tol] = [0, 1, 2, 3, 4].map(|k| inp.required[k].at(i));
-        let v0 = opt_at(&inp.optional[0], i);
-        json(
-            &jkr_record(&JkrArgs {
-                modulus: e,
-                radius: r,
-                work_of_adhesion: w,
-                mass: m,
-                speed: v0,
-                separation: rule,
-                tolerance: tol,
-            })
-            .map_err(message)?,
-        )
-    })?;
-    records_to_columns(py, &records)
+/// `{name: [(keyword, kind, default, choices, help), …]}` for the Python layer.
+pub fn specs(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item(EFFECTIVE.name, spec(py, EFFECTIVE.inputs)?)?;
+    d.set_item(JKR.name, spec(py, JKR.inputs)?)?;
+    d.set_item(PLASTIC.name, spec(py, PLASTIC.inputs)?)?;
+    d.set_item(VISCO.name, spec(py, VISCO.inputs)?)?;
+    d.set_item(PENALTY.name, spec(py, PENALTY.inputs)?)?;
+    Ok(d)
 }
 
 // ---------------------------------------------------------------------------------
-// plastic
+// running a model over a batch
 
-fn plastic_model(name: &str, what: &str) -> PyResult<PlasticModel> {
-    Ok(match name.replace('_', "-").as_str() {
-        "thornton" => PlasticModel::Thornton,
-        "interpolation" => PlasticModel::Interpolation,
-        "jackson-green" => PlasticModel::JacksonGreen,
-        "dimensionless-fit" => PlasticModel::DimensionlessFit,
-        "adhesive-interpolation" if what == "model" => PlasticModel::AdhesiveInterpolation,
-        "superposition" if what == "model" => PlasticModel::Superposition,
-        _ => {
-            let expected = if what == "model" {
-                "thornton, interpolation, jackson-green, dimensionless-fit, adhesive-interpolation or superposition"
-            } else {
-                "thornton, interpolation, jackson-green or dimensionless-fit"
-            };
-            return Err(PyValueError::new_err(format!(
-                "invalid {what} = \"{name}\": expected {expected}"
-            )));
-        }
+fn type_error(name: &str, what: &str, value: &Bound<'_, PyAny>) -> PyErr {
+    let t = value
+        .get_type()
+        .name()
+        .map(|n| n.to_string())
+        .unwrap_or_else(|_| "?".into());
+    PyTypeError::new_err(format!("{name} must be {what}, not {t}"))
+}
+
+/// The choice `value` of keyword `name` as an index into `choices`.
+fn choose(name: &str, value: &Bound<'_, PyAny>, choices: &[&str]) -> PyResult<usize> {
+    let text: String = value
+        .extract::<String>()
+        .map_err(|_| type_error(name, "a str", value))?;
+    let wanted = text.replace('_', "-");
+    choices.iter().position(|c| *c == wanted).ok_or_else(|| {
+        let list: Vec<String> = choices.iter().map(|c| format!("\"{c}\"")).collect();
+        Failure::input(format!(
+            "invalid {name} = \"{text}\": expected one of {}",
+            list.join(", ")
+        ))
+        .into_pyerr_static()
     })
 }
 
-const PLASTIC_NAMES: &[(&str, &str)] = &[
-    ("effective_modulus", "modulus"),
-    ("effective_radius", "radius"),
-    ("effective_mass", "mass"),
-    ("impact_speed", "speed"),
-];
-
-/// `tabor plastic` per element (see `tabor.plastic`).
-#[pyfunction]
-#[pyo3(signature = (model, modulus, radius, mass, yield_stress, speed, poisson_ratio, density,
-    work_of_adhesion, adhesion_parameter, plastic_model, shape))]
-#[allow(clippy::too_many_arguments)]
-pub fn plastic<'py>(
-    py: Python<'py>,
-    model: &str,
-    modulus: Arr<'py>,
-    radius: Arr<'py>,
-    mass: Arr<'py>,
-    yield_stress: Arr<'py>,
-    speed: Arr<'py>,
-    poisson_ratio: Option<Arr<'py>>,
-    density: Option<Arr<'py>>,
-    work_of_adhesion: Option<Arr<'py>>,
-    adhesion_parameter: Option<Arr<'py>>,
-    plastic_model: &str,
-    shape: Vec<usize>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let which = self::plastic_model(model, "model")?;
-    let under = self::plastic_model(plastic_model, "plastic_model")?;
-    let inp = inputs(
-        &[
-            ("modulus", &modulus),
-            ("radius", &radius),
-            ("mass", &mass),
-            ("yield_stress", &yield_stress),
-            ("speed", &speed),
-        ],
-        &[
-            ("poisson_ratio", poisson_ratio.as_ref()),
-            ("density", density.as_ref()),
-            ("work_of_adhesion", work_of_adhesion.as_ref()),
-            ("adhesion_parameter", adhesion_parameter.as_ref()),
-        ],
-    )?;
-    let records = batch(py, inp.n, &shape, |i| {
-        let r = |k: usize| inp.required[k].at(i);
-        let o = |k: usize| opt_at(&inp.optional[k], i);
-        let a = PlasticArgs {
-            model: which,
-            modulus: r(0),
-            radius: r(1),
-            mass: r(2),
-            yield_stress: r(3),
-            speed: r(4),
-            poisson_ratio: o(0),
-            density: o(1),
-            work_of_adhesion: o(2),
-            adhesion_parameter: o(3),
-            plastic_model: under,
-        };
-        json(&plastic_record(&a, Naming::Keywords).map_err(|e| e.message(renamed(PLASTIC_NAMES)))?)
-    })?;
-    records_to_columns(py, &records)
+/// A keyword's value for one element.
+enum Given<'a> {
+    Number(Col<'a>),
+    Optional(Option<Col<'a>>),
 }
 
-// ---------------------------------------------------------------------------------
-// visco
-
-const VISCO_NAMES: &[(&str, &str)] = &[("shear_damping_ratio", "damping_ratio")];
-
-/// `tabor visco` per element (see `tabor.visco`).
-#[pyfunction]
-#[pyo3(signature = (model, damping_ratio, viscous_parameter, modulus_ratio, damping,
-    damping_exponent, alpha, poisson_ratio, bulk_damping_ratio, tolerance, shape))]
-#[allow(clippy::too_many_arguments)]
-pub fn visco<'py>(
+fn run_model<'py, A: Sync + Clone + 'static, R: serde::Serialize>(
     py: Python<'py>,
-    model: &str,
-    damping_ratio: Option<Arr<'py>>,
-    viscous_parameter: Option<Arr<'py>>,
-    modulus_ratio: Option<Arr<'py>>,
-    damping: Option<Arr<'py>>,
-    damping_exponent: Option<Arr<'py>>,
-    alpha: Option<Arr<'py>>,
-    poisson_ratio: Option<Arr<'py>>,
-    bulk_damping_ratio: Option<Arr<'py>>,
-    tolerance: Arr<'py>,
-    shape: Vec<usize>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let wanted = model.replace('_', "-");
-    let which = ViscoModel::ALL
-        .into_iter()
-        .find(|m| m.name() == wanted)
-        .ok_or_else(|| {
-            let names: Vec<&str> = ViscoModel::ALL.iter().map(|m| m.name()).collect();
-            PyValueError::new_err(format!(
-                "invalid model = \"{model}\": expected one of {}",
-                names.join(", ")
-            ))
-        })?;
-    let inp = inputs(
-        &[("tolerance", &tolerance)],
-        &[
-            ("damping_ratio", damping_ratio.as_ref()),
-            ("viscous_parameter", viscous_parameter.as_ref()),
-            ("modulus_ratio", modulus_ratio.as_ref()),
-            ("damping", damping.as_ref()),
-            ("damping_exponent", damping_exponent.as_ref()),
-            ("alpha", alpha.as_ref()),
-            ("poisson_ratio", poisson_ratio.as_ref()),
-            ("bulk_damping_ratio", bulk_damping_ratio.as_ref()),
-        ],
-    )?;
-    let records = batch(py, inp.n, &shape, |i| {
-        let o = |k: usize| opt_at(&inp.optional[k], i);
-        let a = ViscoArgs {
-            model: which,
-            damping_ratio: o(0),
-            viscous_parameter: o(1),
-            modulus_ratio: o(2),
-            damping: o(3),
-            damping_exponent: o(4),
-            alpha: o(5),
-            poisson_ratio: o(6),
-            bulk_damping_ratio: o(7),
-            tolerance: inp.required[0].at(i),
-        };
-        json(&visco_record(&a, Naming::Keywords).map_err(|e| e.message(renamed(VISCO_NAMES)))?)
-    })?;
-    records_to_columns(py, &records)
-}
-
-// ---------------------------------------------------------------------------------
-// penalty
-
-const PENALTY_NAMES: &[(&str, &str)] = &[("effective_mass", "mass"), ("impact_speed", "speed")];
-
-/// `tabor penalty` per element (see `tabor.penalty`).
-#[pyfunction]
-#[pyo3(signature = (law, restitution, stiffness, exponent, rounding, mass, speed, shape))]
-#[allow(clippy::too_many_arguments)]
-pub fn penalty<'py>(
-    py: Python<'py>,
-    law: &str,
-    restitution: Arr<'py>,
-    stiffness: Arr<'py>,
-    exponent: Option<Arr<'py>>,
-    rounding: Arr<'py>,
-    mass: Arr<'py>,
-    speed: Arr<'py>,
-    shape: Vec<usize>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let which = match law.replace('_', "-").as_str() {
-        "characteristic" => PenaltyLaw::Characteristic,
-        "hunt-crossley" => PenaltyLaw::HuntCrossley,
-        "lankarani-nikravesh" => PenaltyLaw::LankaraniNikravesh,
-        "flores" => PenaltyLaw::Flores,
-        _ => {
-            return Err(PyValueError::new_err(format!(
-                "invalid law = \"{law}\": expected characteristic, hunt-crossley, \
-                 lankarani-nikravesh or flores"
-            )))
+    model: &Model<A, R>,
+    args: &Bound<'py, PyDict>,
+    call: &Call<'_>,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let mut base = (model.blank)();
+    let mut arrays: Vec<(usize, PyReadonlyArray1<'py, f64>)> = Vec::new();
+    for (k, input) in model.inputs.iter().enumerate() {
+        let value = args.get_item(input.name)?;
+        match &input.kind {
+            Kind::Number { .. } | Kind::Optional { .. } => {
+                if let Some(v) = value.filter(|v| !v.is_none()) {
+                    let a: PyReadonlyArray1<'py, f64> = v
+                        .extract()
+                        .map_err(|_| type_error(input.name, "a float64 array", &v))?;
+                    arrays.push((k, a));
+                } else if matches!(input.kind, Kind::Number { .. }) {
+                    return Err(PyTypeError::new_err(format!(
+                        "{}() missing the keyword argument {}",
+                        model.name, input.name
+                    )));
+                }
+            }
+            Kind::Flag { set } => {
+                let b = match value {
+                    None => false,
+                    Some(v) => v
+                        .cast::<pyo3::types::PyBool>()
+                        .map_err(|_| type_error(input.name, "True or False", &v))?
+                        .is_true(),
+                };
+                set(&mut base, b);
+            }
+            Kind::Choice {
+                default,
+                choices,
+                set,
+            } => {
+                let k = match (value, default) {
+                    (Some(v), _) => choose(input.name, &v, choices)?,
+                    (None, Some(d)) => choices.iter().position(|c| c == d).unwrap_or(0),
+                    (None, None) => {
+                        return Err(PyTypeError::new_err(format!(
+                            "{}() missing the keyword argument {}",
+                            model.name, input.name
+                        )))
+                    }
+                };
+                set(&mut base, k);
+            }
         }
+    }
+    let named: Vec<(&str, &PyReadonlyArray1<'py, f64>)> = arrays
+        .iter()
+        .map(|(k, a)| (model.inputs[*k].name, a))
+        .collect();
+    let cols = call.columns(&named)?;
+    let mut given: Vec<(usize, Given<'_>)> = Vec::new();
+    for (k, input) in model.inputs.iter().enumerate() {
+        let pos = arrays.iter().position(|(j, _)| *j == k);
+        match &input.kind {
+            Kind::Number { .. } => {
+                if let Some(p) = pos {
+                    given.push((k, Given::Number(cols[p])));
+                }
+            }
+            Kind::Optional { .. } => given.push((k, Given::Optional(pos.map(|p| cols[p])))),
+            _ => {}
+        }
+    }
+    let inputs = model.inputs;
+    let compute = model.compute;
+    call.records(py, |i, out| {
+        let mut a = base.clone();
+        for (k, g) in &given {
+            match (&inputs[*k].kind, g) {
+                (Kind::Number { set, .. }, Given::Number(c)) => set(&mut a, c.at(i)),
+                (Kind::Optional { set }, Given::Optional(c)) => set(&mut a, c.map(|c| c.at(i))),
+                _ => {}
+            }
+        }
+        push(out, &compute(&a)?)
+    })
+}
+
+/// `_tabor.model(name, args, shape, errors, threads)`: the model `name` over the
+/// flat float64 arrays (length 1 or n) and scalars of `args`.
+#[pyfunction]
+#[pyo3(signature = (name, args, n, shape, errors="raise", threads=None))]
+pub fn model<'py>(
+    py: Python<'py>,
+    name: &str,
+    args: &Bound<'py, PyDict>,
+    n: usize,
+    shape: Vec<usize>,
+    errors: &str,
+    threads: Option<usize>,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let call = Call {
+        n,
+        shape: &shape,
+        options: Options::new(errors, threads)?,
     };
-    let inp = inputs(
-        &[
-            ("restitution", &restitution),
-            ("stiffness", &stiffness),
-            ("rounding", &rounding),
-            ("mass", &mass),
-            ("speed", &speed),
-        ],
-        &[("exponent", exponent.as_ref())],
-    )?;
-    let records = batch(py, inp.n, &shape, |i| {
-        let r = |k: usize| inp.required[k].at(i);
-        let a = PenaltyArgs {
-            law: which,
-            restitution: r(0),
-            stiffness: r(1),
-            exponent: opt_at(&inp.optional[0], i),
-            rounding: r(2),
-            mass: r(3),
-            speed: r(4),
-        };
-        json(&penalty_record(&a, Naming::Keywords).map_err(|e| e.message(renamed(PENALTY_NAMES)))?)
-    })?;
-    records_to_columns(py, &records)
+    match name {
+        "effective" => run_model(py, &EFFECTIVE, args, &call),
+        "jkr" => run_model(py, &JKR, args, &call),
+        "plastic" => run_model(py, &PLASTIC, args, &call),
+        "visco" => run_model(py, &VISCO, args, &call),
+        "penalty" => run_model(py, &PENALTY, args, &call),
+        other => Err(PyTypeError::new_err(format!("no model function {other}"))),
+    }
 }

@@ -1,14 +1,21 @@
-//! `tabor._tabor.Scene`: a scene file bound through the public scene API and serde
-//! (so that new `Outcome` fields reach Python without a change here).
+//! `tabor._tabor.Scene`: a scene file bound through the public scene API. A single
+//! outcome keeps the shape of `tabor impact --json` (through serde, so new
+//! `Outcome` fields reach Python without a change here); batches (`restitution`,
+//! `sweep`) run on the batch engine in chunks, each chunk preparing the scene's
+//! models once. New methods follow the same pattern: compute detached, map errors
+//! with [`Failure::scene`], emit the outcome's warnings.
 
-use crate::convert::{columns, exception, guarded, json_to_py, records_to_columns, Failure};
+use crate::batch::{guarded, Options};
+use crate::columns::Warnings;
+use crate::convert::json_to_py;
+use crate::failure::Failure;
+use crate::output::{push, Call};
 use numpy::{PyArray1, PyReadonlyArray1};
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyDict, PyTuple};
 use std::path::PathBuf;
 use tabor::dynamics::SimulationSettings;
-use tabor::scene::{Format, SweepParameter};
+use tabor::scene::{Format, Outcome, SceneError, SweepParameter};
 
 /// A collision described once (the native half of `tabor.Scene`).
 #[pyclass(module = "tabor._tabor", frozen)]
@@ -16,22 +23,46 @@ pub struct Scene {
     inner: tabor::scene::Scene,
 }
 
-fn value_error(e: impl std::fmt::Display) -> PyErr {
-    PyValueError::new_err(e.to_string())
+fn scene_error(e: SceneError) -> PyErr {
+    Failure::scene(&e).into_pyerr_static()
 }
 
 /// Runs `f` with the GIL released and a panic turned into an exception.
-fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, String> + Send) -> PyResult<T> {
-    py.detach(|| guarded(f)).map_err(|e| exception(0, &[], e))
+fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, Failure> + Send) -> PyResult<T> {
+    py.detach(|| guarded(f)).map_err(|e| e.into_pyerr(py, None))
 }
 
-fn to_json<T: serde::Serialize>(v: &T) -> Result<serde_json::Value, String> {
-    let mut value = serde_json::to_value(v).map_err(|e| e.to_string())?;
-    // every output carries the tabor version, as the CLI's JSON does
-    if let serde_json::Value::Object(o) = &mut value {
-        o.insert("tabor_version".into(), tabor::VERSION.into());
+/// Emits the warnings of `outcomes` (code, message) through Python's `warnings`.
+fn warn(
+    py: Python<'_>,
+    outcomes: &[&Outcome],
+    total: usize,
+    index: impl Fn(usize) -> String,
+) -> PyResult<()> {
+    let mut w = Warnings::default();
+    for (i, o) in outcomes.iter().enumerate() {
+        for x in &o.warnings {
+            w.add(x.code, &x.message, i);
+        }
     }
-    Ok(value)
+    w.emit(py, total, index)
+}
+
+/// The sections that give a sweep parameter, when the scene lacks them.
+fn missing_section(scene: &tabor::scene::Scene, p: SweepParameter) -> Option<&'static str> {
+    let data = scene.data();
+    match p {
+        SweepParameter::Speed | SweepParameter::SphereRadius => None,
+        SweepParameter::WorkOfAdhesion | SweepParameter::TaborParameter => {
+            data.adhesion.is_none().then_some(
+                "[adhesion] (work_of_adhesion, and range or cohesive_stress for a Tabor parameter)",
+            )
+        }
+        SweepParameter::YieldStress => scene
+            .yield_stress()
+            .is_none()
+            .then_some("[target] yield_stress (or [plasticity])"),
+    }
 }
 
 #[pymethods]
@@ -41,7 +72,7 @@ impl Scene {
     fn from_toml(text: &str) -> PyResult<Scene> {
         tabor::scene::Scene::from_str(text, Format::Toml)
             .map(|inner| Scene { inner })
-            .map_err(value_error)
+            .map_err(scene_error)
     }
 
     /// A scene from JSON text.
@@ -49,7 +80,7 @@ impl Scene {
     fn from_json(text: &str) -> PyResult<Scene> {
         tabor::scene::Scene::from_str(text, Format::Json)
             .map(|inner| Scene { inner })
-            .map_err(value_error)
+            .map_err(scene_error)
     }
 
     /// A scene from a .toml or .json file.
@@ -57,7 +88,11 @@ impl Scene {
     fn from_path(path: PathBuf) -> PyResult<Scene> {
         tabor::scene::Scene::from_path(&path)
             .map(|inner| Scene { inner })
-            .map_err(|e| PyValueError::new_err(format!("{}: {e}", path.display())))
+            .map_err(|e| {
+                let mut f = Failure::scene(&e);
+                f.message = format!("{}: {}", path.display(), f.message);
+                f.into_pyerr_static()
+            })
     }
 
     /// The scene's name.
@@ -78,80 +113,140 @@ impl Scene {
         self.inner.tabor_parameter()
     }
 
-    /// The outcome as a dict (keys of `tabor impact --json`).
+    /// The outcome as a dict (keys of `tabor impact --json`); warnings emitted.
     #[pyo3(signature = (speed=None))]
     fn outcome<'py>(&self, py: Python<'py>, speed: Option<f64>) -> PyResult<Bound<'py, PyAny>> {
-        let value = detached(py, || {
-            let o = match speed {
+        let o = detached(py, || {
+            match speed {
                 Some(v) => self.inner.outcome_at(v),
                 None => self.inner.outcome(),
             }
-            .map_err(|e| e.to_string())?;
-            to_json(&o)
+            .map_err(|e| Failure::scene(&e))
         })?;
+        warn(py, &[&o], 1, |_| String::new())?;
+        let value = serde_json::to_value(&o)
+            .map_err(|e| Failure::input(e.to_string()).into_pyerr(py, None))?;
         json_to_py(py, &value)
     }
 
-    /// Restitution at each speed, flat in and out.
+    /// Restitution at each speed, flat in and out; the warnings of the slowest and
+    /// the fastest point are emitted.
+    #[pyo3(signature = (speeds, n, shape, errors, threads))]
     fn restitution<'py>(
         &self,
         py: Python<'py>,
         speeds: PyReadonlyArray1<'py, f64>,
+        n: usize,
         shape: Vec<usize>,
-    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        let args = [("speed", &speeds)];
-        let (c, _) = columns(&args)?;
-        let speeds = c[0].0;
-        let result = py.detach(|| {
-            guarded(|| Ok(self.inner.restitutions(speeds)))
-                .map_err(|e| (0, e))
-                .and_then(|r| r.map_err(|(i, e)| (i, Failure::Value(e.to_string()))))
-        });
-        match result {
-            Ok(v) => Ok(PyArray1::from_vec(py, v)),
-            Err((i, e)) => Err(exception(i, &shape, e)),
+        errors: &str,
+        threads: Option<usize>,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        let call = Call {
+            n,
+            shape: &shape,
+            options: Options::new(errors, threads)?,
+        };
+        let cols = call.columns(&[("speed", &speeds)])?;
+        let v = cols[0];
+        let scene = &self.inner;
+        // each chunk prepares the models once (`Scene::restitutions`)
+        let result = call.chunked_floats(
+            py,
+            |range| {
+                let speeds: Vec<f64> = range.clone().map(|i| v.at(i)).collect();
+                scene
+                    .restitutions(&speeds)
+                    .map_err(|(j, e)| (range.start + j, Failure::scene(&e)))
+            },
+            |i| {
+                scene
+                    .restitutions(&[v.at(i)])
+                    .map(|r| r[0])
+                    .map_err(|(_, e)| Failure::scene(&e))
+            },
+        )?;
+        // the warnings of the extreme speeds (the validity checks grow with speed)
+        let finite: Vec<f64> = (0..n)
+            .map(|i| v.at(i))
+            .filter(|x| x.is_finite() && *x > 0.0)
+            .collect();
+        if let (Some(lo), Some(hi)) = (
+            finite.iter().copied().reduce(f64::min),
+            finite.iter().copied().reduce(f64::max),
+        ) {
+            let outs: Vec<Outcome> = py.detach(|| {
+                [hi, lo]
+                    .iter()
+                    .filter_map(|&s| scene.outcome_at(s).ok())
+                    .collect()
+            });
+            let refs: Vec<&Outcome> = outs.iter().collect();
+            warn(py, &refs, 1, |k| {
+                if k == 0 {
+                    format!("the fastest speed {hi:e} m/s")
+                } else {
+                    format!("the slowest speed {lo:e} m/s")
+                }
+            })?;
         }
+        Ok(result)
     }
 
     /// The sticking velocity (m/s) or None.
     fn sticking_velocity(&self, py: Python<'_>) -> PyResult<Option<f64>> {
         detached(py, || {
-            self.inner.sticking_velocity().map_err(|e| e.to_string())
+            self.inner
+                .sticking_velocity()
+                .map_err(|e| Failure::scene(&e))
         })
     }
 
-    /// Outcomes over values of one parameter, as a dict of flat columns.
+    /// Outcomes over values of one parameter, as columns.
+    #[pyo3(signature = (parameter, values, n, shape, errors, threads))]
+    #[allow(clippy::too_many_arguments)]
     fn sweep<'py>(
         &self,
         py: Python<'py>,
         parameter: &str,
         values: PyReadonlyArray1<'py, f64>,
+        n: usize,
         shape: Vec<usize>,
-    ) -> PyResult<Bound<'py, PyDict>> {
+        errors: &str,
+        threads: Option<usize>,
+    ) -> PyResult<Bound<'py, PyTuple>> {
         let which = SweepParameter::from_name(&parameter.replace('_', "-")).ok_or_else(|| {
-            PyValueError::new_err(format!(
-                "invalid parameter = \"{parameter}\": expected speed, sphere_radius, \
-                 work_of_adhesion, tabor_parameter or yield_stress"
+            Failure::input(format!(
+                "invalid parameter = \"{parameter}\": expected \"speed\", \"sphere_radius\", \
+                 \"work_of_adhesion\", \"tabor_parameter\" or \"yield_stress\""
             ))
+            .into_pyerr_static()
         })?;
-        let args = [("values", &values)];
-        let (c, _) = columns(&args)?;
-        let values = c[0].0;
-        let records = py.detach(|| {
-            let results = guarded(|| Ok(tabor::scene::sweep(&self.inner, which, values, || {})))
-                .map_err(|e| (0, e))?;
-            let mut records = Vec::with_capacity(results.len());
-            for (i, r) in results.into_iter().enumerate() {
-                let o = r.map_err(|e| (i, Failure::Value(e.to_string())))?;
-                // the version is added once to the whole result (tabor/__init__.py)
-                records.push(
-                    serde_json::to_value(&o).map_err(|e| (i, Failure::Value(e.to_string())))?,
-                );
-            }
-            Ok(records)
-        });
-        let records = records.map_err(|(i, e)| exception(i, &shape, e))?;
-        records_to_columns(py, &records)
+        if let Some(section) = missing_section(&self.inner, which) {
+            return Err(Failure::input(format!(
+                "invalid parameter = \"{parameter}\": the scene has no {}; add {section} to sweep it",
+                parameter.replace('-', "_")
+            ))
+            .into_pyerr_static());
+        }
+        let call = Call {
+            n,
+            shape: &shape,
+            options: Options::new(errors, threads)?,
+        };
+        let cols = call.columns(&[("values", &values)])?;
+        let v = cols[0];
+        let scene = &self.inner;
+        call.chunked_records(
+            py,
+            |range| {
+                let values: Vec<f64> = range.map(|i| v.at(i)).collect();
+                tabor::scene::sweep(scene, which, &values, || {})
+                    .into_iter()
+                    .map(|r| r.map_err(|e| Failure::scene(&e)))
+                    .collect()
+            },
+            |out, o: Outcome| push(out, &o),
+        )
     }
 
     /// The impact simulated in the time domain: the trajectory and its summary.
@@ -163,15 +258,18 @@ impl Scene {
         tolerance: f64,
     ) -> PyResult<Bound<'py, PyDict>> {
         let speed = speed.or(self.inner.speed).ok_or_else(|| {
-            PyValueError::new_err("give speed, or [impact] speed in the scene (m/s)")
+            Failure::input("give speed, or [impact] speed in the scene (m/s)").into_pyerr(py, None)
         })?;
         let (sim, outcome) = detached(py, || {
-            let settings =
-                SimulationSettings::with_tolerance(tolerance).map_err(|e| e.to_string())?;
+            let settings = SimulationSettings::with_tolerance(tolerance).map_err(|e| {
+                let m = e.to_string();
+                Failure::library(&e, m)
+            })?;
             self.inner
                 .simulate(speed, &settings)
-                .map_err(|e| e.to_string())
+                .map_err(|e| Failure::scene(&e))
         })?;
+        warn(py, &[&outcome], 1, |_| String::new())?;
         let d = PyDict::new(py);
         let col = |f: fn(&tabor::dynamics::TrajectoryPoint) -> f64| {
             PyArray1::from_vec(py, sim.trajectory.iter().map(f).collect())

@@ -28,3 +28,22 @@ def run_cli(*args):
 @pytest.fixture(scope="session")
 def cli():
     return run_cli
+
+
+def assert_matches_cli(py, ref):
+    """A model function's result against the CLI's `--json` for the same flags: every
+    CLI key (but `tabor_version`: `tabor.__version__`) with an equal value (floats to
+    1e-12 relative, the CLI being a debug build); the keys the CLI leaves out where
+    they do not apply are NaN or None in Python (a fixed set of keys per call)."""
+    import math
+
+    ref = dict(ref)
+    assert ref.pop("tabor_version") == __import__("tabor").__version__
+    assert set(ref) <= set(py), f"missing {set(ref) - set(py)}"
+    for k, v in ref.items():
+        if isinstance(v, float):
+            assert py[k] == pytest.approx(v, rel=1e-12), k
+        else:
+            assert py[k] == v and type(py[k]) is type(v), k
+    for k in set(py) - set(ref):
+        assert py[k] is None or (isinstance(py[k], float) and math.isnan(py[k])), (k, py[k])

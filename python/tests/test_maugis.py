@@ -99,7 +99,7 @@ def test_conversions():
     assert tabor.LAMBDA_PER_MAUGIS_PARAMETER == pytest.approx(k, rel=1e-15)
     lam_m = np.array([0.1, 1.0, 3.0])
     np.testing.assert_allclose(tabor.tabor_parameter_from_maugis(lam_m), k * lam_m, rtol=1e-15)
-    np.testing.assert_allclose(tabor.maugis_parameter(k * lam_m), lam_m, rtol=1e-15)
+    np.testing.assert_allclose(tabor.maugis_parameter_from_tabor(k * lam_m), lam_m, rtol=1e-15)
     mu = np.array([0.5, 5.0])
     np.testing.assert_allclose(tabor.tabor_parameter_from_tabor_mu(mu), k * 1.157 * mu, rtol=1e-15)
     # seed 000 after (5.46): Λ = 4 is Tabor's μ ≈ 5

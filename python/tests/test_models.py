@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 import tabor
+from conftest import assert_matches_cli
 
 
 def test_effective_closed_forms():
@@ -43,9 +44,7 @@ def test_jkr_matches_cli(cli):
     py = tabor.jkr(modulus=1e9, radius=1e-6, work_of_adhesion=0.05, mass=1e-14, speed=0.7)
     ref = cli("jkr", "--modulus", "1e9", "--radius", "1e-6", "--work-of-adhesion", "0.05",
               "--mass", "1e-14", "--speed", "0.7", "--json")
-    assert set(py) == set(ref)
-    for k, v in ref.items():
-        assert py[k] == (pytest.approx(v, rel=1e-12) if isinstance(v, float) else v), k
+    assert_matches_cli(py, ref)
 
 
 @pytest.mark.parametrize(
@@ -65,9 +64,7 @@ def test_plastic_matches_cli(cli, kwargs, flags):
     py = tabor.plastic(**base, **kwargs)
     ref = cli("plastic", "--modulus", "1e11", "--radius", "1e-4", "--mass", "1e-8",
               "--yield-stress", "1e9", "--speed", "1", *flags, "--json")
-    assert set(py) == set(ref)
-    for k, v in ref.items():
-        assert py[k] == (pytest.approx(v, rel=1e-12) if isinstance(v, float) else v), k
+    assert_matches_cli(py, ref)
 
 
 @pytest.mark.parametrize(
@@ -83,9 +80,7 @@ def test_plastic_matches_cli(cli, kwargs, flags):
 def test_visco_matches_cli(cli, kwargs, flags):
     py = tabor.visco(**kwargs)
     ref = cli("visco", *flags, "--json")
-    assert set(py) == set(ref)
-    for k, v in ref.items():
-        assert py[k] == (pytest.approx(v, rel=1e-12) if isinstance(v, float) else v), k
+    assert_matches_cli(py, ref)
 
 
 def test_kelvin_voigt_flat_small_damping():
@@ -99,9 +94,7 @@ def test_kelvin_voigt_flat_small_damping():
 def test_penalty(cli, law):
     py = tabor.penalty(law=law, restitution=0.8)
     ref = cli("penalty", "--law", law, "--restitution", "0.8", "--json")
-    assert set(py) == set(ref)
-    for k, v in ref.items():
-        assert py[k] == (pytest.approx(v, rel=1e-12) if isinstance(v, float) else v), k
+    assert_matches_cli(py, ref)
     # the simulated impact achieves the law's closed-form restitution
     assert py["achieved_restitution"] == pytest.approx(py["closed_form_restitution"], rel=1e-6)
 

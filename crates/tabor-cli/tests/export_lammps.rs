@@ -41,6 +41,17 @@ fn fragment_json_and_out_agree() {
     ]);
     assert!(o.status.success() && o.stdout.is_empty());
     assert_eq!(std::fs::read_to_string(&out).unwrap(), frag);
+    // one JSON shape whether printed or written to a file
+    let o = tabor(&[
+        "export",
+        "lammps",
+        "examples/scenes/silica.toml",
+        "--json",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success() && o.stdout.is_empty());
+    assert_eq!(std::fs::read(&out).unwrap(), json.stdout);
     std::fs::remove_file(out).ok();
 }
 

@@ -21,8 +21,7 @@ use crate::common::{
     finite_output, loss_by_quadrature, solve_energy_balance, Balance, JkrContactState,
     JkrNormalizedLoss, MaxContactRadius, SeparationRule,
 };
-use tabor_numerics::root_finding::newton_safeguarded;
-use tabor_numerics::{Cost, RootTolerance};
+use tabor_numerics::Cost;
 use tabor_restitution::{validate, Result};
 
 const MODEL: &str = "JKR sphere";
@@ -81,33 +80,106 @@ pub fn contact_radius_at_depth(depth: f64) -> Result<f64> {
 }
 
 /// `x = √â ≥ 3^(−1/3)` on the stable branch at depth `d̂` (finite): the root of the
-/// quartic `3x⁴ − 4x = d̂`, by Newton's method safeguarded by bisection in
-/// `[3^(−1/3), 3/2 + (d̂⁺/3)^(1/4)]` to a relative 4ε; clamped to `3^(−1/3)` (the
-/// fixed-grip instability) for `d̂ ≤ −3^(2/3)`.
+/// quartic `3x⁴ − 4x = d̂`, clamped to `3^(−1/3)` (the fixed-grip instability) for
+/// `d̂ ≤ −3^(2/3)`. Ferrari's closed form ([`sqrt_contact_radius_closed_form`]),
+/// polished by Newton's method inside the bracket `[3^(−1/3), 3/2 + (d̂⁺/1.8)^(1/4)]`
+/// to a step below 2ε x ([`sqrt_contact_radius_at_depth_from`]).
 ///
 /// Seed 000, eq. (5.34) divided by `d_n`, inverted. The one quartic inversion of the
-/// workspace: [`crate::JkrForceLaw`] and `tabor-plastic`'s JKR unloading use it.
+/// workspace: [`crate::JkrForceLaw`] and `tabor-plastic`'s JKR unloading use it,
+/// and the laws that solve it at nearby depths over and over (`tabor-viscoadhesive`,
+/// `tabor-lammps`) its warm-started variant [`sqrt_contact_radius_at_depth_from`].
 pub fn sqrt_contact_radius_at_depth(depth: f64) -> Result<f64> {
     let d = validate::finite("depth", depth)?;
-    if d <= depth_hat(separation_radius(SeparationRule::FixedGrip)) {
+    if d <= FIXED_GRIP_DEPTH {
         return Ok(SQRT_FIXED_GRIP_RADIUS);
     }
-    let upper = 1.5 + (d.max(0.0) / 3.0).powf(0.25);
-    let start = (1.0 + d.max(0.0) / 3.0)
-        .powf(0.25)
-        .clamp(SQRT_FIXED_GRIP_RADIUS, upper);
-    let root = newton_safeguarded(
-        |x| {
-            let x3 = x * x * x;
-            (3.0 * x3 * x - 4.0 * x - d, 12.0 * x3 - 4.0)
-        },
-        SQRT_FIXED_GRIP_RADIUS,
-        upper,
-        start,
-        RootTolerance::relative(4.0 * f64::EPSILON),
-    )?;
-    Ok(root.value)
+    quartic_root_from(d, sqrt_contact_radius_closed_form(d))
 }
+
+/// The warm-started [`sqrt_contact_radius_at_depth`]: the same root, by Newton's
+/// method from `guess` (typically the root at a nearby depth; a guess that is not
+/// finite or outside the bracket starts from `(1 + d̂⁺/3)^(1/4)`), safeguarded by
+/// bisection in `[3^(−1/3), 3/2 + (d̂⁺/1.8)^(1/4)]`, to a step below 2ε x. From the
+/// root at a depth 1 % away it takes three or four steps.
+///
+/// Seed 000, eq. (5.34) divided by `d_n`, inverted.
+pub fn sqrt_contact_radius_at_depth_from(depth: f64, guess: f64) -> Result<f64> {
+    let d = validate::finite("depth", depth)?;
+    if d <= FIXED_GRIP_DEPTH {
+        return Ok(SQRT_FIXED_GRIP_RADIUS);
+    }
+    quartic_root_from(d, guess)
+}
+
+/// Ferrari's solution of the depressed quartic `3x⁴ − 4x − d̂ = 0` for its largest
+/// real root, for `d̂ ≥ −3^(2/3)`: with `z` the positive root of the resolvent cubic
+/// `z³ + (4d̂/3) z − 16/9 = 0` (Cardano, in the cancellation-free form
+/// `z = (16/9)/(u² + 4d̂/9 + v²)` for `d̂ ≥ 0`, `u + v` below, `u = ∛(8/9 + √Δ)`,
+/// `v = −(4d̂/9)/u`, `Δ = 64/81 + (4d̂/9)³ ≥ 0`) and `r = √z`,
+/// `x = (r + √(8/(3r) − r²))/2`. Accurate to a few ulps except within about √ε of
+/// the fixed-grip instability, where the root itself is ill-conditioned
+/// (`dx/dd̂ → ∞`); [`sqrt_contact_radius_at_depth`] polishes it with Newton's method.
+///
+/// A second derivation of the inversion of seed 000 eq. (5.34): the tests compare it
+/// with the Newton iteration.
+pub fn sqrt_contact_radius_closed_form(depth: f64) -> f64 {
+    let d = depth.max(FIXED_GRIP_DEPTH);
+    let p = 4.0 * d / 9.0;
+    let disc = (64.0 / 81.0 + p * p * p).max(0.0);
+    let u = (8.0 / 9.0 + disc.sqrt()).cbrt();
+    let v = -p / u;
+    let z = if d >= 0.0 {
+        (16.0 / 9.0) / (u * u + p + v * v)
+    } else {
+        u + v
+    };
+    let r = z.sqrt();
+    0.5 * (r + (8.0 / (3.0 * r) - r * r).max(0.0).sqrt())
+}
+
+/// Newton's method for `3x⁴ − 4x = d` (`d > −3^(2/3)`, finite) from `guess`, kept in
+/// a shrinking bracket (bisection when a step leaves it): the function is increasing
+/// and convex on the bracket, so from the right the iteration falls monotonically.
+fn quartic_root_from(d: f64, guess: f64) -> Result<f64> {
+    let mut lo = SQRT_FIXED_GRIP_RADIUS;
+    let mut hi = 1.5 + (d.max(0.0) / 1.8).sqrt().sqrt();
+    let mut x = if guess > lo && guess < hi {
+        guess
+    } else {
+        (1.0 + d.max(0.0) / 3.0).sqrt().sqrt().clamp(lo, hi)
+    };
+    for _ in 0..QUARTIC_MAX_STEPS {
+        let x3 = x * x * x;
+        let f = 3.0 * x3 * x - 4.0 * x - d;
+        if f == 0.0 {
+            return Ok(x);
+        }
+        if f > 0.0 {
+            hi = x;
+        } else {
+            lo = x;
+        }
+        let newton = f / (12.0 * x3 - 4.0);
+        if newton.abs() <= 2.0 * f64::EPSILON * x {
+            return Ok(x - newton);
+        }
+        x -= newton;
+        if !(x > lo && x < hi) {
+            x = 0.5 * (lo + hi);
+        }
+        if hi - lo <= 2.0 * f64::EPSILON * x {
+            return Ok(x);
+        }
+    }
+    Err(tabor_restitution::Error::Model {
+        model: MODEL,
+        message: format!("contact radius: no convergence at normalized depth {d:e}"),
+    })
+}
+
+/// Bisection halves the bracket to 2ε x in about 60 steps; Newton needs a handful.
+const QUARTIC_MAX_STEPS: usize = 200;
 
 /// The kinetic energy it takes to reach the maximum contact radius `â_max`, the right
 /// side of the energy balance, in units of `F_n d_n`:
@@ -180,6 +252,8 @@ pub(crate) fn fixed_grip_loss() -> f64 {
 
 /// `√â` at the fixed-grip instability, `3^(−1/3)`.
 const SQRT_FIXED_GRIP_RADIUS: f64 = 0.693_361_274_350_634_8;
+/// `d̂` at the fixed-grip instability, `−3^(2/3)` (`3x⁴ − 4x` at `x = 3^(−1/3)`).
+const FIXED_GRIP_DEPTH: f64 = -2.080_083_823_051_904;
 /// `â0 = (4/3)^(2/3)`.
 const FIRST_TOUCH_RADIUS: f64 = 1.211_413_728_554_759_7;
 /// `â` of zero force, `4^(1/3)`.
@@ -226,7 +300,81 @@ mod tests {
         let fg = separation_radius(SeparationRule::FixedGrip);
         assert!((fg - (1.0f64 / 3.0).powf(2.0 / 3.0)).abs() < eps);
         assert!((SQRT_FIXED_GRIP_RADIUS - 3f64.powf(-1.0 / 3.0)).abs() < eps);
+        assert!((FIXED_GRIP_DEPTH + 3f64.powf(2.0 / 3.0)).abs() < 4.0 * eps);
+        assert_eq!(
+            FIXED_GRIP_DEPTH,
+            depth_hat(separation_radius(SeparationRule::FixedGrip))
+        );
         assert!(depth_hat(FIRST_TOUCH_RADIUS).abs() < 16.0 * eps);
         assert!(force_hat(ZERO_FORCE_RADIUS).abs() < 8.0 * eps);
+    }
+
+    /// The residual of the quartic at x, relative to its terms.
+    fn quartic_residual(x: f64, d: f64) -> f64 {
+        (3.0 * x.powi(4) - 4.0 * x - d).abs() / (3.0 * x.powi(4) + 4.0 * x + d.abs())
+    }
+
+    fn depths() -> Vec<f64> {
+        let mut out = vec![FIXED_GRIP_DEPTH + 1e-12, FIXED_GRIP_DEPTH + 1e-6, -1.0, 0.0];
+        let mut d: f64 = 1e-8;
+        while d < 1e12 {
+            out.extend([d, -d.min(2.08)]);
+            d *= 3.7;
+        }
+        out
+    }
+
+    #[test]
+    fn closed_form_and_newton_agree() {
+        // Two derivations of the same root: Ferrari's formula and Newton's method
+        // from a cold start (1 + d⁺/3)^(1/4), each to a few ulps away from the
+        // ill-conditioned fixed-grip end (within 1e-6 of it: 1e-7).
+        for d in depths() {
+            let cold = quartic_root_from(d, f64::NAN).unwrap();
+            let ferrari = sqrt_contact_radius_closed_form(d);
+            let tol = if d < FIXED_GRIP_DEPTH + 1e-3 {
+                1e-7
+            } else {
+                1e-14
+            };
+            assert!(
+                (ferrari / cold - 1.0).abs() < tol,
+                "d = {d:e}: {ferrari} vs {cold}"
+            );
+            let x = sqrt_contact_radius_at_depth(d).unwrap();
+            assert!(quartic_residual(x, d) < 4.0 * f64::EPSILON, "d = {d:e}");
+            assert!(x >= SQRT_FIXED_GRIP_RADIUS);
+        }
+    }
+
+    #[test]
+    fn warm_start_finds_the_same_root_from_any_guess() {
+        for d in depths() {
+            let x = sqrt_contact_radius_at_depth(d).unwrap();
+            // the root's condition number: rounding of the quartic's terms over x f'(x)
+            let condition = (3.0 * x.powi(4) + 4.0 * x + d.abs()) / (x * (12.0 * x.powi(3) - 4.0));
+            let tol = 8.0 * f64::EPSILON * condition.max(1.0);
+            for guess in [
+                f64::NAN,
+                -1.0,
+                0.0,
+                0.7,
+                1.0,
+                2.0,
+                1e3,
+                x * 1.01,
+                x * 0.99,
+                x,
+            ] {
+                let w = sqrt_contact_radius_at_depth_from(d, guess).unwrap();
+                assert!((w / x - 1.0).abs() < tol, "d = {d:e}, guess {guess}");
+            }
+        }
+        assert_eq!(
+            sqrt_contact_radius_at_depth_from(-5.0, 1.0).unwrap(),
+            SQRT_FIXED_GRIP_RADIUS
+        );
+        assert!(sqrt_contact_radius_at_depth_from(f64::NAN, 1.0).is_err());
+        assert!(sqrt_contact_radius_at_depth(f64::INFINITY).is_err());
     }
 }

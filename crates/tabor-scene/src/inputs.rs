@@ -16,7 +16,7 @@ use tabor_restitution::effective::{
 use tabor_restitution::{validate, ElasticMaterial, Error};
 
 /// The default requested relative accuracy.
-pub const DEFAULT_ACCURACY: f64 = 1e-10;
+pub const DEFAULT_ACCURACY: f64 = tabor_numerics::tolerance::ACCURACY;
 
 /// A body of the scene, validated.
 #[derive(Clone, Debug, PartialEq, Serialize)]

@@ -22,13 +22,15 @@
 //! form when Λ ≤ Λ1, the numerical Maugis-Dugdale solution otherwise. Plasticity is
 //! used when a yield stress is given and the impact exceeds the yield onset
 //! (adhesive or not); with adhesion it is the adhesive interpolation model
-//! (superposition on request). Viscoelasticity (an incompressible Kelvin-Voigt
-//! body on its partner, by the correspondence principle: a standard medium, or a
-//! Kelvin-Voigt contact for two bodies of equal relaxation time) is used when a
-//! viscosity is given and its loss matters; with adhesion on a Kelvin-Voigt contact
-//! it is the coupled viscous-adhesive model, otherwise it acts on the energy the
-//! other effects leave (the `superposition` rule, with a warning). The rules are
-//! listed in [`rule`] and the crate README.
+//! (superposition on request). Viscoelasticity is used when a viscosity is given
+//! and its loss matters: the contact of both bodies by the correspondence
+//! principle (a viscous body on an elastic one is a standard medium, two viscous
+//! bodies with equal relaxation times a Kelvin-Voigt contact, different ones are
+//! refused). With adhesion on a Kelvin-Voigt contact it is coupled to it in the
+//! time domain (the viscous-adhesive rule, `tabor-viscoadhesive`); otherwise its
+//! loss is added to the others' on the kinetic energy they leave (superposition,
+//! with a warning). The one rule per combination of effects: [`rule`] and the
+//! crate README.
 
 mod builder;
 mod combination;

@@ -117,7 +117,7 @@ impl Prepared<'_> {
             return Ok(Law::exact(law));
         }
         let why = match rule {
-            Rule::Single => "the viscoelastic sphere is solved in scaled form (MDR) or the model (seed 001's fit, JKR on a graded medium) has no time-domain force law".to_string(),
+            Rule::Single => "the viscoelastic sphere is solved in scaled form (MDR) or the model (the dimensionless FEM fit, JKR on a graded medium) has no time-domain force law".to_string(),
             other => format!("the {} rule combines losses, not forces", other.as_str()),
         };
         let candidates: [Option<Box<dyn ForceLaw>>; 4] = [

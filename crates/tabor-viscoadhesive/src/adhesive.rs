@@ -71,56 +71,10 @@ impl JkrBranch {
         if d == d_last {
             return Ok(x_last);
         }
-        let x = jkr_root(d, x_last)?;
+        let x = tabor_jkr::normalized::sqrt_contact_radius_at_depth_from(d, x_last)?;
         self.last.set((d, x));
         Ok(x)
     }
-}
-
-/// The stable root `x ≥ 3^(−1/3)` of `f(x) = 3x⁴ − 4x − d̂`, by Newton from
-/// `guess` (or from the cold start of `tabor-jkr`) inside a shrinking bracket
-/// (bisection when a step leaves it): f is increasing and convex there.
-fn jkr_root(d: f64, guess: f64) -> Result<f64> {
-    let d_min = 3.0 * X_MIN.powi(4) - 4.0 * X_MIN;
-    if d.is_nan() {
-        return Err(Error::invalid("overlap", d, "must be finite"));
-    }
-    if d <= d_min {
-        return Ok(X_MIN);
-    }
-    let mut lo = X_MIN;
-    let mut hi = 2.0 + (d.abs() / 2.0).powf(0.25);
-    let mut x = if guess.is_finite() && guess > lo && guess < hi {
-        guess
-    } else {
-        (1.0 + d.max(0.0) / 3.0).powf(0.25).clamp(lo, hi)
-    };
-    for _ in 0..200 {
-        let x3 = x * x * x;
-        let f = 3.0 * x3 * x - 4.0 * x - d;
-        if f == 0.0 {
-            return Ok(x);
-        }
-        if f > 0.0 {
-            hi = x;
-        } else {
-            lo = x;
-        }
-        let fp = 12.0 * x3 - 4.0;
-        let mut next = x - f / fp;
-        if !(next > lo && next < hi) {
-            next = 0.5 * (lo + hi);
-        }
-        let step = (next - x).abs();
-        x = next;
-        if step <= 2.0 * f64::EPSILON * x || hi - lo <= 2.0 * f64::EPSILON * x {
-            return Ok(x);
-        }
-    }
-    Err(Error::Model {
-        model: "JKR contact radius",
-        message: format!("no convergence at normalized depth {d:e}"),
-    })
 }
 
 /// A table of the Maugis-Dugdale potential `U(d) − U(d_pull-off)` along the

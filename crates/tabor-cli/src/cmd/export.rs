@@ -2,7 +2,7 @@
 //! (`--check`) the restitution a user's LAMMPS granular line really produces.
 //! Derivations: `crates/tabor-lammps/README.md`.
 
-use crate::output::{print_json, stdout, Outcome};
+use crate::output::{json_text, print_json, stdout, Outcome};
 use std::io::Write;
 use std::path::PathBuf;
 use tabor::lammps::{check, export, export_plugin, Check};
@@ -131,15 +131,9 @@ pub fn run(args: &Args) -> Outcome {
 fn write_out(a: &LammpsArgs, x: &impl serde::Serialize, fragment: &str) -> Outcome {
     match (&a.out, a.json) {
         (None, true) => print_json(x),
-        (Some(path), true) => {
-            let text = serde_json::to_string_pretty(&serde_json::json!({
-                "tabor_version": tabor::VERSION,
-                "export": x,
-            }))
-            .map_err(|e| e.to_string())?;
-            std::fs::write(path, text + "\n")
-                .map_err(|e| format!("cannot write {}: {e}", path.display()).into())
-        }
+        // the same object as on stdout
+        (Some(path), true) => std::fs::write(path, json_text(x)? + "\n")
+            .map_err(|e| format!("cannot write {}: {e}", path.display()).into()),
         (Some(path), false) => std::fs::write(path, fragment)
             .map_err(|e| format!("cannot write {}: {e}", path.display()).into()),
         (None, false) => emit(fragment),

@@ -311,8 +311,8 @@ pub struct TrajectoryArgs {
     #[arg(long)]
     out: Option<PathBuf>,
     /// Requested relative accuracy of the simulated outcome
-    #[arg(long, default_value_t = 1e-9, allow_negative_numbers = true)]
-    tolerance: f64,
+    #[arg(long, default_value_t = crate::args::Tolerance(tabor::numerics::tolerance::COSTLY_TOLERANCE), allow_negative_numbers = true)]
+    tolerance: crate::args::Tolerance,
     /// Print one JSON object
     #[arg(long)]
     json: bool,
@@ -348,7 +348,7 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
         .or(scene.speed)
         .ok_or_else(|| format!("{}: give --speed or [impact] speed", args.scene.display()))?;
     let mut settings =
-        SimulationSettings::with_tolerance(args.tolerance).map_err(|e| e.to_string())?;
+        SimulationSettings::with_tolerance(args.tolerance.0).map_err(|e| e.to_string())?;
     settings.record_trajectory = args.out.is_some();
     let (sim, outcome) = scene
         .simulate(speed, &settings)

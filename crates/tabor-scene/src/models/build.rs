@@ -146,7 +146,11 @@ fn build_plastic(scene: &Inputs) -> Result<Option<Plastic>, SceneError> {
             PlasticContact::new(e, r, sy)
                 .and_then(|contact| JacksonGreen::new(contact, scene.plastic_poisson_ratio()))
                 .map_err(in_yield)?
-                .impact(m, SimulationSettings::default())
+                .impact(
+                    m,
+                    // the scene's accuracy, as every other model it builds
+                    SimulationSettings::with_tolerance(scene.accuracy).map_err(err)?,
+                )
                 .map_err(err)?,
         )),
         PlasticityModel::DimensionlessFit => {

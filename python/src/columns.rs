@@ -1,0 +1,841 @@
+//! Records into columns without per-element JSON: a `serde::Serializer` that
+//! writes each field of a result record (`tabor::single::*` records, the scene's
+//! `Outcome`) straight into a typed column: f64, bool, int64, or a string column
+//! of codes into a table of distinct strings (so 10⁶ equal model names cost 4
+//! bytes each). Nested structs flatten to dotted keys (`cost.evaluations`); a list
+//! of structs led by a `name` field flattens by that name
+//! (`effects.adhesion.used`); a `warnings` list goes to the warning tally (Python's
+//! `warnings` module) and its column keeps the codes; any other list or map is
+//! stored once per distinct value (as JSON, turned into Python objects at the
+//! end). New record fields reach Python without a change here.
+
+use numpy::PyArray1;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList, PyTuple};
+use serde::ser::{self, Impossible, Serialize};
+use serde_json::Value;
+use std::borrow::Cow;
+use std::collections::HashMap;
+use std::fmt;
+
+/// A column's values.
+enum Data {
+    /// Only missing values so far (None).
+    Null(usize),
+    F64(Vec<f64>),
+    Bool(Vec<bool>),
+    I64(Vec<i64>),
+    /// Codes into the string table (0 is None).
+    Str(Vec<u32>),
+    /// Codes into the JSON table (0 is None).
+    Json(Vec<u32>),
+}
+
+impl Data {
+    fn len(&self) -> usize {
+        match self {
+            Data::Null(n) => *n,
+            Data::F64(v) => v.len(),
+            Data::Bool(v) => v.len(),
+            Data::I64(v) => v.len(),
+            Data::Str(v) | Data::Json(v) => v.len(),
+        }
+    }
+
+    fn push_missing(&mut self, count: usize) {
+        match self {
+            Data::Null(n) => *n += count,
+            Data::F64(v) => v.resize(v.len() + count, f64::NAN),
+            Data::Bool(v) => v.resize(v.len() + count, false),
+            Data::I64(v) => v.resize(v.len() + count, -1),
+            Data::Str(v) | Data::Json(v) => v.resize(v.len() + count, 0),
+        }
+    }
+
+    fn empty_like(&self, capacity: usize) -> Data {
+        match self {
+            Data::Null(_) => Data::Null(0),
+            Data::F64(_) => Data::F64(Vec::with_capacity(capacity)),
+            Data::Bool(_) => Data::Bool(Vec::with_capacity(capacity)),
+            Data::I64(_) => Data::I64(Vec::with_capacity(capacity)),
+            Data::Str(_) => Data::Str(Vec::with_capacity(capacity)),
+            Data::Json(_) => Data::Json(Vec::with_capacity(capacity)),
+        }
+    }
+
+    fn kind(&self) -> &'static str {
+        match self {
+            Data::Null(_) => "null",
+            Data::F64(_) => "float",
+            Data::Bool(_) => "bool",
+            Data::I64(_) => "int",
+            Data::Str(_) => "str",
+            Data::Json(_) => "object",
+        }
+    }
+}
+
+/// Distinct strings with their codes (code 0 is None).
+#[derive(Default)]
+struct Table {
+    codes: HashMap<String, u32>,
+    values: Vec<String>,
+}
+
+impl Table {
+    fn code(&mut self, s: &str) -> u32 {
+        if let Some(&c) = self.codes.get(s) {
+            return c;
+        }
+        self.values.push(s.to_string());
+        let c = self.values.len() as u32;
+        self.codes.insert(s.to_string(), c);
+        c
+    }
+}
+
+struct Column {
+    name: Cow<'static, str>,
+    data: Data,
+    /// The last string code written (a cheap repeat check).
+    last: u32,
+}
+
+/// A warning tally: per code, how many elements warned, the first index and
+/// message.
+#[derive(Default)]
+pub struct Warnings {
+    /// (code, count, first element, first message), in order of first appearance.
+    pub entries: Vec<(String, usize, usize, String)>,
+}
+
+impl Warnings {
+    /// Counts one warning of element `index`.
+    pub fn add(&mut self, code: &str, message: &str, index: usize) {
+        if let Some(e) = self.entries.iter_mut().find(|e| e.0 == code) {
+            e.1 += 1;
+            if index < e.2 {
+                e.2 = index;
+                e.3 = message.to_string();
+            }
+        } else {
+            self.entries
+                .push((code.to_string(), 1, index, message.to_string()));
+        }
+    }
+
+    /// Adds another tally.
+    pub fn merge(&mut self, other: Warnings) {
+        for (code, count, index, message) in other.entries {
+            if let Some(e) = self.entries.iter_mut().find(|e| e.0 == code) {
+                e.1 += count;
+                if index < e.2 {
+                    e.2 = index;
+                    e.3 = message;
+                }
+            } else {
+                self.entries.push((code, count, index, message));
+            }
+        }
+    }
+
+    /// Emits one Python warning per code (`tabor._errors._warn`).
+    pub fn emit(
+        &self,
+        py: Python<'_>,
+        total: usize,
+        index: impl Fn(usize) -> String,
+    ) -> PyResult<()> {
+        if self.entries.is_empty() {
+            return Ok(());
+        }
+        let warn = crate::failure::errors_module(py)?.getattr("_warn")?;
+        for (code, count, first, message) in &self.entries {
+            warn.call1((code, message, *count, total, index(*first)))?;
+        }
+        Ok(())
+    }
+}
+
+/// The columns of one chunk of records.
+#[derive(Default)]
+pub struct Columns {
+    columns: Vec<Column>,
+    strings: Table,
+    json: Table,
+    rows: usize,
+    hint: usize,
+    /// The warnings of the chunk's records.
+    pub warnings: Warnings,
+    /// The flat index of the chunk's first row (for the warning tally).
+    pub offset: usize,
+    /// Per row: false where the element failed.
+    valid: Vec<bool>,
+}
+
+/// Serialization can fail only on a type mismatch between rows (a bug).
+#[derive(Debug)]
+pub struct Error(String);
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for Error {}
+
+impl ser::Error for Error {
+    fn custom<T: fmt::Display>(msg: T) -> Self {
+        Error(msg.to_string())
+    }
+}
+
+/// Marks a list or map value, which is stored as a whole (see the module doc).
+const COMPOUND: &str = "\u{0}compound";
+
+enum Scalar<'a> {
+    Missing,
+    F64(f64),
+    Bool(bool),
+    I64(i64),
+    Str(&'a str),
+}
+
+impl Columns {
+    /// An empty chunk whose first row has flat index `offset`.
+    pub fn at(offset: usize) -> Self {
+        Columns {
+            offset,
+            ..Columns::default()
+        }
+    }
+
+    /// Appends one record as a row.
+    pub fn push<T: Serialize>(&mut self, record: &T) -> Result<(), Error> {
+        record.serialize(Row {
+            cols: self,
+            prefix: None,
+        })?;
+        self.valid.push(true);
+        self.end_row();
+        Ok(())
+    }
+
+    /// Appends an empty row (a failed element).
+    pub fn push_missing(&mut self) {
+        self.valid.push(false);
+        self.end_row();
+    }
+
+    fn end_row(&mut self) {
+        self.rows += 1;
+        for c in &mut self.columns {
+            let short = self.rows - c.data.len();
+            if short > 0 {
+                c.data.push_missing(short);
+            }
+        }
+        self.hint = 0;
+    }
+
+    fn column(&mut self, name: Cow<'static, str>) -> usize {
+        let n = self.columns.len();
+        if self.hint < n && self.columns[self.hint].name == name {
+            self.hint += 1;
+            return self.hint - 1;
+        }
+        if let Some(i) = self.columns.iter().position(|c| c.name == name) {
+            self.hint = i + 1;
+            return i;
+        }
+        self.columns.push(Column {
+            name,
+            data: Data::Null(self.rows),
+            last: 0,
+        });
+        self.hint = n + 1;
+        n
+    }
+
+    fn put(&mut self, name: Cow<'static, str>, value: Scalar<'_>) -> Result<(), Error> {
+        let i = self.column(name);
+        let rows = self.rows;
+        let Column { data, last, name } = &mut self.columns[i];
+        if data.len() > rows {
+            return Err(Error(format!("field {name} written twice in one record")));
+        }
+        if let Data::Null(k) = *data {
+            *data = match value {
+                Scalar::Missing => return Ok(()),
+                Scalar::F64(_) => Data::F64(vec![f64::NAN; k]),
+                Scalar::Bool(_) => Data::Bool(vec![false; k]),
+                Scalar::I64(_) => Data::I64(vec![-1; k]),
+                Scalar::Str(_) => Data::Str(vec![0; k]),
+            };
+        }
+        match (data, value) {
+            (d, Scalar::Missing) => d.push_missing(1),
+            (Data::F64(v), Scalar::F64(x)) => v.push(x),
+            (Data::F64(v), Scalar::I64(x)) => v.push(x as f64),
+            (Data::I64(v), Scalar::I64(x)) => v.push(x),
+            (Data::Bool(v), Scalar::Bool(x)) => v.push(x),
+            (Data::Str(v), Scalar::Str(s)) => {
+                let code = if *last != 0 && self.strings.values[*last as usize - 1] == s {
+                    *last
+                } else {
+                    self.strings.code(s)
+                };
+                *last = code;
+                v.push(code);
+            }
+            (d, _) => {
+                return Err(Error(format!(
+                    "field {name} changes type between records (was {})",
+                    d.kind()
+                )))
+            }
+        }
+        Ok(())
+    }
+
+    fn put_json(&mut self, name: Cow<'static, str>, value: &Value) -> Result<(), Error> {
+        if value.is_null() {
+            return self.put(name, Scalar::Missing);
+        }
+        let text = value.to_string();
+        let i = self.column(name);
+        let rows = self.rows;
+        let code = self.json.code(&text);
+        let Column { data, name, .. } = &mut self.columns[i];
+        if let Data::Null(k) = *data {
+            *data = Data::Json(vec![0; k]);
+        }
+        match data {
+            Data::Json(v) if v.len() == rows => {
+                v.push(code);
+                Ok(())
+            }
+            d => Err(Error(format!(
+                "field {name} changes type between records (was {})",
+                d.kind()
+            ))),
+        }
+    }
+
+    /// A list or map field: flattened, tallied or stored whole (module doc).
+    fn compound(&mut self, key: Cow<'static, str>, value: Value) -> Result<(), Error> {
+        if key == "warnings" {
+            return self.warnings_field(value);
+        }
+        if let Value::Array(items) = &value {
+            let named = !items.is_empty()
+                && items
+                    .iter()
+                    .all(|x| x.get("name").is_some_and(Value::is_string));
+            if named {
+                for item in items {
+                    let Value::Object(fields) = item else {
+                        continue;
+                    };
+                    let name = fields.get("name").and_then(Value::as_str).unwrap_or("");
+                    for (k, v) in fields {
+                        if k != "name" {
+                            self.value(Cow::Owned(format!("{key}.{name}.{k}")), v)?;
+                        }
+                    }
+                }
+                return Ok(());
+            }
+        }
+        self.put_json(key, &value)
+    }
+
+    fn value(&mut self, key: Cow<'static, str>, v: &Value) -> Result<(), Error> {
+        match v {
+            Value::Null => self.put(key, Scalar::Missing),
+            Value::Bool(b) => self.put(key, Scalar::Bool(*b)),
+            Value::Number(x) => match x.as_i64() {
+                Some(i) if !x.is_f64() => self.put(key, Scalar::I64(i)),
+                _ => self.put(key, Scalar::F64(x.as_f64().unwrap_or(f64::NAN))),
+            },
+            Value::String(s) => self.put(key, Scalar::Str(s)),
+            _ => self.put_json(key, v),
+        }
+    }
+
+    /// A `warnings` list: structs with `code` and `message`, or plain strings (the
+    /// string is its own code). The column keeps the codes.
+    fn warnings_field(&mut self, value: Value) -> Result<(), Error> {
+        let index = self.offset + self.rows;
+        let mut codes = Vec::new();
+        if let Value::Array(items) = value {
+            for w in items {
+                let (code, message) = match &w {
+                    Value::String(s) => (s.as_str(), s.as_str()),
+                    other => (
+                        other.get("code").and_then(Value::as_str).unwrap_or(""),
+                        other.get("message").and_then(Value::as_str).unwrap_or(""),
+                    ),
+                };
+                self.warnings.add(code, message, index);
+                codes.push(Value::String(code.to_string()));
+            }
+        }
+        self.put_json(Cow::Borrowed("warnings"), &Value::Array(codes))
+    }
+
+    /// Concatenates the chunks' columns into one set of columns, in order.
+    /// With `valid`, a bool column `valid` (false where an element failed) is
+    /// added.
+    pub fn concat(chunks: Vec<Columns>, valid: bool) -> (Merged, Warnings) {
+        let total: usize = chunks.iter().map(|c| c.rows).sum();
+        let mut warnings = Warnings::default();
+        let mut names: Vec<Cow<'static, str>> = Vec::new();
+        for c in &chunks {
+            for col in &c.columns {
+                if !names.contains(&col.name) {
+                    names.push(col.name.clone());
+                }
+            }
+        }
+        let mut strings = Table::default();
+        let mut json = Table::default();
+        // per chunk: its string and JSON codes in the merged tables
+        let mut remaps: Vec<(Vec<u32>, Vec<u32>)> = Vec::with_capacity(chunks.len());
+        for c in &chunks {
+            let s = std::iter::once(0)
+                .chain(c.strings.values.iter().map(|v| strings.code(v)))
+                .collect();
+            let j = std::iter::once(0)
+                .chain(c.json.values.iter().map(|v| json.code(v)))
+                .collect();
+            remaps.push((s, j));
+        }
+        let mut chunks = chunks;
+        let mut out = Vec::with_capacity(names.len());
+        for name in names {
+            let mut merged: Option<Data> = None;
+            let mut missing_before = 0usize;
+            for (c, (smap, jmap)) in chunks.iter_mut().zip(&remaps) {
+                let pos = c.columns.iter().position(|x| x.name == name);
+                let Some(pos) = pos else {
+                    match &mut merged {
+                        Some(d) => d.push_missing(c.rows),
+                        None => missing_before += c.rows,
+                    }
+                    continue;
+                };
+                // take the chunk's column (frees it as we go)
+                let data = std::mem::replace(&mut c.columns[pos].data, Data::Null(0));
+                let d = merged.get_or_insert_with(|| {
+                    let mut d = data.empty_like(total);
+                    d.push_missing(missing_before);
+                    d
+                });
+                append(d, data, smap, jmap);
+            }
+            let mut d = merged.unwrap_or(Data::Null(0));
+            let short = total - d.len();
+            d.push_missing(short);
+            out.push((name, d));
+        }
+        if valid {
+            let mut mask = Vec::with_capacity(total);
+            for c in &chunks {
+                mask.extend_from_slice(&c.valid);
+            }
+            out.push((Cow::Borrowed("valid"), Data::Bool(mask)));
+        }
+        for c in chunks {
+            warnings.merge(c.warnings);
+        }
+        (
+            Merged {
+                columns: out,
+                strings: strings.values,
+                json: json.values,
+            },
+            warnings,
+        )
+    }
+}
+
+fn append(d: &mut Data, data: Data, smap: &[u32], jmap: &[u32]) {
+    // unify a Null column with a typed one
+    if let (Data::Null(k), typed) = (&*d, &data) {
+        if !matches!(typed, Data::Null(_)) {
+            let k = *k;
+            let mut t = typed.empty_like(k);
+            t.push_missing(k);
+            *d = t;
+        }
+    }
+    match (d, data) {
+        (d, Data::Null(k)) => d.push_missing(k),
+        (Data::F64(a), Data::F64(b)) => a.extend_from_slice(&b),
+        (Data::Bool(a), Data::Bool(b)) => a.extend_from_slice(&b),
+        (Data::I64(a), Data::I64(b)) => a.extend_from_slice(&b),
+        (Data::F64(a), Data::I64(b)) => a.extend(b.iter().map(|&x| x as f64)),
+        (Data::Str(a), Data::Str(b)) => a.extend(b.iter().map(|&c| smap[c as usize])),
+        (Data::Json(a), Data::Json(b)) => a.extend(b.iter().map(|&c| jmap[c as usize])),
+        (d, b) => {
+            // a type that differs between chunks (a bug): keep the length right
+            d.push_missing(b.len());
+        }
+    }
+}
+
+/// The columns of a whole batch.
+pub struct Merged {
+    columns: Vec<(Cow<'static, str>, Data)>,
+    strings: Vec<String>,
+    json: Vec<String>,
+}
+
+impl Merged {
+    /// The columns as a dict: float64, bool and int64 arrays; string and object
+    /// columns as `(table, codes)` tuples (`table[0]` is None) for the Python
+    /// layer to expand with `numpy.take`; an all-None column as `("null", n)`.
+    pub fn into_py(self, py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+        let dict = PyDict::new(py);
+        let mut strings: Option<Bound<'_, PyList>> = None;
+        let mut json: Option<Bound<'_, PyList>> = None;
+        for (name, data) in self.columns {
+            match data {
+                Data::Null(n) => dict.set_item(name.as_ref(), ("null", n))?,
+                Data::F64(v) => dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?,
+                Data::Bool(v) => dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?,
+                Data::I64(v) => dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?,
+                Data::Str(v) => {
+                    if strings.is_none() {
+                        let list = PyList::new(py, [py.None()])?;
+                        for s in &self.strings {
+                            list.append(s)?;
+                        }
+                        strings = Some(list);
+                    }
+                    let table = strings.as_ref().map(|l| l.clone().into_any());
+                    dict.set_item(
+                        name.as_ref(),
+                        PyTuple::new(
+                            py,
+                            [
+                                table.into_pyobject(py)?.into_any(),
+                                PyArray1::from_vec(py, v).into_any(),
+                            ],
+                        )?,
+                    )?;
+                }
+                Data::Json(v) => {
+                    if json.is_none() {
+                        let list = PyList::new(py, [py.None()])?;
+                        for s in &self.json {
+                            let value: Value = serde_json::from_str(s).unwrap_or(Value::Null);
+                            list.append(crate::convert::json_to_py(py, &value)?)?;
+                        }
+                        json = Some(list);
+                    }
+                    let table = json.as_ref().map(|l| l.clone().into_any());
+                    dict.set_item(
+                        name.as_ref(),
+                        PyTuple::new(
+                            py,
+                            [
+                                table.into_pyobject(py)?.into_any(),
+                                PyArray1::from_vec(py, v).into_any(),
+                            ],
+                        )?,
+                    )?;
+                }
+            }
+        }
+        Ok(dict)
+    }
+}
+
+// ---------------------------------------------------------------------------------
+// the serializer
+
+/// Serializes a record (a struct) into the current row.
+struct Row<'a> {
+    cols: &'a mut Columns,
+    prefix: Option<Cow<'static, str>>,
+}
+
+fn key(prefix: &Option<Cow<'static, str>>, field: &'static str) -> Cow<'static, str> {
+    match prefix {
+        None => Cow::Borrowed(field),
+        Some(p) => Cow::Owned(format!("{p}.{field}")),
+    }
+}
+
+macro_rules! not_a_record {
+    ($($f:ident: $t:ty),*) => {
+        $(fn $f(self, _v: $t) -> Result<(), Error> {
+            Err(Error("a record must be a struct".into()))
+        })*
+    };
+}
+
+impl<'a> ser::Serializer for Row<'a> {
+    type Ok = ();
+    type Error = Error;
+    type SerializeSeq = Impossible<(), Error>;
+    type SerializeTuple = Impossible<(), Error>;
+    type SerializeTupleStruct = Impossible<(), Error>;
+    type SerializeTupleVariant = Impossible<(), Error>;
+    type SerializeMap = Impossible<(), Error>;
+    type SerializeStruct = Self;
+    type SerializeStructVariant = Impossible<(), Error>;
+
+    not_a_record!(serialize_bool: bool, serialize_i8: i8, serialize_i16: i16, serialize_i32: i32,
+        serialize_i64: i64, serialize_u8: u8, serialize_u16: u16, serialize_u32: u32,
+        serialize_u64: u64, serialize_f32: f32, serialize_f64: f64, serialize_char: char,
+        serialize_str: &str, serialize_bytes: &[u8]);
+
+    fn serialize_none(self) -> Result<(), Error> {
+        Err(Error("a record must be a struct".into()))
+    }
+    fn serialize_some<T: ?Sized + Serialize>(self, v: &T) -> Result<(), Error> {
+        v.serialize(self)
+    }
+    fn serialize_unit(self) -> Result<(), Error> {
+        Err(Error("a record must be a struct".into()))
+    }
+    fn serialize_unit_struct(self, _: &'static str) -> Result<(), Error> {
+        Err(Error("a record must be a struct".into()))
+    }
+    fn serialize_unit_variant(self, _: &'static str, _: u32, _: &'static str) -> Result<(), Error> {
+        Err(Error("a record must be a struct".into()))
+    }
+    fn serialize_newtype_struct<T: ?Sized + Serialize>(
+        self,
+        _: &'static str,
+        v: &T,
+    ) -> Result<(), Error> {
+        v.serialize(self)
+    }
+    fn serialize_newtype_variant<T: ?Sized + Serialize>(
+        self,
+        _: &'static str,
+        _: u32,
+        _: &'static str,
+        _: &T,
+    ) -> Result<(), Error> {
+        Err(Error("a record must be a struct".into()))
+    }
+    fn serialize_seq(self, _: Option<usize>) -> Result<Self::SerializeSeq, Error> {
+        Err(Error("a record must be a struct".into()))
+    }
+    fn serialize_tuple(self, _: usize) -> Result<Self::SerializeTuple, Error> {
+        Err(Error("a record must be a struct".into()))
+    }
+    fn serialize_tuple_struct(
+        self,
+        _: &'static str,
+        _: usize,
+    ) -> Result<Self::SerializeTupleStruct, Error> {
+        Err(Error("a record must be a struct".into()))
+    }
+    fn serialize_tuple_variant(
+        self,
+        _: &'static str,
+        _: u32,
+        _: &'static str,
+        _: usize,
+    ) -> Result<Self::SerializeTupleVariant, Error> {
+        Err(Error("a record must be a struct".into()))
+    }
+    fn serialize_map(self, _: Option<usize>) -> Result<Self::SerializeMap, Error> {
+        Err(Error("a record must be a struct".into()))
+    }
+    fn serialize_struct(self, _: &'static str, _: usize) -> Result<Self, Error> {
+        Ok(self)
+    }
+    fn serialize_struct_variant(
+        self,
+        _: &'static str,
+        _: u32,
+        _: &'static str,
+        _: usize,
+    ) -> Result<Self::SerializeStructVariant, Error> {
+        Err(Error("a record must be a struct".into()))
+    }
+}
+
+impl ser::SerializeStruct for Row<'_> {
+    type Ok = ();
+    type Error = Error;
+
+    fn serialize_field<T: ?Sized + Serialize>(
+        &mut self,
+        field: &'static str,
+        value: &T,
+    ) -> Result<(), Error> {
+        let k = key(&self.prefix, field);
+        match value.serialize(Field {
+            cols: self.cols,
+            key: k.clone(),
+        }) {
+            Err(Error(m)) if m == COMPOUND => {
+                let v = serde_json::to_value(value).map_err(|e| Error(e.to_string()))?;
+                self.cols.compound(k, v)
+            }
+            other => other,
+        }
+    }
+
+    fn skip_field(&mut self, _: &'static str) -> Result<(), Error> {
+        Ok(())
+    }
+
+    fn end(self) -> Result<(), Error> {
+        Ok(())
+    }
+}
+
+/// Serializes one field's value into its column.
+struct Field<'a> {
+    cols: &'a mut Columns,
+    key: Cow<'static, str>,
+}
+
+fn compound<T>() -> Result<T, Error> {
+    Err(Error(COMPOUND.into()))
+}
+
+impl<'a> ser::Serializer for Field<'a> {
+    type Ok = ();
+    type Error = Error;
+    type SerializeSeq = Impossible<(), Error>;
+    type SerializeTuple = Impossible<(), Error>;
+    type SerializeTupleStruct = Impossible<(), Error>;
+    type SerializeTupleVariant = Impossible<(), Error>;
+    type SerializeMap = Impossible<(), Error>;
+    type SerializeStruct = Row<'a>;
+    type SerializeStructVariant = Impossible<(), Error>;
+
+    fn serialize_bool(self, v: bool) -> Result<(), Error> {
+        self.cols.put(self.key, Scalar::Bool(v))
+    }
+    fn serialize_i8(self, v: i8) -> Result<(), Error> {
+        self.serialize_i64(v.into())
+    }
+    fn serialize_i16(self, v: i16) -> Result<(), Error> {
+        self.serialize_i64(v.into())
+    }
+    fn serialize_i32(self, v: i32) -> Result<(), Error> {
+        self.serialize_i64(v.into())
+    }
+    fn serialize_i64(self, v: i64) -> Result<(), Error> {
+        self.cols.put(self.key, Scalar::I64(v))
+    }
+    fn serialize_u8(self, v: u8) -> Result<(), Error> {
+        self.serialize_i64(v.into())
+    }
+    fn serialize_u16(self, v: u16) -> Result<(), Error> {
+        self.serialize_i64(v.into())
+    }
+    fn serialize_u32(self, v: u32) -> Result<(), Error> {
+        self.serialize_i64(v.into())
+    }
+    fn serialize_u64(self, v: u64) -> Result<(), Error> {
+        match i64::try_from(v) {
+            Ok(i) => self.serialize_i64(i),
+            Err(_) => self.serialize_f64(v as f64),
+        }
+    }
+    fn serialize_f32(self, v: f32) -> Result<(), Error> {
+        self.serialize_f64(v.into())
+    }
+    fn serialize_f64(self, v: f64) -> Result<(), Error> {
+        self.cols.put(self.key, Scalar::F64(v))
+    }
+    fn serialize_char(self, v: char) -> Result<(), Error> {
+        let mut b = [0u8; 4];
+        self.serialize_str(v.encode_utf8(&mut b))
+    }
+    fn serialize_str(self, v: &str) -> Result<(), Error> {
+        self.cols.put(self.key, Scalar::Str(v))
+    }
+    fn serialize_bytes(self, _: &[u8]) -> Result<(), Error> {
+        compound()
+    }
+    fn serialize_none(self) -> Result<(), Error> {
+        self.cols.put(self.key, Scalar::Missing)
+    }
+    fn serialize_some<T: ?Sized + Serialize>(self, v: &T) -> Result<(), Error> {
+        v.serialize(self)
+    }
+    fn serialize_unit(self) -> Result<(), Error> {
+        self.serialize_none()
+    }
+    fn serialize_unit_struct(self, _: &'static str) -> Result<(), Error> {
+        self.serialize_none()
+    }
+    fn serialize_unit_variant(
+        self,
+        _: &'static str,
+        _: u32,
+        variant: &'static str,
+    ) -> Result<(), Error> {
+        self.serialize_str(variant)
+    }
+    fn serialize_newtype_struct<T: ?Sized + Serialize>(
+        self,
+        _: &'static str,
+        v: &T,
+    ) -> Result<(), Error> {
+        v.serialize(self)
+    }
+    fn serialize_newtype_variant<T: ?Sized + Serialize>(
+        self,
+        _: &'static str,
+        _: u32,
+        _: &'static str,
+        _: &T,
+    ) -> Result<(), Error> {
+        compound()
+    }
+    fn serialize_seq(self, _: Option<usize>) -> Result<Self::SerializeSeq, Error> {
+        compound()
+    }
+    fn serialize_tuple(self, _: usize) -> Result<Self::SerializeTuple, Error> {
+        compound()
+    }
+    fn serialize_tuple_struct(
+        self,
+        _: &'static str,
+        _: usize,
+    ) -> Result<Self::SerializeTupleStruct, Error> {
+        compound()
+    }
+    fn serialize_tuple_variant(
+        self,
+        _: &'static str,
+        _: u32,
+        _: &'static str,
+        _: usize,
+    ) -> Result<Self::SerializeTupleVariant, Error> {
+        compound()
+    }
+    fn serialize_map(self, _: Option<usize>) -> Result<Self::SerializeMap, Error> {
+        compound()
+    }
+    fn serialize_struct(self, _: &'static str, _: usize) -> Result<Row<'a>, Error> {
+        Ok(Row {
+            cols: self.cols,
+            prefix: Some(self.key),
+        })
+    }
+    fn serialize_struct_variant(
+        self,
+        _: &'static str,
+        _: u32,
+        _: &'static str,
+        _: usize,
+    ) -> Result<Self::SerializeStructVariant, Error> {
+        compound()
+    }
+}

@@ -1,0 +1,287 @@
+//! The two shapes of a batch's output: `K` float64 arrays filled in place, or the
+//! columns of a record per element ([`crate::columns`]); both return the failure
+//! count and the warning tally to the Python layer.
+
+use crate::batch::{chunks_of, run, Options, Report, Stop, CHUNK};
+use crate::columns::{Columns, Warnings};
+use crate::failure::Failure;
+use numpy::{PyArray1, PyReadonlyArray1};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+use serde::Serialize;
+
+/// A flat input column: length 1 (a broadcast scalar) or the batch length.
+#[derive(Clone, Copy)]
+pub struct Col<'a>(pub &'a [f64]);
+
+impl Col<'_> {
+    /// The value at flat index `i`.
+    #[inline]
+    pub fn at(&self, i: usize) -> f64 {
+        if self.0.len() == 1 {
+            self.0[0]
+        } else {
+            self.0[i]
+        }
+    }
+}
+
+/// The index `flat` in an array of shape `shape`, as numpy prints it (None for a
+/// scalar call).
+pub fn index_text(flat: usize, shape: &[usize]) -> Option<String> {
+    match shape.len() {
+        0 => None,
+        1 => Some(format!("{flat}")),
+        _ => {
+            let mut rest = flat;
+            let mut idx = vec![0usize; shape.len()];
+            for (k, &d) in shape.iter().enumerate().rev() {
+                if d > 0 {
+                    idx[k] = rest % d;
+                    rest /= d;
+                }
+            }
+            let parts: Vec<String> = idx.iter().map(|i| i.to_string()).collect();
+            Some(format!("({})", parts.join(", ")))
+        }
+    }
+}
+
+/// The batch context of one call: the flat inputs' length, the broadcast shape
+/// (for error indices) and the options.
+pub struct Call<'s> {
+    /// Elements.
+    pub n: usize,
+    /// Broadcast shape (empty for a scalar call).
+    pub shape: &'s [usize],
+    /// errors= and threads=.
+    pub options: Options,
+}
+
+impl Call<'_> {
+    /// Slices of the flat inputs, each of length 1 or `n`.
+    pub fn columns<'a>(
+        &self,
+        arrays: &[(&str, &'a PyReadonlyArray1<'_, f64>)],
+    ) -> PyResult<Vec<Col<'a>>> {
+        let mut out = Vec::with_capacity(arrays.len());
+        for (name, a) in arrays {
+            let s = a
+                .as_slice()
+                .map_err(|e| Failure::input(format!("{name}: {e}")).into_pyerr_static())?;
+            if s.len() != 1 && s.len() != self.n {
+                return Err(Failure::input(format!(
+                    "{name}: length {} does not match the batch length {}",
+                    s.len(),
+                    self.n
+                ))
+                .into_pyerr_static());
+            }
+            out.push(Col(s));
+        }
+        Ok(out)
+    }
+
+    fn stop(&self, py: Python<'_>, s: Stop) -> PyErr {
+        s.into_pyerr(py, |i| index_text(i, self.shape))
+    }
+
+    fn report<'py>(
+        &self,
+        py: Python<'py>,
+        report: Report,
+        warnings: &Warnings,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        warnings.emit(py, self.n, |i| {
+            index_text(i, self.shape).unwrap_or_default()
+        })?;
+        let first = report.first.map(|(i, f)| {
+            let at = index_text(i, self.shape).map(|t| format!(" (at index {t})"));
+            format!("{}{}", f.message, at.unwrap_or_default())
+        });
+        PyTuple::new(
+            py,
+            [
+                report.failed.into_pyobject(py)?.into_any(),
+                first.into_pyobject(py)?.into_any(),
+            ],
+        )
+    }
+
+    /// `f(i)` → `K` floats per element, in `K` float64 arrays (NaN where an
+    /// element failed); returns `(arrays, (failed, first message))`.
+    pub fn floats<'py, const K: usize>(
+        &self,
+        py: Python<'py>,
+        f: impl Fn(usize) -> Result<[f64; K], Failure> + Sync,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        let mut outs: Vec<Vec<f64>> = (0..K).map(|_| vec![f64::NAN; self.n]).collect();
+        let k_chunks = chunks_of(self.n, CHUNK);
+        let mut iters: Vec<_> = outs.iter_mut().map(|v| v.chunks_mut(CHUNK)).collect();
+        let slices: Vec<Vec<&mut [f64]>> = (0..k_chunks)
+            .map(|_| {
+                iters
+                    .iter_mut()
+                    .map(|it| it.next().unwrap_or_default())
+                    .collect()
+            })
+            .collect();
+        let result = run(py, self.n, CHUNK, slices, self.options, |chunk| {
+            chunk.each(
+                &f,
+                |out, j, v: [f64; K]| {
+                    for (k, x) in v.into_iter().enumerate() {
+                        out[k][j] = x;
+                    }
+                },
+                |_, _| {},
+            )
+        });
+        drop(iters);
+        let report = match result {
+            Ok((_, report)) => report,
+            Err(s) => return Err(self.stop(py, s)),
+        };
+        let arrays: Vec<Bound<'py, PyAny>> = outs
+            .into_iter()
+            .map(|v| PyArray1::from_vec(py, v).into_any())
+            .collect();
+        let report = self.report(py, report, &Warnings::default())?;
+        PyTuple::new(
+            py,
+            [PyTuple::new(py, arrays)?.into_any(), report.into_any()],
+        )
+    }
+
+    /// `f(i, columns)` appends one record per element (or fails); returns
+    /// `(columns, (failed, first message))`, the columns as [`Merged::into_py`]
+    /// gives them. Warnings of the records are emitted through Python's `warnings`.
+    ///
+    /// [`Merged::into_py`]: crate::columns::Merged::into_py
+    pub fn records<'py>(
+        &self,
+        py: Python<'py>,
+        f: impl Fn(usize, &mut Columns) -> Result<(), Failure> + Sync,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        let k_chunks = chunks_of(self.n, CHUNK);
+        let outs: Vec<Columns> = (0..k_chunks).map(|c| Columns::at(c * CHUNK)).collect();
+        let result = run(py, self.n, CHUNK, outs, self.options, |chunk| {
+            let range = chunk.range.clone();
+            for i in range {
+                if !chunk.go(i) {
+                    return;
+                }
+                let r = crate::batch::guarded(|| f(i, &mut chunk.out));
+                if let Err(e) = r {
+                    // a failed element leaves an empty row (its partial fields are
+                    // overwritten: the row is completed as missing)
+                    chunk.out.push_missing();
+                    chunk.fail(i, e);
+                }
+            }
+        });
+        let (chunks, report) = match result {
+            Ok(x) => x,
+            Err(s) => return Err(self.stop(py, s)),
+        };
+        let valid = self.options.errors == crate::batch::Errors::Nan;
+        let (merged, warnings) = py.detach(|| Columns::concat(chunks, valid));
+        let report = self.report(py, report, &warnings)?;
+        let dict: Bound<'py, PyDict> = merged.into_py(py)?;
+        PyTuple::new(py, [dict.into_any(), report.into_any()])
+    }
+}
+
+impl Call<'_> {
+    /// Like [`Call::floats`], with one call of `chunk` per chunk of elements
+    /// (which can share work between them); a chunk that fails is redone element
+    /// by element with `single` (for the failure of the lowest index, or the NaNs).
+    pub fn chunked_floats<'py>(
+        &self,
+        py: Python<'py>,
+        chunk: impl Fn(std::ops::Range<usize>) -> Result<Vec<f64>, (usize, Failure)> + Sync,
+        single: impl Fn(usize) -> Result<f64, Failure> + Sync,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        let mut out = vec![f64::NAN; self.n];
+        let slices: Vec<&mut [f64]> = if self.n == 0 {
+            vec![&mut []]
+        } else {
+            out.chunks_mut(CHUNK).collect()
+        };
+        let result = run(py, self.n, CHUNK, slices, self.options, |c| {
+            let range = c.range.clone();
+            if range.is_empty() || !c.go(range.start) {
+                return;
+            }
+            match crate::batch::guarded(|| chunk(range.clone()).map_err(|(_, f)| f)) {
+                Ok(v) => c.out.copy_from_slice(&v),
+                Err(_) => c.each(
+                    |i| single(i).map(|x| [x]),
+                    |o, j, v: [f64; 1]| o[j] = v[0],
+                    |_, _| {},
+                ),
+            }
+        });
+        let report = match result {
+            Ok((_, report)) => report,
+            Err(s) => return Err(self.stop(py, s)),
+        };
+        let report = self.report(py, report, &Warnings::default())?;
+        let arrays = PyTuple::new(py, [PyArray1::from_vec(py, out).into_any()])?;
+        PyTuple::new(py, [arrays.into_any(), report.into_any()])
+    }
+
+    /// Like [`Call::records`], with one call of `chunk` per chunk of elements
+    /// returning each element's result; `put` appends a result as a row.
+    pub fn chunked_records<'py, T>(
+        &self,
+        py: Python<'py>,
+        chunk: impl Fn(std::ops::Range<usize>) -> Vec<Result<T, Failure>> + Sync,
+        put: impl Fn(&mut Columns, T) -> Result<(), Failure> + Sync,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        let k_chunks = chunks_of(self.n, CHUNK);
+        let outs: Vec<Columns> = (0..k_chunks).map(|c| Columns::at(c * CHUNK)).collect();
+        let result = run(py, self.n, CHUNK, outs, self.options, |c| {
+            let range = c.range.clone();
+            if range.is_empty() || !c.go(range.start) {
+                return;
+            }
+            let results = match crate::batch::guarded(|| Ok(chunk(range.clone()))) {
+                Ok(r) => r,
+                Err(f) => {
+                    c.fail(range.start, f);
+                    return;
+                }
+            };
+            for (i, r) in range.zip(results) {
+                if !c.go(i) {
+                    return;
+                }
+                match r.and_then(|t| put(&mut c.out, t)) {
+                    Ok(()) => {}
+                    Err(f) => {
+                        c.out.push_missing();
+                        c.fail(i, f);
+                    }
+                }
+            }
+        });
+        let (chunks, report) = match result {
+            Ok(x) => x,
+            Err(s) => return Err(self.stop(py, s)),
+        };
+        let valid = self.options.errors == crate::batch::Errors::Nan;
+        let (merged, warnings) = py.detach(|| Columns::concat(chunks, valid));
+        let report = self.report(py, report, &warnings)?;
+        let dict: Bound<'py, PyDict> = merged.into_py(py)?;
+        PyTuple::new(py, [dict.into_any(), report.into_any()])
+    }
+}
+
+/// Appends `record` as a row, a serialization problem being an internal failure.
+pub fn push<T: Serialize>(cols: &mut Columns, record: &T) -> Result<(), Failure> {
+    cols.push(record).map_err(|e| Failure {
+        kind: crate::failure::Kind::Internal,
+        message: e.to_string(),
+    })
+}
