@@ -43,6 +43,7 @@ pub use tabor_penalty as penalty;
 pub use tabor_plastic as plastic;
 pub use tabor_restitution as restitution;
 pub use tabor_scene as scene;
+pub use tabor_tangential as tangential;
 pub use tabor_visco as visco;
 pub use tabor_viscoadhesive as viscoadhesive;
 

@@ -16,8 +16,12 @@
 //!   reachable as `ode::rosenbrock`), L-stable for stiff systems (Rodas5P by
 //!   default, RODAS4 on request), all run by one loop ([`ode::drive`],
 //!   [`ode::drive_events`]);
+//! - [`search`]: the edge of a yes/no property of a positive argument, by bisection
+//!   in its logarithm (where two models stop agreeing within a bound);
 //! - [`chebyshev`]: Chebyshev interpolation (single and piecewise) for precomputed
 //!   fast tiers of expensive smooth functions;
+//! - [`minimize`]: the global minimum of a function on an interval (grid, then
+//!   golden-section search);
 //! - [`Cost`]: evaluations and iterations that callers accumulate, so the library can
 //!   show what accuracy costs;
 //! - [`NumericsError`]: typed failures (no bracket, no convergence, non-finite value,
@@ -30,9 +34,11 @@
 pub mod chebyshev;
 mod cost;
 mod error;
+pub mod minimize;
 pub mod ode;
 pub mod quadrature;
 pub mod root_finding;
+pub mod search;
 pub mod special;
 pub mod tolerance;
 

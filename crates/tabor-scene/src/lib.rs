@@ -12,6 +12,8 @@
 //!   sticking velocity, total and per-effect losses, effects used and skipped,
 //!   model, branch, accuracy, cost and warnings ([`Outcome`]);
 //! - [`Scene::sticking_velocity`], [`Scene::simulate`] (time domain);
+//! - [`Scene::oblique`]: the oblique impact (`[friction]`, `[impact] angle`),
+//!   with translation and rotation (`tabor-tangential`);
 //! - [`sweep`]: outcomes over a range of speeds or another parameter, in parallel.
 //!
 //! Effect selection (seed 000 chapter 5 and the issue that specified it):
@@ -38,6 +40,7 @@ mod error;
 pub mod file;
 mod inputs;
 mod models;
+mod oblique;
 mod outcome;
 mod parameter;
 mod scene;
@@ -51,7 +54,7 @@ pub use combination::{
     ViscoKind,
 };
 pub use error::SceneError;
-pub use file::{Format, ParseError, SceneFile};
+pub use file::{Format, FrictionFile, ParseError, SceneFile, SdsFile, TwistingFile};
 pub use inputs::{
     Adhesion, AdhesionRange, AdhesivePlasticity, Body, PlasticityModel, DEFAULT_ACCURACY,
 };

@@ -52,6 +52,7 @@ impl Scene {
     /// Validates scene data (from a file or the [`SceneBuilder`](crate::SceneBuilder)).
     pub fn from_data(data: SceneFile) -> Result<Scene, SceneError> {
         let inputs = Inputs::validate(&data)?;
+        crate::oblique::validate_data(&data)?;
         let speed = match data.impact.as_ref().and_then(|i| i.speed) {
             None => None,
             Some(v) => Some(validate::positive("speed", v).map_err(in_field("impact", "speed"))?),
@@ -217,6 +218,9 @@ impl Scene {
                 } else {
                     data.sphere.yield_stress = Some(value)
                 }
+            }
+            SweepParameter::Angle => {
+                data.impact.get_or_insert_with(ImpactFile::default).angle = Some(value)
             }
         }
         let mut s = Scene::from_data(data).map_err(|e| self.locate(e))?;

@@ -150,6 +150,19 @@ impl Prepared<'_> {
         })
     }
 
+    /// The answering rule's own force law, or an error naming why it has none (the
+    /// oblique impact simulates only the rule's own law, never a substitute).
+    pub(crate) fn force_law(&self, outcome: &Outcome) -> Result<Box<dyn ForceLaw>, SceneError> {
+        let Law { law, substitute } = self.law(outcome)?;
+        match substitute {
+            None => Ok(law),
+            Some(why) => Err(SceneError::model(Error::Model {
+                model: "scene",
+                message: format!("no time-domain force law for this scene at this speed: {why}"),
+            })),
+        }
+    }
+
     /// Simulates the impact at `speed` (validated, m/s) with the force law of the
     /// rule that answers there ([`Prepared::law`]), and returns the simulation with
     /// the outcome at that speed. When another model is simulated, the outcome

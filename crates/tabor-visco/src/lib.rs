@@ -36,6 +36,7 @@ mod hertz_damped;
 pub mod kelvin_maxwell_sphere;
 pub mod kelvin_voigt_flat;
 pub mod kelvin_voigt_sphere;
+pub mod kuwabara_kono;
 mod mdr;
 mod menu;
 pub mod models;

@@ -157,7 +157,11 @@ impl<L: SeparationPotential> ViscousDamping<L> {
     }
 
     fn viscous_force_at(&self, contact_radius: f64, overlap_rate: f64) -> f64 {
-        2.0 * self.contact_viscosity * contact_radius.max(0.0) * overlap_rate
+        tabor_visco::kuwabara_kono::viscous_force(
+            self.contact_viscosity,
+            contact_radius,
+            overlap_rate,
+        )
     }
 
     /// The energy criterion as a length (> 0 while the body can still separate).

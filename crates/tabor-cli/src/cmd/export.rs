@@ -47,6 +47,18 @@ pub struct LammpsArgs {
     /// exists): tabor's own force law
     #[arg(long, value_name = "PATH")]
     plugin: Option<PathBuf>,
+    /// A LAMMPS variable used in the --check line ($x, ${name}), as NAME=VALUE
+    /// (repeatable)
+    #[arg(long = "var", value_name = "NAME=VALUE", value_parser = parse_var, requires = "check")]
+    vars: Vec<(String, String)>,
+}
+
+/// `NAME=VALUE` of `--var`.
+fn parse_var(s: &str) -> Result<(String, String), String> {
+    match s.split_once('=') {
+        Some((n, v)) if !n.is_empty() => Ok((n.to_string(), v.to_string())),
+        _ => Err(format!("--var {s}: expected NAME=VALUE")),
+    }
 }
 
 /// Writes `text` to stdout; a closed pipe ends the output quietly.
@@ -109,7 +121,8 @@ pub fn run(args: &Args) -> Outcome {
     let Target::Lammps(a) = &args.target;
     let scene = Scene::from_path(&a.scene).map_err(|e| format!("{}: {e}", a.scene.display()))?;
     if let Some(line) = &a.check {
-        let c = check(&scene, line, a.speed).map_err(|e| format!("{}: {e}", a.scene.display()))?;
+        let c = check(&scene, line, a.speed, &a.vars)
+            .map_err(|e| format!("{}: {e}", a.scene.display()))?;
         if a.json {
             return print_json(&c);
         }
@@ -121,6 +134,10 @@ pub fn run(args: &Args) -> Outcome {
         let plugin = std::fs::canonicalize(plugin).unwrap_or_else(|_| plugin.clone());
         let x = export_plugin(&scene, &plugin.to_string_lossy(), a.speed)
             .map_err(|e| format!("{}: {e}", a.scene.display()))?;
+        // also in the fragment (# WARNING) and the JSON; stderr so it is seen
+        for w in &x.warnings {
+            eprintln!("warning: {w}");
+        }
         return write_out(a, &x, &x.fragment());
     }
     let x = export(&scene, a.speed).map_err(|e| format!("{}: {e}", a.scene.display()))?;

@@ -8,6 +8,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use tabor::dynamics::SimulationSettings;
 use tabor::scene::{spaced, Scene, SweepParameter};
+use tabor::tangential::oblique::ObliqueOutcome;
 
 fn load(path: &Path) -> Result<Scene, String> {
     Scene::from_path(path).map_err(|e| format!("{}: {e}", path.display()))
@@ -21,14 +22,111 @@ pub struct ImpactArgs {
     /// Impact speed (m/s); overrides [impact] speed
     #[arg(long, allow_negative_numbers = true)]
     speed: Option<f64>,
+    /// Impact angle (degrees between the relative velocity and the line of centres);
+    /// overrides [impact] angle. An oblique impact (an angle, a [friction] section or
+    /// a spin) adds normal_restitution, tangential_restitution, rebound_angle,
+    /// energy_lost_by_mechanism and after; the central-impact fields are then those
+    /// of the normal speed v cos(angle)
+    #[arg(long, allow_negative_numbers = true)]
+    angle: Option<f64>,
     /// Print one JSON object instead of a report
     #[arg(long)]
     json: bool,
 }
 
+/// The scene's oblique impact at `speed` and `angle` (degrees), when it is one:
+/// the central outcome at the normal speed and the simulated oblique one.
+fn oblique_at(
+    scene: &Scene,
+    path: &Path,
+    speed: f64,
+    angle: f64,
+) -> Result<Option<(tabor::scene::Outcome, ObliqueOutcome)>, String> {
+    if angle == 0.0 && !scene.is_oblique() {
+        return Ok(None);
+    }
+    let fail = |e: tabor::scene::SceneError| format!("{}: {e}", path.display());
+    let oblique = scene.oblique(speed, angle).map_err(fail)?;
+    let central = scene
+        .outcome_at(speed * angle.to_radians().cos())
+        .map_err(fail)?;
+    Ok(Some((central, oblique)))
+}
+
+/// The JSON report of an oblique impact (`Scene::oblique_report`).
+fn oblique_json(scene: &Scene, path: &Path, speed: f64, angle: f64) -> Outcome {
+    match scene
+        .oblique_report(speed, angle)
+        .map_err(|e| format!("{}: {e}", path.display()))?
+    {
+        Some((value, _)) => print_json(&value),
+        None => Err("not an oblique impact".into()),
+    }
+}
+
 /// Runs `tabor impact`.
 pub fn impact(args: &ImpactArgs) -> Outcome {
     let scene = load(&args.scene)?;
+    let angle = args.angle.or(scene.angle()).unwrap_or(0.0);
+    if angle != 0.0 || scene.is_oblique() {
+        let speed = args
+            .speed
+            .or(scene.speed)
+            .ok_or_else(|| format!("{}: give --speed or [impact] speed", args.scene.display()))?;
+        if let Some((central, o)) = oblique_at(&scene, &args.scene, speed, angle)? {
+            if args.json {
+                return oblique_json(&scene, &args.scene, speed, angle);
+            }
+            let mut out = stdout();
+            writeln!(out, "scene                  {}", central.scene)?;
+            writeln!(
+                out,
+                "impact speed           {speed:e} m/s at {angle} degrees"
+            )?;
+            writeln!(out, "normal law             {}", o.law)?;
+            writeln!(out, "normal restitution     {}", o.normal_restitution)?;
+            match o.tangential_restitution {
+                Some(e) => writeln!(out, "tangential restitution {e} (contact point)")?,
+                None => writeln!(out, "tangential restitution - (no sliding before impact)")?,
+            }
+            match o.rebound_angle {
+                Some(a) => writeln!(out, "rebound angle          {a} degrees")?,
+                None => writeln!(out, "rebound angle          - (the bodies stick)")?,
+            }
+            writeln!(out, "sticks                 {}", o.sticks)?;
+            let s = &o.after.sphere;
+            writeln!(
+                out,
+                "sphere after           v = {:?} m/s, omega = {:?} rad/s (CoM frame)",
+                s.velocity, s.angular_velocity
+            )?;
+            let l = &o.losses;
+            writeln!(
+                out,
+                "energy loss            {:e} J of {:e} J",
+                o.energy_loss, o.kinetic_energy
+            )?;
+            for (name, value) in [
+                ("normal adhesion", l.normal_adhesion),
+                ("normal damping", l.normal_damping),
+                ("sliding friction", l.sliding_friction),
+                ("tangential damping", l.tangential_damping),
+                ("tangential spring", l.tangential_spring),
+                ("rolling", l.rolling),
+                ("twisting", l.twisting),
+                ("torque arm", l.torque_arm),
+            ] {
+                writeln!(out, "  {name:<20} {value:e} J")?;
+            }
+            writeln!(out, "energy bookkeeping     {:.1e}", o.energy_error)?;
+            writeln!(
+                out,
+                "central model          {} (restitution {} at the normal speed)",
+                central.model, central.restitution
+            )?;
+            return out.finish();
+        }
+    }
     let outcome = match args.speed {
         Some(v) => scene.outcome_at(v),
         None => scene.outcome(),
@@ -117,7 +215,8 @@ pub struct SweepArgs {
     /// Speeds as from:to:points (m/s)
     #[arg(long, conflicts_with = "values")]
     speed: Option<String>,
-    /// Another parameter to sweep: sphere-radius, work-of-adhesion, tabor-parameter, yield-stress
+    /// Another parameter to sweep: sphere-radius, work-of-adhesion, tabor-parameter, yield-stress,
+    /// angle (degrees; an oblique sweep)
     #[arg(long, requires = "values")]
     parameter: Option<String>,
     /// Values of --parameter as from:to:points
@@ -151,6 +250,7 @@ fn column(parameter: SweepParameter) -> String {
         "work-of-adhesion" => "work_of_adhesion_j_per_m2".into(),
         "tabor-parameter" => "tabor_parameter".into(),
         "yield-stress" => "yield_stress_pa".into(),
+        "angle" => "angle_deg".into(),
         other => other.replace('-', "_"),
     }
 }
@@ -181,7 +281,7 @@ pub fn sweep(args: &SweepArgs) -> Outcome {
         (Some(s), None, _) => (SweepParameter::Speed, range(s, args.log)?),
         (None, Some(p), Some(v)) => {
             let parameter = SweepParameter::from_name(p).ok_or_else(|| {
-                format!("invalid --parameter \"{p}\": expected sphere-radius, work-of-adhesion, tabor-parameter or yield-stress")
+                format!("invalid --parameter \"{p}\": expected sphere-radius, work-of-adhesion, tabor-parameter, yield-stress or angle")
             })?;
             (parameter, range(v, args.log)?)
         }
@@ -198,6 +298,9 @@ pub fn sweep(args: &SweepArgs) -> Outcome {
             parameter.name()
         )
     })?;
+    if parameter == SweepParameter::Angle || scene.is_oblique() {
+        return oblique_sweep(&scene, args, parameter, &values);
+    }
     let bar = ProgressBar::new(values.len() as u64);
     if values.len() < 100 {
         bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
@@ -233,6 +336,75 @@ pub fn sweep(args: &SweepArgs) -> Outcome {
             number(o.energy_loss),
             optional(o.sticking_velocity),
             o.model.clone(),
+            VERSION.to_string(),
+        ])
+        .map_err(&fail)?;
+    }
+    csv.flush().map_err(|e| fail(e.into()))?;
+    if let Some(p) = path {
+        eprintln!("wrote {} points to {}", values.len(), p.display());
+    }
+    Ok(())
+}
+
+/// An oblique sweep (`--parameter angle`, or a scene with an angle, friction or
+/// spin): per point the central fields at the normal speed and the oblique ones.
+fn oblique_sweep(
+    scene: &Scene,
+    args: &SweepArgs,
+    parameter: SweepParameter,
+    values: &[f64],
+) -> Outcome {
+    let mut rows = Vec::with_capacity(values.len());
+    for &value in values {
+        let point = scene
+            .with_parameter(parameter, value)
+            .map_err(|e| format!("{} = {value:e}: {e}", parameter.name()))?;
+        let speed = point.speed.ok_or_else(|| {
+            format!(
+                "{}: an oblique sweep needs [impact] speed",
+                args.scene.display()
+            )
+        })?;
+        let angle = point.angle().unwrap_or(0.0);
+        let (central, o) = match oblique_at(&point, &args.scene, speed, angle)? {
+            Some(pair) => pair,
+            None => (
+                point.outcome_at(speed).map_err(|e| e.to_string())?,
+                point.oblique(speed, 0.0).map_err(|e| e.to_string())?,
+            ),
+        };
+        rows.push((value, central, o));
+    }
+    let path = args.out.as_deref();
+    let fail = csv_failure(path);
+    let mut csv = csv::Writer::from_writer(csv_target(path)?);
+    csv.write_record([
+        column(parameter).as_str(),
+        "normal_restitution",
+        "tangential_restitution",
+        "rebound_angle_deg",
+        "sticks",
+        "energy_loss_j",
+        "sliding_friction_j",
+        "sphere_angular_velocity_z_rad_per_s",
+        "restitution_central",
+        "model",
+        "tabor_version",
+    ])
+    .map_err(&fail)?;
+    for (value, central, o) in &rows {
+        csv.write_record([
+            number(*value),
+            number(o.normal_restitution),
+            optional(o.tangential_restitution),
+            optional(o.rebound_angle),
+            o.sticks.to_string(),
+            number(o.energy_loss),
+            number(o.losses.sliding_friction),
+            number(o.after.sphere.angular_velocity[2]),
+            number(central.restitution),
+            o.law.clone(),
             VERSION.to_string(),
         ])
         .map_err(&fail)?;
@@ -306,6 +478,10 @@ pub struct TrajectoryArgs {
     /// Impact speed (m/s); default: the scene's [impact] speed
     #[arg(long, allow_negative_numbers = true)]
     speed: Option<f64>,
+    /// Impact angle (degrees); default: the scene's [impact] angle. An oblique
+    /// impact prints the simulated oblique outcome (as `impact --json`; no CSV)
+    #[arg(long, allow_negative_numbers = true)]
+    angle: Option<f64>,
     /// Write the trajectory as CSV here (columns time_s, overlap_m,
     /// overlap_rate_m_per_s, force_n, contact_radius_m, tabor_version)
     #[arg(long)]
@@ -347,6 +523,13 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
         .speed
         .or(scene.speed)
         .ok_or_else(|| format!("{}: give --speed or [impact] speed", args.scene.display()))?;
+    let angle = args.angle.or(scene.angle()).unwrap_or(0.0);
+    if angle != 0.0 || scene.is_oblique() {
+        if args.out.is_some() {
+            return Err("--out: the oblique impact has no trajectory record yet".into());
+        }
+        return oblique_json(&scene, &args.scene, speed, angle);
+    }
     let mut settings =
         SimulationSettings::with_tolerance(args.tolerance.0).map_err(|e| e.to_string())?;
     settings.record_trajectory = args.out.is_some();
