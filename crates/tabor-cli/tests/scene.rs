@@ -278,4 +278,104 @@ fn a_bad_angle_is_named() {
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("angle"), "{err}");
+
+/// The bundled polymer grains with shear viscosity `eta` (Pa s) on both, written
+/// to a temporary file.
+fn grains(eta: f64) -> tempfile_path::Path {
+    let text = std::fs::read_to_string(scene("polymer_grains_viscoadhesive.toml")).unwrap();
+    let text = text.replace("viscosity = 2e-4", &format!("viscosity = {eta:e}"));
+    tempfile_path::write(&format!("grains_{eta}.toml"), &text)
+}
+
+/// A file in the system's temporary directory, removed when dropped.
+mod tempfile_path {
+    pub struct Path(pub std::path::PathBuf);
+    impl Drop for Path {
+        fn drop(&mut self) {
+            let _ = std::fs::remove_file(&self.0);
+        }
+    }
+    impl Path {
+        pub fn arg(&self) -> String {
+            self.0.to_string_lossy().into_owned()
+        }
+    }
+    pub fn write(name: &str, text: &str) -> Path {
+        let p = std::env::temp_dir().join(format!("tabor-cli-scene-{}-{name}", std::process::id()));
+        std::fs::write(&p, text).unwrap();
+        Path(p)
+    }
+}
+
+#[test]
+fn grains_that_stick_at_every_valid_speed_say_so() {
+    // issue 22: every command failed with an error about 9.86 m/s
+    let f = grains(0.2);
+    let v = json(&tabor(&["sticking", &f.arg(), "--json"]));
+    assert_eq!(v["sticking_velocity"], serde_json::Value::Null);
+    assert_eq!(v["sticks_ever"], true);
+    assert_eq!(v["limit_reason"], "small-strain limit");
+    let limit = v["sticks_up_to"].as_f64().unwrap();
+    assert!((limit - 9.2934).abs() < 1e-3, "{limit}");
+    let o = json(&tabor(&["impact", &f.arg(), "--speed", "3", "--json"]));
+    assert_eq!(o["sticks"], true);
+    assert!(o["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|w| w["code"] == "sticks-up-to-limit"));
+}
+
+#[test]
+fn sweeping_a_parameter_the_scene_lacks_exits_2() {
+    let out = tabor(&[
+        "sweep",
+        &scene("alumina_on_steel.toml"),
+        "--parameter",
+        "tabor-parameter",
+        "--values",
+        "0.1:1:3",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("tabor-parameter") && err.contains("[adhesion]"),
+        "{err}"
+    );
+    assert!(out.stdout.is_empty());
+}
+
+#[test]
+fn trajectory_json_says_which_model_it_simulates() {
+    // the superposition rule has no force law: the JSON names the simulated model
+    // and the difference
+    let text = "[sphere]\nradius = 5e-6\ndensity = 7800\nyoungs_modulus = 2.1e11\npoisson_ratio = 0.3\n\
+                [target]\nradius = 5e-6\ndensity = 7800\nyoungs_modulus = 2.1e11\npoisson_ratio = 0.3\nyield_stress = 1e9\n\
+                [adhesion]\nwork_of_adhesion = 0.5\n";
+    let f = tempfile_path::write("steel.toml", text);
+    let v = json(&tabor(&["trajectory", &f.arg(), "--speed", "5", "--json"]));
+    assert_eq!(v["rule"], "superposition-bound");
+    assert_eq!(v["law_is_the_rules"], false);
+    let w = &v["warnings"][0];
+    assert_eq!(w["code"], "trajectory-other-model");
+    let difference =
+        v["restitution"].as_f64().unwrap() - v["restitution_analytic"].as_f64().unwrap();
+    assert!(
+        w["message"]
+            .as_str()
+            .unwrap()
+            .contains(&format!("{difference:+.3e}")),
+        "{w}"
+    );
+    // a rule with its own law agrees
+    let v = json(&tabor(&[
+        "trajectory",
+        &f.arg(),
+        "--speed",
+        "0.5",
+        "--json",
+    ]));
+    assert_eq!(v["law_is_the_rules"], true);
+    let d = v["restitution"].as_f64().unwrap() - v["restitution_analytic"].as_f64().unwrap();
+    assert!(d.abs() < 1e-5, "{v}");
 }

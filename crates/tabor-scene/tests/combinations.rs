@@ -712,7 +712,10 @@ fn bundled_range_plastic_scene_below_and_above_the_yield_onset() {
     let v = 4.0;
     let excess = ai.energy_loss(v).unwrap().joules - jkr.energy_loss(v).unwrap().joules;
     let plastic = interp.energy_loss(v).unwrap().joules;
-    let loss = md.energy_loss(v).unwrap().joules + excess.max(plastic);
+    // the range weight φ = ΔU_MD/ΔU_JKR,fg of the excess over the plastic loss
+    let md_loss = md.energy_loss(v).unwrap().joules;
+    let weight = (md_loss / jkr.energy_loss(v).unwrap().joules).min(1.0);
+    let loss = md_loss + plastic + weight * (excess - plastic).max(0.0);
     let hi = s.outcome_at(v).unwrap();
     assert_eq!(
         hi.combination.rule,

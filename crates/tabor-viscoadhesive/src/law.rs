@@ -37,10 +37,14 @@ pub trait SeparationPotential: ForceLaw {
 impl SeparationPotential for JkrForceLaw {}
 impl SeparationPotential for MaugisDugdaleForceLaw {}
 
-/// The fraction of the impact's kinetic energy at which the motion of an impact
-/// that cannot separate ends (the outcome, sticking, does not depend on it; only
-/// where a recorded trajectory ends).
-const CREEP_END: f64 = 1e-6;
+/// An impact that starts without the energy to separate (README eq. (V4)) can never
+/// separate: its record ends once the kinetic energy has fallen below this fraction
+/// of the impact's (at once when damping dominates, else when the body decelerates
+/// back through its impact speed, before the first turning point). The outcome,
+/// sticking, does not depend on it; a strongly damped body would otherwise creep
+/// into the adhesive well on the viscous time scale, with steps limited by the
+/// far shorter inertial one.
+const CREEP_END: f64 = 1.0 - 1e-6;
 
 /// An inner force law plus the viscous force of a Kelvin-Voigt contact modulus
 /// `E*(s) = E* + η_c s` acting over the inner law's contact radius:
@@ -162,9 +166,8 @@ impl<L: SeparationPotential> ViscousDamping<L> {
 
     /// The energy criterion as a length (> 0 while the body can still separate).
     /// An impact that started without the energy to separate (`doomed`) instead
-    /// ends when its kinetic energy has fallen to [`CREEP_END`] of the impact's: an
-    /// overdamped body creeping into the adhesive well never turns, and it can
-    /// never separate, whatever it does next (README eq. (V4)).
+    /// ends when its kinetic energy has fallen below [`CREEP_END`] of the impact's:
+    /// it can never separate, whatever it does next (README eq. (V4)).
     fn energy_branch_end(&self, overlap: f64, overlap_rate: f64) -> Result<Option<f64>> {
         if self.doomed {
             let kinetic = 0.5 * self.mass * overlap_rate * overlap_rate;

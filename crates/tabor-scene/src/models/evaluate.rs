@@ -1,7 +1,7 @@
 //! Evaluating the loss of a set of effects by the rule of the combination table.
 
 use super::types::{Evaluation, Models};
-use crate::combination::{rule, EffectKind, EffectSet, Rule, ViscoKind};
+use crate::combination::{rule, AdhesionKind, EffectKind, EffectSet, Rule, ViscoKind};
 use crate::error::SceneError;
 use tabor_plastic::AdhesiveInterpolationImpact;
 use tabor_restitution::{EnergyLoss, ImpactModel};
@@ -65,6 +65,23 @@ impl Models {
             .energy_loss(speed)
             .map_err(|e| f.error(EffectKind::Adhesion, e))?;
         let excess = coupled.joules - elastic_part.joules;
+        // range-aware: the adhesive interpolation model is built on JKR, whose
+        // adhesive pressure makes the contact yield early; a Maugis-Dugdale range
+        // spreads the adhesive stress outside the contact (the DMT limit Λ → 0 adds
+        // none), so the early-yield excess over the non-adhesive plastic loss is
+        // weighted by φ = ΔU_MD/ΔU_JKR,fg ∈ [0, 1] (1 in the JKR limit, where the
+        // rule is the seed's model; 0 in the DMT limit, where it is the
+        // superposition); crates/tabor-scene/README.md
+        let weight = match set.adhesion {
+            Some(AdhesionKind::MaugisDugdale) => {
+                let md = self
+                    .adhesive_model()?
+                    .energy_loss(speed)
+                    .map_err(|e| f.error(EffectKind::Adhesion, e))?;
+                (md.joules / elastic_part.joules).clamp(0.0, 1.0)
+            }
+            _ => 1.0,
+        };
         let name = format!(
             "plastic part of the adhesive interpolation model (5.111)-(5.126), at least {}",
             plastic.name()
@@ -73,14 +90,28 @@ impl Models {
         let error_estimate =
             coupled.error_estimate + elastic_part.error_estimate + pl.error_estimate;
         Ok(if excess >= pl.joules {
-            (
-                EnergyLoss {
-                    joules: excess,
-                    error_estimate,
-                    branch: format!(
+            let (joules, branch) = if weight < 1.0 {
+                (
+                    pl.joules + weight * (excess - pl.joules),
+                    format!(
+                        "{} + {weight:.6e} x (plastic excess of {} over {}, less it) (range weight MD/JKR loss)",
+                        pl.branch, coupled.branch, elastic_part.branch
+                    ),
+                )
+            } else {
+                (
+                    excess,
+                    format!(
                         "plastic excess of {} over {}",
                         coupled.branch, elastic_part.branch
                     ),
+                )
+            };
+            (
+                EnergyLoss {
+                    joules,
+                    error_estimate,
+                    branch,
                     cost,
                 },
                 name,
