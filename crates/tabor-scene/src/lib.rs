@@ -53,7 +53,7 @@ pub use combination::{
 pub use error::SceneError;
 pub use file::{Format, ParseError, SceneFile};
 pub use inputs::{
-    Adhesion, AdhesionRange, AdhesivePlasticity, Body, PlasticityModel, DEFAULT_ACCURACY,
+    Adhesion, AdhesionRange, AdhesivePlasticity, Body, PlasticModel, DEFAULT_ACCURACY,
 };
 pub use outcome::{Effect, Outcome};
 pub use parameter::SweepParameter;
