@@ -12,9 +12,10 @@
 //!   function `B(x; a, b)` of seed 000 eqs. (5.11), (5.17) and the Gamma-function
 //!   ratios `β(n)`, `β(n, k)` of the power-law contact solutions;
 //! - [`ode`]: adaptive integrators for small ODE systems with dense output and
-//!   event location, explicit (Dormand-Prince 5(4)) and, in [`rosenbrock`] (also
+//!   event location, explicit (Dormand-Prince 5(4), DOP853) and, in [`rosenbrock`] (also
 //!   reachable as `ode::rosenbrock`), L-stable for stiff systems (Rodas5P by
-//!   default, RODAS4 on request), all run by one driver ([`ode::drive`]);
+//!   default, RODAS4 on request), all run by one loop ([`ode::drive`],
+//!   [`ode::drive_events`]);
 //! - [`chebyshev`]: Chebyshev interpolation (single and piecewise) for precomputed
 //!   fast tiers of expensive smooth functions;
 //! - [`Cost`]: evaluations and iterations that callers accumulate, so the library can

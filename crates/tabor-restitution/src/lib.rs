@@ -30,7 +30,7 @@ pub use combine::LossSum;
 pub use effective::ElasticMaterial;
 pub use error::Error;
 pub use menu::{Menu, UnknownChoice};
-pub use model::{EnergyLoss, ImpactModel};
+pub use model::{EnergyLoss, ImpactModel, SpeedLimit};
 pub use outcome::{
     impact, restitution_from_loss, sticking_velocity, ImpactOutcome, StickingMethod,
     StickingVelocity,

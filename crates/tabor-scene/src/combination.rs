@@ -151,6 +151,13 @@ pub enum Rule {
     /// The sum of the effects' losses, seed 000 (5.109) generalized; reported with
     /// a warning.
     Superposition,
+    /// Adhesion + plasticity where the adhesive-interpolation or
+    /// adhesive-plastic-excess rule takes its lower bound: the superposition (5.109)
+    /// of the adhesive and the non-adhesive plastic losses, which dissipates more
+    /// than the adhesive interpolation model there; reported with the
+    /// superposition's warning. Never returned by [`rule`] (it depends on the
+    /// speed), only in outcomes.
+    SuperpositionBound,
 }
 
 tabor_restitution::menu! {
@@ -164,6 +171,8 @@ tabor_restitution::menu! {
     ViscousAdhesive => "viscous-adhesive",
         "adhesion + Kelvin-Voigt viscosity: adhesive force + Kuwabara-Kono force (5.66), simulated";
     Superposition => "superposition", "the sum of the effects' losses (5.109)";
+    SuperpositionBound => "superposition-bound",
+        "adhesion + plasticity where the adhesive interpolation model dissipates less: the superposition (5.109) as its lower bound";
 }
 
 impl Rule {
@@ -182,6 +191,9 @@ impl Rule {
                 "tabor (crates/tabor-viscoadhesive/README.md): adhesive force + Kuwabara-Kono force (5.66) with the adhesive contact radius"
             }
             Rule::Superposition => "Willert 2020 (5.109): the losses are added",
+            Rule::SuperpositionBound => {
+                "Willert 2020 (5.109): the adhesive and plastic losses added, the lower bound of the adhesive interpolation rules where the adhesive interpolation model (5.111)-(5.126) dissipates less (crates/tabor-scene/README.md)"
+            }
         }
     }
 }

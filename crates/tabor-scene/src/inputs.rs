@@ -299,6 +299,18 @@ fn adhesion(a: &AdhesionFile, e: f64, r: f64) -> Result<Adhesion, SceneError> {
             "give at most one of range, cohesive_stress, tabor_parameter, maugis_parameter, tabor_mu",
         ));
     }
+    // every number given is checked, also where it does not enter (Δγ = 0)
+    for (key, value) in [
+        ("range", a.range),
+        ("cohesive_stress", a.cohesive_stress),
+        ("tabor_parameter", a.tabor_parameter),
+        ("maugis_parameter", a.maugis_parameter),
+        ("tabor_mu", a.tabor_mu),
+    ] {
+        if let Some(x) = value {
+            validate::positive(key, x).map_err(in_field("adhesion", key))?;
+        }
+    }
     let range = if w == 0.0 || given == 0 {
         AdhesionRange::Jkr
     } else if let Some(h) = a.range {

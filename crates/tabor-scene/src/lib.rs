@@ -58,4 +58,5 @@ pub use inputs::{
 pub use outcome::{Effect, Outcome};
 pub use parameter::SweepParameter;
 pub use scene::Scene;
+pub use select::Sticking;
 pub use sweep::{spaced, sweep};

@@ -43,8 +43,13 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
     writeln!(out, "impact speed      {:e} m/s", o.impact_speed)?;
     writeln!(out, "restitution       {}", o.restitution)?;
     writeln!(out, "sticks            {}", o.sticks)?;
+    let sticking_warning = o
+        .warnings
+        .iter()
+        .any(|w| matches!(w.code, "sticks-up-to-limit" | "sticking-velocity-unknown"));
     match o.sticking_velocity {
         Some(v) => writeln!(out, "sticking velocity {v:e} m/s")?,
+        None if sticking_warning => writeln!(out, "sticking velocity none (see the warning)")?,
         None => writeln!(out, "sticking velocity none (the bodies never stick)")?,
     }
     writeln!(
@@ -186,6 +191,13 @@ pub fn sweep(args: &SweepArgs) -> Outcome {
             )
         }
     };
+    scene.check_parameter(parameter).map_err(|e| {
+        format!(
+            "{}: --parameter {}: {e}",
+            args.scene.display(),
+            parameter.name()
+        )
+    })?;
     let bar = ProgressBar::new(values.len() as u64);
     if values.len() < 100 {
         bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
@@ -247,28 +259,43 @@ struct Sticking {
     scene: String,
     sticking_velocity: Option<f64>,
     sticks_ever: bool,
+    /// When the bodies stick at every speed the model is valid for: its limit
+    /// (m/s) and what ends its validity.
+    sticks_up_to: Option<f64>,
+    limit_reason: Option<&'static str>,
 }
 
 /// Runs `tabor sticking`.
 pub fn sticking(args: &StickingArgs) -> Outcome {
     let scene = load(&args.scene)?;
-    let v = scene
-        .sticking_velocity()
+    let sticking = scene
+        .sticking()
         .map_err(|e| format!("{}: {e}", args.scene.display()))?;
+    let (sticks_up_to, limit_reason) = match sticking {
+        tabor::scene::Sticking::UpToLimit { limit, reason } => (Some(limit), Some(reason)),
+        _ => (None, None),
+    };
     let out = Sticking {
         scene: scene.name.clone(),
-        sticking_velocity: v,
-        sticks_ever: v.is_some(),
+        sticking_velocity: sticking.velocity(),
+        sticks_ever: sticking.sticks_ever(),
+        sticks_up_to,
+        limit_reason,
     };
     if args.json {
         return print_json(&out);
     }
-    let mut out = stdout();
-    match v {
-        Some(v) => writeln!(out, "sticking velocity {v:e} m/s")?,
-        None => writeln!(out, "the bodies never stick")?,
+    let mut stdout = stdout();
+    match (out.sticking_velocity, out.sticks_up_to) {
+        (Some(v), _) => writeln!(stdout, "sticking velocity {v:e} m/s")?,
+        (None, Some(limit)) => writeln!(
+            stdout,
+            "the bodies stick at every speed up to {limit:e} m/s ({}): no sticking velocity within the model's validity",
+            out.limit_reason.unwrap_or("validity limit")
+        )?,
+        (None, None) => writeln!(stdout, "the bodies never stick")?,
     }
-    out.finish()
+    stdout.finish()
 }
 
 /// Arguments of `tabor trajectory`.
@@ -295,6 +322,11 @@ pub struct TrajectoryArgs {
 struct Trajectory {
     scene: String,
     law: String,
+    /// The rule that answers at this speed (whose outcome is `restitution_analytic`).
+    rule: &'static str,
+    /// Whether `law` is the rule's own force law; when not, `warnings` says which
+    /// model is simulated and by how much its restitution differs.
+    law_is_the_rules: bool,
     impact_speed: f64,
     restitution: f64,
     restitution_analytic: f64,
@@ -305,6 +337,7 @@ struct Trajectory {
     energy_loss: f64,
     energy_error: f64,
     points: usize,
+    warnings: Vec<tabor::restitution::Warning>,
 }
 
 /// Runs `tabor trajectory`.
@@ -345,9 +378,17 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
         }
         csv.flush().map_err(|e| fail(e.into()))?;
     }
+    let warnings: Vec<_> = outcome
+        .warnings
+        .iter()
+        .filter(|w| w.code == "trajectory-other-model")
+        .cloned()
+        .collect();
     let out = Trajectory {
         scene: scene.name.clone(),
         law: sim.law.clone(),
+        rule: outcome.combination.rule.as_str(),
+        law_is_the_rules: warnings.is_empty(),
         impact_speed: speed,
         restitution: sim.restitution,
         restitution_analytic: outcome.restitution,
@@ -358,6 +399,7 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
         energy_loss: sim.energy_loss,
         energy_error: sim.energy_error,
         points: sim.trajectory.len(),
+        warnings,
     };
     if args.json {
         return print_json(&out);
@@ -375,5 +417,8 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
         None => writeln!(stdout, "contact time         - (the bodies stick)")?,
     }
     writeln!(stdout, "energy bookkeeping   {:.1e}", out.energy_error)?;
+    for w in &out.warnings {
+        writeln!(stdout, "warning [{}]: {}", w.code, w.message)?;
+    }
     stdout.finish()
 }

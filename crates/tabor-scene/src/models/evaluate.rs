@@ -42,17 +42,19 @@ impl Models {
     /// would otherwise let adhesion raise ε, tabor-plastic README); otherwise the
     /// plastic model's loss. 0 at the yield onset, so adding it last keeps every
     /// combination continuous there.
+    /// The flag is true where the superposition bound answers (the coupled excess
+    /// is below the non-adhesive plastic loss).
     fn plastic_part(
         &self,
         set: &EffectSet,
         speed: f64,
-    ) -> Result<(EnergyLoss, String), SceneError> {
+    ) -> Result<(EnergyLoss, String, bool), SceneError> {
         let f = self.fields;
         let plastic_error = |e| f.error(EffectKind::Plasticity, e);
         let plastic = self.plastic_model()?;
         let pl = plastic.energy_loss(speed).map_err(plastic_error)?;
         let Some(ai) = self.coupled_plastic_part(set) else {
-            return Ok((pl, plastic.name()));
+            return Ok((pl, plastic.name(), false));
         };
         let jkr = self
             .jkr_fixed_grip
@@ -82,6 +84,7 @@ impl Models {
                     cost,
                 },
                 name,
+                false,
             )
         } else {
             (
@@ -92,6 +95,7 @@ impl Models {
                     cost,
                 },
                 name,
+                true,
             )
         })
     }
@@ -143,7 +147,10 @@ impl Models {
                     ],
                 })
             }
-            Rule::AdhesiveInterpolation | Rule::AdhesivePlasticExcess | Rule::Superposition => {
+            Rule::AdhesiveInterpolation
+            | Rule::AdhesivePlasticExcess
+            | Rule::Superposition
+            | Rule::SuperpositionBound => {
                 let kinetic = 0.5 * self.mass * speed * speed;
                 // Which effect comes last, and how it adds:
                 // - adhesion and plasticity alone: the plastic part is added to the
@@ -157,10 +164,12 @@ impl Models {
                 //   viscoelastic loss.
                 let coupled_rest =
                     set.adhesion.is_some() && set.viscoelasticity == Some(ViscoKind::KelvinVoigt);
+                let mut bound = false;
                 let (mut inner, (kind, extra, name), as_fraction) = if set.plasticity.is_some()
                     && (set.viscoelasticity.is_none() || coupled_rest)
                 {
-                    let (l, name) = self.plastic_part(set, speed)?;
+                    let (l, name, is_bound) = self.plastic_part(set, speed)?;
+                    bound = is_bound;
                     (
                         self.evaluate(&set.without(EffectKind::Plasticity), speed)?,
                         (EffectKind::Plasticity, l, name),
@@ -194,7 +203,14 @@ impl Models {
                     format!("{} + {}", inner.loss.branch, extra.branch)
                 };
                 inner.model = format!("{} + {name}", inner.model);
-                inner.rule = r;
+                // where the adhesive rules take their lower bound, the superposition
+                // (5.109) answers: named as such
+                inner.rule = match r {
+                    Rule::AdhesiveInterpolation | Rule::AdhesivePlasticExcess if bound => {
+                        Rule::SuperpositionBound
+                    }
+                    _ => r,
+                };
                 inner.parts.push((kind, Some(share)));
                 Ok(inner)
             }
