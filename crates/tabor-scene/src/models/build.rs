@@ -242,7 +242,7 @@ impl Models {
                         {
                             return Err(SceneError::field(
                                 "adhesion.work_of_adhesion",
-                                format!("adhesion with plasticity (the adhesive interpolation model (5.111)-(5.126)): {e}; the model does not cover this scene: set [plasticity] adhesive_model = \"superposition\" to add the adhesive and the plastic losses instead (seed 000 (5.109), reported with a warning)"),
+                                format!("adhesion with plasticity (the adhesive interpolation model (5.111)-(5.126)): {e}; the model does not cover this scene: set [plasticity] adhesive_model = \"superposition\" to add the adhesive and the plastic losses instead (Willert 2020 (5.109), reported with a warning)"),
                             ))
                         }
                         // only used to measure the superposition's error
