@@ -368,6 +368,18 @@ impl<'a> Setup<'a> {
         (n, overlap, rate, n_dot)
     }
 
+    /// The step of the central differences of the law's force and contact radius
+    /// at `overlap`: 10⁻⁵ of the distance to the branch end (where the law is
+    /// singular: Hertz's `a ∝ δ^½` at first touch, JKR's vertical tangent at
+    /// pull-off), at most 10⁻⁵ of the overlap scale, at least 10⁻¹² of it.
+    /// Relative truncation error ~10⁻¹⁰, rounding ~10⁻¹¹: a fixed step of the
+    /// overlap scale is as large as the overlap itself just after first touch,
+    /// where the slip conditions are decided.
+    fn difference_step(&self, law: &dyn ForceLaw, overlap: f64, rate: f64) -> Result<f64> {
+        let end = law.branch_end(overlap, rate)?;
+        Ok(DIFFERENCE_STEP * end.clamp(1e-7 * self.length, self.length))
+    }
+
     fn kinetic(&self, y: &[f64; N]) -> f64 {
         let u = v3(y, U);
         let wi = v3(y, WI);
@@ -404,7 +416,7 @@ impl<'a> Setup<'a> {
             out.dy[EN] = f_el * rate;
             return Ok(out);
         }
-        let h = 1e-6 * self.length;
+        let h = self.difference_step(law, overlap, rate)?;
         let a_of = |d: f64| law.contact_radius(d, rate);
         let (a, a_prime) = derivative(&a_of, overlap, h)?;
         let a = a.max(0.0);
@@ -542,7 +554,16 @@ impl<'a> Setup<'a> {
             let gamma_dot = t.damping_ratio * c * a_dot;
             let limit_dot = t.coefficient * fc_dot;
             let rescale = t.model == TangentialModel::MindlinRescale && !modes.loading;
-            let rescale_rate = if rescale && a > 0.0 { a_dot / a } else { 0.0 };
+            // ξ ∝ a while it shrinks: the rate ȧ/a diverges where the contact
+            // vanishes (Hertz: a ∝ δ^½ at separation), and so do ξ's derivatives;
+            // capped as the turning of a slip direction ([`turn_rate`]). The cap
+            // acts only within ~10⁻⁴ of the end, where the stick force is
+            // bounded by a limit ~10⁻⁶ of its largest value.
+            let rescale_rate = if rescale && a > 0.0 {
+                (a_dot / a).max(-RATE_CAP / self.time)
+            } else {
+                0.0
+            };
             match modes.tangential {
                 Mode::Stick => {
                     let d = v_tr - n * xi.dot(&n_dot) + xi * rescale_rate;
@@ -634,23 +655,19 @@ impl<'a> Setup<'a> {
 /// The rate `P⊥(drive)/L` at which a slipping element's force direction `uhat`
 /// turns toward the direction of `drive` (1/s). Where the limit L vanishes (first
 /// touch and separation of a law without adhesion) the rate diverges and the
-/// direction follows `drive` at once; the rate is capped at 10⁴ per time unit
-/// `time` (s) of the impact, i.e. the direction relaxes within 10⁻⁴ of the
-/// contact time scale, and components below 10⁻¹² of `drive` (rounding in a
-/// planar impact) are dropped.
+/// direction follows `drive` at once; there L is replaced by its floor
+/// `|drive| time / 10⁴`, so the angle between `uhat` and `drive` relaxes at a rate
+/// of at most 10⁴ per time unit `time` (s) of the impact, in proportion to the
+/// angle (a capped *magnitude* would make the turning bang-bang about the
+/// direction of `drive`, which no step size resolves).
 fn turn_rate(drive: &Vector3<f64>, uhat: &Vector3<f64>, limit: f64, time: f64) -> Vector3<f64> {
     let perp = drive - uhat * uhat.dot(drive);
-    let size = perp.norm();
-    if size <= 1e-12 * drive.norm() || size == 0.0 {
-        return Vector3::zeros();
-    }
-    let cap = 1e4 / time;
-    let rate = if limit > 0.0 {
-        (size / limit).min(cap)
+    let limit = limit.max(drive.norm() * time / RATE_CAP);
+    if limit > 0.0 {
+        perp / limit
     } else {
-        cap
-    };
-    perp * (rate / size)
+        Vector3::zeros()
+    }
 }
 
 /// `a/b`, 0 when b is 0.
@@ -721,6 +738,15 @@ enum Event {
     TwistingStick,
     FrictionOnset,
 }
+
+/// The largest rate (per time unit of the impact) of the relaxations that diverge
+/// where a contact without adhesion vanishes: the turning of a slip direction
+/// ([`turn_rate`]) and `mindlin_rescale`'s shrinking of ξ.
+const RATE_CAP: f64 = 1e4;
+
+/// The step of the central differences of the normal law, relative to the
+/// distance to its branch end ([`Setup::difference_step`]).
+const DIFFERENCE_STEP: f64 = 1e-5;
 
 /// The overlap (in units of the overlap scale) up to which a contact that starts
 /// without a Coulomb limit runs without friction ([`ObliqueImpact::simulate`]).
@@ -1344,14 +1370,21 @@ impl<'a> Setup<'a> {
         modes: &Modes,
         settings: &SimulationSettings,
     ) -> Result<(Event, f64, [f64; N], Cost)> {
-        let g0 = self.event_values(law, t, y, modes)?;
-        // an event function at (or, by the location tolerance, just past) its zero
-        // at the start is shifted to start just above it: the crossing just handled
-        // is not found again, a genuine later one is
+        // the integration starts at the normalized state; the event values there
+        // are those its event function sees (the round trip SI → normalized → SI
+        // moves a value at its zero by rounding, to either side)
+        let s0 = t / self.time;
+        let yn = self.to_normalized(y);
+        let g0 = self.event_values(law, s0 * self.time, &self.to_si(&yn), modes)?;
+        // an event function at (or, by the location tolerance or rounding, just
+        // past) its zero at the start is shifted to start a margin above it: the
+        // crossing just handled is not found again, a genuine later one is. The
+        // margin (10⁻¹² of the value's size) exceeds the rounding of the shift.
         let mut offset = [0.0; 9];
         for (o, g) in offset.iter_mut().zip(g0.iter()) {
-            if *g <= 0.0 {
-                *o = -g + 1e-12;
+            let margin = 1e-12 * g.abs().max(1.0);
+            if g.is_finite() && *g <= margin {
+                *o = 2.0 * margin - g;
             }
         }
         if g0[0].is_nan() || g0[0] < 0.0 {
@@ -1392,8 +1425,6 @@ impl<'a> Setup<'a> {
                 }
             }
         };
-        let s0 = t / self.time;
-        let yn = self.to_normalized(y);
         let s_end = s0 + settings.max_duration;
         let numerics = |e| failure.take().unwrap_or(Error::Numerics(e));
         let mut stepper =
