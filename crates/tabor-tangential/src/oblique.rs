@@ -29,6 +29,23 @@
 //! little way (10⁻⁶ of the overlap scale) along the undisturbed path: both grow as
 //! the same power of the overlap, so their ratio decides.
 //!
+//! Where a contact without adhesion vanishes (first touch and separation of
+//! Hertz) every limit L tends to 0 and the turning rate `|P⊥ Ṫ|/L` of a slip
+//! direction diverges: L is floored at `|Ṫ| t₀ / 10⁴` (t₀ the time unit of the
+//! impact), so the direction relaxes toward `Ṫ` at most 10⁴ times per time unit,
+//! in proportion to the angle; `mindlin_rescale`'s `ȧ/a` is capped alike. Both act
+//! only within ~10⁻⁴ of the contact's ends, where every friction force is below
+//! ~10⁻⁶ of its largest value. With them, initial spins in any direction are
+//! integrated (out of the impact plane the slip directions leave it; about the
+//! line of centres twisting acts).
+//!
+//! Chattering: stick/slip switches within 10⁻⁶ of the branch end freeze every
+//! element's mode for the rest of the impact (every force there is ~10⁻⁹ of its
+//! size); two switches of one element within 10⁻⁹ time units (a tangency of its
+//! trial force with its limit that a stiff dashpot keeps up) freeze that element,
+//! its stick force capped at the limit. The energy bookkeeping is exact either way
+//! (the work of the forces that act).
+//!
 //! # Energy
 //!
 //! The work of every mechanism is integrated with the motion ([`EnergyLosses`]):
@@ -265,9 +282,10 @@ enum Mode {
 #[derive(Clone, Copy, Debug)]
 struct Modes {
     in_contact: bool,
-    /// Stick/slip switching ends (chattering at a vanishing contact, see
-    /// `ObliqueImpact::simulate`).
-    frozen: bool,
+    /// Stick/slip switching of the tangential, rolling and twisting element
+    /// ended (chattering, see `ObliqueImpact::simulate`): a frozen element keeps
+    /// its mode, its stick force capped at the limit.
+    frozen: [bool; 3],
     /// The first 10⁻⁶ of the overlap scale of a contact that starts without a
     /// Coulomb limit: no friction force yet, the springs follow the motion.
     warmup: bool,
@@ -470,7 +488,7 @@ impl<'a> Setup<'a> {
             let limit = t.coefficient * fc;
             let xi = v3(y, XT);
             f_t = match modes.tangential {
-                Mode::Stick => -(xi * k + v_tr * gamma),
+                Mode::Stick => cap(-(xi * k + v_tr * gamma), limit, modes.frozen[0]),
                 Mode::Slip => -direction(&xi, &v_tr) * limit,
             };
             tang = Some((k, gamma, limit, xi));
@@ -478,14 +496,25 @@ impl<'a> Setup<'a> {
                 let psi = v3(y, XR);
                 let limit_r = r.coefficient * fc;
                 f_r = match modes.rolling {
-                    Mode::Stick => -(psi * r.stiffness + v_rl * r.damping),
+                    Mode::Stick => cap(
+                        -(psi * r.stiffness + v_rl * r.damping),
+                        limit_r,
+                        modes.frozen[1],
+                    ),
                     Mode::Slip => -direction(&psi, &v_rl) * limit_r,
                 };
             }
             if let Some(tw) = &fr.twisting {
                 let (k_tw, g_tw, l_tw) = twist_coefficients(tw, fr, a, c, fc);
                 m_tw = match modes.twisting {
-                    Mode::Stick => -(k_tw * y[XW] + g_tw * w_tw),
+                    Mode::Stick => {
+                        let m = -(k_tw * y[XW] + g_tw * w_tw);
+                        if modes.frozen[2] && m.abs() > l_tw {
+                            l_tw.copysign(m)
+                        } else {
+                            m
+                        }
+                    }
                     Mode::Slip => -modes.twist_sign * l_tw,
                 };
             }
@@ -574,7 +603,7 @@ impl<'a> Setup<'a> {
                     let uhat = direction(&xi, &v_tr);
                     let drive =
                         v_tr * k + v_tr * (gamma_dot - k_dot * ratio(gamma, k)) + v_tr_dot * gamma;
-                    let turn = turn_rate(&drive, &uhat, limit, self.time);
+                    let turn = turn_rate(&drive, &uhat, &n, limit, self.time);
                     let d = (turn - n * uhat.dot(&n_dot)) * xi.norm();
                     put(&mut out.dy, XT, &d);
                     // û·Ṫ_stick − L̇ with ξ on the limit surface
@@ -608,7 +637,7 @@ impl<'a> Setup<'a> {
                 Mode::Slip => {
                     let uhat = direction(&psi, &v_rl);
                     let drive = v_rl * r.stiffness + v_rl_dot * r.damping;
-                    let turn = turn_rate(&drive, &uhat, limit_r, self.time);
+                    let turn = turn_rate(&drive, &uhat, &n, limit_r, self.time);
                     put(
                         &mut out.dy,
                         XR,
@@ -653,20 +682,40 @@ impl<'a> Setup<'a> {
 }
 
 /// The rate `P⊥(drive)/L` at which a slipping element's force direction `uhat`
-/// turns toward the direction of `drive` (1/s). Where the limit L vanishes (first
+/// turns toward the direction of `drive` (1/s), in the tangent plane (normal
+/// `n`: the limit surface lies in it, so the part of `drive` along `n`, from
+/// the turning of the plane, is dropped; the turning of `uhat` with the plane is
+/// added by the caller). Where the limit L vanishes (first
 /// touch and separation of a law without adhesion) the rate diverges and the
 /// direction follows `drive` at once; there L is replaced by its floor
 /// `|drive| time / 10⁴`, so the angle between `uhat` and `drive` relaxes at a rate
 /// of at most 10⁴ per time unit `time` (s) of the impact, in proportion to the
 /// angle (a capped *magnitude* would make the turning bang-bang about the
 /// direction of `drive`, which no step size resolves).
-fn turn_rate(drive: &Vector3<f64>, uhat: &Vector3<f64>, limit: f64, time: f64) -> Vector3<f64> {
-    let perp = drive - uhat * uhat.dot(drive);
+fn turn_rate(
+    drive: &Vector3<f64>,
+    uhat: &Vector3<f64>,
+    n: &Vector3<f64>,
+    limit: f64,
+    time: f64,
+) -> Vector3<f64> {
+    let drive = drive - n * n.dot(drive);
+    let perp = drive - uhat * uhat.dot(&drive);
     let limit = limit.max(drive.norm() * time / RATE_CAP);
     if limit > 0.0 {
         perp / limit
     } else {
         Vector3::zeros()
+    }
+}
+
+/// The stick force `f` of a frozen element, capped at the limit.
+fn cap(f: Vector3<f64>, limit: f64, frozen: bool) -> Vector3<f64> {
+    let size = f.norm();
+    if frozen && size > limit {
+        f * (limit / size)
+    } else {
+        f
     }
 }
 
@@ -808,23 +857,6 @@ impl ObliqueImpact {
         for s in spin_i.iter().chain(spin_j.iter()) {
             validate::finite("spin", *s)?;
         }
-        // Out of the impact plane a slipping contact turns its force direction
-        // toward the sliding velocity at a rate that diverges where the contact
-        // vanishes (Hertz: first touch and separation); not integrated reliably yet.
-        for (name, s) in [
-            ("sphere spin x", spin_i[0]),
-            ("sphere spin y", spin_i[1]),
-            ("target spin x", spin_j[0]),
-            ("target spin y", spin_j[1]),
-        ] {
-            if s != 0.0 {
-                return Err(Error::invalid(
-                    name,
-                    s,
-                    "must be 0: only spin about z (normal to the impact plane) is supported",
-                ));
-            }
-        }
         if self.sphere.is_flat() {
             return Err(Error::invalid(
                 "sphere radius",
@@ -913,7 +945,7 @@ impl ObliqueImpact {
         let kinetic0 = setup.kinetic(&y);
         let mut modes = Modes {
             in_contact: law.in_contact(),
-            frozen: false,
+            frozen: [false; 3],
             warmup: false,
             loading: true,
             tangential: Mode::Stick,
@@ -929,7 +961,7 @@ impl ObliqueImpact {
         let mut cost = Cost::ZERO;
         let mut events = 0usize;
         let mut slip_switches = 0usize;
-        let mut last_switch: Option<f64> = None;
+        let mut last_switch: [Option<f64>; 3] = [None; 3];
         let decision = loop {
             let (event, t_hit, y_hit, spent) = setup.segment(law, t, &y, &modes, settings)?;
             cost += spent;
@@ -947,14 +979,26 @@ impl ObliqueImpact {
             if !matches!(event, Event::BranchEnd | Event::Turn | Event::FrictionOnset) {
                 // Stick/slip switches at a vanishing contact (the branch within
                 // 10⁻⁶ of its end, where every limit and spring is ~10⁻⁹ of its
-                // size) or in immediate succession (10⁻⁹ of the time unit) are
-                // chattering of a law whose limit vanishes with the contact: the
-                // modes are frozen for the rest of the impact.
+                // size) are chattering of a law whose limit vanishes with the
+                // contact: every element is frozen for the rest of the impact.
+                // Two switches of one element in immediate succession (10⁻⁹ of
+                // the time unit) are chattering at a tangency of its trial force
+                // and its limit (a stiff dashpot keeps them together): that
+                // element is frozen, its force capped at the limit.
+                let element = match event {
+                    Event::TangentialLimit | Event::TangentialStick => 0,
+                    Event::RollingLimit | Event::RollingStick => 1,
+                    _ => 2,
+                };
                 let near_end = law.branch_end(overlap, rate)? < 1e-6 * setup.length;
-                let repeated = last_switch.is_some_and(|s: f64| t - s < 1e-9 * setup.time);
-                last_switch = Some(t);
-                if near_end || repeated {
-                    modes.frozen = true;
+                let repeated = last_switch[element].is_some_and(|s: f64| t - s < 1e-9 * setup.time);
+                last_switch[element] = Some(t);
+                if near_end {
+                    modes.frozen = [true; 3];
+                    continue;
+                }
+                if repeated {
+                    modes.frozen[element] = true;
                     continue;
                 }
             }
@@ -1296,7 +1340,7 @@ impl<'a> Setup<'a> {
             g[8] = WARMUP - overlap / self.length;
             return Ok(g);
         }
-        if !modes.in_contact || self.imp.friction.is_none() || modes.frozen {
+        if !modes.in_contact || self.imp.friction.is_none() || modes.frozen == [true; 3] {
             return Ok(g);
         }
         let fr = self
@@ -1315,13 +1359,14 @@ impl<'a> Setup<'a> {
             None
         };
         match modes.tangential {
+            _ if modes.frozen[0] => {}
             Mode::Stick => {
                 let (trial, limit, ..) = self.element(law, t, y, XT)?;
                 g[2] = (limit - trial.norm()) / self.force;
             }
             Mode::Slip => g[3] = ev.as_ref().map_or(f64::INFINITY, |e| e.slip_rate_t) / rate_unit,
         }
-        if rolling {
+        if rolling && !modes.frozen[1] {
             match modes.rolling {
                 Mode::Stick => {
                     let (trial, limit, ..) = self.element(law, t, y, XR)?;
@@ -1332,7 +1377,7 @@ impl<'a> Setup<'a> {
                 }
             }
         }
-        if twisting {
+        if twisting && !modes.frozen[2] {
             let torque_unit = self.force * self.length;
             match modes.twisting {
                 Mode::Stick => {

@@ -1,6 +1,6 @@
 //! Energy bookkeeping as a property: for random oblique impacts (Hertz and JKR,
 //! sphere on sphere and on a flat, with friction, rolling, twisting, damping and
-//! initial spin) the work of every mechanism adds up to the kinetic energy lost.
+//! initial spins in any direction) the work of every mechanism adds up to the kinetic energy lost.
 //! Every case must run: an error counts as a failure (the physics is defined for
 //! all of them).
 
@@ -27,6 +27,7 @@ fn run(
     twisting: usize,
     damping: f64,
     spin: f64,
+    axis: [f64; 3],
 ) -> Result<f64, String> {
     let (e, nu, w) = (54e9, 0.17, 0.05);
     let sphere = Body::solid_sphere(R, 2650.0).unwrap();
@@ -70,8 +71,8 @@ fn run(
             damping,
         },
         friction: Some(friction),
-        sphere_spin: [0.0, 0.0, spin],
-        target_spin: [0.0, 0.0, -0.3 * spin],
+        sphere_spin: axis.map(|c| c * spin),
+        target_spin: [axis[1], axis[2], axis[0]].map(|c| -0.3 * c * spin),
     };
     let out = imp
         .simulate(
@@ -82,6 +83,100 @@ fn run(
         )
         .map_err(|e| e.to_string())?;
     Ok(out.energy_error)
+}
+
+/// The cases that failed before (the regression file replays their seeds, whose
+/// spin axis changed when the axis became a parameter): the z-axis spin they had.
+#[test]
+fn the_former_failures_account_for_the_energy_lost() {
+    let z = [0.0, 0.0, 1.0];
+    let cases = [
+        // a fixed difference step as large as the overlap after the onset
+        (
+            false,
+            false,
+            0,
+            0.06462716255209451,
+            67.78349150347745,
+            0.7596727629375741,
+            Some((17.229044692900953, 0.17472771278794158)),
+            0,
+            0.07635348278595072,
+            21632.376062505493,
+        ),
+        // a start value rounded past its zero: separation missed
+        (
+            false,
+            true,
+            1,
+            1.7414246046615829,
+            36.56828936387201,
+            0.982188928075897,
+            Some((46.04514746786466, 0.09061953499856086)),
+            0,
+            0.0,
+            91937.54479590403,
+        ),
+        // mindlin_rescale's (da/dt)/a at separation
+        (
+            false,
+            false,
+            2,
+            1.2362058121825983,
+            44.18012318944952,
+            0.9563434079175318,
+            None,
+            2,
+            0.09969300524336415,
+            36615.828165833824,
+        ),
+        // a bang-bang turning of the slip direction near separation
+        (
+            false,
+            false,
+            1,
+            0.7997288644127097,
+            83.74750864199271,
+            0.6640611463612569,
+            Some((90.83155832126693, 0.2767050973382329)),
+            0,
+            0.03416681824066254,
+            86143.30745973079,
+        ),
+    ];
+    for (adhesive, flat, model, speed, angle, mu, rolling, twisting, damping, spin) in cases {
+        let error = run(
+            adhesive, flat, model, speed, angle, mu, rolling, twisting, damping, spin, z,
+        )
+        .unwrap();
+        assert!(error < 1e-6, "energy error {error:e} at speed {speed}");
+    }
+    // a spin out of the impact plane: the slip direction's turning drive had a
+    // part along the normal (the force left the tangent plane; its work on the
+    // normal motion was not booked)
+    let axis = [
+        -0.24807325225703664,
+        -0.5051434845054309,
+        0.47257036125663393,
+    ];
+    let error = run(
+        false,
+        false,
+        0,
+        0.9367106687067746,
+        4.479604256891718,
+        0.9046767129687986,
+        Some((72.32095245202912, 0.2471781662742476)),
+        2,
+        0.06061674384241949,
+        -64019.037089787504,
+        axis,
+    )
+    .unwrap();
+    assert!(
+        error < 1e-6,
+        "energy error {error:e}, spin out of the plane"
+    );
 }
 
 proptest! {
@@ -97,8 +192,15 @@ proptest! {
         twisting in 0usize..3,
         damping in prop_oneof![Just(0.0), 1e-3f64..1e-1],
         spin in prop_oneof![Just(0.0), -1e5f64..1e5],
+        axis in prop_oneof![
+            Just([0.0, 0.0, 1.0]),
+            Just([1.0, 0.0, 0.0]),
+            (-1.0f64..1.0, -1.0f64..1.0, -1.0f64..1.0).prop_map(|(x, y, z)| [x, y, z]),
+        ],
     ) {
-        match run(adhesive, flat, model, speed, angle, mu, rolling, twisting, damping, spin) {
+        match run(
+            adhesive, flat, model, speed, angle, mu, rolling, twisting, damping, spin, axis,
+        ) {
             Ok(error) => prop_assert!(error < 1e-6, "energy error {error:e}"),
             Err(e) => prop_assert!(false, "the simulation failed: {e}"),
         }

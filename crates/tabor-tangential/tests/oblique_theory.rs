@@ -8,7 +8,7 @@ use approx::assert_relative_eq;
 use tabor_dynamics::SimulationSettings;
 use tabor_elastic::ElasticContact;
 use tabor_tangential::oblique::{Body, NormalContact, ObliqueImpact};
-use tabor_tangential::{EffectiveShear, Friction, Tangential};
+use tabor_tangential::{EffectiveShear, Friction, Tangential, Twisting};
 
 const R: f64 = 1e-6;
 const RHO: f64 = 2650.0;
@@ -131,4 +131,49 @@ fn maw_barber_fawcett_sliding_line_and_shape() {
     let (b1, _) = beta(0.01, &mut law);
     let (b2, _) = beta(0.02, &mut law);
     assert!((b1 - b2).abs() < 1e-3, "β(0.01) = {b1}, β(0.02) = {b2}");
+}
+
+/// A pure twist: a sphere spinning about the line of centres hits a flat head-on
+/// (α = 0). No sliding, no rolling; only `marshall`'s twisting torque acts, and
+/// while the contact twists in gross slip it is the limit `(2/3) μ a F_n`
+/// (Marshall 2009, eq. 44; `F_n0` = the Hertz force, no adhesion or damping). With
+/// Hertz's `a = √(Rδ)`, `F_n = (4/3) E* √R δ^{3/2}`, the spin drops by
+/// `Δω = (2/3) μ (4/3) E* R ∫δ² dt / I`, and over Hertz's impact (maximum overlap
+/// `δ_m = (15 m v² / (16 E* √R))^{2/5}`, `δ̇ = v √(1 − (δ/δ_m)^{5/2})`)
+/// `∫δ² dt = 2 ∫₀^{δ_m} δ²/δ̇ dδ = (4/5) B(6/5, 1/2) δ_m³ / v`. The spin stays
+/// large enough (4 Δω) that the contact never sticks. The normal motion is
+/// untouched and the whole loss is the twisting work.
+#[test]
+fn pure_twist_decays_by_marshalls_limit() {
+    let mu = 0.3;
+    let v = 0.5;
+    let shear = EffectiveShear::of_pair(E_Y, NU, E_Y, NU).unwrap();
+    let friction = Friction::sliding(Tangential::mindlin(shear, 0.0, mu).unwrap())
+        .with_twisting(Twisting::Marshall);
+    let sphere = Body::solid_sphere(R, RHO).unwrap();
+    let e_star = effective_modulus_flat();
+    let delta_m = (15.0 * sphere.mass * v * v / (16.0 * e_star * R.sqrt())).powf(0.4);
+    let beta = tabor_numerics::special::beta(1.2, 0.5).unwrap();
+    let integral = 0.8 * beta * delta_m.powi(3) / v;
+    let drop = 2.0 / 3.0 * mu * 4.0 / 3.0 * e_star * R * integral / sphere.moment_of_inertia;
+    let spin = 4.0 * drop;
+    let imp = ObliqueImpact {
+        sphere,
+        target: Body::flat(),
+        normal: NormalContact::ELASTIC,
+        friction: Some(friction),
+        sphere_spin: [spin, 0.0, 0.0],
+        target_spin: [0.0; 3],
+    };
+    let mut law = ElasticContact::hertz(e_star, R).unwrap();
+    let out = imp.simulate(&mut law, v, 0.0, &settings()).unwrap();
+    let w = out.after.sphere.angular_velocity;
+    assert_relative_eq!(spin - w[0], drop, max_relative = 1e-9);
+    assert!(
+        w[1].abs() < 1e-9 * spin && w[2].abs() < 1e-9 * spin,
+        "{w:?}"
+    );
+    assert_relative_eq!(out.normal_restitution, 1.0, max_relative = 1e-8);
+    assert_relative_eq!(out.losses.twisting, out.energy_loss, max_relative = 1e-7);
+    assert!(out.energy_error < 1e-8, "{}", out.energy_error);
 }
