@@ -25,11 +25,12 @@ pub struct SimulationSettings {
 }
 
 impl Default for SimulationSettings {
-    /// Relative tolerance 1e-11, absolute 1e-13, at most 0.1 L/v0 per step (so that
-    /// no turning point is stepped over), trajectory recorded, 10⁶ L/v0, 1000 events.
+    /// `OdeTolerance::default()` (relative 1e-11, absolute 1e-13: one line in
+    /// `tabor_numerics::tolerance`), at most 0.1 L/v0 per step (so that no
+    /// turning point is stepped over), trajectory recorded, 10⁶ L/v0, 1000 events.
     fn default() -> Self {
         SimulationSettings {
-            tolerance: OdeTolerance::new(1e-11, 1e-13).with_max_step(0.1),
+            tolerance: OdeTolerance::default().with_max_step(0.1),
             record_trajectory: true,
             max_duration: 1e6,
             max_events: 1000,

@@ -140,9 +140,15 @@ impl OdeTolerance {
 }
 
 impl Default for OdeTolerance {
-    /// `relative = 1e-10`, `absolute = 1e-12`.
+    /// `relative` = [`ODE_TOLERANCE`](crate::tolerance::ODE_TOLERANCE) (1e-11),
+    /// `absolute` = [`ODE_ABSOLUTE_TOLERANCE`](crate::tolerance::ODE_ABSOLUTE_TOLERANCE)
+    /// (1e-13): the default of every simulated impact
+    /// (`tabor_dynamics::SimulationSettings::default`).
     fn default() -> Self {
-        OdeTolerance::new(1e-10, 1e-12)
+        OdeTolerance::new(
+            crate::tolerance::ODE_TOLERANCE,
+            crate::tolerance::ODE_ABSOLUTE_TOLERANCE,
+        )
     }
 }
 
