@@ -69,7 +69,7 @@
 //! - [`impact_path`]: the case (1, 2, 3), the jump-in and pull-off states;
 //! - [`normalized_loss`]: the loss W(Λ) in units of F_n d_n and over the JKR loss,
 //!   direct evaluation to a requested tolerance with cost and error estimate;
-//! - [`loss_over_jkr_fast`]: the fast tier (precomputed Chebyshev interpolant,
+//! - [`loss_over_jkr_fast`]: the fast tier (precomputed piecewise Chebyshev table,
 //!   relative error < 1e-10 for every Λ);
 //! - [`units`]: scales and conversions into Λ from σ0, h, Maugis' λ, Tabor's μ;
 //! - [`MaugisDugdaleImpact`]: the SI front, an `ImpactModel` (restitution and

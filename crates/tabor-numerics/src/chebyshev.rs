@@ -205,3 +205,175 @@ impl PiecewiseChebyshev {
         piece.eval(x.clamp(a, b))
     }
 }
+
+/// A function tabulated on `pieces` equal pieces of `[lower, upper]`: on each, the
+/// interpolant at `N` Chebyshev points of the first kind ([`ChebyshevSeries::fit`]),
+/// converted to a polynomial of degree `N − 1` in the piece's local coordinate
+/// `s ∈ [−1, 1]` and evaluated by Estrin's scheme.
+///
+/// This is the form for hot loops: the piece is found by one multiplication and a
+/// truncation (no search), and Estrin's scheme evaluates the polynomial in about
+/// log₂ N dependent multiply-adds instead of the N of Clenshaw's recurrence. The
+/// conversion to monomials is well conditioned for the low degrees it is meant for
+/// (`N ≤ 16`: the monomial coefficients of `T_k` on `[−1, 1]` sum to at most
+/// `(1 + √2)^k`, and the Chebyshev coefficients of a resolved piece decay faster).
+/// Trefethen, *Approximation Theory and Approximation Practice*, SIAM 2013 (the
+/// interpolant); Knuth, *The Art of Computer Programming* vol. 2, 3rd ed. 1997,
+/// section 4.6.4 (Estrin's scheme).
+#[derive(Clone, Debug, PartialEq)]
+pub struct UniformChebyshevTable<const N: usize> {
+    lower: f64,
+    upper: f64,
+    pieces_per_unit: f64,
+    coefficients: Vec<[f64; N]>,
+    tail: f64,
+    cost: Cost,
+}
+
+impl<const N: usize> UniformChebyshevTable<N> {
+    /// Fits `f` on `pieces` equal pieces of `[lower, upper]` (1 ≤ pieces ≤ 2²⁰,
+    /// 2 ≤ N ≤ 16). Fails when a sample fails or is not finite, and when a piece's
+    /// relative coefficient tail ([`ChebyshevSeries::tail`]) exceeds `tolerance`.
+    pub fn fit<F, E>(
+        mut f: F,
+        lower: f64,
+        upper: f64,
+        pieces: usize,
+        tolerance: f64,
+    ) -> std::result::Result<Self, E>
+    where
+        F: FnMut(f64) -> std::result::Result<f64, E>,
+        E: From<NumericsError>,
+    {
+        if !(2..=16).contains(&N) {
+            return Err(E::from(NumericsError::InvalidArgument {
+                name: "points per piece",
+                value: N as f64,
+                requirement: "must be between 2 and 16",
+            }));
+        }
+        if !(1..=1 << 20).contains(&pieces) {
+            return Err(E::from(NumericsError::InvalidArgument {
+                name: "pieces",
+                value: pieces as f64,
+                requirement: "must be between 1 and 2^20",
+            }));
+        }
+        if !(tolerance > 0.0 && tolerance.is_finite()) {
+            return Err(E::from(NumericsError::InvalidArgument {
+                name: "tolerance",
+                value: tolerance,
+                requirement: "must be finite and > 0",
+            }));
+        }
+        let width = (upper - lower) / pieces as f64;
+        let mut coefficients = Vec::with_capacity(pieces);
+        let mut tail: f64 = 0.0;
+        for i in 0..pieces {
+            let a = lower + width * i as f64;
+            let b = if i + 1 == pieces { upper } else { a + width };
+            let series = ChebyshevSeries::fit(&mut f, a, b, N)?;
+            let piece_tail = series.tail();
+            if piece_tail > tolerance {
+                return Err(E::from(NumericsError::NoConvergence {
+                    method: "uniform Chebyshev table",
+                    iterations: i as u64,
+                    estimate: series.coefficients[0],
+                    error: piece_tail,
+                }));
+            }
+            tail = tail.max(piece_tail);
+            coefficients.push(chebyshev_to_monomial(series.coefficients()));
+        }
+        Ok(UniformChebyshevTable {
+            lower,
+            upper,
+            pieces_per_unit: pieces as f64 / (upper - lower),
+            coefficients,
+            tail,
+            cost: Cost::new((pieces * N) as u64, pieces as u64),
+        })
+    }
+
+    /// The number of pieces.
+    pub fn pieces(&self) -> usize {
+        self.coefficients.len()
+    }
+
+    /// The interval `[lower, upper]`.
+    pub fn interval(&self) -> (f64, f64) {
+        (self.lower, self.upper)
+    }
+
+    /// The largest relative coefficient tail of the pieces (an estimate of the
+    /// interpolation error relative to the function's size on a piece).
+    pub fn tail(&self) -> f64 {
+        self.tail
+    }
+
+    /// What building the table cost (evaluations of `f`, pieces).
+    pub fn cost(&self) -> Cost {
+        self.cost
+    }
+
+    /// Evaluates at `x`; `x` outside the interval (or NaN) is clamped to it.
+    #[inline]
+    pub fn eval(&self, x: f64) -> f64 {
+        let x = x.clamp(self.lower, self.upper);
+        let position = (x - self.lower) * self.pieces_per_unit;
+        // `as` saturates; the last piece also holds `upper` itself
+        let i = (position as usize).min(self.coefficients.len() - 1);
+        let s = 2.0 * (position - i as f64) - 1.0;
+        estrin(&self.coefficients[i], s)
+    }
+}
+
+/// The monomial coefficients in `s` of `Σ c_k T_k(s)`.
+fn chebyshev_to_monomial<const N: usize>(c: &[f64]) -> [f64; N] {
+    let mut out = [0.0; N];
+    // T_{k−1}, T_k as monomial coefficients
+    let mut previous = [0.0; N];
+    let mut current = [0.0; N];
+    previous[0] = 1.0;
+    if N > 1 {
+        current[1] = 1.0;
+    }
+    for (k, &ck) in c.iter().enumerate().take(N) {
+        let t = if k == 0 { &previous } else { &current };
+        for (o, ti) in out.iter_mut().zip(t) {
+            *o += ck * ti;
+        }
+        if k >= 1 {
+            // T_{k+1} = 2 s T_k − T_{k−1}
+            let mut next = [0.0; N];
+            for j in 0..N {
+                let shifted = if j > 0 { 2.0 * current[j - 1] } else { 0.0 };
+                next[j] = shifted - previous[j];
+            }
+            previous = current;
+            current = next;
+        }
+    }
+    out
+}
+
+/// `Σ c_i s^i` by Estrin's scheme: pairs `c_2i + c_2i+1 s`, then pairs of those
+/// with `s²`, and so on (the loops unroll for a constant N).
+#[inline]
+fn estrin<const N: usize>(c: &[f64; N], s: f64) -> f64 {
+    let mut level = *c;
+    let mut len = N;
+    let mut power = s;
+    while len > 1 {
+        let half = len / 2;
+        for i in 0..half {
+            level[i] = level[2 * i] + power * level[2 * i + 1];
+        }
+        if len % 2 == 1 {
+            level[half] = level[len - 1];
+        }
+        len = half + len % 2;
+        power *= power;
+    }
+    level[0]
+}

@@ -18,8 +18,8 @@
 //!   [`ode::drive_events`]);
 //! - [`search`]: the edge of a yes/no property of a positive argument, by bisection
 //!   in its logarithm (where two models stop agreeing within a bound);
-//! - [`chebyshev`]: Chebyshev interpolation (single and piecewise) for precomputed
-//!   fast tiers of expensive smooth functions;
+//! - [`chebyshev`]: Chebyshev interpolation (single, piecewise, and on equal pieces
+//!   for hot loops) for precomputed fast tiers of expensive smooth functions;
 //! - [`minimize`]: the global minimum of a function on an interval (grid, then
 //!   golden-section search);
 //! - [`Cost`]: evaluations and iterations that callers accumulate, so the library can
