@@ -24,5 +24,5 @@ export PATH="$VENV/bin:$PATH"
 "$VENV/bin/python" "$HERE/test_plugin.py" "$@"
 "$VENV/bin/python" "$HERE/test_plugin_friction.py"
 "$VENV/bin/python" "$HERE/test_lammps.py" plugin_friction  # the exported --plugin fragment with [friction], oblique (export branch)
-if [ -f "$HERE/test_plugin_cloud.py" ]; then "$VENV/bin/python" "$HERE/test_plugin_cloud.py"; fi
+"$VENV/bin/python" "$HERE/test_plugin_cloud.py"
 CLOUD_PLUGIN="$PLUGIN" CLOUD_OUT="$TARGET/lammps-cloud-plugin" bash "$ROOT/examples/lammps/run.sh"

@@ -316,10 +316,11 @@ fn viscoadhesive_grains_export_inside_small_strain() {
 #[test]
 fn claims_start_above_a_sticking_velocity_tabor_cannot_give() {
     // issue 22: polymer grains with eta = 0.1 Pa s; an independent integration
-    // of the coupled model sticks below 7.460 m/s. tabor's sticking-velocity
-    // search leaves small strain here, so the export cannot match it: its claim
-    // must start above both sticking velocities (between them one model sticks
-    // and the other rebounds, a difference of e itself)
+    // of the coupled model sticks below 7.460 m/s. Where tabor gives that
+    // sticking velocity, the LAMMPS model is fitted to it; where it cannot (its
+    // search used to leave small strain here), the claim must start above both
+    // (between them one model sticks and the other rebounds, a difference of e
+    // itself, which the grid can step over)
     let mut data = scene("examples/scenes/polymer_grains_viscoadhesive.toml")
         .data()
         .clone();
@@ -329,18 +330,31 @@ fn claims_start_above_a_sticking_velocity_tabor_cannot_give() {
     let x = export(&s, Some(8.0)).expect("export");
     let c = &x.reproduces;
     let v_l = x.lammps_sticking_velocity.expect("the LAMMPS model sticks");
-    assert!(
-        c.range[0] > 7.460 * 1.002 && c.range[0] > v_l,
-        "{c:?} {v_l}"
-    );
+    match x.sticking_velocity {
+        Some(v_t) => {
+            assert!((v_t / 7.460 - 1.0).abs() < 2e-3, "{v_t}");
+            assert!(
+                (v_l / v_t - 1.0).abs() <= 1e-3 || c.range[0] > v_l.max(v_t),
+                "{c:?} {v_l} {v_t}"
+            );
+        }
+        None => assert!(
+            c.range[0] > 7.460 * 1.002 && c.range[0] > v_l,
+            "{c:?} {v_l}"
+        ),
+    }
     assert!(c.range[1] <= x.small_strain_speed);
-    for i in 0..=4 {
-        let v = c.range[0] * (c.range[1] / c.range[0]).powf(f64::from(i) / 4.0);
+    for i in 0..=6 {
+        let v = c.range[0] * (c.range[1] / c.range[0]).powf(f64::from(i) / 6.0);
         let (tabor, _) = s.restitution_with_error(v).expect("tabor");
         let lammps = LammpsImpact::new(x.model, x.effective_radius, x.effective_mass)
             .expect("law")
             .restitution(v)
             .expect("LAMMPS law");
-        assert!(tabor > 0.0 && (lammps - tabor).abs() <= CALIBRATED_RELATIVE_ERROR * tabor);
+        assert!(
+            (lammps - tabor).abs() <= CALIBRATED_RELATIVE_ERROR * tabor
+                || (lammps == 0.0 && tabor == 0.0),
+            "{v}: {tabor} {lammps}"
+        );
     }
 }

@@ -18,7 +18,7 @@ use tabor_restitution::{validate, Result};
 /// displacement-controlled instability) with the speed it has there.
 ///
 /// The state at a depth is solved from the last one solved (Newton's method on the
-/// branch from its tangent, [`crate::trace`]), which the law keeps as a hint; the
+/// branch from its tangent, module `trace`), which the law keeps as a hint; the
 /// hint changes the start of the solve, not its result (to the solve's tolerance,
 /// 1e-15 in θ), and the law stays `Sync`.
 #[derive(Clone, Debug)]

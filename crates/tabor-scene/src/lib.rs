@@ -56,7 +56,7 @@ pub use combination::{
 pub use error::SceneError;
 pub use file::{Format, FrictionFile, ParseError, SceneFile, SdsFile, TwistingFile};
 pub use inputs::{
-    Adhesion, AdhesionRange, AdhesivePlasticity, Body, PlasticityModel, DEFAULT_ACCURACY,
+    Adhesion, AdhesionRange, AdhesivePlasticity, Body, PlasticModel, DEFAULT_ACCURACY,
 };
 pub use outcome::{Effect, Outcome};
 pub use parameter::SweepParameter;

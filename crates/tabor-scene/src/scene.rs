@@ -4,7 +4,7 @@
 use crate::combination::Combination;
 use crate::error::{impact_speed, in_field, located, SceneError, Source};
 use crate::file::{parse, AdhesionFile, Format, ImpactFile, SceneFile};
-use crate::inputs::{Adhesion, AdhesivePlasticity, Body, Inputs, PlasticityModel};
+use crate::inputs::{Adhesion, AdhesivePlasticity, Body, Inputs, PlasticModel};
 use crate::outcome::Outcome;
 use crate::parameter::SweepParameter;
 use crate::select::{Cache, Prepared, Sticking};
@@ -32,8 +32,9 @@ pub struct Scene {
     pub target: Body,
     /// Adhesion, when given.
     pub adhesion: Option<Adhesion>,
-    /// The plasticity model.
-    pub plasticity: PlasticityModel,
+    /// The plasticity model: one of [`PlasticModel::NON_ADHESIVE`], or `None`
+    /// (`auto`: the interpolation model (5.107)).
+    pub plasticity: Option<PlasticModel>,
     /// How adhesion and plasticity combine.
     pub adhesive_plasticity: AdhesivePlasticity,
     /// The impact speed, when given (m/s).
