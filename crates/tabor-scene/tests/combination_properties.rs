@@ -120,6 +120,16 @@ impl Spec {
         d_max <= r
     }
 
+    /// Whether a viscosity is given and the viscoelastic loss comes from a
+    /// tabor-visco sphere (not the coupled viscous-adhesive model).
+    fn visco_sphere(&self) -> bool {
+        let viscous = self.sphere_viscosity.is_some() || self.target_viscosity.is_some();
+        let coupled = self.work_of_adhesion.is_some()
+            && self.sphere_viscosity.is_some()
+            && self.target_viscosity.is_some();
+        viscous && !coupled
+    }
+
     /// Whether the scene's viscoelastic loss comes from a tabor-visco sphere (not
     /// the coupled viscous-adhesive model) at a viscous parameter
     /// δ = η (R v0/(m² G³))^(1/5) (seed 000 (5.68), per viscous body, written out
@@ -237,16 +247,26 @@ fn run<S: Strategy>(
 /// The properties every outcome has: ε ∈ [0, 1], the loss at most the kinetic
 /// energy, `sticks` ⇔ v < v_stick (or at every speed up to the validity limit),
 /// and the shares of a sum adding up to the total.
-fn outcome_is_consistent(o: &Outcome, speed: f64) -> Result<(), TestCaseError> {
+///
+/// A sticking velocity that could not be found fails the property, unless the
+/// scene's viscoelastic loss comes from a tabor-visco sphere (not the coupled
+/// model): the search then meets that sphere's range δ ≤ 1e3 at speeds other than
+/// the one asked (δ grows as v^(1/5)); counted.
+fn outcome_is_consistent(
+    o: &Outcome,
+    spec: &Spec,
+    speed: f64,
+    counts: &Counts,
+) -> Result<(), TestCaseError> {
     prop_assert!((0.0..=1.0).contains(&o.restitution), "{}", o.restitution);
     prop_assert!(o.energy_loss <= o.kinetic_energy * (1.0 + 1e-12));
-    prop_assert!(
-        !o.warnings
-            .iter()
-            .any(|w| w.code == "sticking-velocity-unknown"),
-        "{:?}",
-        o.warnings
-    );
+    if o.warnings
+        .iter()
+        .any(|w| w.code == "sticking-velocity-unknown")
+    {
+        prop_assert!(spec.visco_sphere(), "{:?}", o.warnings);
+        counts.beyond_visco_range.fetch_add(1, Ordering::Relaxed);
+    }
     let up_to_limit = o.warnings.iter().any(|w| w.code == "sticks-up-to-limit");
     match o.sticking_velocity {
         None if up_to_limit => prop_assert!(o.sticks, "sticks at every speed, yet rebounds"),
@@ -391,7 +411,7 @@ fn answers_agree_with_themselves() {
             else {
                 return Ok(());
             };
-            outcome_is_consistent(&o, speed)
+            outcome_is_consistent(&o, &spec, speed, &counts)
         },
     );
 }
