@@ -23,6 +23,8 @@
 //! - [`plastic`]: elasto-plastic impact with and without adhesion;
 //! - [`scene`]: scenes — describe a collision once, compute only the effects it
 //!   calls for (the main entry point);
+//! - [`tangential`]: friction, rolling and twisting as LAMMPS's `pair granular`
+//!   defines them, and the oblique impact of two spheres;
 //! - [`visco`]: viscoelastic impact (Kelvin-Voigt, standard, Kelvin-Maxwell media);
 //! - [`viscoadhesive`]: adhesion (JKR or Maugis-Dugdale) with Kuwabara-Kono viscous
 //!   damping.
