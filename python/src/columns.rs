@@ -461,6 +461,152 @@ impl Columns {
     }
 }
 
+/// The code of a row without a shared record (a failed element).
+const NO_RECORD: u32 = u32::MAX;
+
+/// Rows made of a record shared by many rows (computed once per distinct set of
+/// the inputs it depends on) and a few fields of each row's own: the shared
+/// records are stored once, each row keeps the code of its record, and
+/// [`SharedRows::finish`] gathers them into full columns. A row's own field
+/// replaces the shared field of the same name. The shared records carry no
+/// `warnings` (their tally would count records, not rows): that is an error.
+pub struct SharedRows {
+    shared: Columns,
+    codes: Vec<u32>,
+    own: Columns,
+}
+
+impl SharedRows {
+    /// Empty rows whose first row has flat index `offset`.
+    pub fn at(offset: usize) -> Self {
+        SharedRows {
+            shared: Columns::default(),
+            codes: Vec::new(),
+            own: Columns::at(offset),
+        }
+    }
+
+    /// Stores a shared record; returns its code.
+    pub fn add_shared<T: Serialize>(&mut self, record: &T) -> Result<u32, Error> {
+        self.shared.push(record)?;
+        if !self.shared.warnings.entries.is_empty() {
+            return Err(Error("a shared record carries warnings".into()));
+        }
+        Ok(self.shared.rows as u32 - 1)
+    }
+
+    /// Appends a row: shared record `code` and the row's own fields (none for
+    /// `None`). On a serialization error the row is left empty.
+    pub fn push<T: Serialize>(&mut self, code: u32, own: Option<&T>) -> Result<(), Error> {
+        let r = match own {
+            Some(t) => self.own.push(t),
+            None => {
+                self.own.valid.push(true);
+                self.own.end_row();
+                Ok(())
+            }
+        };
+        match r {
+            Ok(()) => {
+                self.codes.push(code);
+                Ok(())
+            }
+            Err(e) => {
+                // complete the row as missing (`push` stopped before ending it)
+                self.own.push_missing();
+                self.codes.push(NO_RECORD);
+                Err(e)
+            }
+        }
+    }
+
+    /// Appends an empty row (a failed element).
+    pub fn push_missing(&mut self) {
+        self.own.push_missing();
+        self.codes.push(NO_RECORD);
+    }
+
+    /// The rows as columns: the shared records' fields gathered by code (in the
+    /// records' order), then the rows' own fields.
+    pub fn finish(self) -> Columns {
+        let SharedRows {
+            shared,
+            codes,
+            mut own,
+        } = self;
+        let mut out = Columns {
+            strings: shared.strings,
+            json: shared.json,
+            rows: own.rows,
+            warnings: std::mem::take(&mut own.warnings),
+            offset: own.offset,
+            valid: std::mem::take(&mut own.valid),
+            ..Columns::default()
+        };
+        let gather = |d: &Data| -> Data {
+            fn take<T: Copy>(v: &[T], codes: &[u32], missing: T) -> Vec<T> {
+                codes
+                    .iter()
+                    .map(|&c| v.get(c as usize).copied().unwrap_or(missing))
+                    .collect()
+            }
+            match d {
+                Data::Null(_) => Data::Null(codes.len()),
+                Data::F64(v) => Data::F64(take(v, &codes, f64::NAN)),
+                Data::Bool(v) => Data::Bool(take(v, &codes, false)),
+                Data::I64(v) => Data::I64(take(v, &codes, -1)),
+                Data::Str(v) => Data::Str(take(v, &codes, 0)),
+                Data::Json(v) => Data::Json(take(v, &codes, 0)),
+            }
+        };
+        let mut own_columns: Vec<Option<Column>> = own.columns.into_iter().map(Some).collect();
+        let own_strings = own.strings.values;
+        let own_json = own.json.values;
+        let own_data = |out: &mut Columns, c: Column| -> Data {
+            match c.data {
+                Data::Str(v) => {
+                    let map: Vec<u32> = std::iter::once(0)
+                        .chain(own_strings.iter().map(|s| out.strings.code(s)))
+                        .collect();
+                    Data::Str(v.iter().map(|&k| map[k as usize]).collect())
+                }
+                Data::Json(v) => {
+                    let map: Vec<u32> = std::iter::once(0)
+                        .chain(own_json.iter().map(|s| out.json.code(s)))
+                        .collect();
+                    Data::Json(v.iter().map(|&k| map[k as usize]).collect())
+                }
+                d => d,
+            }
+        };
+        for c in shared.columns {
+            let mine = own_columns
+                .iter_mut()
+                .find(|o| o.as_ref().is_some_and(|o| o.name == c.name))
+                .and_then(Option::take);
+            let data = match mine {
+                Some(o) => own_data(&mut out, o),
+                None => gather(&c.data),
+            };
+            out.columns.push(Column {
+                name: c.name,
+                data,
+                last: 0,
+            });
+        }
+        for o in own_columns.into_iter().flatten() {
+            let name = o.name.clone();
+            let data = own_data(&mut out, o);
+            out.columns.push(Column {
+                name,
+                data,
+                last: 0,
+            });
+        }
+        out
+    }
+}
+
 fn append(d: &mut Data, data: Data, smap: &[u32], jmap: &[u32]) {
     // unify a Null column with a typed one
     if let (Data::Null(k), typed) = (&*d, &data) {

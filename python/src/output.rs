@@ -3,12 +3,13 @@
 //! count and the warning tally to the Python layer.
 
 use crate::batch::{chunks_of, run, Options, Report, Stop, CHUNK};
-use crate::columns::{Columns, Warnings};
+use crate::columns::{Columns, SharedRows, Warnings};
 use crate::failure::Failure;
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use serde::Serialize;
+use std::collections::HashMap;
 
 /// A flat input column: length 1 (a broadcast scalar) or the batch length.
 #[derive(Clone, Copy)]
@@ -180,15 +181,7 @@ impl Call<'_> {
                 }
             }
         });
-        let (chunks, report) = match result {
-            Ok(x) => x,
-            Err(s) => return Err(self.stop(py, s)),
-        };
-        let valid = self.options.errors == crate::batch::Errors::Nan;
-        let (merged, warnings) = py.detach(|| Columns::concat(chunks, valid));
-        let report = self.report(py, report, &warnings)?;
-        let dict: Bound<'py, PyDict> = merged.into_py(py)?;
-        PyTuple::new(py, [dict.into_any(), report.into_any()])
+        self.merged(py, result)
     }
 }
 
@@ -266,6 +259,18 @@ impl Call<'_> {
                 }
             }
         });
+        self.merged(py, result)
+    }
+}
+
+impl Call<'_> {
+    /// The chunks' columns merged, the warnings emitted: `(columns, (failed, first
+    /// message))`.
+    fn merged<'py>(
+        &self,
+        py: Python<'py>,
+        result: Result<(Vec<Columns>, Report), Stop>,
+    ) -> PyResult<Bound<'py, PyTuple>> {
         let (chunks, report) = match result {
             Ok(x) => x,
             Err(s) => return Err(self.stop(py, s)),
@@ -275,6 +280,75 @@ impl Call<'_> {
         let report = self.report(py, report, &warnings)?;
         let dict: Bound<'py, PyDict> = merged.into_py(py)?;
         PyTuple::new(py, [dict.into_any(), report.into_any()])
+    }
+
+    /// Like [`Call::records`] for a model whose record splits into a part shared
+    /// by the elements with equal `key` and fields of each element's own (the
+    /// impact speed's, say): per chunk, `prepare(i)` runs once per distinct key
+    /// (`same(i, j)` recognises an element that shares the previous one's key
+    /// without building it), its `record` is stored once ([`SharedRows`]), and
+    /// `own(&prepared, i)` runs per element (`None`: no fields of its own).
+    #[allow(clippy::too_many_arguments)]
+    pub fn shared_records<'py, P, R, V>(
+        &self,
+        py: Python<'py>,
+        same: impl Fn(usize, usize) -> bool + Sync,
+        key: impl Fn(usize) -> Vec<u64> + Sync,
+        prepare: impl Fn(usize) -> Result<P, Failure> + Sync,
+        record: impl Fn(&P) -> &R + Sync,
+        own: impl Fn(&P, usize) -> Result<Option<V>, Failure> + Sync,
+    ) -> PyResult<Bound<'py, PyTuple>>
+    where
+        R: Serialize,
+        V: Serialize,
+    {
+        let internal = |e: crate::columns::Error| Failure {
+            kind: crate::failure::Kind::Internal,
+            message: e.to_string(),
+        };
+        let k_chunks = chunks_of(self.n, CHUNK);
+        let outs: Vec<Columns> = (0..k_chunks).map(|c| Columns::at(c * CHUNK)).collect();
+        let result = run(py, self.n, CHUNK, outs, self.options, |chunk| {
+            let mut rows = SharedRows::at(chunk.range.start);
+            let mut prepared: Vec<P> = Vec::new();
+            let mut by_key: HashMap<Vec<u64>, Result<u32, Failure>> = HashMap::new();
+            let mut last: Option<(usize, Result<u32, Failure>)> = None;
+            for i in chunk.range.clone() {
+                if !chunk.go(i) {
+                    break;
+                }
+                let code = match &last {
+                    Some((j, r)) if same(i, *j) => r.clone(),
+                    _ => by_key
+                        .entry(key(i))
+                        .or_insert_with(|| {
+                            let p = crate::batch::guarded(|| prepare(i))?;
+                            let code = rows.add_shared(record(&p)).map_err(internal)?;
+                            prepared.push(p);
+                            Ok(code)
+                        })
+                        .clone(),
+                };
+                let row = code.clone().and_then(|c| {
+                    let p = &prepared[c as usize];
+                    crate::batch::guarded(|| own(p, i)).map(|v| (c, v))
+                });
+                last = Some((i, code));
+                match row {
+                    Ok((c, v)) => {
+                        if let Err(e) = rows.push(c, v.as_ref()) {
+                            chunk.fail(i, internal(e));
+                        }
+                    }
+                    Err(f) => {
+                        rows.push_missing();
+                        chunk.fail(i, f);
+                    }
+                }
+            }
+            chunk.out = rows.finish();
+        });
+        self.merged(py, result)
     }
 }
 

@@ -18,9 +18,10 @@
 //! [`crate::JkrSphere`] is the thin physical shell around them.
 
 use crate::common::{
-    finite_output, loss_by_quadrature, solve_energy_balance, Balance, JkrContactState,
-    JkrNormalizedLoss, MaxContactRadius, SeparationRule,
+    finite_output, loss_by_quadrature, JkrContactState, JkrNormalizedLoss, MaxContactRadius,
+    SeparationRule,
 };
+use tabor_numerics::root_finding::{newton_safeguarded, RootTolerance};
 use tabor_numerics::Cost;
 use tabor_restitution::{validate, Result};
 
@@ -193,29 +194,53 @@ pub fn kinetic_energy_to_reach(max_contact_radius: f64) -> Result<f64> {
 }
 
 /// The maximum contact radius `â_max` reached with kinetic energy `kinetic_energy`
-/// (units of `F_n d_n`, > 0), by Brent's method on the energy balance, so that the
-/// residual is below `tolerance · (kinetic_energy + ΔÛ_0)` (`tolerance` relative,
+/// (units of `F_n d_n`, > 0), by safeguarded Newton on the energy balance, so that
+/// the residual is below `tolerance · (kinetic_energy + ΔÛ_0)` (`tolerance` relative,
 /// in [1e-15, 0.5]; below about 1e-13 the residual stops at the rounding error of
 /// the work, see [`MaxContactRadius::energy_residual`]).
+///
+/// Beyond the zero-force radius `4^(1/3)` the work grows and is convex (its slope
+/// `F̂ dd̂/dâ` is a product of two positive increasing factors), so Newton's method
+/// converges there from any start in the bracket, in a handful of steps (a batch
+/// over speeds costs about as little as the closed forms around it). The bracket
+/// is checked, the steps safeguarded by bisection.
 ///
 /// Seed 000, eq. (5.35).
 pub fn max_contact_radius(kinetic_energy: f64, tolerance: f64) -> Result<MaxContactRadius> {
     let kinetic = validate::positive("kinetic_energy", kinetic_energy)?;
     let tol = validate::tolerance("tolerance", tolerance)?;
-    let upper_guess = 1.5 * (kinetic / 1.2).powf(0.2);
-    solve_energy_balance(
-        Balance {
-            work: |a| {
-                finite_output(MODEL, "kinetic energy", balance_work(a)).map(|w| (w, Cost::ZERO))
-            },
-            slope: |a| force_hat(a) * depth_slope_hat(a),
-            zero_force_radius: ZERO_FORCE_RADIUS,
-            upper_guess,
-            offset: LOADING_OFFSET,
-        },
-        kinetic,
-        tol,
-    )
+    let lower = ZERO_FORCE_RADIUS;
+    let guess = 1.5 * (kinetic / 1.2).powf(0.2);
+    let mut upper = 2.0 * guess.max(lower);
+    let mut expansions = 0;
+    while balance_work(upper) <= kinetic {
+        upper *= 2.0;
+        expansions += 1;
+        if !upper.is_finite() || expansions > 2000 {
+            return Err(tabor_restitution::Error::Model {
+                model: MODEL,
+                message: format!(
+                    "maximum contact radius: no bracket of the energy balance at kinetic energy {kinetic:e}"
+                ),
+            });
+        }
+    }
+    // a bracket width of 0.05·tolerance·â_max keeps the residual below the
+    // tolerance: â W'(â)/(K + ΔÛ_0) stays below 20 for â beyond the zero-force radius
+    let root = newton_safeguarded(
+        |a| (balance_work(a) - kinetic, force_hat(a) * depth_slope_hat(a)),
+        lower,
+        upper,
+        guess,
+        RootTolerance::relative(0.05 * tol),
+    )?;
+    let a = root.value;
+    let w = finite_output(MODEL, "kinetic energy", balance_work(a))?;
+    Ok(MaxContactRadius {
+        contact_radius: a,
+        energy_residual: (w - kinetic).abs() / (kinetic + LOADING_OFFSET),
+        cost: root.cost() + Cost::new(1 + expansions, 0),
+    })
 }
 
 /// The adhesive energy loss |ΔU_kin| of an impact in units of `F_n d_n`.
