@@ -63,6 +63,16 @@ impl Data {
         }
     }
 
+    fn reserve(&mut self, more: usize) {
+        match self {
+            Data::Null(_) => {}
+            Data::F64(v) => v.reserve(more),
+            Data::Bool(v) => v.reserve(more),
+            Data::I64(v) => v.reserve(more),
+            Data::Str(v) | Data::Json(v) => v.reserve(more),
+        }
+    }
+
     fn kind(&self) -> &'static str {
         match self {
             Data::Null(_) => "null",
@@ -171,6 +181,15 @@ pub struct Columns {
     pub offset: usize,
     /// Per row: false where the element failed.
     valid: Vec<bool>,
+    /// Rows expected (room reserved when a column gets its type).
+    capacity: usize,
+}
+
+/// Whether two column names are equal (a field's name is a `&'static str`, so
+/// the same pointer is the common case).
+#[inline]
+fn same_name(a: &str, b: &str) -> bool {
+    (a.as_ptr() == b.as_ptr() && a.len() == b.len()) || a == b
 }
 
 /// Serialization can fail only on a type mismatch between rows (a bug).
@@ -241,7 +260,7 @@ impl Columns {
 
     fn column(&mut self, name: Cow<'static, str>) -> usize {
         let n = self.columns.len();
-        if self.hint < n && self.columns[self.hint].name == name {
+        if self.hint < n && same_name(&self.columns[self.hint].name, &name) {
             self.hint += 1;
             return self.hint - 1;
         }
@@ -256,6 +275,15 @@ impl Columns {
         });
         self.hint = n + 1;
         n
+    }
+
+    /// Reserves room for `rows` more rows in every typed column (and in those
+    /// typed later).
+    pub fn reserve(&mut self, rows: usize) {
+        self.capacity = self.rows + rows;
+        for c in &mut self.columns {
+            c.data.reserve(rows);
+        }
     }
 
     fn put(&mut self, name: Cow<'static, str>, value: Scalar<'_>) -> Result<(), Error> {
@@ -273,6 +301,7 @@ impl Columns {
                 Scalar::I64(_) => Data::I64(vec![-1; k]),
                 Scalar::Str(_) => Data::Str(vec![0; k]),
             };
+            data.reserve(self.capacity.saturating_sub(k));
         }
         match (data, value) {
             (d, Scalar::Missing) => d.push_missing(1),
@@ -477,12 +506,15 @@ pub struct SharedRows {
 }
 
 impl SharedRows {
-    /// Empty rows whose first row has flat index `offset`.
-    pub fn at(offset: usize) -> Self {
+    /// Empty rows whose first row has flat index `offset`, with room for `rows`.
+    pub fn at(offset: usize, rows: usize) -> Self {
+        let mut own = Columns::at(offset);
+        own.reserve(rows);
+        own.valid.reserve(rows);
         SharedRows {
             shared: Columns::default(),
-            codes: Vec::new(),
-            own: Columns::at(offset),
+            codes: Vec::with_capacity(rows),
+            own,
         }
     }
 

@@ -165,7 +165,13 @@ impl Call<'_> {
         f: impl Fn(usize, &mut Columns) -> Result<(), Failure> + Sync,
     ) -> PyResult<Bound<'py, PyTuple>> {
         let k_chunks = chunks_of(self.n, CHUNK);
-        let outs: Vec<Columns> = (0..k_chunks).map(|c| Columns::at(c * CHUNK)).collect();
+        let outs: Vec<Columns> = (0..k_chunks)
+            .map(|c| {
+                let mut cols = Columns::at(c * CHUNK);
+                cols.reserve(CHUNK.min(self.n.saturating_sub(c * CHUNK)));
+                cols
+            })
+            .collect();
         let result = run(py, self.n, CHUNK, outs, self.options, |chunk| {
             let range = chunk.range.clone();
             for i in range {
@@ -233,7 +239,13 @@ impl Call<'_> {
         put: impl Fn(&mut Columns, T) -> Result<(), Failure> + Sync,
     ) -> PyResult<Bound<'py, PyTuple>> {
         let k_chunks = chunks_of(self.n, CHUNK);
-        let outs: Vec<Columns> = (0..k_chunks).map(|c| Columns::at(c * CHUNK)).collect();
+        let outs: Vec<Columns> = (0..k_chunks)
+            .map(|c| {
+                let mut cols = Columns::at(c * CHUNK);
+                cols.reserve(CHUNK.min(self.n.saturating_sub(c * CHUNK)));
+                cols
+            })
+            .collect();
         let result = run(py, self.n, CHUNK, outs, self.options, |c| {
             let range = c.range.clone();
             if range.is_empty() || !c.go(range.start) {
@@ -307,9 +319,15 @@ impl Call<'_> {
             message: e.to_string(),
         };
         let k_chunks = chunks_of(self.n, CHUNK);
-        let outs: Vec<Columns> = (0..k_chunks).map(|c| Columns::at(c * CHUNK)).collect();
+        let outs: Vec<Columns> = (0..k_chunks)
+            .map(|c| {
+                let mut cols = Columns::at(c * CHUNK);
+                cols.reserve(CHUNK.min(self.n.saturating_sub(c * CHUNK)));
+                cols
+            })
+            .collect();
         let result = run(py, self.n, CHUNK, outs, self.options, |chunk| {
-            let mut rows = SharedRows::at(chunk.range.start);
+            let mut rows = SharedRows::at(chunk.range.start, chunk.range.len());
             let mut prepared: Vec<P> = Vec::new();
             let mut by_key: HashMap<Vec<u64>, Result<u32, Failure>> = HashMap::new();
             let mut last: Option<(usize, Result<u32, Failure>)> = None;
