@@ -17,6 +17,7 @@ use serde_json::Value;
 use std::borrow::Cow;
 use std::collections::HashMap;
 use std::fmt;
+use std::sync::Mutex;
 
 /// A column's values.
 enum Data {
@@ -413,81 +414,6 @@ impl Columns {
         }
         self.put_json(Cow::Borrowed("warnings"), &Value::Array(codes))
     }
-
-    /// Concatenates the chunks' columns into one set of columns, in order.
-    /// With `valid`, a bool column `valid` (false where an element failed) is
-    /// added.
-    pub fn concat(chunks: Vec<Columns>, valid: bool) -> (Merged, Warnings) {
-        let total: usize = chunks.iter().map(|c| c.rows).sum();
-        let mut warnings = Warnings::default();
-        let mut names: Vec<Cow<'static, str>> = Vec::new();
-        for c in &chunks {
-            for col in &c.columns {
-                if !names.contains(&col.name) {
-                    names.push(col.name.clone());
-                }
-            }
-        }
-        let mut strings = Table::default();
-        let mut json = Table::default();
-        // per chunk: its string and JSON codes in the merged tables
-        let mut remaps: Vec<(Vec<u32>, Vec<u32>)> = Vec::with_capacity(chunks.len());
-        for c in &chunks {
-            let s = std::iter::once(0)
-                .chain(c.strings.values.iter().map(|v| strings.code(v)))
-                .collect();
-            let j = std::iter::once(0)
-                .chain(c.json.values.iter().map(|v| json.code(v)))
-                .collect();
-            remaps.push((s, j));
-        }
-        let mut chunks = chunks;
-        let mut out = Vec::with_capacity(names.len());
-        for name in names {
-            let mut merged: Option<Data> = None;
-            let mut missing_before = 0usize;
-            for (c, (smap, jmap)) in chunks.iter_mut().zip(&remaps) {
-                let pos = c.columns.iter().position(|x| x.name == name);
-                let Some(pos) = pos else {
-                    match &mut merged {
-                        Some(d) => d.push_missing(c.rows),
-                        None => missing_before += c.rows,
-                    }
-                    continue;
-                };
-                // take the chunk's column (frees it as we go)
-                let data = std::mem::replace(&mut c.columns[pos].data, Data::Null(0));
-                let d = merged.get_or_insert_with(|| {
-                    let mut d = data.empty_like(total);
-                    d.push_missing(missing_before);
-                    d
-                });
-                append(d, data, smap, jmap);
-            }
-            let mut d = merged.unwrap_or(Data::Null(0));
-            let short = total - d.len();
-            d.push_missing(short);
-            out.push((name, d));
-        }
-        if valid {
-            let mut mask = Vec::with_capacity(total);
-            for c in &chunks {
-                mask.extend_from_slice(&c.valid);
-            }
-            out.push((Cow::Borrowed("valid"), Data::Bool(mask)));
-        }
-        for c in chunks {
-            warnings.merge(c.warnings);
-        }
-        (
-            Merged {
-                columns: out,
-                strings: strings.values,
-                json: json.values,
-            },
-            warnings,
-        )
-    }
 }
 
 /// The code of a row without a shared record (a failed element).
@@ -639,28 +565,149 @@ impl SharedRows {
     }
 }
 
-fn append(d: &mut Data, data: Data, smap: &[u32], jmap: &[u32]) {
-    // unify a Null column with a typed one
-    if let (Data::Null(k), typed) = (&*d, &data) {
-        if !matches!(typed, Data::Null(_)) {
-            let k = *k;
-            let mut t = typed.empty_like(k);
-            t.push_missing(k);
-            *d = t;
+/// The columns of a whole batch, filled as chunks finish: each chunk's rows are
+/// copied to their place in full-length columns and the chunk freed at once, so
+/// that a batch holds little more than its outputs (no second copy of them).
+pub struct Sink {
+    state: Mutex<SinkState>,
+}
+
+struct SinkColumn {
+    name: Cow<'static, str>,
+    data: Data,
+    /// Where the column first appeared (chunk offset, position): the order of
+    /// the merged columns.
+    first: (usize, usize),
+}
+
+struct SinkState {
+    n: usize,
+    columns: Vec<SinkColumn>,
+    strings: Table,
+    json: Table,
+    valid: Vec<bool>,
+    warnings: Warnings,
+}
+
+/// A typed column of `n` missing values, like `like`.
+fn missing_like(like: &Data, n: usize) -> Data {
+    let mut d = like.empty_like(n);
+    d.push_missing(n);
+    d
+}
+
+/// Writes `data` (a chunk's column) into `d` from row `at`, string and JSON codes
+/// remapped; a type that differs between chunks (a bug) stays missing.
+fn write_at(d: &mut Data, at: usize, data: Data, smap: &[u32], jmap: &[u32]) {
+    fn put<T: Copy>(a: &mut [T], at: usize, b: impl ExactSizeIterator<Item = T>) {
+        for (x, y) in a[at..at + b.len()].iter_mut().zip(b) {
+            *x = y;
         }
     }
     match (d, data) {
-        (d, Data::Null(k)) => d.push_missing(k),
-        (Data::F64(a), Data::F64(b)) => a.extend_from_slice(&b),
-        (Data::Bool(a), Data::Bool(b)) => a.extend_from_slice(&b),
-        (Data::I64(a), Data::I64(b)) => a.extend_from_slice(&b),
-        (Data::F64(a), Data::I64(b)) => a.extend(b.iter().map(|&x| x as f64)),
-        (Data::Str(a), Data::Str(b)) => a.extend(b.iter().map(|&c| smap[c as usize])),
-        (Data::Json(a), Data::Json(b)) => a.extend(b.iter().map(|&c| jmap[c as usize])),
-        (d, b) => {
-            // a type that differs between chunks (a bug): keep the length right
-            d.push_missing(b.len());
+        (_, Data::Null(_)) => {}
+        (Data::F64(a), Data::F64(b)) => a[at..at + b.len()].copy_from_slice(&b),
+        (Data::Bool(a), Data::Bool(b)) => a[at..at + b.len()].copy_from_slice(&b),
+        (Data::I64(a), Data::I64(b)) => a[at..at + b.len()].copy_from_slice(&b),
+        (Data::F64(a), Data::I64(b)) => put(a, at, b.iter().map(|&x| x as f64)),
+        (Data::Str(a), Data::Str(b)) => put(a, at, b.iter().map(|&c| smap[c as usize])),
+        (Data::Json(a), Data::Json(b)) => put(a, at, b.iter().map(|&c| jmap[c as usize])),
+        _ => {}
+    }
+}
+
+impl Sink {
+    /// Columns of `n` rows, every value missing so far.
+    pub fn new(n: usize) -> Self {
+        Sink {
+            state: Mutex::new(SinkState {
+                n,
+                columns: Vec::new(),
+                strings: Table::default(),
+                json: Table::default(),
+                valid: vec![false; n],
+                warnings: Warnings::default(),
+            }),
         }
+    }
+
+    /// Copies a finished chunk into place (its first row is `chunk.offset`) and
+    /// frees it.
+    pub fn absorb(&self, chunk: Columns) {
+        let Ok(mut state) = self.state.lock() else {
+            return;
+        };
+        let state = &mut *state;
+        let at = chunk.offset;
+        if at + chunk.rows > state.n {
+            return;
+        }
+        let smap: Vec<u32> = std::iter::once(0)
+            .chain(chunk.strings.values.iter().map(|v| state.strings.code(v)))
+            .collect();
+        let jmap: Vec<u32> = std::iter::once(0)
+            .chain(chunk.json.values.iter().map(|v| state.json.code(v)))
+            .collect();
+        state.valid[at..at + chunk.valid.len()].copy_from_slice(&chunk.valid);
+        state.warnings.merge(chunk.warnings);
+        for (pos, c) in chunk.columns.into_iter().enumerate() {
+            let n = state.n;
+            let i = match state
+                .columns
+                .iter()
+                .position(|x| same_name(&x.name, &c.name))
+            {
+                Some(i) => i,
+                None => {
+                    state.columns.push(SinkColumn {
+                        name: c.name,
+                        data: Data::Null(n),
+                        first: (at, pos),
+                    });
+                    state.columns.len() - 1
+                }
+            };
+            let column = &mut state.columns[i];
+            column.first = column.first.min((at, pos));
+            if let Data::Null(_) = column.data {
+                if !matches!(c.data, Data::Null(_)) {
+                    column.data = missing_like(&c.data, n);
+                }
+            }
+            if let (Data::I64(v), Data::F64(_)) = (&column.data, &c.data) {
+                // integers so far, a float now: the column becomes float
+                column.data = Data::F64(
+                    v.iter()
+                        .map(|&x| if x == -1 { f64::NAN } else { x as f64 })
+                        .collect(),
+                );
+            }
+            write_at(&mut column.data, at, c.data, &smap, &jmap);
+        }
+    }
+
+    /// The merged columns (with `valid`, a bool column `valid`: false where an
+    /// element failed or did not run) and the warning tally.
+    pub fn finish(self, valid: bool) -> (Merged, Warnings) {
+        let state = match self.state.into_inner() {
+            Ok(s) => s,
+            Err(poisoned) => poisoned.into_inner(),
+        };
+        let mut columns = state.columns;
+        columns.sort_by_key(|c| c.first);
+        let mut out: Vec<(Cow<'static, str>, Data)> =
+            columns.into_iter().map(|c| (c.name, c.data)).collect();
+        if valid {
+            out.push((Cow::Borrowed("valid"), Data::Bool(state.valid)));
+        }
+        (
+            Merged {
+                columns: out,
+                strings: state.strings.values,
+                json: state.json.values,
+            },
+            state.warnings,
+        )
     }
 }
 
@@ -679,6 +726,7 @@ impl Merged {
         let dict = PyDict::new(py);
         let mut strings: Option<Bound<'_, PyList>> = None;
         let mut json: Option<Bound<'_, PyList>> = None;
+        let (n_strings, n_json) = (self.strings.len() + 1, self.json.len() + 1);
         for (name, data) in self.columns {
             match data {
                 Data::Null(n) => dict.set_item(name.as_ref(), ("null", n))?,
@@ -700,7 +748,7 @@ impl Merged {
                             py,
                             [
                                 table.into_pyobject(py)?.into_any(),
-                                PyArray1::from_vec(py, v).into_any(),
+                                small_codes(py, v, n_strings),
                             ],
                         )?,
                     )?;
@@ -721,7 +769,7 @@ impl Merged {
                             py,
                             [
                                 table.into_pyobject(py)?.into_any(),
-                                PyArray1::from_vec(py, v).into_any(),
+                                small_codes(py, v, n_json),
                             ],
                         )?,
                     )?;
@@ -729,6 +777,18 @@ impl Merged {
             }
         }
         Ok(dict)
+    }
+}
+
+/// Codes into a table of `table` entries as the smallest unsigned array that
+/// holds them (1 byte per element for up to 256 distinct values).
+fn small_codes(py: Python<'_>, codes: Vec<u32>, table: usize) -> Bound<'_, PyAny> {
+    if table <= 1 << 8 {
+        PyArray1::from_vec(py, codes.into_iter().map(|c| c as u8).collect()).into_any()
+    } else if table <= 1 << 16 {
+        PyArray1::from_vec(py, codes.into_iter().map(|c| c as u16).collect()).into_any()
+    } else {
+        PyArray1::from_vec(py, codes).into_any()
     }
 }
 

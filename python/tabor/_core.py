@@ -138,17 +138,11 @@ class Batch:
                        schema: Dict[str, str], errors: str) -> Dict[str, Any]:
         columns, report = result
         self.report(report)
-        out: Dict[str, Any] = {}
-        for k, kind in schema.items():
-            if k in columns:
-                out[k] = columns[k]
-            else:
-                out[k] = ("null", self.n)
-        for k, v in columns.items():
-            if k not in out:
-                out[k] = v
+        keys = list(schema) + [k for k in columns if k not in schema]
         result_dict = {}
-        for k, v in out.items():
+        for k in keys:
+            # popped one by one: a column's codes are freed once it is expanded
+            v = columns.pop(k, ("null", self.n))
             kind = schema.get(k)
             if isinstance(v, tuple) and v[0] == "null" and kind in ("float", "int", "bool"):
                 v = np.full(v[1], {"float": np.nan, "int": -1, "bool": False}[kind],
