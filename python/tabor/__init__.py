@@ -377,7 +377,11 @@ class Scene:
             the effects by name (``effects.adhesion.used``,
             ``effects.adhesion.energy_loss``, ...); ``warnings`` holds the warning
             codes of each point (the messages are emitted as ``TaborWarning``);
-            plus ``parameter`` and ``values``.
+            plus ``parameter`` and ``values``. An effect's ``reason`` is a
+            template and ``reason_values`` its numbers (a float array with a last
+            axis, NaN-padded), so that a sweep stores one string per kind of
+            reason, not one per point: ``reason.format(*reason_values)`` is the
+            text of ``outcome()`` (numbers printed Python's way).
         """
         parameter = _core.check_str("parameter", parameter)
         errors = _core.check_errors(errors)

@@ -129,13 +129,14 @@ class Scene:
     def trajectory(self, speed: Optional[float] = ..., *, tolerance: float = ...) -> Dict[str, Any]: ...
 '''
 
-SCALAR = {"float": "float", "int": "int", "bool": "bool", "str": "str", "object": "Any"}
+SCALAR = {"float": "float", "int": "int", "bool": "bool", "str": "str", "object": "Any", "floats": "Floats"}
 ARRAY = {
     "float": "Floats",
     "int": "npt.NDArray[np.int64]",
     "bool": "npt.NDArray[np.bool_]",
     "str": "npt.NDArray[np.object_]",
     "object": "npt.NDArray[np.object_]",
+    "floats": "Floats",
 }
 RESULTS = {
     "effective": ("Effective", _results.EFFECTIVE),

@@ -3,6 +3,8 @@ restitution batch against outcome() and the JKR closed form (5.37)/(5.38), sweep
 and trajectories."""
 
 import math
+import re
+import warnings
 
 import numpy as np
 import pytest
@@ -125,6 +127,25 @@ def test_sweep_columns():
     # another parameter: the work of adhesion (the loss grows like Δγ^(5/3))
     w = scene.sweep("work_of_adhesion", [0.025, 0.05])
     assert w["energy_loss"][1] / w["energy_loss"][0] == pytest.approx(2 ** (5 / 3), rel=1e-10)
+
+
+def test_sweep_reasons_are_templates_with_their_numbers():
+    # the plastic reason quotes the speed and the yield onset: one template for
+    # every point below the onset, its numbers in reason_values
+    scene = tabor.Scene.from_path(SCENES / "silica_maugis_plastic.toml")
+    v = np.geomspace(0.05, 5, 8).reshape(2, 4)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        s = scene.sweep("speed", v)
+        outcomes = {idx: scene.outcome(speed=v[idx]) for idx in np.ndindex(v.shape)}
+    assert s["effects.plasticity.reason_values"].shape == (2, 4, 2)
+    assert len(set(s["effects.plasticity.reason"][v < 1.9])) == 1
+    number = re.compile(r"-?\d+(\.\d+)?e-?\d+")
+    for idx, o in outcomes.items():
+        for e in o["effects"]:
+            text = s[f"effects.{e['name']}.reason"][idx].format(*s[f"effects.{e['name']}.reason_values"][idx])
+            assert text == number.sub(lambda m: repr(float(m.group())), e["reason"]), (idx, e["name"])
+    assert s["effects.elasticity.reason_values"].shape == (2, 4, 0)
 
 
 def test_trajectory():
