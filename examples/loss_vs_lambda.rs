@@ -112,7 +112,7 @@ fn plot(rows: &[Row], path: &std::path::Path) -> Result<(), Box<dyn Error>> {
 
     let mut chart = ChartBuilder::on(&left)
         .caption(
-            "Maugis-Dugdale loss / JKR loss (seed 000, Fig. 5.2)",
+            "Maugis-Dugdale loss / JKR loss (Willert 2020, Fig. 5.2)",
             ("sans-serif", 20),
         )
         .margin(12)

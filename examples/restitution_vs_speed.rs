@@ -42,7 +42,7 @@ const MODELS: [&str; 6] = [
     "Thornton",
     "interpolation",
     "Jackson-Green",
-    "seed 001 fit",
+    "dimensionless FEM fit",
     "superposition (adhesive)",
     "adhesive interpolation",
 ];
@@ -173,7 +173,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             "Thornton",
             "interp.",
             "Jackson-Green",
-            "seed 001 fit",
+            "FEM fit",
             "superpos.",
             "adh. interp.",
         ] {

@@ -3,16 +3,21 @@
 //! Adhesive impact of elastic, plastic and viscoelastic spheres: how much energy a
 //! central impact loses, the coefficient of restitution, the sticking velocity.
 //!
-//! This facade re-exports the workspace crates:
+//! This facade re-exports the workspace's library crates but `tabor-ffi` (the C ABI
+//! of the LAMMPS plugin, built on the model crates directly; the `tabor` binary of
+//! `tabor-cli` stands on this facade):
 //!
-//! - [`numerics`]: root finding, quadrature, special functions, Chebyshev
-//!   interpolation, cost accounting;
+//! - [`numerics`]: root finding, quadrature, ODE integrators, special functions,
+//!   Chebyshev interpolation, cost accounting, the default tolerances;
 //! - [`restitution`]: effective properties, the [`ImpactModel`](restitution::ImpactModel)
 //!   trait, restitution and sticking velocity from an energy loss;
 //! - [`elastic`]: non-adhesive elastic impact (Hertz, power-law, graded media);
 //! - [`jkr`]: JKR adhesive impact (spheres, power-law profiles, graded media);
 //! - [`maugis`]: Maugis-Dugdale adhesive impact across the Tabor-parameter range;
 //! - [`dynamics`]: the time-domain simulator and its force-law interface;
+//! - [`lammps`]: the DEM bridge to LAMMPS — a scene exported as a calibrated
+//!   `pair_style granular` fragment (or for the `pair_style tabor` plugin), and
+//!   `--check`, the restitution a LAMMPS line really produces;
 //! - [`penalty`]: penalty contact laws for DEM codes (damped power laws, contact
 //!   characteristics) calibrated against the impact models;
 //! - [`plastic`]: elasto-plastic impact with and without adhesion;
@@ -38,6 +43,7 @@ pub use tabor_penalty as penalty;
 pub use tabor_plastic as plastic;
 pub use tabor_restitution as restitution;
 pub use tabor_scene as scene;
+pub use tabor_tangential as tangential;
 pub use tabor_visco as visco;
 pub use tabor_viscoadhesive as viscoadhesive;
 

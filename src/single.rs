@@ -6,8 +6,9 @@
 //!
 //! A bad input is reported as the library's
 //! [`Error`](crate::restitution::Error) (which names the library parameter, e.g.
-//! `effective_modulus`); each front end renders it under its own name for the
-//! input (`--modulus` on the command line, `modulus` in Python).
+//! `effective_modulus`); [`INPUT_NAMES`] is the one table from those names to the
+//! inputs' names, and [`Naming`] spells an input as each front end does
+//! (`--modulus` on the command line, `modulus` in Python): [`Error::render`].
 
 pub mod effective;
 pub mod jkr;
@@ -49,6 +50,22 @@ pub enum Naming {
 }
 
 impl Naming {
+    /// A library error as one line, its bad parameter named as this front end
+    /// spells the input.
+    pub fn library_error(self, e: restitution::Error) -> String {
+        match e {
+            restitution::Error::InvalidParameter {
+                parameter,
+                value,
+                requirement,
+            } => format!(
+                "invalid {} = {value:e}: {requirement}",
+                self.parameter(parameter)
+            ),
+            other => other.to_string(),
+        }
+    }
+
     /// The input `name` (snake_case) as this front end spells it.
     pub fn input(self, name: &str) -> String {
         match self {
@@ -97,6 +114,12 @@ impl From<restitution::Error> for Error {
 }
 
 impl Error {
+    /// One line, a library error's parameter named as `naming` spells the input
+    /// ([`Naming::library_error`]).
+    pub fn render(self, naming: Naming) -> String {
+        self.message(|e| naming.library_error(e))
+    }
+
     /// One line: `library` renders a library error, an input problem is as is.
     pub fn message(self, library: impl FnOnce(restitution::Error) -> String) -> String {
         match self {
@@ -109,14 +132,41 @@ impl Error {
 pub(crate) fn required(
     value: Option<f64>,
     name: &str,
-    model: &str,
+    model: impl std::fmt::Display,
     naming: Naming,
 ) -> Result<f64, Error> {
     value.ok_or_else(|| {
         Error::Input(format!(
             "missing {}: required by {}",
             naming.input(name),
-            naming.choice("model", model)
+            naming.choice("model", &model.to_string())
         ))
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_library_name_has_one_input() {
+        for (i, (name, _)) in INPUT_NAMES.iter().enumerate() {
+            assert!(
+                INPUT_NAMES[i + 1..].iter().all(|(other, _)| other != name),
+                "{name} twice"
+            );
+        }
+        assert_eq!(Naming::Flags.parameter("effective_modulus"), "--modulus");
+        assert_eq!(Naming::Keywords.parameter("impact_speed"), "speed");
+        assert_eq!(Naming::Flags.parameter("tabor_parameter_mu"), "--tabor-mu");
+        let e = restitution::Error::invalid("effective_mass", -1.0, "must be > 0");
+        assert_eq!(
+            Error::from(e.clone()).render(Naming::Flags),
+            "invalid --mass = -1e0: must be > 0"
+        );
+        assert_eq!(
+            Error::from(e).render(Naming::Keywords),
+            "invalid mass = -1e0: must be > 0"
+        );
+    }
 }

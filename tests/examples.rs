@@ -274,7 +274,7 @@ fn restitution_vs_speed_matches_the_models() {
                 assert!(close(e, t.restitution(v).unwrap(), 1e-9), "{row:?}");
                 checked += 1;
             }
-            "seed 001 fit" => {
+            "dimensionless FEM fit" => {
                 // seed 001 eqs. (18), (19) written out, with its Table 3 constants
                 let e3 = ALUMINA_TABLE_3.effective_modulus_with(&p3).unwrap();
                 let s3 = p3.yield_stress.unwrap();
@@ -402,4 +402,68 @@ fn visco_materials_reproduces_the_table_restitutions() {
         .iter()
         .all(|r| r[time].parse::<f64>().unwrap().is_finite()));
     std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn oblique_impact_matches_the_library_and_lammps() {
+    use tabor::scene::{Format, Scene};
+    let (_, _, header, rows) = run_example("oblique_impact");
+    let [model, psi, angle, beta] =
+        ["model", "psi", "angle_deg", "tangential_restitution"].map(|c| column(&header, c));
+    assert!(rows.len() >= 100, "{} rows", rows.len());
+    // every tenth row again through the scene API directly
+    let base = "[sphere]\nradius = 1e-6\ndensity = 2650\nyoungs_modulus = 54e9\npoisson_ratio = 0.17\n\
+                [target]\nradius = 1e-6\ndensity = 2650\nyoungs_modulus = 54e9\npoisson_ratio = 0.17\n\
+                [friction]\ncoefficient = 0.3\n";
+    for row in rows.iter().step_by(10) {
+        let adhesion = match row[model].as_str() {
+            "Hertz" => "",
+            "JKR" => "[adhesion]\nwork_of_adhesion = 0.05\nseparation = \"load-controlled\"\n",
+            _ => "[adhesion]\nwork_of_adhesion = 0.05\ntabor_parameter = 0.5\n",
+        };
+        let scene = Scene::from_str(&format!("{base}{adhesion}"), Format::Toml).unwrap();
+        let a: f64 = row[angle].parse().unwrap();
+        let b: f64 = row[beta].parse().unwrap();
+        let direct = scene
+            .oblique(1.0, a)
+            .unwrap()
+            .tangential_restitution
+            .unwrap();
+        assert!(close(b, direct, 1e-9), "{row:?}: {direct}");
+    }
+    // LAMMPS's own pair granular at the same Ψ (the committed points of
+    // integrations/lammps/test_oblique.py --figure-points, dt = t_c/8000): within
+    // 1e-3, the size of its time-step error there
+    let lammps = std::fs::read_to_string(
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("docs/figures/oblique_impact_lammps.csv"),
+    )
+    .unwrap();
+    let kappa = {
+        let g = tabor::tangential::EffectiveShear::of_pair(54e9, 0.17, 54e9, 0.17)
+            .unwrap()
+            .modulus();
+        4.0 * g / (54e9 / (2.0 * (1.0 - 0.17f64 * 0.17)))
+    };
+    let mut compared = 0;
+    for line in lammps.lines().skip(1) {
+        let f: Vec<&str> = line.split(',').collect();
+        let p: f64 = f[1].parse().unwrap();
+        let b_lammps: f64 = f[2].parse().unwrap();
+        let adhesion = if f[0] == "Hertz" {
+            ""
+        } else {
+            "[adhesion]\nwork_of_adhesion = 0.05\nseparation = \"load-controlled\"\n"
+        };
+        let scene = Scene::from_str(&format!("{base}{adhesion}"), Format::Toml).unwrap();
+        let a = (p * 0.3 / kappa).atan().to_degrees();
+        let ours = scene
+            .oblique(1.0, a)
+            .unwrap()
+            .tangential_restitution
+            .unwrap();
+        assert!((ours - b_lammps).abs() < 1e-3, "{line}: tabor {ours}");
+        compared += 1;
+    }
+    assert_eq!(compared, 14);
+    let _ = psi;
 }

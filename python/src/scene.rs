@@ -52,7 +52,7 @@ fn warn(
 fn missing_section(scene: &tabor::scene::Scene, p: SweepParameter) -> Option<&'static str> {
     let data = scene.data();
     match p {
-        SweepParameter::Speed | SweepParameter::SphereRadius => None,
+        SweepParameter::Speed | SweepParameter::SphereRadius | SweepParameter::Angle => None,
         SweepParameter::WorkOfAdhesion | SweepParameter::TaborParameter => {
             data.adhesion.is_none().then_some(
                 "[adhesion] (work_of_adhesion, and range or cohesive_stress for a Tabor parameter)",
@@ -114,8 +114,33 @@ impl Scene {
     }
 
     /// The outcome as a dict (keys of `tabor impact --json`); warnings emitted.
-    #[pyo3(signature = (speed=None))]
-    fn outcome<'py>(&self, py: Python<'py>, speed: Option<f64>) -> PyResult<Bound<'py, PyAny>> {
+    /// With an angle (or a scene with `[friction]`, an angle or a spin) the
+    /// oblique report of `tabor impact --angle --json` (`Scene::oblique_report`).
+    #[pyo3(signature = (speed=None, angle=None))]
+    fn outcome<'py>(
+        &self,
+        py: Python<'py>,
+        speed: Option<f64>,
+        angle: Option<f64>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let angle = angle.or(self.inner.angle()).unwrap_or(0.0);
+        if angle != 0.0 || self.inner.is_oblique() {
+            let report = detached(py, || {
+                let v = speed.or(self.inner.speed).ok_or_else(|| {
+                    Failure::scene(&SceneError::field(
+                        "impact.speed",
+                        "is required for an impact (m/s)",
+                    ))
+                })?;
+                self.inner
+                    .oblique_report(v, angle)
+                    .map_err(|e| Failure::scene(&e))
+            })?;
+            if let Some((value, central)) = report {
+                warn(py, &[&central], 1, |_| String::new())?;
+                return json_to_py(py, &value);
+            }
+        }
         let o = detached(py, || {
             match speed {
                 Some(v) => self.inner.outcome_at(v),

@@ -317,7 +317,7 @@ class Scene:
         """The seed's Tabor parameter Λ when the interface has a range, else None."""
         return self._core.tabor_parameter
 
-    def outcome(self, speed: Optional[float] = None) -> Dict[str, Any]:
+    def outcome(self, speed: Optional[float] = None, angle: Optional[float] = None) -> Dict[str, Any]:
         """The outcome of the impact as a dict with the keys of ``tabor impact
         --json`` (without ``tabor_version``: see ``tabor.__version__``).
 
@@ -333,8 +333,21 @@ class Scene:
         ----------
         speed : float, optional
             Impact speed (m/s); default the scene's ``[impact] speed``.
+        angle : float, optional
+            Impact angle (degrees between the relative velocity and the line of
+            centres, [0, 90)); default the scene's ``[impact] angle``. An oblique
+            impact (an angle, a ``[friction]`` section or a spin) adds the keys of
+            ``tabor impact --angle --json``: ``normal_restitution``,
+            ``tangential_restitution``, ``rebound_angle``,
+            ``energy_lost_by_mechanism``, ``after`` (``{"sphere": {"velocity",
+            "angular_velocity"}, "target": {...}}``, SI, centre-of-mass frame) and
+            ``oblique``; the central keys are then those of the normal speed
+            ``speed * cos(angle)``.
         """
-        return self._core.outcome(None if speed is None else _core.float_array("speed", speed).item())
+        return self._core.outcome(
+            None if speed is None else _core.float_array("speed", speed).item(),
+            None if angle is None else _core.float_array("angle", angle).item(),
+        )
 
     def restitution(self, speeds: Any, *, errors: str = "raise", threads: Optional[int] = None) -> Any:
         """The coefficient of restitution (5.37) at each impact speed (m/s), in parallel.

@@ -4,24 +4,12 @@
 //! the law actually achieves in a simulated impact.
 
 use super::{Error, Naming};
+pub use crate::penalty::PenaltyLaw;
 use crate::penalty::{
     characteristic_loss_speed, exact_damping_factor, simulate_impact, ContactCharacteristic,
-    DampedPowerLaw, DampingModel, ForceLaw, ImpactSimulation, SimulationSettings,
+    DampedPowerLaw, ForceLaw, ImpactSimulation, SimulationSettings,
 };
 use serde::Serialize;
-
-/// Which penalty law (`--law`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PenaltyLaw {
-    /// Seed 002: F = k κ(h, ε) l(v, V); the loss speed V is calibrated exactly.
-    Characteristic,
-    /// F = K δⁿ (1 + χ δ̇), χ = 3(1 − e)/(2 v0) (Hunt & Crossley 1975).
-    HuntCrossley,
-    /// χ = 3(1 − e²)/(4 v0) (Lankarani & Nikravesh 1990).
-    LankaraniNikravesh,
-    /// χ = 8(1 − e)/(5 e v0) (Flores et al. 2011).
-    Flores,
-}
 
 /// The inputs of `tabor penalty`, named like its flags.
 #[derive(Clone, Copy, Debug)]
@@ -98,8 +86,8 @@ fn simulate<L: ForceLaw>(law: &mut L, a: &PenaltyArgs) -> Result<ImpactSimulatio
 /// than 1 for the characteristic is named in `naming`.
 pub fn penalty(a: &PenaltyArgs, naming: Naming) -> Result<Penalty, Error> {
     let e = a.restitution;
-    Ok(match a.law {
-        PenaltyLaw::Characteristic => {
+    Ok(match a.law.damping_model() {
+        None => {
             if let Some(n) = a.exponent {
                 if n != 1.0 {
                     let value = match naming {
@@ -107,7 +95,7 @@ pub fn penalty(a: &PenaltyArgs, naming: Naming) -> Result<Penalty, Error> {
                         Naming::Keywords => format!("{n:e}"),
                     };
                     return Err(Error::Input(format!(
-                        "invalid {} = {value}: the seed-002 characteristic is linear (n = 1)",
+                        "invalid {} = {value}: the contact characteristic is linear (n = 1)",
                         naming.input("exponent")
                     )));
                 }
@@ -117,7 +105,7 @@ pub fn penalty(a: &PenaltyArgs, naming: Naming) -> Result<Penalty, Error> {
             let closed = law.restitution(a.speed)?;
             let sim = simulate(&mut law, a)?;
             Penalty {
-                law: "seed-002 contact characteristic",
+                law: "numpedia contact characteristic",
                 nominal_restitution: e,
                 achieved_restitution: sim.restitution,
                 closed_form_restitution: closed,
@@ -136,12 +124,7 @@ pub fn penalty(a: &PenaltyArgs, naming: Naming) -> Result<Penalty, Error> {
                 energy_error: sim.energy_error,
             }
         }
-        damped => {
-            let model = match damped {
-                PenaltyLaw::HuntCrossley => DampingModel::HuntCrossley,
-                PenaltyLaw::LankaraniNikravesh => DampingModel::LankaraniNikravesh,
-                _ => DampingModel::Flores,
-            };
+        Some(model) => {
             let n = a.exponent.unwrap_or(1.5);
             let mut law = DampedPowerLaw::from_model(model, a.stiffness, n, e, a.speed)?;
             let exact = exact_damping_factor(e, a.speed)?;

@@ -4,6 +4,8 @@
 
 use super::{required, Error, Naming};
 use crate::jkr::JkrSphere;
+use crate::numerics::tolerance;
+pub use crate::plastic::PlasticModel;
 use crate::plastic::{
     AdhesiveInterpolationImpact, AdhesivePlasticContact, Clamping, DimensionlessFit, Interpolation,
     JacksonGreen, PlasticContact, PlasticImpact, SimulationSettings, Superposition, Thornton,
@@ -11,22 +13,17 @@ use crate::plastic::{
 use crate::restitution::{impact, sticking_velocity, ImpactModel};
 use serde::Serialize;
 
-/// Which elasto-plastic model (`--model`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PlasticModel {
-    /// Thornton (5.101)-(5.106).
-    Thornton,
-    /// Interpolation model, Q = 5, D = 80 (5.107).
-    Interpolation,
-    /// Jackson-Green FEM-based law, time-domain simulation (5.108); needs
-    /// `poisson_ratio`.
-    JacksonGreen,
-    /// Seed 001 fitted restitution (12), (18), (19); needs `density`.
-    DimensionlessFit,
-    /// Adhesive interpolation model (5.111)-(5.126); needs `work_of_adhesion`.
-    AdhesiveInterpolation,
-    /// Plastic + JKR losses (5.109)-(5.110); needs `work_of_adhesion`.
-    Superposition,
+/// The inputs `model` needs besides `modulus`, `radius`, `mass`, `yield_stress`
+/// and `speed` (snake_case names of [`PlasticArgs`] fields): under
+/// `superposition` also those of the `plastic_model`; `adhesive-interpolation`
+/// takes `adhesion_parameter` instead of computing Φ.
+pub fn model_inputs(model: PlasticModel) -> &'static [&'static str] {
+    match model {
+        PlasticModel::Thornton | PlasticModel::Interpolation => &[],
+        PlasticModel::JacksonGreen => &["poisson_ratio"],
+        PlasticModel::DimensionlessFit => &["density"],
+        PlasticModel::AdhesiveInterpolation | PlasticModel::Superposition => &["work_of_adhesion"],
+    }
 }
 
 /// The inputs of `tabor plastic`, named like its flags. All are effective
@@ -54,8 +51,8 @@ pub struct PlasticArgs {
     /// Adhesion parameter Φ, instead of computing it from the material data
     /// (adhesive-interpolation).
     pub adhesion_parameter: Option<f64>,
-    /// The non-adhesive model under [`PlasticModel::Superposition`] (one of the
-    /// four non-adhesive models; any other is taken as interpolation).
+    /// The non-adhesive model under [`PlasticModel::Superposition`] (one of
+    /// [`PlasticModel::NON_ADHESIVE`]; any other is taken as interpolation).
     pub plastic_model: PlasticModel,
 }
 
@@ -115,7 +112,7 @@ fn non_adhesive(
             }
         }
         PlasticModel::JacksonGreen => {
-            let nu = required(a.poisson_ratio, "poisson_ratio", "jackson-green", naming)?;
+            let nu = required(a.poisson_ratio, "poisson_ratio", which, naming)?;
             let m = PlasticContact::new(a.modulus, a.radius, a.yield_stress)
                 .and_then(|contact| JacksonGreen::new(contact, nu))?
                 .impact(a.mass, SimulationSettings::default())?;
@@ -126,7 +123,7 @@ fn non_adhesive(
             }
         }
         PlasticModel::DimensionlessFit => {
-            let rho = required(a.density, "density", "dimensionless-fit", naming)?;
+            let rho = required(a.density, "density", which, naming)?;
             let m = DimensionlessFit::new(a.modulus, a.yield_stress, rho, a.mass)?;
             let clamping = m.restitution(a.speed)?.clamping;
             NonAdhesive {
@@ -157,25 +154,16 @@ pub fn plastic(a: &PlasticArgs, naming: Naming) -> Result<Plastic, Error> {
     let (model, yield_velocity, clamping): (Box<dyn ImpactModel>, f64, Option<Clamping>) =
         match which {
             PlasticModel::Superposition => {
-                let dg = required(
-                    a.work_of_adhesion,
-                    "work_of_adhesion",
-                    "superposition",
-                    naming,
-                )?;
+                let dg = required(a.work_of_adhesion, "work_of_adhesion", which, naming)?;
                 let n = non_adhesive(a, a.plastic_model, naming)?;
                 let sphere = JkrSphere::new(a.modulus, a.radius, dg)?;
                 let sup = Superposition::new(n.model, sphere)?;
-                elastic_sticking = Some(sticking_velocity(sup.adhesive(), 1e-12)?.speed);
+                elastic_sticking =
+                    Some(sticking_velocity(sup.adhesive(), tolerance::DEFAULT_TOLERANCE)?.speed);
                 (Box::new(sup), n.yield_velocity, n.clamping)
             }
             PlasticModel::AdhesiveInterpolation => {
-                let dg = required(
-                    a.work_of_adhesion,
-                    "work_of_adhesion",
-                    "adhesive-interpolation",
-                    naming,
-                )?;
+                let dg = required(a.work_of_adhesion, "work_of_adhesion", which, naming)?;
                 // Validates E*, R, sigma_Y even when Phi is given.
                 PlasticContact::new(a.modulus, a.radius, a.yield_stress)?;
                 let m = JkrSphere::new(a.modulus, a.radius, dg)
@@ -212,18 +200,18 @@ pub fn plastic(a: &PlasticArgs, naming: Naming) -> Result<Plastic, Error> {
         which,
         PlasticModel::Superposition | PlasticModel::AdhesiveInterpolation
     ) {
-        Some(sticking_velocity(&*model, 1e-10)?.speed)
+        Some(sticking_velocity(&*model, tolerance::ACCURACY)?.speed)
     } else {
         None
     };
     let outcome = impact(&*model, a.speed)?;
     match clamping {
         Some(Clamping::ToOne) => warnings.push(
-            "seed 001 fit gave a restitution above 1 (just above its yield velocity): clamped to 1"
+            "the dimensionless FEM fit gave a restitution above 1 (just above its yield velocity): clamped to 1"
                 .into(),
         ),
         Some(Clamping::ToZero) => warnings
-            .push("seed 001 fit gave a negative restitution: clamped to 0 (sticking)".into()),
+            .push("the dimensionless FEM fit gave a negative restitution: clamped to 0 (sticking)".into()),
         _ => {}
     }
     if a.speed <= yield_velocity && which != PlasticModel::AdhesiveInterpolation {

@@ -4,76 +4,26 @@
 
 use super::{Error, Naming};
 use crate::restitution::validate;
+pub use crate::visco::ViscoModel;
 use crate::visco::{
     compressible_flat, damping_law, kelvin_maxwell_sphere, kelvin_voigt_flat, kelvin_voigt_sphere,
     standard_flat, standard_sphere, SphereModel,
 };
 use serde::Serialize;
 
-/// The viscoelastic models (`--model`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ViscoModel {
-    /// Flat punch, Kelvin-Voigt, closed form (5.61)-(5.63); needs `damping_ratio`.
-    KelvinVoigtFlat,
-    /// Sphere, Kelvin-Voigt, Kuwabara-Kono (5.66); needs `viscous_parameter`.
-    KuwabaraKono,
-    /// Sphere, Kelvin-Voigt, compression and restitution apart (5.64)-(5.67);
-    /// needs `viscous_parameter`.
-    KelvinVoigtSphere,
-    /// Sphere, linear damping β = 0 (5.72); needs `damping`.
-    LeeHerrmann,
-    /// Sphere, β = 1/4 with (5.73); needs `alpha`.
-    Tsuji,
-    /// Sphere, β = 3/2 (5.72); needs `damping`.
-    HuntCrossley,
-    /// Sphere, damping exponent of your choice (5.72); needs `damping_exponent`,
-    /// `damping`.
-    PowerDamping,
-    /// Flat punch, standard medium (5.76)-(5.81), with the equivalent Kelvin-Voigt
-    /// value (5.83); needs `modulus_ratio`, `viscous_parameter`.
-    StandardFlat,
-    /// Sphere, standard medium, MDR (5.84)-(5.90); needs `modulus_ratio`,
-    /// `viscous_parameter`.
-    StandardSphere,
-    /// Sphere, Kelvin-Maxwell medium, MDR (5.91)-(5.92); needs `modulus_ratio`,
-    /// `viscous_parameter`.
-    KelvinMaxwellSphere,
-    /// Flat punch, compressible Kelvin-Voigt (5.96)-(5.99); needs `poisson_ratio`,
-    /// `damping_ratio` (and optionally `bulk_damping_ratio`, default (5.100)).
-    CompressibleFlat,
-}
-
-impl ViscoModel {
-    /// Every model, in the order of the CLI's help.
-    pub const ALL: [ViscoModel; 11] = [
-        ViscoModel::KelvinVoigtFlat,
-        ViscoModel::KuwabaraKono,
-        ViscoModel::KelvinVoigtSphere,
-        ViscoModel::LeeHerrmann,
-        ViscoModel::Tsuji,
-        ViscoModel::HuntCrossley,
-        ViscoModel::PowerDamping,
-        ViscoModel::StandardFlat,
-        ViscoModel::StandardSphere,
-        ViscoModel::KelvinMaxwellSphere,
-        ViscoModel::CompressibleFlat,
-    ];
-
-    /// The model's name (kebab-case, as the `--model` flag takes it).
-    pub fn name(self) -> &'static str {
-        match self {
-            ViscoModel::KelvinVoigtFlat => "kelvin-voigt-flat",
-            ViscoModel::KuwabaraKono => "kuwabara-kono",
-            ViscoModel::KelvinVoigtSphere => "kelvin-voigt-sphere",
-            ViscoModel::LeeHerrmann => "lee-herrmann",
-            ViscoModel::Tsuji => "tsuji",
-            ViscoModel::HuntCrossley => "hunt-crossley",
-            ViscoModel::PowerDamping => "power-damping",
-            ViscoModel::StandardFlat => "standard-flat",
-            ViscoModel::StandardSphere => "standard-sphere",
-            ViscoModel::KelvinMaxwellSphere => "kelvin-maxwell-sphere",
-            ViscoModel::CompressibleFlat => "compressible-flat",
+/// The inputs `model` needs besides the tolerance (snake_case names of
+/// [`ViscoArgs`] fields); `bulk_damping_ratio` is optional.
+pub fn model_inputs(model: ViscoModel) -> &'static [&'static str] {
+    match model {
+        ViscoModel::KelvinVoigtFlat => &["damping_ratio"],
+        ViscoModel::KuwabaraKono | ViscoModel::KelvinVoigtSphere => &["viscous_parameter"],
+        ViscoModel::LeeHerrmann | ViscoModel::HuntCrossley => &["damping"],
+        ViscoModel::Tsuji => &["alpha"],
+        ViscoModel::PowerDamping => &["damping_exponent", "damping"],
+        ViscoModel::StandardFlat | ViscoModel::StandardSphere | ViscoModel::KelvinMaxwellSphere => {
+            &["modulus_ratio", "viscous_parameter"]
         }
+        ViscoModel::CompressibleFlat => &["poisson_ratio", "damping_ratio"],
     }
 }
 
@@ -132,7 +82,7 @@ pub struct Visco {
 /// Validates `a` and computes the record of `tabor visco`; a missing input is
 /// named in `naming`.
 pub fn visco(a: &ViscoArgs, naming: Naming) -> Result<Visco, Error> {
-    let name = a.model.name();
+    let name = a.model.as_str();
     let need = |value: Option<f64>, input: &str| -> Result<f64, Error> {
         value.ok_or_else(|| {
             Error::Input(format!(

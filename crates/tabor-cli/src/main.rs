@@ -6,6 +6,7 @@
 //! closes stdout early (`tabor … | head -1`) ends the program quietly with exit
 //! code 0. Output conventions: `output.rs` and the crate README.
 
+mod args;
 mod cmd;
 mod output;
 

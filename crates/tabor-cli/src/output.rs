@@ -1,6 +1,6 @@
 //! Printing results: aligned `key  value` lines for people, one JSON object for
-//! programs, CSV through the `csv` crate; the one table from library parameter
-//! names to flags; and the quiet end on a closed pipe.
+//! programs, CSV through the `csv` crate; library errors with the flag of the bad
+//! parameter; and the quiet end on a closed pipe.
 //!
 //! Conventions (documented in the crate README):
 //!
@@ -14,6 +14,7 @@
 use serde::Serialize;
 use std::fmt;
 use std::io::{self, BufWriter, Stdout, Write};
+use tabor::single::Naming;
 
 /// The tabor version written into every output.
 pub const VERSION: &str = tabor::VERSION;
@@ -105,14 +106,20 @@ struct Versioned<'a, T: Serialize> {
     value: &'a T,
 }
 
-/// Prints `value` (a struct or map) as one pretty JSON object on stdout, with a
-/// `tabor_version` field.
-pub fn print_json<T: Serialize>(value: &T) -> Outcome {
-    let text = serde_json::to_string_pretty(&Versioned {
+/// `value` (a struct or map) as one pretty JSON object with a `tabor_version`
+/// field: the one JSON shape of a command, whether printed or written to a file.
+pub fn json_text<T: Serialize>(value: &T) -> Result<String, Failure> {
+    Ok(serde_json::to_string_pretty(&Versioned {
         tabor_version: VERSION,
         value,
     })
-    .map_err(|e| e.to_string())?;
+    .map_err(|e| e.to_string())?)
+}
+
+/// Prints `value` (a struct or map) as one pretty JSON object on stdout, with a
+/// `tabor_version` field ([`json_text`]).
+pub fn print_json<T: Serialize>(value: &T) -> Outcome {
+    let text = json_text(value)?;
     let mut out = stdout();
     writeln!(out, "{text}")?;
     out.finish()
@@ -162,73 +169,15 @@ pub fn optional(value: Option<f64>) -> String {
     value.map_or(String::new(), number)
 }
 
-/// The library's parameter names (as `tabor_restitution::Error::InvalidParameter`
-/// spells them) in the spelling of the flags: the one table of every subcommand
-/// that takes model inputs (`effective` names its own, as its flags differ between
-/// the two bodies). A name without an entry is printed as the library spells it.
-const FLAGS: &[(&str, &str)] = &[
-    ("effective_modulus", "--modulus"),
-    ("effective_radius", "--radius"),
-    ("effective_mass", "--mass"),
-    ("mass", "--mass"),
-    ("work_of_adhesion", "--work-of-adhesion"),
-    ("impact_speed", "--speed"),
-    ("tolerance", "--tolerance"),
-    ("yield_stress", "--yield-stress"),
-    ("poisson_ratio", "--poisson-ratio"),
-    ("density", "--density"),
-    ("adhesion_parameter", "--adhesion-parameter"),
-    ("restitution", "--restitution"),
-    ("stiffness", "--stiffness"),
-    ("exponent", "--exponent"),
-    ("rounding", "--rounding"),
-    ("damping_ratio", "--damping-ratio"),
-    ("shear_damping_ratio", "--damping-ratio"),
-    ("viscous_parameter", "--viscous-parameter"),
-    ("modulus_ratio", "--modulus-ratio"),
-    ("damping", "--damping"),
-    ("damping_exponent", "--damping-exponent"),
-    ("alpha", "--alpha"),
-    ("bulk_damping_ratio", "--bulk-damping-ratio"),
-    ("maugis_parameter", "--maugis-parameter"),
-    ("tabor_parameter_mu", "--tabor-mu"),
-];
-
-/// The flag of a library parameter name (the name itself if the table has none).
-pub fn flag(parameter: &str) -> &str {
-    FLAGS
-        .iter()
-        .find(|(name, _)| *name == parameter)
-        .map_or(parameter, |(_, flag)| flag)
-}
-
-/// A library error as one line, naming the flag of a bad parameter.
+/// A library error as one line, naming the flag of a bad parameter (the one
+/// name table is `tabor::single::INPUT_NAMES`).
 pub fn message(e: tabor::restitution::Error) -> String {
-    match e {
-        tabor::restitution::Error::InvalidParameter {
-            parameter,
-            value,
-            requirement,
-        } => format!("invalid {} = {value:e}: {requirement}", flag(parameter)),
-        other => other.to_string(),
-    }
+    Naming::Flags.library_error(e)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn every_name_has_one_flag() {
-        for (i, (name, _)) in FLAGS.iter().enumerate() {
-            assert!(
-                FLAGS[i + 1..].iter().all(|(other, _)| other != name),
-                "{name} twice"
-            );
-        }
-        assert_eq!(flag("effective_modulus"), "--modulus");
-        assert_eq!(flag("unknown_name"), "unknown_name");
-    }
 
     #[test]
     fn numbers_round_trip() {

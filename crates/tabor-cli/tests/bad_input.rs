@@ -37,6 +37,16 @@ fn one_line_error(args: &[&str]) -> String {
     lines[0].to_string()
 }
 
+/// As [`one_line_error`], and the line names `flag`, the flag the user typed
+/// (`--lambda`, not the library's `tabor_parameter`).
+fn names_flag(args: &[&str], flag: &str) {
+    let line = one_line_error(args);
+    assert!(
+        line.starts_with(&format!("error: invalid {flag} = ")),
+        "{args:?}: does not name {flag}: {line}"
+    );
+}
+
 /// Argument-syntax errors (clap): exit code 2, an `error:` first line, no panic.
 /// (clap adds a usage hint below its first line.)
 fn usage_error(args: &[&str]) {
@@ -116,12 +126,12 @@ fn jkr_bad_values() {
         "--speed",
     ] {
         for bad in BAD_NUMBERS {
-            one_line_error(&with(&base, flag, bad));
+            names_flag(&with(&base, flag, bad), flag);
         }
     }
     let mut t = base.to_vec();
     t.extend(["--tolerance", "2"]);
-    one_line_error(&t);
+    names_flag(&t, "--tolerance");
     let mut t = base.to_vec();
     t.extend(["--separation", "sideways"]);
     usage_error(&t);
@@ -130,7 +140,7 @@ fn jkr_bad_values() {
 #[test]
 fn maugis_loss_bad_values() {
     for bad in BAD_NUMBERS {
-        one_line_error(&["maugis-loss", kv("--lambda", bad)]);
+        names_flag(&["maugis-loss", kv("--lambda", bad)], "--lambda");
         one_line_error(&[
             "maugis-loss",
             kv("--from", bad),
@@ -141,9 +151,40 @@ fn maugis_loss_bad_values() {
             "--log",
         ]);
     }
-    one_line_error(&["maugis-loss", "--from", "1", "--to", "10", "--points", "1"]);
-    one_line_error(&["maugis-loss", "--lambda", "1", "--tolerance", "0"]);
-    one_line_error(&["maugis-loss", "--lambda", "1", "--tolerance", "nan"]);
+    for (flag, bad) in [("--from", "-1"), ("--to", "-2"), ("--from", "nan")] {
+        let (from, to) = if flag == "--from" {
+            (bad, "1")
+        } else {
+            ("1", bad)
+        };
+        names_flag(
+            &[
+                "maugis-loss",
+                kv("--from", from),
+                kv("--to", to),
+                "--points",
+                "3",
+            ],
+            flag,
+        );
+    }
+    names_flag(
+        &["maugis-loss", kv("--maugis-parameter", "-1")],
+        "--maugis-parameter",
+    );
+    names_flag(&["maugis-loss", kv("--tabor-mu", "nan")], "--tabor-mu");
+    names_flag(
+        &["maugis-loss", "--from", "1", "--to", "10", "--points", "1"],
+        "--points",
+    );
+    names_flag(
+        &["maugis-loss", "--lambda", "1", "--tolerance", "0"],
+        "--tolerance",
+    );
+    names_flag(
+        &["maugis-loss", "--lambda", "1", "--tolerance", "nan"],
+        "--tolerance",
+    );
     usage_error(&["maugis-loss", "--lambda", "one"]);
 }
 
@@ -172,7 +213,7 @@ fn plastic_bad_values() {
         "--speed",
     ] {
         for bad in BAD_NUMBERS {
-            one_line_error(&with(&base, flag, bad));
+            names_flag(&with(&base, flag, bad), flag);
         }
     }
     for (model, extra) in [

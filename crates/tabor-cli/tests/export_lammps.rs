@@ -41,6 +41,17 @@ fn fragment_json_and_out_agree() {
     ]);
     assert!(o.status.success() && o.stdout.is_empty());
     assert_eq!(std::fs::read_to_string(&out).unwrap(), frag);
+    // one JSON shape whether printed or written to a file
+    let o = tabor(&[
+        "export",
+        "lammps",
+        "examples/scenes/silica.toml",
+        "--json",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success() && o.stdout.is_empty());
+    assert_eq!(std::fs::read(&out).unwrap(), json.stdout);
     std::fs::remove_file(out).ok();
 }
 
@@ -120,8 +131,9 @@ fn plugin_fragment_json_and_refusals() {
     assert!(o.status.success());
     let frag = String::from_utf8(o.stdout).unwrap();
     let cmds: Vec<&str> = frag.lines().filter(|l| !l.starts_with('#')).collect();
-    assert_eq!(cmds[2], format!("plugin load {so}"));
-    assert_eq!(cmds[3], "pair_style tabor");
+    // no newton line (legal after create_box), the path quoted
+    assert_eq!(cmds[1], format!("plugin load \"{so}\""));
+    assert_eq!(cmds[2], "pair_style tabor");
     let json = tabor(&[&args[..], &["--json"]].concat());
     let v: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
     let listed: Vec<&str> = v["commands"]
@@ -144,4 +156,67 @@ fn plugin_fragment_json_and_refusals() {
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(err.contains("pair_style tabor"), "{err}");
     }
+}
+
+#[test]
+fn json_is_one_shape_printed_or_written() {
+    // issue 24: --json --out wrote {"export": ..., "tabor_version": ...} while
+    // --json to stdout wrote a flat object
+    let printed = tabor(&["export", "lammps", "examples/scenes/silica.toml", "--json"]);
+    assert!(printed.status.success());
+    let out = std::env::temp_dir().join(format!("tabor-export-{}.json", std::process::id()));
+    let o = tabor(&[
+        "export",
+        "lammps",
+        "examples/scenes/silica.toml",
+        "--json",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success() && o.stdout.is_empty());
+    let written = std::fs::read(&out).unwrap();
+    std::fs::remove_file(out).ok();
+    assert_eq!(written, printed.stdout);
+    let v: serde_json::Value = serde_json::from_slice(&written).unwrap();
+    assert!(v["tabor_version"].is_string() && v["reproduces"]["range"].is_array());
+}
+
+#[test]
+fn check_reads_legacy_lines_and_variables() {
+    let base = [
+        "export",
+        "lammps",
+        "examples/scenes/silica.toml",
+        "--speed",
+        "0.2",
+    ];
+    let run = |extra: &[&str]| tabor(&[&base[..], extra].concat());
+    // ${E} and $g given on the command line
+    let o = run(&[
+        "--check",
+        "pair_coeff * * hertz/material ${E} $g 0.17 damping tsuji",
+        "--var",
+        "E=54e9",
+        "--var",
+        "g=0.5",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["nominal_restitution"].as_f64(), Some(0.5));
+    assert!(v["substituted"].as_str().unwrap().contains("54e9 0.5 0.17"));
+    // a variable not given: exit 2, one line naming it
+    let o = run(&["--check", "pair_coeff * * hertz/material ${E} 0.5 0.17"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert!(err.contains("\"E\"") && err.lines().count() == 1, "{err}");
+    // the legacy style is read, not refused
+    let o = run(&[
+        "--check",
+        "pair_style gran/hertz/history 2e9 NULL 1e3 NULL 0.5 0",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["parsed"]["style"], "gran/hertz/history");
 }

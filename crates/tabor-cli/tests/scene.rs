@@ -190,3 +190,192 @@ fn bad_scenes_exit_2_with_one_line() {
     assert_eq!(out.status.code(), Some(2));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+// The oblique impact: `impact --angle`, `trajectory --angle`, `sweep --parameter angle`.
+
+#[test]
+fn impact_angle_json_has_the_oblique_fields() {
+    let v = json(&tabor(&[
+        "impact",
+        &scene("silica_oblique.toml"),
+        "--speed",
+        "0.3",
+        "--angle",
+        "10",
+        "--json",
+    ]));
+    for key in [
+        "normal_restitution",
+        "tangential_restitution",
+        "rebound_angle",
+        "energy_lost_by_mechanism",
+        "after",
+        "restitution",
+        "model",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}: {v}");
+    }
+    for body in ["sphere", "target"] {
+        for field in ["velocity", "angular_velocity"] {
+            assert_eq!(v["after"][body][field].as_array().unwrap().len(), 3);
+        }
+    }
+    // LAMMPS's pair granular on the same case: (-0.14455, 0.01749) m/s, -2.145e4 rad/s
+    let vx = v["after"]["sphere"]["velocity"][0].as_f64().unwrap();
+    let wz = v["after"]["sphere"]["angular_velocity"][2]
+        .as_f64()
+        .unwrap();
+    assert!((vx + 0.14455).abs() < 2e-4, "{vx}");
+    assert!((wz + 2.145e4).abs() < 200.0, "{wz}");
+}
+
+#[test]
+fn angle_zero_without_friction_is_todays_answer() {
+    let s = scene("silica.toml");
+    let plain = tabor(&["impact", &s, "--json"]);
+    let zero = tabor(&["impact", &s, "--angle", "0", "--json"]);
+    assert!(plain.status.success());
+    assert_eq!(plain.stdout, zero.stdout);
+    let plain = tabor(&["trajectory", &s, "--json"]);
+    let zero = tabor(&["trajectory", &s, "--angle", "0", "--json"]);
+    assert_eq!(plain.stdout, zero.stdout);
+}
+
+#[test]
+fn trajectory_and_sweep_take_the_angle() {
+    let v = json(&tabor(&[
+        "trajectory",
+        &scene("silica_oblique.toml"),
+        "--angle",
+        "20",
+        "--json",
+    ]));
+    assert_eq!(v["angle"].as_f64(), Some(20.0));
+    let out = tabor(&[
+        "sweep",
+        &scene("silica_oblique.toml"),
+        "--parameter",
+        "angle",
+        "--values",
+        "0:40:3",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.starts_with("angle_deg,normal_restitution,tangential_restitution"),
+        "{text}"
+    );
+    assert_eq!(text.lines().count(), 4);
+}
+
+#[test]
+fn a_bad_angle_is_named() {
+    let out = tabor(&["impact", &scene("silica_oblique.toml"), "--angle", "95"]);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("angle"), "{err}");
+
+/// The bundled polymer grains with shear viscosity `eta` (Pa s) on both, written
+/// to a temporary file.
+fn grains(eta: f64) -> tempfile_path::Path {
+    let text = std::fs::read_to_string(scene("polymer_grains_viscoadhesive.toml")).unwrap();
+    let text = text.replace("viscosity = 2e-4", &format!("viscosity = {eta:e}"));
+    tempfile_path::write(&format!("grains_{eta}.toml"), &text)
+}
+
+/// A file in the system's temporary directory, removed when dropped.
+mod tempfile_path {
+    pub struct Path(pub std::path::PathBuf);
+    impl Drop for Path {
+        fn drop(&mut self) {
+            let _ = std::fs::remove_file(&self.0);
+        }
+    }
+    impl Path {
+        pub fn arg(&self) -> String {
+            self.0.to_string_lossy().into_owned()
+        }
+    }
+    pub fn write(name: &str, text: &str) -> Path {
+        let p = std::env::temp_dir().join(format!("tabor-cli-scene-{}-{name}", std::process::id()));
+        std::fs::write(&p, text).unwrap();
+        Path(p)
+    }
+}
+
+#[test]
+fn grains_that_stick_at_every_valid_speed_say_so() {
+    // issue 22: every command failed with an error about 9.86 m/s
+    let f = grains(0.2);
+    let v = json(&tabor(&["sticking", &f.arg(), "--json"]));
+    assert_eq!(v["sticking_velocity"], serde_json::Value::Null);
+    assert_eq!(v["sticks_ever"], true);
+    assert_eq!(v["limit_reason"], "small-strain limit");
+    let limit = v["sticks_up_to"].as_f64().unwrap();
+    assert!((limit - 9.2934).abs() < 1e-3, "{limit}");
+    let o = json(&tabor(&["impact", &f.arg(), "--speed", "3", "--json"]));
+    assert_eq!(o["sticks"], true);
+    assert!(o["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|w| w["code"] == "sticks-up-to-limit"));
+}
+
+#[test]
+fn sweeping_a_parameter_the_scene_lacks_exits_2() {
+    let out = tabor(&[
+        "sweep",
+        &scene("alumina_on_steel.toml"),
+        "--parameter",
+        "tabor-parameter",
+        "--values",
+        "0.1:1:3",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("tabor-parameter") && err.contains("[adhesion]"),
+        "{err}"
+    );
+    assert!(out.stdout.is_empty());
+}
+
+#[test]
+fn trajectory_json_says_which_model_it_simulates() {
+    // the superposition rule has no force law: the JSON names the simulated model
+    // and the difference
+    let text = "[sphere]\nradius = 5e-6\ndensity = 7800\nyoungs_modulus = 2.1e11\npoisson_ratio = 0.3\n\
+                [target]\nradius = 5e-6\ndensity = 7800\nyoungs_modulus = 2.1e11\npoisson_ratio = 0.3\nyield_stress = 1e9\n\
+                [adhesion]\nwork_of_adhesion = 0.5\n";
+    let f = tempfile_path::write("steel.toml", text);
+    let v = json(&tabor(&["trajectory", &f.arg(), "--speed", "5", "--json"]));
+    assert_eq!(v["rule"], "superposition-bound");
+    assert_eq!(v["law_is_the_rules"], false);
+    let w = &v["warnings"][0];
+    assert_eq!(w["code"], "trajectory-other-model");
+    let difference =
+        v["restitution"].as_f64().unwrap() - v["restitution_analytic"].as_f64().unwrap();
+    assert!(
+        w["message"]
+            .as_str()
+            .unwrap()
+            .contains(&format!("{difference:+.3e}")),
+        "{w}"
+    );
+    // a rule with its own law agrees
+    let v = json(&tabor(&[
+        "trajectory",
+        &f.arg(),
+        "--speed",
+        "0.5",
+        "--json",
+    ]));
+    assert_eq!(v["law_is_the_rules"], true);
+    let d = v["restitution"].as_f64().unwrap() - v["restitution_analytic"].as_f64().unwrap();
+    assert!(d.abs() < 1e-5, "{v}");
+}

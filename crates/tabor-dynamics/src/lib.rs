@@ -11,9 +11,10 @@
 //!   own crate (`tabor-elastic`, `tabor-jkr`, `tabor-maugis`, `tabor-plastic`, ...), so
 //!   this crate stands on `tabor-restitution` and `tabor-numerics` only, below every
 //!   model.
-//! - [`simulate_impact`]: Dormand-Prince 5(4) with event location
-//!   (`tabor_numerics::ode`), energy bookkeeping (the contact work integrated with
-//!   the motion), a trajectory record and an [`ImpactSimulation`] outcome.
+//! - [`simulate_impact`]: DOP853 (order 8) run segment by segment by
+//!   `tabor_numerics::ode::drive_events` (branch ends and turning points located on
+//!   the dense output), energy bookkeeping (the contact work integrated with the
+//!   motion), a trajectory record and an [`ImpactSimulation`] outcome.
 //! - [`SimulatedImpact`]: any law as a `tabor_restitution::ImpactModel`.
 
 mod law;

@@ -3,8 +3,10 @@
 use crate::law::{BranchChange, ForceLaw};
 use serde::Serialize;
 use std::cell::Cell;
-use tabor_numerics::ode::{DormandPrince, EventDirection, EventPoint, OdeTolerance};
-use tabor_numerics::{Cost, NumericsError};
+use tabor_numerics::ode::{
+    drive_events, DormandPrince853, EventDirection, EventPoint, OdeTolerance,
+};
+use tabor_numerics::Cost;
 use tabor_restitution::{validate, EnergyLoss, Error, ImpactModel, Result};
 
 /// How accurately and how long to simulate.
@@ -23,11 +25,12 @@ pub struct SimulationSettings {
 }
 
 impl Default for SimulationSettings {
-    /// Relative tolerance 1e-11, absolute 1e-13, at most 0.1 L/v0 per step (so that
-    /// no turning point is stepped over), trajectory recorded, 10⁶ L/v0, 1000 events.
+    /// `OdeTolerance::default()` (relative 1e-11, absolute 1e-13: one line in
+    /// `tabor_numerics::tolerance`), at most 0.1 L/v0 per step (so that no
+    /// turning point is stepped over), trajectory recorded, 10⁶ L/v0, 1000 events.
     fn default() -> Self {
         SimulationSettings {
-            tolerance: OdeTolerance::new(1e-11, 1e-13).with_max_step(0.1),
+            tolerance: OdeTolerance::default().with_max_step(0.1),
             record_trajectory: true,
             max_duration: 1e6,
             max_events: 1000,
@@ -226,7 +229,7 @@ struct Run<'s> {
     s: f64,
     y: [f64; 3],
     /// The integrator, created on the first segment and restarted at every event.
-    stepper: Option<DormandPrince<3>>,
+    stepper: Option<DormandPrince853<3>>,
     events: Vec<ContactEvent>,
     trajectory: Vec<TrajectoryPoint>,
     /// Normalized time of contact onset, once known.
@@ -278,8 +281,9 @@ impl<'s> Run<'s> {
 
     /// Integrates one smooth segment from the current point to its first event: the
     /// end of the law's branch (`branch_end` falling to 0) or a turning point (ḋ
-    /// changing sign), whichever comes first; every accepted step before it is
-    /// recorded.
+    /// changing sign), whichever comes first (the branch end when they coincide);
+    /// every accepted step before it is recorded. One run of
+    /// [`tabor_numerics::ode::drive_events`] with DOP853.
     fn integrate_to_event<L: ForceLaw + ?Sized>(
         &mut self,
         law: &L,
@@ -296,7 +300,7 @@ impl<'s> Run<'s> {
             )));
         }
         let failure: Cell<Option<Error>> = Cell::new(None);
-        let rhs = |_s: f64, st: &[f64; 3]| -> [f64; 3] {
+        let mut rhs = |_s: f64, st: &[f64; 3]| -> [f64; 3] {
             match law.force(units.overlap(st), units.rate(st)) {
                 Ok(f) => {
                     let a = -f / units.force;
@@ -308,49 +312,63 @@ impl<'s> Run<'s> {
                 }
             }
         };
-        let g_failure: Cell<Option<Error>> = Cell::new(None);
-        let g_branch = |_s: f64, st: &[f64; 3]| -> f64 {
+        // errors of the event function and of the recording: always reported (those
+        // of f at trial points only when the integrator cannot recover from them)
+        let event_failure: Cell<Option<Error>> = Cell::new(None);
+        // [branch end, ḋ]: the branch end falling to 0, ḋ changing sign
+        let mut events = |_s: f64, st: &[f64; 3]| -> [f64; 2] {
             match law.branch_end(units.overlap(st), units.rate(st)) {
-                Ok(g) => g,
+                Ok(g) => [g, st[1]],
                 Err(e) => {
-                    keep_first(&g_failure, e);
-                    f64::NAN
+                    keep_first(&event_failure, e);
+                    [f64::NAN, st[1]]
                 }
             }
         };
-        let st = start_stepper(&mut self.stepper, &rhs, self.s, self.y, settings, &failure)?;
-        let mut g_prev = g_start;
+        let st = start_stepper(
+            &mut self.stepper,
+            &mut rhs,
+            self.s,
+            self.y,
+            settings,
+            &failure,
+        )?;
+        // ḋ at the start of the current step: its sign tells the kind of turning point
         let mut u_prev = self.y[1];
-        loop {
-            if let Err(e) = st.step(&mut &rhs, settings.max_duration) {
-                return Err(failure.take().unwrap_or(match e {
-                    NumericsError::InvalidArgument { .. } => time_limit_error(law, settings, units),
-                    other => Error::Numerics(other),
-                }));
+        let (trajectory, max_overlap, max_force) = (
+            &mut self.trajectory,
+            &mut self.max_overlap,
+            &mut self.max_force,
+        );
+        let mut observer = |s: f64, y: &[f64; 3]| {
+            *max_overlap = max_overlap.max(units.overlap(y));
+            match record_point(law, &units, settings.record_trajectory, s, y, trajectory) {
+                Ok(force) => *max_force = max_force.max(force),
+                Err(e) => keep_first(&event_failure, e),
             }
-            let y_new = st.y();
-            let g_new = g_branch(st.t(), &y_new);
-            if let Some(e) = g_failure.take() {
-                return Err(e);
-            }
-            if let Some(found) = event_on_step(st, &g_branch, &g_failure, g_prev, g_new, u_prev)? {
-                return Ok(found);
-            }
-            self.max_overlap = self.max_overlap.max(units.overlap(&y_new));
-            let force = record_point(
-                law,
-                &units,
-                settings.record_trajectory,
-                st.t(),
-                &y_new,
-                &mut self.trajectory,
-            )?;
-            self.max_force = self.max_force.max(force);
-            if st.t() >= settings.max_duration {
-                return Err(time_limit_error(law, settings, units));
-            }
-            g_prev = g_new;
-            u_prev = y_new[1];
+            u_prev = y[1];
+        };
+        let run = drive_events(
+            st,
+            &mut rhs,
+            &mut events,
+            [EventDirection::Falling, EventDirection::Either],
+            settings.max_duration,
+            &mut observer,
+        );
+        if let Some(e) = event_failure.take() {
+            return Err(e);
+        }
+        let run = run.map_err(|e| failure.take().unwrap_or(Error::Numerics(e)))?;
+        let hit = EventPoint {
+            t: run.solution.t,
+            y: run.solution.y,
+        };
+        match run.event {
+            Some(0) => Ok((EventKind::BranchEnd, hit)),
+            Some(_) if u_prev > 0.0 => Ok((EventKind::MaxCompression, hit)),
+            Some(_) => Ok((EventKind::MinCompression, hit)),
+            None => Err(time_limit_error(law, settings, units)),
         }
     }
 
@@ -497,23 +515,23 @@ fn record_point<L: ForceLaw + ?Sized>(
 /// others; an error of the right-hand side (kept in `failure`) takes precedence
 /// over the integrator's.
 fn start_stepper<'a, F>(
-    stepper: &'a mut Option<DormandPrince<3>>,
-    rhs: &F,
+    stepper: &'a mut Option<DormandPrince853<3>>,
+    rhs: &mut F,
     s: f64,
     y: [f64; 3],
     settings: &SimulationSettings,
     failure: &Cell<Option<Error>>,
-) -> Result<&'a mut DormandPrince<3>>
+) -> Result<&'a mut DormandPrince853<3>>
 where
-    F: Fn(f64, &[f64; 3]) -> [f64; 3],
+    F: FnMut(f64, &[f64; 3]) -> [f64; 3],
 {
     let started = match stepper.as_mut() {
-        None => DormandPrince::new(&mut &rhs, s, y, settings.max_duration, settings.tolerance).map(
-            |st| {
+        None => {
+            DormandPrince853::new(rhs, s, y, settings.max_duration, settings.tolerance).map(|st| {
                 *stepper = Some(st);
-            },
-        ),
-        Some(st) => st.restart(&mut &rhs, s, y, settings.max_duration),
+            })
+        }
+        Some(st) => st.restart(rhs, s, y, settings.max_duration),
     };
     let Some(st) = stepper.as_mut() else {
         return Err(started.err().map_or_else(
@@ -525,50 +543,6 @@ where
         return Err(failure.take().unwrap_or(Error::Numerics(e)));
     }
     Ok(st)
-}
-
-/// The first event on the last accepted step of `st`, if any: the branch end
-/// (`g_branch` falling from `g_prev` to `g_new`; its errors kept in `g_failure`) or
-/// the turning point (ḋ changing sign from `u_prev`: maximum compression when it was
-/// positive, else minimum compression), the earlier one; the branch end when they
-/// coincide. Both are located on the dense output.
-fn event_on_step<G>(
-    st: &DormandPrince<3>,
-    g_branch: &G,
-    g_failure: &Cell<Option<Error>>,
-    g_prev: f64,
-    g_new: f64,
-    u_prev: f64,
-) -> Result<Option<(EventKind, EventPoint<3>)>>
-where
-    G: Fn(f64, &[f64; 3]) -> f64,
-{
-    let branch = st
-        .locate_event(g_branch, EventDirection::Falling, g_prev, g_new, 0.0)
-        .map_err(Error::Numerics)?;
-    if let Some(e) = g_failure.take() {
-        return Err(e);
-    }
-    let turning = st
-        .locate_event(
-            |_, z: &[f64; 3]| z[1],
-            EventDirection::Either,
-            u_prev,
-            st.y()[1],
-            0.0,
-        )
-        .map_err(Error::Numerics)?;
-    let turning_kind = if u_prev > 0.0 {
-        EventKind::MaxCompression
-    } else {
-        EventKind::MinCompression
-    };
-    Ok(match (branch, turning) {
-        (Some((b, _)), Some((t, _))) if t.t < b.t => Some((turning_kind, t)),
-        (Some((b, _)), _) => Some((EventKind::BranchEnd, b)),
-        (None, Some((t, _))) => Some((turning_kind, t)),
-        (None, None) => None,
-    })
 }
 
 /// An error of the simulation itself (not of the law or the integrator).

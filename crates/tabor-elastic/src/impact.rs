@@ -227,7 +227,7 @@ impl ImpactModel for ElasticImpact {
         self.kinetic_energy(impact_speed)?;
         Ok(EnergyLoss::closed_form(
             0.0,
-            "elastic without adhesion: no loss (seed 000 section 5.2)",
+            "elastic without adhesion: no loss (Willert 2020, section 5.2)",
         ))
     }
 

@@ -24,5 +24,5 @@ mod force_law;
 mod impact;
 pub mod trajectory;
 
-pub use contact::{ContactGeometry, ElasticContact};
+pub use contact::{hertz_force, ContactGeometry, ElasticContact};
 pub use impact::ElasticImpact;

@@ -39,6 +39,40 @@
 // Number of doubles in a [`TaborHistory`].
 #define TABOR_HISTORY_LEN 2
 
+// [`TaborFrictionParams::tangential_model`]: no friction (normal forces only).
+#define TABOR_TANGENTIAL_NONE 0
+
+// `tangential linear_history k_t x_γ,t μ` (k_t in N/m).
+#define TABOR_TANGENTIAL_LINEAR_HISTORY 1
+
+// `tangential mindlin k_t x_γ,t μ` (k_t = 8 G*, Pa: the spring is k_t a).
+#define TABOR_TANGENTIAL_MINDLIN 2
+
+// `tangential mindlin_rescale k_t x_γ,t μ`.
+#define TABOR_TANGENTIAL_MINDLIN_RESCALE 3
+
+// [`TaborFrictionParams::rolling_model`]: none.
+#define TABOR_ROLLING_NONE 0
+
+// `rolling sds k_roll γ_roll μ_roll`.
+#define TABOR_ROLLING_SDS 1
+
+// [`TaborFrictionParams::twisting_model`]: none.
+#define TABOR_TWISTING_NONE 0
+
+// `twisting marshall`.
+#define TABOR_TWISTING_MARSHALL 1
+
+// `twisting sds k_twist γ_twist μ_twist`.
+#define TABOR_TWISTING_SDS 2
+
+// Number of doubles in a [`TaborContactHistory`].
+#define TABOR_CONTACT_HISTORY_LEN 10
+
+// An opaque contact model: a normal law with optional friction (create with
+// [`tabor_contact_new`], free with [`tabor_contact_free`]).
+typedef struct TaborContact TaborContact;
+
 // An opaque contact law (create with [`tabor_law_new`], free with [`tabor_law_free`]).
 typedef struct TaborLaw TaborLaw;
 
@@ -48,7 +82,8 @@ typedef struct TaborLawParams {
   int32_t model;
   // Effective modulus E* (Pa): 1/E* = (1−ν1²)/E1 + (1−ν2²)/E2 (seed 000).
   double effective_modulus;
-  // Effective radius R* = R1R2/(R1+R2) (m).
+  // Reference effective radius R* = R1R2/(R1+R2) (m): the radius of
+  // [`tabor_law_evaluate`] and [`tabor_law_info`] (the `_at` variants take any).
   double effective_radius;
   // Work of adhesion w = Δγ (J/m²; LAMMPS's `jkr` γ is w/2). Ignored for Hertz.
   double work_of_adhesion;
@@ -76,6 +111,9 @@ typedef struct TaborForce {
   // Normal force (N), positive when repulsive: elastic-adhesive plus
   // Kuwabara-Kono damping.
   double force;
+  // The elastic-adhesive part of `force` (N), without damping (what the Coulomb
+  // limit of friction is built from, LAMMPS's `Fne`).
+  double elastic_force;
   // Contact radius a (m) of the branch (0 without contact, and on the no-contact
   // branch of Maugis-Dugdale).
   double contact_radius;
@@ -104,14 +142,111 @@ typedef struct TaborLawInfo {
   double table_force_relative_error;
 } TaborLawInfo;
 
+// Friction, rolling and twisting parameters, as LAMMPS's `pair_style granular`
+// names them (SI units).
+typedef struct TaborFrictionParams {
+  // One of `TABOR_TANGENTIAL_*`.
+  int32_t tangential_model;
+  // k_t: 8 G* (Pa) for the Mindlin models (LAMMPS `mindlin NULL` computes
+  // it from E and ν), the spring (N/m) for `linear_history`.
+  double tangential_stiffness;
+  // x_γ,t: tangential damping as a multiple of the normal damping coefficient.
+  double tangential_damping;
+  // Sliding friction coefficient μ.
+  double friction_coefficient;
+  // One of `TABOR_ROLLING_*`.
+  int32_t rolling_model;
+  // k_roll (N/m).
+  double rolling_stiffness;
+  // γ_roll (N s/m).
+  double rolling_damping;
+  // μ_roll.
+  double rolling_coefficient;
+  // One of `TABOR_TWISTING_*`.
+  int32_t twisting_model;
+  // k_twist (N m/rad), `sds` only.
+  double twisting_stiffness;
+  // γ_twist (N m s/rad), `sds` only.
+  double twisting_damping;
+  // μ_twist (m), `sds` only.
+  double twisting_coefficient;
+} TaborFrictionParams;
+
+// The geometry and motion of one contact at one time step (LAMMPS's
+// conventions: n from body j to body i).
+typedef struct TaborContactState {
+  // Unit normal from body j to body i, (x_i − x_j)/|x_i − x_j|.
+  double normal[3];
+  // Overlap δ = R_i + R_j − |x_i − x_j| (m).
+  double overlap;
+  // Radius of body i (m).
+  double radius_i;
+  // Radius of body j (m).
+  double radius_j;
+  // v_i − v_j (m/s).
+  double relative_velocity[3];
+  // ω_i (rad/s).
+  double angular_velocity_i[3];
+  // ω_j (rad/s).
+  double angular_velocity_j[3];
+  // The time step (s) over which the friction displacements advance.
+  double time_step;
+  // 1: advance the friction displacements (a time step); 0: evaluate only
+  // (LAMMPS's setup force call and `single()`).
+  int32_t update_history;
+} TaborContactState;
+
+// The state a contact carries from step to step: the normal law's
+// [`TaborHistory`] and the friction models' displacements
+// (`tabor_tangential::ContactHistory`). All doubles, zero for a new pair, reset
+// to zero when the contact breaks. The vectors are in the frame of the call:
+// body i first (swap i and j and they change sign).
+typedef struct TaborContactHistory {
+  // 1 from jump-in to snap-off (see [`TaborHistory::contact`]).
+  double contact;
+  // The turning point (see [`TaborHistory::max_overlap`]) (m).
+  double max_overlap;
+  // Accumulated tangential displacement (m).
+  double tangential[3];
+  // `mindlin_rescale`: the contact radius of the last update (m).
+  double tangential_contact_radius;
+  // Accumulated rolling displacement (m).
+  double rolling[3];
+  // Accumulated twist angle (rad).
+  double twisting;
+} TaborContactHistory;
+
+// The forces and torques of one contact at one step.
+typedef struct TaborContactForces {
+  // Force on body i (N): normal plus tangential; body j gets its negative.
+  double force[3];
+  // Torque on body i (N m).
+  double torque_i[3];
+  // Torque on body j (N m).
+  double torque_j[3];
+  // The normal force (N, > 0 repulsive).
+  double normal_force;
+  // The magnitude of the tangential force (N).
+  double tangential_force;
+  // F_n0, the normal force of the Coulomb limits (N).
+  double critical_force;
+  // Contact radius (m).
+  double contact_radius;
+  // As [`crate::TaborForce::event`]: 1 jump-in, 2 snap-off.
+  int32_t event;
+  // 1 when the tangential force is at its Coulomb limit.
+  int32_t sliding;
+} TaborContactForces;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
 
 // Creates a contact law; on success `*out` owns it (free with [`tabor_law_free`]).
 //
-// Building a Maugis-Dugdale law tabulates its branch (a few milliseconds); JKR
-// laws share one normalized table built on first use.
+// Building a Maugis-Dugdale law tabulates its branch (60-90 ms, about 160 kB);
+// JKR laws share one normalized table built on first use. Either serves every
+// effective radius ([`tabor_law_evaluate_at`]).
 //
 // # Safety
 // `params` must point to a valid [`TaborLawParams`], `out` to writable storage
@@ -137,12 +272,72 @@ int32_t tabor_law_evaluate(const struct TaborLaw *law,
                            struct TaborHistory *history,
                            struct TaborForce *out);
 
+// [`tabor_law_evaluate`] at effective radius R* = `effective_radius` (m, finite
+// and > 0) instead of the law's reference radius: the same normalized branch
+// scaled by F_n ∝ R*, d_n ∝ R*^(1/3), a_c ∝ R*^(2/3) (one cube root per call).
+//
+// # Safety
+// `law` from [`tabor_law_new`]; `history` and `out` valid and writable.
+int32_t tabor_law_evaluate_at(const struct TaborLaw *law,
+                              double effective_radius,
+                              double overlap,
+                              double overlap_rate,
+                              struct TaborHistory *history,
+                              struct TaborForce *out);
+
 // The law's jump-in and snap-off overlaps, interaction range, pull-off force and
-// measured table errors.
+// measured table errors at its reference radius.
 //
 // # Safety
 // `law` from [`tabor_law_new`]; `out` valid and writable.
 int32_t tabor_law_info(const struct TaborLaw *law, struct TaborLawInfo *out);
+
+// [`tabor_law_info`] at effective radius R* = `effective_radius` (m, finite and
+// > 0): lengths scale as R*^(1/3), forces as R*.
+//
+// # Safety
+// `law` from [`tabor_law_new`]; `out` valid and writable.
+int32_t tabor_law_info_at(const struct TaborLaw *law,
+                          double effective_radius,
+                          struct TaborLawInfo *out);
+
+// Creates a contact model from the normal law's parameters and `friction`
+// (null: normal forces only); on success `*out` owns it (free with
+// [`tabor_contact_free`]).
+//
+// # Safety
+// `params` valid; `friction` null or valid; `out` writable.
+int32_t tabor_contact_new(const struct TaborLawParams *params,
+                          const struct TaborFrictionParams *friction,
+                          struct TaborContact **out);
+
+// Frees a contact model made by [`tabor_contact_new`]; null is ignored.
+//
+// # Safety
+// `contact` null or from [`tabor_contact_new`], not yet freed.
+void tabor_contact_free(struct TaborContact *contact);
+
+// One time step of one contact: normal force, tangential force and torques
+// (LAMMPS's `pair granular` conventions: n from j to i, force and torque_i on
+// body i, body j gets −force and torque_j); `history` (zero for a new pair) is
+// advanced, and zeroed when the contact breaks. On error `*out` is zeroed and
+// the history is left unchanged.
+//
+// # Safety
+// `contact` from [`tabor_contact_new`]; `state` valid; `history`, `out` writable.
+int32_t tabor_contact_step(const struct TaborContact *contact,
+                           const struct TaborContactState *state,
+                           struct TaborContactHistory *history,
+                           struct TaborContactForces *out);
+
+// The normal law's info ([`tabor_law_info_at`]) of a contact model at effective
+// radius `effective_radius` (m).
+//
+// # Safety
+// `contact` from [`tabor_contact_new`]; `out` writable.
+int32_t tabor_contact_info_at(const struct TaborContact *contact,
+                              double effective_radius,
+                              struct TaborLawInfo *out);
 
 // Copies the message of the last error on this thread into `buffer` (at most
 // `length` bytes including the terminating NUL) and returns the message's full

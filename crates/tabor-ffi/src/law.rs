@@ -47,6 +47,9 @@ pub struct TaborForce {
     /// Normal force (N), positive when repulsive: elastic-adhesive plus
     /// Kuwabara-Kono damping.
     pub force: f64,
+    /// The elastic-adhesive part of `force` (N), without damping (what the Coulomb
+    /// limit of friction is built from, LAMMPS's `Fne`).
+    pub elastic_force: f64,
     /// Contact radius a (m) of the branch (0 without contact, and on the no-contact
     /// branch of Maugis-Dugdale).
     pub contact_radius: f64,
@@ -56,7 +59,7 @@ pub struct TaborForce {
     pub event: i32,
 }
 
-/// The exact law, for overlaps beyond the table.
+/// The exact law at the reference radius, for overlaps beyond the table.
 #[derive(Clone, Debug)]
 enum Exact {
     Hertz,
@@ -64,35 +67,59 @@ enum Exact {
     Maugis(Box<MaugisDugdaleForceLaw>),
 }
 
-/// A normal contact law for one pair of particle types and one effective radius:
-/// elastic adhesion ([`LawKind`]) plus optional Kuwabara-Kono viscous damping
-/// `F_d = 2E*A a δ̇` (seed 000 eq. (5.66) with the contact radius a of the law, the
-/// form LAMMPS's `damping viscoelastic` also uses), evaluated from a precomputed
-/// [`Table`] of the branch in normalized variables.
+/// The scales of a law at one effective radius R*: what turns the normalized
+/// branch (F̂, â, d̂) into newtons and metres. F_n = (3/2)πwR* ∝ R*,
+/// a_c = (9πwR*²/(8E*))^(1/3) ∝ R*^(2/3), d_n = a_c²/(3R*) ∝ R*^(1/3) (seed 000
+/// (5.43), `tabor_jkr::JkrScales`); at a fixed Tabor parameter Λ the normalized
+/// Maugis-Dugdale branch is the same for every radius, so one table serves them
+/// all. Computing them costs one cube root ([`ContactLaw::scales`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RadiusScales {
+    /// R* (m).
+    pub effective_radius: f64,
+    /// F_n (N; 1 for Hertz).
+    pub force: f64,
+    /// d_n (m; 1 for Hertz).
+    pub depth: f64,
+    /// 1/d_n (1/m).
+    pub inv_depth: f64,
+    /// a_c (m; 1 for Hertz).
+    pub contact_radius: f64,
+    /// √R* (Hertz's factor, seed 000 (5.5)).
+    pub sqrt_radius: f64,
+}
+
+/// A normal contact law for one pair of particle types: elastic adhesion
+/// ([`LawKind`]) plus optional Kuwabara-Kono viscous damping `F_d = 2E*A a δ̇`
+/// (seed 000 eq. (5.66) with the contact radius a of the law, the form LAMMPS's
+/// `damping viscoelastic` also uses), evaluated from a precomputed [`Table`] of
+/// the branch in normalized variables. The table does not depend on the effective
+/// radius (JKR; Maugis-Dugdale at a fixed Λ), so one law serves every radius
+/// ([`ContactLaw::evaluate_scaled`]); the radius given at construction is the
+/// reference the single-radius accessors report at.
 #[derive(Clone, Debug)]
 pub struct ContactLaw {
     kind: LawKind,
     effective_modulus: f64,
-    effective_radius: f64,
     damping_time: f64,
-    /// F_n = (3/2)πwR (N), d_n (m), a_c (m): the scales of `tabor_jkr::JkrScales`.
-    force_scale: f64,
-    depth_scale: f64,
-    inv_depth_scale: f64,
-    radius_scale: f64,
+    /// The scales at the reference radius.
+    reference: RadiusScales,
+    /// F_n/R*, d_n/R*^(1/3), a_c/R*^(2/3): the scales at unit radius.
+    unit_force: f64,
+    unit_depth: f64,
+    unit_contact_radius: f64,
     /// d̂₀: normalized depth at the table origin s = 0 (the branch minimum).
     table_origin: f64,
     /// 1/L: the table coordinate is s = √((d̂ − d̂₀)/L).
     inv_table_length: f64,
-    /// The overlap at which a contact forms (m).
+    /// Normalized overlap d̂ at which a contact forms.
     jump_in: f64,
-    /// The overlap below which a formed contact breaks (m).
+    /// Normalized overlap below which a formed contact breaks.
     snap_off: f64,
-    /// The most tensile force on the branch (N, ≤ 0).
+    /// The most tensile force on the branch, F̂ (≤ 0).
     pull_off_force: f64,
     table: Option<Arc<Table>>,
     exact: Exact,
-    hertz_factor: f64,
 }
 
 fn jkr_table() -> Result<Arc<Table>> {
@@ -124,20 +151,26 @@ fn jkr_table() -> Result<Arc<Table>> {
 }
 
 impl ContactLaw {
-    /// Hertz (seed 000 (5.5)) with effective modulus E* (Pa) and effective radius
-    /// R* (m).
+    /// Hertz (seed 000 (5.5)) with effective modulus E* (Pa) and reference
+    /// effective radius R* (m).
     pub fn hertz(effective_modulus: f64, effective_radius: f64) -> Result<Self> {
         let e = validate::positive("effective_modulus", effective_modulus)?;
         let r = validate::positive("effective_radius", effective_radius)?;
         Ok(ContactLaw {
             kind: LawKind::Hertz,
             effective_modulus: e,
-            effective_radius: r,
             damping_time: 0.0,
-            force_scale: 1.0,
-            depth_scale: 1.0,
-            inv_depth_scale: 1.0,
-            radius_scale: 1.0,
+            reference: RadiusScales {
+                effective_radius: r,
+                force: 1.0,
+                depth: 1.0,
+                inv_depth: 1.0,
+                contact_radius: 1.0,
+                sqrt_radius: r.sqrt(),
+            },
+            unit_force: 1.0,
+            unit_depth: 1.0,
+            unit_contact_radius: 1.0,
             table_origin: 0.0,
             inv_table_length: 1.0,
             jump_in: 0.0,
@@ -145,8 +178,21 @@ impl ContactLaw {
             pull_off_force: 0.0,
             table: None,
             exact: Exact::Hertz,
-            hertz_factor: 4.0 / 3.0 * e,
         })
+    }
+
+    /// Sets the adhesive scales from `s`, the JKR scales at the reference radius.
+    fn with_scales(mut self, s: &tabor_jkr::JkrScales) -> Self {
+        let r = self.reference.effective_radius;
+        let c = r.cbrt();
+        self.reference.force = s.force;
+        self.reference.depth = s.depth;
+        self.reference.inv_depth = 1.0 / s.depth;
+        self.reference.contact_radius = s.contact_radius;
+        self.unit_force = s.force / r;
+        self.unit_depth = s.depth / c;
+        self.unit_contact_radius = s.contact_radius / (c * c);
+        self
     }
 
     /// JKR (seed 000 (5.33)-(5.34)) with work of adhesion w (J/m², LAMMPS's 2γ)
@@ -161,24 +207,21 @@ impl ContactLaw {
         let s = sphere.scales();
         let fixed = JkrForceLaw::new(sphere, SeparationRule::FixedGrip);
         let law = JkrForceLaw::new(sphere, rule);
-        let mut out = Self::hertz(effective_modulus, effective_radius)?;
+        let mut out = Self::hertz(effective_modulus, effective_radius)?.with_scales(&s);
         out.kind = LawKind::Jkr(rule);
-        out.force_scale = s.force;
-        out.depth_scale = s.depth;
-        out.inv_depth_scale = 1.0 / s.depth;
-        out.radius_scale = s.contact_radius;
         out.table_origin = fixed.separation_depth() / s.depth;
         out.jump_in = 0.0;
-        out.snap_off = law.separation_depth();
+        out.snap_off = law.separation_depth() / s.depth;
         // the minimum of F̂ = â³ − 2â^(3/2) is −1 at â = 1 (the load-controlled point)
-        out.pull_off_force = -s.force;
+        out.pull_off_force = -1.0;
         out.table = Some(jkr_table()?);
         out.exact = Exact::Jkr(fixed);
         Ok(out)
     }
 
     /// Maugis-Dugdale at Tabor parameter Λ (seed 000 section 5.3.2) with work of
-    /// adhesion w (J/m²): the range is h = d_n/Λ.
+    /// adhesion w (J/m²): the range is h = d_n/Λ at every radius (Λ is held fixed,
+    /// so h ∝ R*^(1/3)).
     pub fn maugis_dugdale(
         effective_modulus: f64,
         effective_radius: f64,
@@ -230,21 +273,17 @@ impl ContactLaw {
                 kink,
             )?
         };
-        let mut out = Self::hertz(effective_modulus, effective_radius)?;
+        let mut out = Self::hertz(effective_modulus, effective_radius)?.with_scales(&s);
         out.kind = LawKind::MaugisDugdale(model.tabor_parameter());
-        out.force_scale = s.force;
-        out.depth_scale = s.depth;
-        out.inv_depth_scale = 1.0 / s.depth;
-        out.radius_scale = s.contact_radius;
         out.table_origin = pull_off / s.depth;
         out.inv_table_length = 1.0 / length;
-        out.jump_in = jump_in;
-        out.snap_off = pull_off;
+        out.jump_in = jump_in / s.depth;
+        out.snap_off = pull_off / s.depth;
         out.pull_off_force = branch_minimum(&|x| {
             let d = pull_off + x * x * step;
             law.force(d, 0.0)
                 .or_else(|_| law.force(d - 1e-12 * step, 0.0))
-        })?;
+        })? / s.force;
         out.table = Some(Arc::new(table));
         out.exact = Exact::Maugis(Box::new(law));
         Ok(out)
@@ -262,34 +301,97 @@ impl ContactLaw {
         self.kind
     }
 
-    /// The effective radius R* (m).
+    /// The effective modulus E* (Pa).
+    pub fn effective_modulus(&self) -> f64 {
+        self.effective_modulus
+    }
+
+    /// The Kuwabara-Kono dissipative time A (s; 0 without damping).
+    pub fn damping_time(&self) -> f64 {
+        self.damping_time
+    }
+
+    /// The reference effective radius R* (m), the one given at construction.
     pub fn effective_radius(&self) -> f64 {
-        self.effective_radius
+        self.reference.effective_radius
     }
 
-    /// The overlap at which a contact forms (m): 0, or −h for Maugis-Dugdale.
+    /// The scales at effective radius R* (m): one cube root (and a square root).
+    /// Errors for R* not finite and > 0.
+    pub fn scales(&self, effective_radius: f64) -> Result<RadiusScales> {
+        let r = validate::positive("effective_radius", effective_radius)?;
+        if r == self.reference.effective_radius {
+            return Ok(self.reference);
+        }
+        Ok(self.scales_unchecked(r))
+    }
+
+    #[inline]
+    fn scales_unchecked(&self, r: f64) -> RadiusScales {
+        if self.table.is_none() {
+            return RadiusScales {
+                effective_radius: r,
+                sqrt_radius: r.sqrt(),
+                ..self.reference
+            };
+        }
+        let c = r.cbrt();
+        let depth = self.unit_depth * c;
+        RadiusScales {
+            effective_radius: r,
+            force: self.unit_force * r,
+            depth,
+            inv_depth: 1.0 / depth,
+            contact_radius: self.unit_contact_radius * c * c,
+            sqrt_radius: r.sqrt(),
+        }
+    }
+
+    /// The overlap at which a contact forms at the reference radius (m): 0, or
+    /// −h for Maugis-Dugdale.
     pub fn jump_in_overlap(&self) -> f64 {
-        self.jump_in
+        self.jump_in_overlap_at(&self.reference)
     }
 
-    /// The overlap below which a formed contact breaks (m): 0 for Hertz, the
-    /// separation depth of the rule for JKR, the pull-off depth of the path for
-    /// Maugis-Dugdale.
+    /// The overlap at which a contact forms at the radius of `s` (m).
+    pub fn jump_in_overlap_at(&self, s: &RadiusScales) -> f64 {
+        self.jump_in * s.depth
+    }
+
+    /// The overlap below which a formed contact breaks at the reference radius
+    /// (m): 0 for Hertz, the separation depth of the rule for JKR, the pull-off
+    /// depth of the path for Maugis-Dugdale.
     pub fn snap_off_overlap(&self) -> f64 {
-        self.snap_off
+        self.snap_off_overlap_at(&self.reference)
     }
 
-    /// The largest gap (m, ≥ 0) at which the law can act: max(−jump-in, −snap-off).
-    /// A DEM engine must keep pairs this far apart in its neighbor lists.
+    /// The snap-off overlap at the radius of `s` (m).
+    pub fn snap_off_overlap_at(&self, s: &RadiusScales) -> f64 {
+        self.snap_off * s.depth
+    }
+
+    /// The largest gap (m, ≥ 0) at which the law can act at the reference radius:
+    /// max(−jump-in, −snap-off). A DEM engine must keep pairs this far apart in its
+    /// neighbor lists.
     pub fn interaction_range(&self) -> f64 {
-        (-self.jump_in).max(-self.snap_off).max(0.0)
+        self.interaction_range_at(&self.reference)
     }
 
-    /// The most tensile force along the branch (N, ≤ 0): −(3/2)πwR for JKR (both
-    /// rules pass through it), the minimum of the Maugis-Dugdale path (→ −2πwR as
-    /// Λ → 0, DMT), 0 for Hertz.
+    /// The interaction range at the radius of `s` (m, ≥ 0; grows as R*^(1/3)).
+    pub fn interaction_range_at(&self, s: &RadiusScales) -> f64 {
+        (-self.jump_in).max(-self.snap_off).max(0.0) * s.depth
+    }
+
+    /// The most tensile force along the branch at the reference radius (N, ≤ 0):
+    /// −(3/2)πwR for JKR (both rules pass through it), the minimum of the
+    /// Maugis-Dugdale path (→ −2πwR as Λ → 0, DMT), 0 for Hertz.
     pub fn pull_off_force(&self) -> f64 {
-        self.pull_off_force
+        self.pull_off_force_at(&self.reference)
+    }
+
+    /// The pull-off force at the radius of `s` (N, ≤ 0; ∝ R*).
+    pub fn pull_off_force_at(&self, s: &RadiusScales) -> f64 {
+        self.pull_off_force * s.force
     }
 
     /// The measured interpolation errors of the table (zero for Hertz).
@@ -297,41 +399,57 @@ impl ContactLaw {
         self.table.as_ref().map(|t| t.error()).unwrap_or_default()
     }
 
-    /// The force scale F_n = (3/2)πwR (N; 1 for Hertz).
+    /// The force scale F_n = (3/2)πwR at the reference radius (N; 1 for Hertz).
     pub fn force_scale(&self) -> f64 {
-        self.force_scale
+        self.reference.force
     }
 
     /// The elastic-adhesive force and contact radius on the branch at `overlap`
-    /// (m), assuming the contact has formed; exact beyond the table.
+    /// (m) at the radius of `sc`, assuming the contact has formed; exact beyond
+    /// the table.
     #[inline]
-    fn branch(&self, overlap: f64) -> Result<(f64, f64)> {
+    fn branch(&self, sc: &RadiusScales, overlap: f64) -> Result<(f64, f64)> {
         match &self.table {
             None => {
                 let d = overlap.max(0.0);
-                let a = (self.effective_radius * d).sqrt();
-                Ok((self.hertz_factor * a * d, a))
+                let a = sc.sqrt_radius * d.sqrt();
+                Ok((
+                    tabor_elastic::hertz_force(self.effective_modulus, sc.sqrt_radius, d),
+                    a,
+                ))
             }
             Some(table) => {
-                let x =
-                    (overlap * self.inv_depth_scale - self.table_origin) * self.inv_table_length;
+                let d_hat = overlap * sc.inv_depth;
+                let x = (d_hat - self.table_origin) * self.inv_table_length;
                 let s = x.max(0.0).sqrt();
                 match table.eval(s) {
-                    Some((f, a)) => Ok((f * self.force_scale, a * self.radius_scale)),
-                    None => self.exact_branch(overlap),
+                    Some((f, a)) => Ok((f * sc.force, a * sc.contact_radius)),
+                    None => {
+                        // the exact law at the reference radius, rescaled
+                        let r = &self.reference;
+                        let (f, a) = self.exact_branch(d_hat * r.depth)?;
+                        Ok((
+                            f / r.force * sc.force,
+                            a / r.contact_radius * sc.contact_radius,
+                        ))
+                    }
                 }
             }
         }
     }
 
-    /// The exact (root-finding) law on the branch: the reference of the table.
+    /// The exact (root-finding) law on the branch at the reference radius: the
+    /// reference of the table.
     pub fn exact_branch(&self, overlap: f64) -> Result<(f64, f64)> {
         let overlap = validate::finite("overlap", overlap)?;
         match &self.exact {
             Exact::Hertz => {
                 let d = overlap.max(0.0);
-                let a = (self.effective_radius * d).sqrt();
-                Ok((4.0 / 3.0 * self.effective_modulus * a * d, a))
+                let sqrt_r = self.reference.sqrt_radius;
+                Ok((
+                    tabor_elastic::hertz_force(self.effective_modulus, sqrt_r, d),
+                    sqrt_r * d.sqrt(),
+                ))
             }
             Exact::Jkr(law) => {
                 let d = overlap.max(law.separation_depth());
@@ -341,9 +459,21 @@ impl ContactLaw {
         }
     }
 
-    /// One time step of a contact: updates `history` (jump-in, turning point,
-    /// snap-off) and returns the normal force at `overlap` (m) and `overlap_rate`
-    /// (m/s, > 0 approaching).
+    /// One time step of a contact at the reference radius (see
+    /// [`ContactLaw::evaluate_scaled`]).
+    #[inline]
+    pub fn evaluate(
+        &self,
+        overlap: f64,
+        overlap_rate: f64,
+        history: &mut TaborHistory,
+    ) -> Result<TaborForce> {
+        self.evaluate_scaled(&self.reference, overlap, overlap_rate, history)
+    }
+
+    /// One time step of a contact at the radius of `scales` ([`ContactLaw::scales`]):
+    /// updates `history` (jump-in, turning point, snap-off) and returns the normal
+    /// force at `overlap` (m) and `overlap_rate` (m/s, > 0 approaching).
     ///
     /// While not in contact the force is 0 until δ reaches the jump-in overlap;
     /// in contact it follows the branch until δ falls below the snap-off overlap.
@@ -351,8 +481,9 @@ impl ContactLaw {
     /// seed 000 (5.72) and LAMMPS's `limit_damping`); adhesive laws add the damping
     /// force unclipped.
     #[inline]
-    pub fn evaluate(
+    pub fn evaluate_scaled(
         &self,
+        scales: &RadiusScales,
         overlap: f64,
         overlap_rate: f64,
         history: &mut TaborHistory,
@@ -369,73 +500,50 @@ impl ContactLaw {
             ));
         }
         let mut event = 0;
+        let hertz = self.table.is_none();
         if history.contact == 0.0 {
-            if overlap < self.jump_in || (self.table.is_none() && overlap <= 0.0) {
+            if overlap < self.jump_in * scales.depth || (hertz && overlap <= 0.0) {
                 return Ok(TaborForce::default());
             }
             history.contact = 1.0;
             history.max_overlap = overlap;
             event = 1;
         }
-        if overlap < self.snap_off || (self.table.is_none() && overlap <= 0.0) {
+        if overlap < self.snap_off * scales.depth || (hertz && overlap <= 0.0) {
             *history = TaborHistory::default();
             return Ok(TaborForce {
-                force: 0.0,
-                contact_radius: 0.0,
                 event: event | 2,
+                ..TaborForce::default()
             });
         }
         if overlap > history.max_overlap {
             history.max_overlap = overlap;
         }
-        let (f, a) = self.branch(overlap)?;
-        let damping = 2.0 * self.effective_modulus * self.damping_time * a * overlap_rate;
+        let (f, a) = self.branch(scales, overlap)?;
+        let damping = tabor_visco::kuwabara_kono::viscous_force(
+            self.effective_modulus * self.damping_time,
+            a,
+            overlap_rate,
+        );
         let mut force = f + damping;
-        if self.table.is_none() && force < 0.0 {
+        if hertz && force < 0.0 {
             force = 0.0;
         }
         Ok(TaborForce {
             force,
+            elastic_force: f,
             contact_radius: a,
             event,
         })
     }
 }
 
-/// The minimum over x ≥ 0 of `f(x)` (the branch force at s = x), located on a grid
-/// of the fine segment and refined by golden section.
+/// The minimum over 0 ≤ x ≤ S_FINE of `f(x)` (the branch force at s = x): a grid of
+/// 4096 cells of the fine segment, refined by golden section
+/// (`tabor_numerics::minimize`).
 fn branch_minimum(f: &dyn Fn(f64) -> Result<f64>) -> Result<f64> {
-    let n = 4096;
-    let h = crate::table::S_FINE / n as f64;
-    let mut best = (0usize, f(0.0)?);
-    for i in 1..=n {
-        let v = f(h * i as f64)?;
-        if v < best.1 {
-            best = (i, v);
-        }
-    }
-    let (mut lo, mut hi) = (
-        h * best.0.saturating_sub(1) as f64,
-        h * (best.0 + 1).min(n) as f64,
-    );
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    let mut x1 = hi - g * (hi - lo);
-    let mut x2 = lo + g * (hi - lo);
-    let (mut f1, mut f2) = (f(x1)?, f(x2)?);
-    for _ in 0..80 {
-        if f1 < f2 {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - g * (hi - lo);
-            f1 = f(x1)?;
-        } else {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + g * (hi - lo);
-            f2 = f(x2)?;
-        }
-    }
-    Ok(best.1.min(f1).min(f2))
+    Ok(
+        tabor_numerics::minimize::grid_then_golden(f, 0.0, crate::table::S_FINE, 4096, 1e-14)?
+            .value,
+    )
 }

@@ -171,6 +171,83 @@ fn maugis_dugdale_matches_exact_states_and_the_closed_form_no_contact_branch() {
     }
 }
 
+fn eval_at(law: *const TaborLaw, r: f64, d: f64, rate: f64, h: &mut TaborHistory) -> TaborForce {
+    let mut out = TaborForce::default();
+    assert_eq!(
+        unsafe { tabor_law_evaluate_at(law, r, d, rate, h, &mut out) },
+        TABOR_OK
+    );
+    out
+}
+
+#[test]
+fn one_law_serves_every_radius() {
+    // a law built at R = 0.5 µm, evaluated at other radii, against the closed forms
+    // at those radii: JKR's parametric relations (5.33)-(5.34), Hertz (5.5), and
+    // tabor-maugis' exact normalized states with the scales of each radius
+    for r2 in [0.013e-6, 0.31e-6, 2.7e-6, 41e-6] {
+        let a_c = (9.0 * PI * W * r2 * r2 / (8.0 * E)).cbrt();
+        let f_n = 1.5 * PI * W * r2;
+        let d_n = a_c * a_c / (3.0 * r2);
+        let law = new_law(params(TABOR_MODEL_JKR_FIXED_GRIP, 0.0));
+        let delta = |a: f64| a * a / r2 - (2.0 * PI * W * a / E).sqrt();
+        let force =
+            |a: f64| 4.0 * E * a.powi(3) / (3.0 * r2) - (8.0 * PI * W * E * a.powi(3)).sqrt();
+        for k in 0..50 {
+            let a = a_c * (0.49 + 5.0 * (k as f64 + 0.5) / 50.0);
+            let mut h = TaborHistory {
+                contact: 1.0,
+                max_overlap: 1.0,
+            };
+            let f = eval_at(law, r2, delta(a), 0.0, &mut h);
+            assert!((f.force - force(a)).abs() < 1e-7 * f_n, "R {r2} a {a}");
+            assert!((f.contact_radius - a).abs() < 1e-7 * a_c);
+        }
+        let mut i = TaborLawInfo::default();
+        assert_eq!(unsafe { tabor_law_info_at(law, r2, &mut i) }, TABOR_OK);
+        assert!((i.pull_off_force / -f_n - 1.0).abs() < 1e-12);
+        unsafe { tabor_law_free(law) };
+
+        let law = new_law(params(TABOR_MODEL_HERTZ, 0.0));
+        let d = 1e-3 * r2;
+        let f = eval_at(law, r2, d, 0.0, &mut TaborHistory::default()).force;
+        assert!((f / (4.0 / 3.0 * E * r2.sqrt() * d.powf(1.5)) - 1.0).abs() < 1e-14);
+        unsafe { tabor_law_free(law) };
+
+        for lambda in [0.3, 1.5] {
+            let law = new_law(params(TABOR_MODEL_MAUGIS_DUGDALE, lambda));
+            assert_eq!(unsafe { tabor_law_info_at(law, r2, &mut i) }, TABOR_OK);
+            assert!((i.jump_in_overlap / (-d_n / lambda) - 1.0).abs() < 1e-12);
+            let path = tabor_maugis::impact_path(lambda).unwrap();
+            for k in 0..40 {
+                let d_hat = path.pull_off.depth + (k as f64 + 0.37) * 0.1 * (1.0 / lambda).max(1.0);
+                let exact = tabor_maugis::equilibrium_state(lambda, d_hat).unwrap();
+                let mut h = TaborHistory {
+                    contact: 1.0,
+                    max_overlap: 1.0,
+                };
+                let f = eval_at(law, r2, d_hat * d_n, 0.0, &mut h);
+                assert!(
+                    (f.force / f_n - exact.force).abs() < 1e-6,
+                    "R {r2} Λ {lambda}"
+                );
+            }
+            unsafe { tabor_law_free(law) };
+        }
+    }
+    let law = new_law(params(TABOR_MODEL_HERTZ, 0.0));
+    let mut out = TaborForce::default();
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        assert_eq!(
+            unsafe {
+                tabor_law_evaluate_at(law, bad, 1e-9, 0.0, &mut TaborHistory::default(), &mut out)
+            },
+            TABOR_ERR_INVALID
+        );
+    }
+    unsafe { tabor_law_free(law) };
+}
+
 #[test]
 fn pull_off_force_goes_from_dmt_to_jkr() {
     // DMT 2πwR as Λ → 0, JKR (3/2)πwR as Λ → ∞, monotone in between (Maugis 1992)
@@ -312,6 +389,7 @@ fn errors_are_status_codes_never_unwinding() {
     };
     let mut out = TaborForce {
         force: 5.0,
+        elastic_force: 5.0,
         contact_radius: 1.0,
         event: 9,
     };
@@ -356,7 +434,9 @@ fn header_is_current() {
     for name in [
         "tabor_law_new",
         "tabor_law_evaluate",
+        "tabor_law_evaluate_at",
         "tabor_law_info",
+        "tabor_law_info_at",
         "tabor_law_free",
         "tabor_last_error",
         "TABOR_HISTORY_LEN",

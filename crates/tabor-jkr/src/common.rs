@@ -26,20 +26,12 @@ pub enum SeparationRule {
     LoadControlled,
 }
 
-impl SeparationRule {
-    /// The rule's name as the command line spells it (`fixed-grip`, `load-controlled`).
-    pub fn as_str(self) -> &'static str {
-        match self {
-            SeparationRule::FixedGrip => "fixed-grip",
-            SeparationRule::LoadControlled => "load-controlled",
-        }
-    }
-}
-
-impl std::fmt::Display for SeparationRule {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.as_str())
-    }
+tabor_restitution::menu! {
+    SeparationRule, "separation rule";
+    FixedGrip => "fixed-grip",
+        "displacement-controlled instability dd/da = 0, force -(5/6)πΔγR (5.36): physical for an impact";
+    LoadControlled => "load-controlled",
+        "load-controlled pull-off dF/da = 0, force -(3/2)πΔγR, as some DEM codes do: about half the loss";
 }
 
 /// One equilibrium state of an adhesive contact: contact radius `a`, depth `d`

@@ -3,6 +3,7 @@
 use crate::common::SeparationRule;
 use crate::normalized;
 use crate::sphere::JkrSphere;
+use std::sync::atomic::{AtomicU64, Ordering};
 use tabor_dynamics::{BranchChange, ForceLaw};
 use tabor_restitution::{validate, Result};
 
@@ -13,23 +14,63 @@ use tabor_restitution::{validate, Result};
 /// `d = −3^(2/3) d_n`; load-controlled: `d = −d_n`, where `F = −(3/2)πΔγR`).
 ///
 /// The contact radius at depth d is the root `x = √â ≥ 3^(−1/3)` of
-/// `3x⁴ − 4x = d̂` (the stable branch), [`normalized::sqrt_contact_radius_at_depth`].
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// `3x⁴ − 4x = d̂` (the stable branch), solved by
+/// [`normalized::sqrt_contact_radius_at_depth_from`] warm-started from the last
+/// root the law solved (the tangent there predicts the new one), which the law keeps
+/// as a hint: it changes where Newton's method starts, not its result (to the
+/// solve's tolerance), and the law stays `Sync`.
+#[derive(Debug)]
 pub struct JkrForceLaw {
     sphere: JkrSphere,
     rule: SeparationRule,
     separation_depth: f64,
+    /// The last (d̂, x) solved, as bits of `f64`s (NaN: none).
+    hint: [AtomicU64; 2],
+}
+
+impl Clone for JkrForceLaw {
+    fn clone(&self) -> Self {
+        let mut law = JkrForceLaw::new(self.sphere, self.rule);
+        law.hint = [
+            AtomicU64::new(self.hint[0].load(Ordering::Relaxed)),
+            AtomicU64::new(self.hint[1].load(Ordering::Relaxed)),
+        ];
+        law
+    }
+}
+
+impl PartialEq for JkrForceLaw {
+    /// The same sphere and separation rule (the hint does not count).
+    fn eq(&self, other: &Self) -> bool {
+        self.sphere == other.sphere && self.rule == other.rule
+    }
 }
 
 impl JkrForceLaw {
     /// The force law of `sphere` with separation rule `rule`.
     pub fn new(sphere: JkrSphere, rule: SeparationRule) -> Self {
         let s = normalized::critical_state(rule);
+        let nan = f64::NAN.to_bits();
         JkrForceLaw {
             sphere,
             rule,
             separation_depth: s.depth * sphere.scales().depth,
+            hint: [AtomicU64::new(nan), AtomicU64::new(nan)],
         }
+    }
+
+    /// `x = √â` at overlap `overlap` (m), warm-started from the hint: Newton's
+    /// method from the tangent prediction `x + (d̂ − d̂_h)/(12x³ − 4)` of the last
+    /// root.
+    fn root(&self, overlap: f64) -> Result<f64> {
+        let d = overlap / self.sphere.scales().depth;
+        let d_last = f64::from_bits(self.hint[0].load(Ordering::Relaxed));
+        let x_last = f64::from_bits(self.hint[1].load(Ordering::Relaxed));
+        let guess = x_last + (d - d_last) / (12.0 * x_last * x_last * x_last - 4.0);
+        let x = normalized::sqrt_contact_radius_at_depth_from(d, guess)?;
+        self.hint[0].store(d.to_bits(), Ordering::Relaxed);
+        self.hint[1].store(x.to_bits(), Ordering::Relaxed);
+        Ok(x)
     }
 
     /// The separation rule.
@@ -60,16 +101,14 @@ impl ForceLaw for JkrForceLaw {
     }
 
     fn force(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
-        let s = self.sphere.scales();
-        let x = normalized::sqrt_contact_radius_at_depth(overlap / s.depth)?;
+        let x = self.root(overlap)?;
         let a = x * x;
-        Ok((a * a * a - 2.0 * a * x) * s.force)
+        Ok((a * a * a - 2.0 * a * x) * self.sphere.scales().force)
     }
 
     fn contact_radius(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
-        let s = self.sphere.scales();
-        let x = normalized::sqrt_contact_radius_at_depth(overlap / s.depth)?;
-        Ok(x * x * s.contact_radius)
+        let x = self.root(overlap)?;
+        Ok(x * x * self.sphere.scales().contact_radius)
     }
 
     fn branch_end(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {

@@ -51,7 +51,7 @@ impl GradedSphere {
             gradation_exponent,
             -1.0,
             1.0,
-            "must satisfy -1 < k < 1 (seed 000, section 5.3.3)",
+            "must satisfy -1 < k < 1 (Willert 2020, section 5.3.3)",
         )?;
         let r = validate::positive("effective_radius", effective_radius)?;
         let dg = validate::positive("work_of_adhesion", work_of_adhesion)?;

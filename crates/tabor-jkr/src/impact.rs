@@ -4,8 +4,9 @@
 use crate::common::{finite_output, JkrContactState, MaxContactRadius, SeparationRule};
 use tabor_restitution::{validate, EnergyLoss, ImpactModel, Result};
 
-/// The relative tolerance [`JkrImpact`] uses unless told otherwise.
-pub const DEFAULT_TOLERANCE: f64 = 1e-12;
+/// The relative tolerance [`JkrImpact`] uses unless told otherwise: the
+/// workspace's `tabor_numerics::tolerance::DEFAULT_TOLERANCE` (1e-12).
+pub const DEFAULT_TOLERANCE: f64 = tabor_numerics::tolerance::DEFAULT_TOLERANCE;
 
 mod sealed {
     pub trait Sealed {}

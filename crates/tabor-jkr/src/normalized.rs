@@ -99,9 +99,10 @@ pub fn sqrt_contact_radius_at_depth(depth: f64) -> Result<f64> {
 
 /// The warm-started [`sqrt_contact_radius_at_depth`]: the same root, by Newton's
 /// method from `guess` (typically the root at a nearby depth; a guess that is not
-/// finite or outside the bracket starts from `(1 + d̂⁺/3)^(1/4)`), safeguarded by
-/// bisection in `[3^(−1/3), 3/2 + (d̂⁺/1.8)^(1/4)]`, to a step below 2ε x. From the
-/// root at a depth 1 % away it takes three or four steps.
+/// finite or not above `3^(−1/3)` starts from `(1 + d̂⁺/3)^(1/4)`), safeguarded by
+/// bisection in `[3^(−1/3), 3/2 + (d̂⁺/1.8)^(1/4)]`, to a step below 2ε x, or to a
+/// step after which the error left, `f''/(2f') δ²`, is below ε x/4. From the root
+/// at a depth 1 % away it takes two or three steps.
 ///
 /// Seed 000, eq. (5.34) divided by `d_n`, inverted.
 pub fn sqrt_contact_radius_at_depth_from(depth: f64, guess: f64) -> Result<f64> {
@@ -143,14 +144,20 @@ pub fn sqrt_contact_radius_closed_form(depth: f64) -> f64 {
 /// and convex on the bracket, so from the right the iteration falls monotonically.
 fn quartic_root_from(d: f64, guess: f64) -> Result<f64> {
     let mut lo = SQRT_FIXED_GRIP_RADIUS;
-    let mut hi = 1.5 + (d.max(0.0) / 1.8).sqrt().sqrt();
-    let mut x = if guess > lo && guess < hi {
+    // the upper end of the bracket, `3/2 + (d⁺/1.8)^(1/4)`, is needed only when a
+    // step leaves the bracket (rarely): until then it is +∞
+    let mut hi = f64::INFINITY;
+    let upper = || 1.5 + (d.max(0.0) / 1.8).sqrt().sqrt();
+    // from above the root Newton's method falls monotonically (f is convex), so any
+    // finite guess above the lower end will do
+    let mut x = if guess > lo && guess.is_finite() {
         guess
     } else {
-        (1.0 + d.max(0.0) / 3.0).sqrt().sqrt().clamp(lo, hi)
+        (1.0 + d.max(0.0) / 3.0).sqrt().sqrt().clamp(lo, upper())
     };
     for _ in 0..QUARTIC_MAX_STEPS {
-        let x3 = x * x * x;
+        let x2 = x * x;
+        let x3 = x2 * x;
         let f = 3.0 * x3 * x - 4.0 * x - d;
         if f == 0.0 {
             return Ok(x);
@@ -160,12 +167,24 @@ fn quartic_root_from(d: f64, guess: f64) -> Result<f64> {
         } else {
             lo = x;
         }
-        let newton = f / (12.0 * x3 - 4.0);
-        if newton.abs() <= 2.0 * f64::EPSILON * x {
-            return Ok(x - newton);
+        let slope = 12.0 * x3 - 4.0;
+        let newton = f / slope;
+        // the error left after this step, f''/(2f') δ² (f'' = 36x²): below ε/4 x
+        // the step lands on the root
+        let left_times_slope = 18.0 * x2 * newton * newton;
+        if newton.abs() <= 2.0 * f64::EPSILON * x
+            || left_times_slope <= 0.25 * f64::EPSILON * x * slope.abs()
+        {
+            let next = x - newton;
+            if next >= lo && next <= hi {
+                return Ok(next);
+            }
         }
         x -= newton;
         if !(x > lo && x < hi) {
+            if hi.is_infinite() {
+                hi = upper();
+            }
             x = 0.5 * (lo + hi);
         }
         if hi - lo <= 2.0 * f64::EPSILON * x {

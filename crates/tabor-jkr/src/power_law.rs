@@ -54,7 +54,7 @@ impl PowerLawProfile {
             profile_exponent,
             0.5,
             f64::INFINITY,
-            "must be finite and > 1/2 for an adhesive power-law contact (seed 000, (5.39))",
+            "must be finite and > 1/2 for an adhesive power-law contact (Willert 2020, (5.39))",
         )?;
         let a = validate::positive("profile_coefficient", profile_coefficient)?;
         let dg = validate::positive("work_of_adhesion", work_of_adhesion)?;

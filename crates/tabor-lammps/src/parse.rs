@@ -1,7 +1,11 @@
 //! Reading a user's LAMMPS line: `pair_coeff I J <normal model> … damping <model>
 //! [limit_damping]` or `fix ID group wall/gran granular <same keywords> <wall>`,
 //! as documented for `pair_style granular` and `fix wall/gran` in the LAMMPS
-//! manual.
+//! manual; the legacy styles `pair_style gran/hooke|gran/hooke/history|
+//! gran/hertz/history Kn Kt γn γt xmu dampflag [limit_damping]` and their
+//! `fix wall/gran hooke|hooke/history|hertz/history …` walls (LAMMPS's
+//! `pair_gran` page); and LAMMPS's variable substitution `$x`, `${name}`
+//! ([`substitute_variables`]).
 
 use crate::law::{DampingModel, GranularModel, NormalModel};
 use serde::Serialize;
@@ -33,8 +37,11 @@ impl std::error::Error for LineError {}
 /// effect on a central impact (tangential, rolling, twisting).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ParsedLine {
-    /// `pair_coeff` or `wall/gran`.
+    /// `pair_coeff` or `wall/gran` (a legacy `pair_style gran/…` line is a pair).
     pub kind: LineKind,
+    /// The style: `granular`, or a legacy `gran/hooke`, `gran/hooke/history`,
+    /// `gran/hertz/history` (`hooke`, `hooke/history`, `hertz/history` for walls).
+    pub style: String,
     /// The normal contact.
     pub model: GranularModel,
     /// Sub-models read and ignored (no effect on a frictionless central impact).
@@ -53,7 +60,146 @@ fn number(tokens: &[&str], i: usize, what: &str) -> Result<f64, LineError> {
 
 const SUB_MODELS: [&str; 5] = ["tangential", "rolling", "twisting", "heat", "damping"];
 
-/// Parses a `pair_coeff` or `fix wall/gran granular` line.
+/// LAMMPS's variable substitution in an input line (its `Input::substitute`
+/// rules): `${name}` and `$x` (one-character names) are replaced by their values
+/// from `variables`; a variable not given is an error naming it, and so is an
+/// immediate expression `$(…)` (it is evaluated by LAMMPS's expression parser, not
+/// here: give its value instead). Text after `#` is a comment and left alone.
+pub fn substitute_variables(
+    line: &str,
+    variables: &[(String, String)],
+) -> Result<String, LineError> {
+    let value = |name: &str| -> Result<String, LineError> {
+        variables
+            .iter()
+            .rev()
+            .find(|(n, _)| n == name)
+            .map(|(_, v)| v.clone())
+            .ok_or_else(|| {
+                LineError(format!(
+                    "the line uses the LAMMPS variable \"{name}\", which is not given: pass its value (--var {name}=VALUE)"
+                ))
+            })
+    };
+    let code = line.split('#').next().unwrap_or("");
+    let mut out = String::with_capacity(line.len());
+    let mut chars = code.chars().peekable();
+    while let Some(c) = chars.next() {
+        if c != '$' {
+            out.push(c);
+            continue;
+        }
+        match chars.next() {
+            Some('{') => {
+                let mut name = String::new();
+                loop {
+                    match chars.next() {
+                        Some('}') => break,
+                        Some(ch) => name.push(ch),
+                        None => {
+                            return Err(LineError(format!(
+                                "unterminated variable \"${{{name}\" (no closing brace)"
+                            )))
+                        }
+                    }
+                }
+                if name.is_empty() {
+                    return Err(LineError("empty variable name \"${}\"".into()));
+                }
+                out.push_str(&value(&name)?);
+            }
+            Some('(') => {
+                return Err(LineError(
+                    "the line uses an immediate expression $(...), which only LAMMPS evaluates: replace it by its value".into(),
+                ))
+            }
+            Some(ch) if !ch.is_whitespace() => out.push_str(&value(&ch.to_string())?),
+            _ => return Err(LineError("a lone \"$\" (no variable name after it)".into())),
+        }
+    }
+    out.push_str(&line[code.len()..]);
+    Ok(out)
+}
+
+/// The legacy granular styles (LAMMPS `pair_gran`): `pair_style gran/… Kn Kt γn γt
+/// xmu dampflag [limit_damping]` for pairs, `fix ID group wall/gran hooke|…` with
+/// the same coefficients then the wall for walls. F_hooke = Kn δ + m* γn δ̇;
+/// F_hertz = √(R* δ) (Kn δ + m* γn δ̇): `hooke Kn γn` with `damping
+/// mass_velocity`, and `hertz Kn γn` with `damping viscoelastic`.
+fn legacy(
+    kind: LineKind,
+    style: &str,
+    tokens: &[&str],
+    start: usize,
+) -> Result<ParsedLine, LineError> {
+    let hertz = style.ends_with("hertz/history");
+    let c = |k: usize, what: &str| number(tokens, start + k, what);
+    let kn = c(0, "Kn")?;
+    let gamma_n = c(2, "gamma_n")?;
+    let mut ignored = Vec::new();
+    for (k, what) in [(1, "Kt"), (3, "gamma_t")] {
+        match tokens.get(start + k) {
+            Some(&"NULL") => {}
+            Some(_) => {
+                c(k, what)?;
+            }
+            None => return Err(LineError(format!("missing {what} (coefficient {})", k + 1))),
+        }
+    }
+    c(4, "xmu")?;
+    let dampflag = c(5, "dampflag")?;
+    if dampflag != 0.0 && dampflag != 1.0 {
+        return Err(LineError(format!("dampflag = {dampflag}: must be 0 or 1")));
+    }
+    ignored.push(format!(
+        "Kt {} gamma_t {} xmu {} dampflag {} (tangential)",
+        tokens[start + 1],
+        tokens[start + 3],
+        tokens[start + 4],
+        tokens[start + 5]
+    ));
+    let mut limit_damping = false;
+    for t in &tokens[start + 6..] {
+        match *t {
+            "limit_damping" => limit_damping = true,
+            // the wall geometry and its arguments
+            _ if kind == LineKind::WallGran => {}
+            other => {
+                return Err(LineError(format!(
+                    "unexpected \"{other}\" after the {style} coefficients (expected limit_damping)"
+                )))
+            }
+        }
+    }
+    let model = GranularModel {
+        normal: if hertz {
+            NormalModel::Hertz { stiffness: kn }
+        } else {
+            NormalModel::Hooke { stiffness: kn }
+        },
+        damp: gamma_n,
+        damping: if hertz {
+            DampingModel::Viscoelastic
+        } else {
+            DampingModel::MassVelocity
+        },
+        limit_damping,
+    };
+    model.validate().map_err(|e| LineError(e.to_string()))?;
+    Ok(ParsedLine {
+        kind,
+        style: style.to_string(),
+        model,
+        ignored,
+    })
+}
+
+const LEGACY_PAIR: [&str; 3] = ["gran/hooke", "gran/hooke/history", "gran/hertz/history"];
+const LEGACY_WALL: [&str; 3] = ["hooke", "hooke/history", "hertz/history"];
+
+/// Parses a `pair_coeff` or `fix wall/gran granular` line, or a legacy
+/// `pair_style gran/…` or `fix wall/gran hooke|hooke/history|hertz/history` line
+/// (variables substituted first: [`substitute_variables`]).
 pub fn parse_line(line: &str) -> Result<ParsedLine, LineError> {
     let tokens: Vec<&str> = line
         .split('#')
@@ -62,6 +208,17 @@ pub fn parse_line(line: &str) -> Result<ParsedLine, LineError> {
         .split_whitespace()
         .collect();
     let (kind, start) = match tokens.first() {
+        Some(&"pair_style") => {
+            let style = *tokens
+                .get(1)
+                .ok_or_else(|| LineError("pair_style needs a style".into()))?;
+            if LEGACY_PAIR.contains(&style) {
+                return legacy(LineKind::PairCoeff, style, &tokens, 2);
+            }
+            return Err(LineError(format!(
+                "pair_style {style}: --check reads the legacy gran/hooke, gran/hooke/history and gran/hertz/history lines, or a pair_coeff line of pair_style granular (which carries the model)"
+            )));
+        }
         Some(&"pair_coeff") => {
             if tokens.len() < 4 {
                 return Err(LineError(
@@ -71,17 +228,21 @@ pub fn parse_line(line: &str) -> Result<ParsedLine, LineError> {
             (LineKind::PairCoeff, 3)
         }
         Some(&"fix") => {
-            let g = tokens
-                .iter()
-                .position(|t| *t == "granular")
-                .ok_or_else(|| {
-                    LineError("a fix line must be \"fix ID group wall/gran granular …\"".into())
-                })?;
-            if !tokens.iter().take(g).any(|t| *t == "wall/gran") {
+            if tokens.get(3) != Some(&"wall/gran") {
                 return Err(LineError(
-                    "a fix line must be \"fix ID group wall/gran granular …\"".into(),
+                    "a fix line must be \"fix ID group wall/gran granular …\" (or a legacy hooke, hooke/history, hertz/history wall)".into(),
                 ));
             }
+            let style = tokens.get(4).copied().unwrap_or("");
+            if LEGACY_WALL.contains(&style) {
+                return legacy(LineKind::WallGran, style, &tokens, 5);
+            }
+            if style != "granular" {
+                return Err(LineError(format!(
+                    "fix wall/gran style \"{style}\": expected granular (followed by the model keywords) or a legacy hooke, hooke/history, hertz/history wall"
+                )));
+            }
+            let g = 4;
             (LineKind::WallGran, g + 1)
         }
         Some(other) => {
@@ -214,6 +375,7 @@ pub fn parse_line(line: &str) -> Result<ParsedLine, LineError> {
     model.validate().map_err(|e| LineError(e.to_string()))?;
     Ok(ParsedLine {
         kind,
+        style: "granular".into(),
         model,
         ignored,
     })

@@ -2,7 +2,8 @@
 //! `integrations/lammps/plugin`, which evaluates tabor's force laws themselves
 //! (through `tabor-ffi`) instead of LAMMPS's `jkr` with an effective γ.
 
-use crate::export::{ExportError, Geometry};
+use crate::friction::{friction_keywords, null_stiffness_fits, scene_friction};
+use crate::report::{ExportError, Geometry};
 use serde::Serialize;
 use std::fmt::Display;
 use tabor_ffi::ContactLaw;
@@ -104,6 +105,18 @@ pub struct PluginExport {
     pub reproduces: Vec<String>,
     /// What it does not (its limits).
     pub does_not_reproduce: Vec<String>,
+    /// Warnings about the export itself (a plugin path that does not exist).
+    pub warnings: Vec<String>,
+}
+
+/// `plugin load PATH` with the path quoted for LAMMPS's parser (spaces allowed;
+/// triple quotes when the path itself holds a double quote).
+pub fn plugin_load_command(plugin: &str) -> String {
+    if plugin.contains('"') {
+        format!("plugin load \"\"\"{plugin}\"\"\"")
+    } else {
+        format!("plugin load \"{plugin}\"")
+    }
 }
 
 fn model_err(e: impl Display) -> ExportError {
@@ -265,10 +278,30 @@ pub fn export_plugin(
     if let Some(a) = a_time {
         coeff += &format!(" damping {}", fmt(a));
     }
+    // the scene's [friction] with pair granular's keywords (k_t NULL: the plugin
+    // computes 8 G* from E* and `poisson nu`, for two bodies of one material)
+    let friction = scene_friction(scene)?;
+    let friction_kw = friction.as_ref().map(|f| {
+        let nu = scene.sphere.material.poisson_ratio();
+        let null = null_stiffness_fits(scene, f, 2.0 * e_star * (1.0 - nu * nu), nu);
+        format!(
+            "{}{}",
+            if null {
+                format!("poisson {nu} ")
+            } else {
+                String::new()
+            },
+            friction_keywords(f, null)
+        )
+    });
+    if let Some(k) = &friction_kw {
+        coeff += &format!(" {k}");
+    }
+    // every line is legal after create_box with LAMMPS's defaults: the fragment
+    // does not change `newton` (the pair style works with either setting)
     let commands = vec![
-        "newton off".to_string(),
         "comm_modify vel yes".to_string(),
-        format!("plugin load {plugin}"),
+        plugin_load_command(plugin),
         "pair_style tabor".to_string(),
         coeff,
         format!("neighbor {} bin", fmt(skin)),
@@ -305,11 +338,20 @@ pub fn export_plugin(
         ));
     }
     reproduces.push("the contact radius and the force along the whole loading and unloading path (tables: |dF|/F_n <= 2e-6 adhesive part, 3e-11 Hertzian part; see crates/tabor-ffi/README.md)".into());
+    if let Some(k) = &friction_kw {
+        reproduces.push(format!(
+            "the scene's friction, rolling and twisting ({k}): tabor's tangential models, which follow pair granular's (the Coulomb limits with tabor's own pull-off force)"
+        ));
+    }
     let mut limits = vec![
-        "tangential, rolling and twisting contact: normal forces only, no torques (add your own tangential model with a separate pair style if needed)".to_string(),
-        "energy tally and restart: the pair style tallies no energy and its history (contact flag, turning point) is not written to restart files".to_string(),
-        "newton on is refused; the neighbor skin must stay at least the interaction range (checked at run)".to_string(),
-        "one pair_coeff * * for the scene's pair of bodies; polydisperse continuous size distributions (> 256 distinct R* per type pair) are refused".to_string(),
+        if friction_kw.is_some() {
+            "energy per mechanism: LAMMPS reports no work of friction, rolling or twisting (tabor impact --angle does)".to_string()
+        } else {
+            "tangential, rolling and twisting contact: the scene has no [friction], normal forces only (give a [friction] section for pair granular's sub-models)".to_string()
+        },
+        "energy tally: the pair style tallies no energy (its contact histories are written to restart files; after read_restart include this fragment again)".to_string(),
+        "the neighbor skin must stay at least the interaction range (checked at run)".to_string(),
+        "Maugis-Dugdale keeps Lambda fixed for every effective radius of a polydisperse system (the range h = d_n(R*)/Lambda grows as R*^(1/3))".to_string(),
     ];
     if range > 0.0 {
         limits.push(format!(
@@ -342,6 +384,13 @@ pub fn export_plugin(
         commands,
         reproduces,
         does_not_reproduce: limits,
+        warnings: if std::path::Path::new(plugin).exists() {
+            Vec::new()
+        } else {
+            vec![format!(
+                "the plugin {plugin} does not exist (build it with cargo xtask lammps-plugin): plugin load will fail"
+            )]
+        },
     })
 }
 
@@ -358,7 +407,10 @@ impl PluginExport {
             "# tabor export lammps --plugin: scene \"{}\" (sphere-sphere: pair_style tabor, tabor's own force law)",
             self.scene
         ));
-        line("# Include after atom_style sphere / create_box (units si). Normal forces only.");
+        line("# Include after atom_style sphere / create_box (units si); newton on or off.");
+        for w in &self.warnings {
+            line(&format!("# WARNING: {w}"));
+        }
         line(&format!(
             "# law: {}; E* = {:.10e} Pa (1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2){}{}{}",
             self.model.keyword(),

@@ -2,11 +2,16 @@
 //! `export_plugin` (the fragment for `pair_style tabor`) against the scenes'
 //! numbers computed here by hand: E* = E/(2(1 − ν²)) for two equal spheres, w, Λ,
 //! the Kuwabara-Kono time A = 4η(1 − ν²)/E of two equal Kelvin-Voigt bodies, the
-//! neighbor skin against the interaction range, and the refusals.
+//! neighbor skin against the interaction range, the pull-off force against
+//! Maugis's own solution and the restitution against a velocity-Verlet run of the
+//! plugin's force law, and the refusals.
 
 use std::f64::consts::PI;
 use std::path::PathBuf;
-use tabor_lammps::{export_plugin, ExportError, PluginModel};
+use tabor_ffi::{ContactLaw, TaborHistory};
+use tabor_lammps::{
+    export_plugin, plugin_load_command, ExportError, PluginModel, PLUGIN_RESTITUTION_ERROR,
+};
 use tabor_scene::Scene;
 
 fn scene(path: &str) -> Scene {
@@ -49,9 +54,17 @@ fn maugis_fragment_carries_the_scene_numbers() {
     assert!((n[0] / e_star - 1.0).abs() < 1e-10, "{} {e_star}", n[0]);
     assert!((n[1] / 0.05 - 1.0).abs() < 1e-10);
     assert!((n[2] / 0.55 - 1.0).abs() < 1e-10);
-    assert!(f.contains("\nplugin load /opt/taborplugin.so\n"));
+    assert!(f.contains("\nplugin load \"/opt/taborplugin.so\"\n"));
+    // a path that does not exist is written, with a warning
+    assert!(f.contains("# WARNING: the plugin /opt/taborplugin.so does not exist"));
+    assert_eq!(x.warnings.len(), 1);
+    assert_eq!(
+        plugin_load_command("/my dir/tabor plugin.so"),
+        "plugin load \"/my dir/tabor plugin.so\""
+    );
     assert!(f.contains("\npair_style tabor\n"));
-    assert!(f.contains("\nnewton off\n"));
+    // legal after create_box: no newton line
+    assert!(!f.lines().any(|l| l.starts_with("newton")));
     assert!(f.contains("\ncomm_modify vel yes\n"));
     assert!(f.contains("# REPRODUCES: tabor's force law itself"));
     assert!(f.contains("# DOES NOT REPRODUCE: tangential"));
@@ -65,22 +78,105 @@ fn maugis_fragment_carries_the_scene_numbers() {
         .expect("skin");
     assert!(skin >= x.interaction_range && x.interaction_range > 0.0);
     assert!((x.interaction_range + x.snap_off_overlap.min(x.jump_in_overlap)).abs() < 1e-20);
-    // the Maugis-Dugdale pull-off force lies between JKR's 1.5 and DMT's 2 pi w R*
+    // the Maugis-Dugdale pull-off force lies between JKR's 1.5 and DMT's 2 pi w R*,
+    // at Maugis's own solution (1992, his normalization, solved here)
     let r = 0.5e-6;
     let p = -x.pull_off_force / (PI * 0.05 * r);
     assert!(p > 1.5 && p < 2.0, "{p}");
-    assert!((p - 1.633).abs() < 2e-3, "{p}"); // tabor-ffi README: 1.633 at Λ = 0.55
-                                              // tabor's restitution at the scene speed (test_plugin.py: 0.850192)
+    let lambda = 0.55 / (PI * (9.0f64 / 4.0).cbrt() / 6.0);
+    let maugis = -maugis_pull_off(lambda);
+    assert!((p / maugis - 1.0).abs() < 1e-4, "{p} vs Maugis {maugis}");
+    // tabor's restitution at the scene speed against a velocity-Verlet run of the
+    // plugin's own force law (tabor-ffi), the way LAMMPS integrates it
     let at = x
         .restitution
         .iter()
         .find(|s| (s.speed / 0.08 - 1.0).abs() < 1e-12)
         .expect("scene speed");
+    let law = ContactLaw::maugis_dugdale(x.effective_modulus, x.effective_radius, 0.05, 0.55)
+        .expect("law");
+    let e = verlet_restitution(&law, x.effective_mass, 0.08, x.time_step);
     assert!(
-        (at.restitution - 0.850192).abs() < 1e-6,
-        "{}",
+        (at.restitution - e).abs() < PLUGIN_RESTITUTION_ERROR,
+        "{} vs Verlet {e}",
         at.restitution
     );
+}
+
+/// Maugis (1992) in his own units: lambda = 2 sigma0 (R/(pi w K^2))^(1/3), K = 4E*/3,
+/// A = a (K/(pi w R^2))^(1/3), P = F/(pi w R), m = c/a; with s = sqrt(m^2 - 1),
+/// t = atan(s): the gap condition
+/// lambda A^2/2 [s + (m^2 - 2) t] + 4 lambda^2 A/3 [s t - m + 1] = 1 and
+/// P = A^3 - lambda A^2 (s + m^2 t). Returns min P over A > 0 (the pull-off under
+/// load control), by a scan and golden-section refinement.
+fn maugis_pull_off(lambda: f64) -> f64 {
+    let load = |a: f64| -> f64 {
+        let gap = |m: f64| {
+            let s = (m * m - 1.0).sqrt();
+            let t = s.atan();
+            lambda * a * a / 2.0 * (s + (m * m - 2.0) * t)
+                + 4.0 * lambda * lambda * a / 3.0 * (s * t - m + 1.0)
+                - 1.0
+        };
+        let (mut lo, mut hi) = (1.0, 2.0);
+        while gap(hi) < 0.0 {
+            hi *= 2.0;
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if gap(mid) < 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let m = 0.5 * (lo + hi);
+        let s = (m * m - 1.0).sqrt();
+        a.powi(3) - lambda * a * a * (s + m * m * s.atan())
+    };
+    let n = 4000;
+    let (mut best, mut at) = (f64::INFINITY, 0.0);
+    for i in 1..=n {
+        let a = 3.0 * i as f64 / n as f64;
+        let p = load(a);
+        if p < best {
+            best = p;
+            at = a;
+        }
+    }
+    let (mut lo, mut hi) = (at - 3.0 / n as f64, at + 3.0 / n as f64);
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..100 {
+        let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        if load(x1) < load(x2) {
+            hi = x2;
+        } else {
+            lo = x1;
+        }
+    }
+    load(0.5 * (lo + hi))
+}
+
+/// The restitution of one central impact of reduced mass `m` at `v` (m/s) under
+/// `law`, by velocity Verlet with time step `dt` (s), started outside the
+/// interaction range: what LAMMPS does with pair_style tabor.
+fn verlet_restitution(law: &ContactLaw, m: f64, v: f64, dt: f64) -> f64 {
+    let mut history = TaborHistory::default();
+    let mut d = law.jump_in_overlap().min(0.0) - 20.0 * v * dt;
+    let mut rate = v;
+    let mut f = law.evaluate(d, rate, &mut history).expect("force").force;
+    let mut formed = false;
+    for _ in 0..10_000_000 {
+        let half = rate - 0.5 * dt * f / m;
+        d += dt * half;
+        f = law.evaluate(d, half, &mut history).expect("force").force;
+        rate = half - 0.5 * dt * f / m;
+        formed |= history.contact != 0.0;
+        if formed && history.contact == 0.0 && rate < 0.0 {
+            return -rate / v;
+        }
+    }
+    0.0
 }
 
 #[test]

@@ -2,8 +2,9 @@
 
 use crate::impact::{impact_path, ImpactPath};
 use crate::model::MaugisDugdaleImpact;
-use crate::trace::equilibrium_state_on;
+use crate::trace::{equilibrium_state_near, BranchPoint};
 use crate::units::JkrScales;
+use std::sync::atomic::{AtomicU64, Ordering};
 use tabor_dynamics::{BranchChange, ForceLaw};
 use tabor_numerics::Cost;
 use tabor_restitution::{validate, Result};
@@ -15,11 +16,70 @@ use tabor_restitution::{validate, Result};
 /// (no contact, b̂0 = 2b̂_c (5.41), in case 1), loads and unloads along the
 /// equilibrium branch, and snaps off at its minimum depth (the
 /// displacement-controlled instability) with the speed it has there.
-#[derive(Clone, Debug, PartialEq)]
+///
+/// The state at a depth is solved from the last one solved (Newton's method on the
+/// branch from its tangent, module `trace`), which the law keeps as a hint; the
+/// hint changes the start of the solve, not its result (to the solve's tolerance,
+/// 1e-15 in θ), and the law stays `Sync`.
+#[derive(Clone, Debug)]
 pub struct MaugisDugdaleForceLaw {
     scales: JkrScales,
     path: ImpactPath,
     approaching: bool,
+    hint: Hint,
+}
+
+impl PartialEq for MaugisDugdaleForceLaw {
+    /// Equal laws: the same scales, path and branch (the hint does not count).
+    fn eq(&self, other: &Self) -> bool {
+        self.scales == other.scales
+            && self.path == other.path
+            && self.approaching == other.approaching
+    }
+}
+
+/// The last solved contact-branch state (depth, θ, dd̂/dθ) as bits of `f64`s, NaN
+/// when there is none: atomics, so that the law is `Sync`; a torn or stale value
+/// only gives the solve a worse start.
+#[derive(Debug)]
+struct Hint([AtomicU64; 3]);
+
+impl Hint {
+    fn empty() -> Self {
+        let nan = f64::NAN.to_bits();
+        Hint([
+            AtomicU64::new(nan),
+            AtomicU64::new(nan),
+            AtomicU64::new(nan),
+        ])
+    }
+
+    fn get(&self) -> Option<BranchPoint> {
+        let [d, t, s] = &self.0;
+        let p = BranchPoint {
+            depth: f64::from_bits(d.load(Ordering::Relaxed)),
+            theta: f64::from_bits(t.load(Ordering::Relaxed)),
+            depth_slope: f64::from_bits(s.load(Ordering::Relaxed)),
+        };
+        (p.depth.is_finite() && p.theta.is_finite() && p.depth_slope.is_finite()).then_some(p)
+    }
+
+    fn set(&self, p: BranchPoint) {
+        let [d, t, s] = &self.0;
+        d.store(p.depth.to_bits(), Ordering::Relaxed);
+        t.store(p.theta.to_bits(), Ordering::Relaxed);
+        s.store(p.depth_slope.to_bits(), Ordering::Relaxed);
+    }
+}
+
+impl Clone for Hint {
+    fn clone(&self) -> Self {
+        let h = Hint::empty();
+        if let Some(p) = self.get() {
+            h.set(p);
+        }
+        h
+    }
 }
 
 impl MaugisDugdaleForceLaw {
@@ -29,6 +89,7 @@ impl MaugisDugdaleForceLaw {
             scales: model.scales(),
             path: impact_path(model.tabor_parameter())?,
             approaching: true,
+            hint: Hint::empty(),
         })
     }
 
@@ -49,7 +110,11 @@ impl MaugisDugdaleForceLaw {
         // clamp trial points beyond the snap-off to the snap-off state
         let d = (overlap / self.scales.depth).max(self.path.pull_off.depth);
         let mut cost = Cost::ZERO;
-        equilibrium_state_on(&self.path, d, &mut cost)
+        let (state, next) = equilibrium_state_near(&self.path, d, self.hint.get(), &mut cost)?;
+        if let Some(p) = next {
+            self.hint.set(p);
+        }
+        Ok(state)
     }
 }
 

@@ -98,7 +98,7 @@ impl MaugisDugdaleImpact {
             scales: contact.sphere.scales(),
             tabor_parameter: contact.tabor_parameter,
             effective_mass: validate::positive("effective_mass", effective_mass)?,
-            tolerance: 1e-12,
+            tolerance: tabor_numerics::tolerance::DEFAULT_TOLERANCE,
         })
     }
 

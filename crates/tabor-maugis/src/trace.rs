@@ -2,7 +2,10 @@
 //! loading, unloading, pull-off. For plots, and as the force law of a time-domain
 //! simulation ([`equilibrium_state`]).
 
-use crate::branch::{contact_state, junction_factor, no_contact_pull_off_radius, no_contact_state};
+use crate::branch::{
+    contact_state, junction_factor, no_contact_pull_off_radius, no_contact_state,
+    ContactBranchState,
+};
 use crate::impact::{check_lambda, impact_path, theta_at_depth, PathState, TaborCase};
 use serde::Serialize;
 use std::f64::consts::FRAC_PI_2;
@@ -76,6 +79,32 @@ pub(crate) fn equilibrium_state_on(
     depth: f64,
     cost: &mut Cost,
 ) -> Result<PathState> {
+    equilibrium_state_near(path, depth, None, cost).map(|(s, _)| s)
+}
+
+/// A state on the contact branch where the solve for θ may start: its depth d̂,
+/// θ and the slope dd̂/dθ there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct BranchPoint {
+    pub(crate) depth: f64,
+    pub(crate) theta: f64,
+    pub(crate) depth_slope: f64,
+}
+
+/// [`equilibrium_state_on`] warm-started from `near`, a solved state at a nearby
+/// depth: on the contact branch, Newton's method for `d̂(θ) = depth` starts from
+/// the tangent prediction `θ + (depth − d̂)/(dd̂/dθ)` of `near` (one Newton step
+/// for free) and is kept in the bracket `(0, θ_top]` by bisection; it stops when the
+/// Newton correction is below 1e-15 θ and returns the state evaluated there (two or
+/// three evaluations of the branch for the steps of an ODE integrator, against
+/// eight to ten from a cold start). Also returns the point to start the next solve
+/// from (`None` on the no-contact part, which is solved in closed form).
+pub(crate) fn equilibrium_state_near(
+    path: &crate::impact::ImpactPath,
+    depth: f64,
+    near: Option<BranchPoint>,
+    cost: &mut Cost,
+) -> Result<(PathState, Option<BranchPoint>)> {
     let lambda = path.lambda;
     if depth < path.pull_off.depth {
         return Err(Error::invalid(
@@ -84,9 +113,9 @@ pub(crate) fn equilibrium_state_on(
             "is below the pull-off depth: no equilibrium state with adhesive contact",
         ));
     }
-    let bc = no_contact_pull_off_radius(lambda);
-    let k = junction_factor(lambda);
     if path.case != TaborCase::Contact {
+        let bc = no_contact_pull_off_radius(lambda);
+        let k = junction_factor(lambda);
         // the no-contact part of the stable path: b̂ from b̂_c to K b̂_c
         let junction = no_contact_state(lambda, k * bc);
         if depth <= junction.depth {
@@ -95,29 +124,117 @@ pub(crate) fn equilibrium_state_on(
             let disc = (9.0 * bc * bc + 6.0 * c).max(0.0);
             let b = (3.0 * bc + disc.sqrt()) / 3.0;
             let s = no_contact_state(lambda, b);
-            return Ok(PathState {
-                contact_radius: 0.0,
-                cohesive_radius: b,
-                depth: s.depth,
-                force: s.force,
-                theta: None,
-            });
+            return Ok((
+                PathState {
+                    contact_radius: 0.0,
+                    cohesive_radius: b,
+                    depth: s.depth,
+                    force: s.force,
+                    theta: None,
+                },
+                None,
+            ));
         }
     }
     let theta_top = path.pull_off.theta.unwrap_or(FRAC_PI_2);
     if depth == path.pull_off.depth && path.pull_off.theta.is_some() {
-        return Ok(path.pull_off);
+        return Ok((path.pull_off, None));
     }
-    let theta = theta_at_depth(lambda, depth, theta_top, cost)?;
-    let s = contact_state(lambda, theta);
-    Ok(PathState {
+    let s = match near.and_then(|p| theta_near(lambda, depth, theta_top, p, cost)) {
+        Some(s) => s,
+        None => contact_state(lambda, theta_at_depth(lambda, depth, theta_top, cost)?),
+    };
+    let state = PathState {
         contact_radius: s.contact_radius,
         cohesive_radius: s.cohesive_radius,
         depth: s.depth,
         force: s.force,
-        theta: Some(theta),
-    })
+        theta: Some(s.theta),
+    };
+    let next = BranchPoint {
+        depth: s.depth,
+        theta: s.theta,
+        depth_slope: s.depth_slope,
+    };
+    Ok((state, Some(next)))
 }
+
+/// The contact-branch state at depth `target` by Newton's method from the tangent
+/// prediction of `near`, in the bracket `(0, θ_top]` where d̂ decreases in θ; `None`
+/// when the start is unusable or the iteration does not settle (the caller then
+/// starts cold).
+///
+/// It stops when the Newton correction δ is below 1e-15 θ, returning the state
+/// evaluated there, or earlier, when δ ≤ 1e-8 θ and the error left after the step,
+/// estimated from the quadratic convergence as `C δ²` with `C = |δ|/δ_prev²` (δ_prev
+/// the previous correction, or the tangent prediction's step), is below 1e-17 θ:
+/// then the state at `θ − δ` is the evaluated one moved along its slopes by −δ (an
+/// error of order δ² ≤ 1e-16 θ², below the rounding of the branch itself).
+fn theta_near(
+    lambda: f64,
+    target: f64,
+    theta_top: f64,
+    near: BranchPoint,
+    cost: &mut Cost,
+) -> Option<ContactBranchState> {
+    let (mut lo, mut hi) = (0.0, theta_top);
+    let mut theta = near.theta + (target - near.depth) / near.depth_slope;
+    if !(theta > lo && theta < hi) {
+        theta = near.theta;
+    }
+    if !(theta > lo && theta <= hi) {
+        return None;
+    }
+    let mut previous = theta - near.theta;
+    for _ in 0..WARM_MAX_STEPS {
+        let s = contact_state(lambda, theta);
+        *cost += Cost::new(1, 1);
+        let residual = s.depth - target;
+        if residual > 0.0 {
+            lo = theta;
+        } else {
+            hi = theta;
+        }
+        let step = residual / s.depth_slope;
+        if residual == 0.0 || step.abs() <= 1e-15 * theta {
+            return Some(s);
+        }
+        let left = step * step * step.abs() / (previous * previous);
+        if step.abs() <= 1e-8 * theta
+            && left <= 1e-17 * theta
+            && theta - step < hi
+            && theta - step > lo
+        {
+            return Some(moved(&s, -step, target));
+        }
+        previous = step;
+        theta -= step;
+        if !(theta > lo && theta < hi) {
+            theta = 0.5 * (lo + hi);
+        }
+        if !step.is_finite() || hi - lo <= 1e-15 * theta {
+            return None;
+        }
+    }
+    None
+}
+
+/// The state `s` moved along the branch by `delta` in θ (first order), with its
+/// depth set to `depth` (where the move lands by construction).
+fn moved(s: &ContactBranchState, delta: f64, depth: f64) -> ContactBranchState {
+    ContactBranchState {
+        theta: s.theta + delta,
+        contact_radius: s.contact_radius + s.contact_radius_slope * delta,
+        cohesive_radius: s.cohesive_radius + s.cohesive_radius_slope * delta,
+        depth,
+        force: s.force + s.force_slope * delta,
+        ..*s
+    }
+}
+
+/// Steps of [`theta_near`] before it gives up (Newton from a nearby state takes a
+/// handful; bisection would need about 50 to reach 1e-15).
+const WARM_MAX_STEPS: usize = 60;
 
 /// Traces F̂(d̂), â and b̂ along an impact at Tabor parameter Λ that reaches the
 /// maximum depth `max_depth` (d̂ ≥ −1/Λ), with `points` points on each of the
@@ -199,4 +316,48 @@ pub fn trace_impact(lambda: f64, max_depth: f64, points: usize) -> Result<Vec<Tr
         ));
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod warm_start_tests {
+    use super::*;
+
+    #[test]
+    fn warm_started_states_equal_the_cold_ones() {
+        // Depths as an integrator visits them (steps of 1e-3 ... 0.3 of the range,
+        // both ways): each state solved from the previous one equals the cold
+        // solve to 1e-13 of the force and radius scales plus what the rounding of
+        // the depth leaves open near pull-off, where d → θ is ill-conditioned.
+        for lambda in [0.5, 1.0, 3.0, 100.0] {
+            let path = impact_path(lambda).unwrap();
+            let (lo, hi) = (path.pull_off.depth, path.pull_off.depth + 6.0);
+            for step in [1e-3, 3e-2, 0.3] {
+                let mut near = None;
+                let mut d = hi;
+                let mut cost = Cost::ZERO;
+                while d > lo {
+                    let (warm, next) = equilibrium_state_near(&path, d, near, &mut cost).unwrap();
+                    let cold = equilibrium_state_on(&path, d, &mut cost).unwrap();
+                    // θ is fixed by d̂ to 8 ε |d̂| / |dd̂/dθ| (rounding of the depth)
+                    let c = contact_state(lambda, cold.theta.unwrap_or(FRAC_PI_2));
+                    let dtheta = 8.0 * f64::EPSILON * d.abs().max(1.0) / c.depth_slope.abs();
+                    let scale = 1e-13 * (1.0 + cold.force.abs()) + c.force_slope.abs() * dtheta;
+                    let radius_scale =
+                        1e-13 * (1.0 + cold.contact_radius) + c.contact_radius_slope.abs() * dtheta;
+                    assert!(
+                        (warm.force - cold.force).abs() <= scale,
+                        "Λ = {lambda}, d = {d}: {} vs {}",
+                        warm.force,
+                        cold.force
+                    );
+                    assert!(
+                        (warm.contact_radius - cold.contact_radius).abs() <= radius_scale,
+                        "Λ = {lambda}, d = {d}"
+                    );
+                    near = next;
+                    d -= step * (hi - lo);
+                }
+            }
+        }
+    }
 }

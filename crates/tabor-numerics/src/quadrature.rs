@@ -56,8 +56,9 @@ impl QuadTolerance {
 }
 
 impl Default for QuadTolerance {
+    /// Relative [`DEFAULT_TOLERANCE`](crate::tolerance::DEFAULT_TOLERANCE) (1e-12).
     fn default() -> Self {
-        QuadTolerance::relative(1e-12)
+        QuadTolerance::relative(crate::tolerance::DEFAULT_TOLERANCE)
     }
 }
 

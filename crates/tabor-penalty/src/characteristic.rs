@@ -268,7 +268,7 @@ impl ContactCharacteristic {
             let w = validate::finite("oscillation_loss", scale * (a / 3.0 + half_minus_psi))?;
             return Ok(EnergyLoss::closed_form(
                 w,
-                "seed 002 piecewise-linear characteristic: closed-form hysteresis area",
+                "numpedia piecewise-linear contact characteristic: closed-form hysteresis area",
             ));
         }
         // Phase φ ∈ [φ_c, π] of the closing half: h = H cos φ, |v| = H ω sin φ,
@@ -285,7 +285,7 @@ impl ContactCharacteristic {
         };
         let tol = QuadTolerance {
             absolute: scale * 1e-15,
-            relative: 1e-12,
+            relative: tabor_numerics::tolerance::DEFAULT_TOLERANCE,
         };
         let mut joules = 0.0;
         let mut error = 0.0;
@@ -305,7 +305,7 @@ impl ContactCharacteristic {
         Ok(EnergyLoss {
             joules: joules.max(0.0),
             error_estimate: error,
-            branch: "seed 002 rounded characteristic: hysteresis area by quadrature".into(),
+            branch: "numpedia rounded contact characteristic: hysteresis area by quadrature".into(),
             cost,
         })
     }
@@ -315,7 +315,7 @@ impl ContactCharacteristic {
 impl ForceLaw for ContactCharacteristic {
     fn name(&self) -> String {
         format!(
-            "seed-002 contact characteristic (k = {:e} N/m, eps = {:e} m, V = {:e} m/s)",
+            "numpedia contact characteristic (k = {:e} N/m, eps = {:e} m, V = {:e} m/s)",
             self.stiffness, self.rounding, self.loss_speed
         )
     }

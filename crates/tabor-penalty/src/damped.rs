@@ -28,13 +28,6 @@ pub enum DampingModel {
 }
 
 impl DampingModel {
-    /// All three, in historical order.
-    pub const ALL: [DampingModel; 3] = [
-        DampingModel::HuntCrossley,
-        DampingModel::LankaraniNikravesh,
-        DampingModel::Flores,
-    ];
-
     /// The model's name, as in the literature.
     pub fn name(self) -> &'static str {
         match self {

@@ -22,12 +22,16 @@
 //!   ([`PenaltyStiffness::hertz`]) or given by the user, checked by a simulated
 //!   impact (`tabor_dynamics::simulate_impact`; both laws implement `ForceLaw`).
 //!
+//! [`PenaltyLaw`] is the menu the front ends name the laws by (`ALL`, `as_str`,
+//! `FromStr`).
+//!
 //! Every public function validates its input and returns
 //! `tabor_restitution::Error` naming the parameter and its value.
 
 mod bridge;
 mod characteristic;
 mod damped;
+mod menu;
 mod series;
 mod valid;
 
@@ -37,6 +41,7 @@ pub use characteristic::{
     ContactCharacteristic,
 };
 pub use damped::{damped_restitution, exact_damping_factor, DampedPowerLaw, DampingModel};
+pub use menu::PenaltyLaw;
 /// The simulator the laws plug into (re-exported from `tabor-dynamics`, seed 000
 /// eq. (5.5) generalized to `m d̈ = −F(d, ḋ)`).
 pub use tabor_dynamics::{simulate_impact, ForceLaw, ImpactSimulation, SimulationSettings};

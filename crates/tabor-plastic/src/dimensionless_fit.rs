@@ -124,7 +124,7 @@ impl DimensionlessFit {
 
 impl ImpactModel for DimensionlessFit {
     fn name(&self) -> String {
-        "dimensionless FEM fit (seed 001)".into()
+        "dimensionless FEM fit (Chin. J. Theor. Appl. Mech.)".into()
     }
     fn effective_mass(&self) -> f64 {
         self.mass
@@ -140,9 +140,13 @@ impl ImpactModel for DimensionlessFit {
         )?;
         let branch = match fit.clamping {
             Clamping::None if impact_speed < self.yield_velocity => "elastic (v0 < v_y), eq. (12)",
-            Clamping::None => "fitted formula, seed 001 eq. (19)",
-            Clamping::ToOne => "fitted formula > 1, clamped to 1 (seed 001 eq. (19))",
-            Clamping::ToZero => "fitted formula < 0, clamped to 0 (seed 001 eq. (19))",
+            Clamping::None => "fitted formula, eq. (19) of the dimensionless FEM fit",
+            Clamping::ToOne => {
+                "fitted formula > 1, clamped to 1 (eq. (19) of the dimensionless FEM fit)"
+            }
+            Clamping::ToZero => {
+                "fitted formula < 0, clamped to 0 (eq. (19) of the dimensionless FEM fit)"
+            }
         };
         Ok(EnergyLoss::closed_form((1.0 - e * e) * kinetic, branch))
     }

@@ -20,6 +20,9 @@
 //!
 //! [`YieldVelocity`]: the impact speed where yield begins, for every model above.
 //!
+//! [`PlasticModel`] and [`AdhesivePlasticity`] are the menus the front ends name
+//! these models by (`ALL`, `as_str`, `FromStr`).
+//!
 //! [`materials`] holds the comparison cases of seed 000 Table 5.2 and seed 001 Table 3.
 //!
 //! ```
@@ -41,6 +44,7 @@ mod impact;
 mod jackson_green;
 mod loading;
 pub mod materials;
+mod menu;
 mod superposition;
 mod util;
 mod yield_velocity;
@@ -60,6 +64,7 @@ pub use jackson_green::{
 pub use loading::{
     Interpolation, LoadingLaw, Thornton, TurningPoint, DEFAULT_PLASTIC_ONSET, DEFAULT_PLASTIC_SLOPE,
 };
+pub use menu::{AdhesivePlasticity, PlasticModel};
 pub use superposition::Superposition;
 pub use tabor_dynamics::SimulationSettings;
 pub use tabor_restitution::{EnergyLoss, Error, Result};

@@ -38,7 +38,7 @@ impl Material {
 
 /// Seed 000, Table 5.2: aluminium oxide (the sphere).
 pub const ALUMINA_TABLE_5_2: Material = Material {
-    name: "alumina (seed 000, Table 5.2)",
+    name: "alumina (Willert 2020, Table 5.2)",
     youngs_modulus: 360e9,
     poisson_ratio: 0.23,
     yield_stress: None,
@@ -46,7 +46,7 @@ pub const ALUMINA_TABLE_5_2: Material = Material {
 };
 /// Seed 000, Table 5.2: steel plate (Vickers hardness 3.09 GPa after Kharaz & Gorham).
 pub const STEEL_TABLE_5_2: Material = Material {
-    name: "steel (seed 000, Table 5.2)",
+    name: "steel (Willert 2020, Table 5.2)",
     youngs_modulus: 206e9,
     poisson_ratio: 0.29,
     yield_stress: Some(1030e6),
@@ -54,7 +54,7 @@ pub const STEEL_TABLE_5_2: Material = Material {
 };
 /// Seed 000, Table 5.2: aluminium plate (Vickers hardness 1.14 GPa).
 pub const ALUMINIUM_TABLE_5_2: Material = Material {
-    name: "aluminium (seed 000, Table 5.2)",
+    name: "aluminium (Willert 2020, Table 5.2)",
     youngs_modulus: 70e9,
     poisson_ratio: 0.345,
     yield_stress: Some(380e6),
@@ -67,7 +67,7 @@ pub const SPHERE_MASS_SECTION_5_5_2: f64 = 0.25e-3;
 
 /// Seed 001, Table 3: aluminium oxide sphere (density from MatWeb, as cited there).
 pub const ALUMINA_TABLE_3: Material = Material {
-    name: "alumina (seed 001, Table 3)",
+    name: "alumina (dimensionless FEM fit, Table 3)",
     youngs_modulus: 370e9,
     poisson_ratio: 0.22,
     yield_stress: None,
@@ -75,7 +75,7 @@ pub const ALUMINA_TABLE_3: Material = Material {
 };
 /// Seed 001, Table 3: aluminium substrate.
 pub const ALUMINIUM_TABLE_3: Material = Material {
-    name: "aluminium (seed 001, Table 3)",
+    name: "aluminium (dimensionless FEM fit, Table 3)",
     youngs_modulus: 68e9,
     poisson_ratio: 0.33,
     yield_stress: Some(0.38e9),
@@ -83,7 +83,7 @@ pub const ALUMINIUM_TABLE_3: Material = Material {
 };
 /// Seed 001, Table 3: steel substrate.
 pub const STEEL_TABLE_3: Material = Material {
-    name: "steel (seed 001, Table 3)",
+    name: "steel (dimensionless FEM fit, Table 3)",
     youngs_modulus: 200e9,
     poisson_ratio: 0.29,
     yield_stress: Some(1.03e9),

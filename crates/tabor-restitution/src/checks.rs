@@ -38,7 +38,7 @@ impl QuasiStaticCheck {
             message: format!(
                 "impact speed is not small against the elastic wave speed {:.3e} m/s: \
                  (v0/v_el)^(3/5) = {:.3e}; energy radiated as elastic waves is neglected \
-                 (seed 000 eq. (5.4))",
+                 (Willert 2020, eq. (5.4))",
                 self.wave_speed, self.hunter_parameter
             ),
         })
@@ -98,7 +98,7 @@ impl ElasticLimitCheck {
             code: "elastic-limit",
             message: format!(
                 "maximum contact pressure {:.3e} Pa exceeds the yield onset 1.6 sigma_Y = {:.3e} Pa: \
-                 the impact is not elastic (seed 000 eq. (5.13))",
+                 the impact is not elastic (Willert 2020, eq. (5.13))",
                 self.max_pressure, self.yield_pressure
             ),
         })

@@ -13,12 +13,14 @@
 //!   elastic limit (5.13), reported as [`Warning`]s, not errors ([`checks`]).
 //!
 //! It also holds the effective properties of a collision ([`effective`]) and the
-//! input validation every model uses ([`validate`]).
+//! input validation every model uses ([`validate`]), and the surface every choice
+//! menu shares ([`menu`](mod@menu): `ALL`, `as_str`, `FromStr`).
 
 pub mod checks;
 pub mod combine;
 pub mod effective;
 mod error;
+pub mod menu;
 mod model;
 mod outcome;
 pub mod validate;
@@ -27,7 +29,8 @@ pub use checks::Warning;
 pub use combine::LossSum;
 pub use effective::ElasticMaterial;
 pub use error::Error;
-pub use model::{EnergyLoss, ImpactModel};
+pub use menu::{Menu, UnknownChoice};
+pub use model::{EnergyLoss, ImpactModel, SpeedLimit};
 pub use outcome::{
     impact, restitution_from_loss, sticking_velocity, ImpactOutcome, StickingMethod,
     StickingVelocity,

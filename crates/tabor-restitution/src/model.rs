@@ -54,6 +54,22 @@ pub trait ImpactModel {
     fn speed_scale(&self) -> f64 {
         1.0
     }
+
+    /// The highest impact speed at which the model is valid, when it has one (for
+    /// example the small-strain limit of a simulated contact): the
+    /// sticking-velocity search never evaluates the model above it.
+    fn speed_limit(&self) -> Option<SpeedLimit> {
+        None
+    }
+}
+
+/// The highest impact speed at which a model is valid, and why.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct SpeedLimit {
+    /// The limit (m/s, > 0): the model answers at this speed and errs above it.
+    pub speed: f64,
+    /// What ends the validity, for example "small-strain limit".
+    pub reason: &'static str,
 }
 
 macro_rules! forward_impact_model {
@@ -73,6 +89,9 @@ macro_rules! forward_impact_model {
             }
             fn speed_scale(&self) -> f64 {
                 (**self).speed_scale()
+            }
+            fn speed_limit(&self) -> Option<SpeedLimit> {
+                (**self).speed_limit()
             }
         }
     )*};

@@ -94,6 +94,10 @@ pub enum StickingMethod {
     /// The model never sticks at any speed down to 1e-12 of its speed scale; the
     /// reported speed is 0.
     NeverSticks,
+    /// The model sticks at every speed up to its validity limit
+    /// ([`ImpactModel::speed_limit`]); the reported speed is that limit, and no
+    /// sticking velocity exists within the model's validity.
+    SticksUpToLimit,
 }
 
 /// The speed below which the bodies stick (ε = 0).
@@ -114,7 +118,9 @@ pub struct StickingVelocity {
 /// `g(v) = 1 − 2|ΔU(v)|/(m v²)` (which is ε² where the bodies separate), searched
 /// geometrically from [`ImpactModel::speed_scale`] and refined with Brent's method
 /// to the relative tolerance `tolerance`. If several bands of sticking exist, the
-/// crossing nearest the speed scale is returned.
+/// crossing nearest the speed scale is returned. The search stays at or below the
+/// model's [`ImpactModel::speed_limit`]: when the model sticks there too, the
+/// result is [`StickingMethod::SticksUpToLimit`] at the limit.
 pub fn sticking_velocity<M: ImpactModel + ?Sized>(
     model: &M,
     tolerance: f64,
@@ -156,13 +162,19 @@ pub fn sticking_velocity<M: ImpactModel + ?Sized>(
         evaluations: 0,
         failure: None,
     };
-    // Geometric search for a sign change around the speed scale.
+    // Geometric search for a sign change around the speed scale, at or below the
+    // model's validity limit.
     const FACTOR: f64 = 2.0;
     const MAX_STEPS: u32 = 90; // 2^90 ≈ 1e27 either way
-    let g0 = probe.g(scale)?;
+    let limit = model
+        .speed_limit()
+        .map(|l| validate::positive("speed_limit", l.speed))
+        .transpose()?;
+    let start = limit.map_or(scale, |l| scale.min(l));
+    let g0 = probe.g(start)?;
     let (lo, hi) = if g0 > 0.0 {
-        // separates at the scale: go down until it sticks
-        let mut hi = scale;
+        // separates at the start: go down until it sticks
+        let mut hi = start;
         let mut bracket = None;
         for _ in 0..MAX_STEPS {
             let lo = hi / FACTOR;
@@ -186,10 +198,18 @@ pub fn sticking_velocity<M: ImpactModel + ?Sized>(
             }
         }
     } else {
-        let mut lo = scale;
+        let mut lo = start;
         let mut bracket = None;
         for _ in 0..MAX_STEPS {
-            let hi = lo * FACTOR;
+            if limit == Some(lo) {
+                // sticks at the validity limit: no root within it
+                return Ok(StickingVelocity {
+                    speed: lo,
+                    method: StickingMethod::SticksUpToLimit,
+                    cost: probe.cost + Cost::new(probe.evaluations, 0),
+                });
+            }
+            let hi = limit.map_or(lo * FACTOR, |l| (lo * FACTOR).min(l));
             if probe.g(hi)? > 0.0 {
                 bracket = Some((lo, hi));
                 break;

@@ -151,28 +151,38 @@ pub enum Rule {
     /// The sum of the effects' losses, seed 000 (5.109) generalized; reported with
     /// a warning.
     Superposition,
+    /// Adhesion + plasticity where the adhesive-interpolation or
+    /// adhesive-plastic-excess rule takes its lower bound: the superposition (5.109)
+    /// of the adhesive and the non-adhesive plastic losses, which dissipates more
+    /// than the adhesive interpolation model there; reported with the
+    /// superposition's warning. Never returned by [`rule`] (it depends on the
+    /// speed), only in outcomes.
+    SuperpositionBound,
+}
+
+tabor_restitution::menu! {
+    Rule, "combination rule";
+    Elastic => "elastic", "no dissipative effect: the elastic impact (5.5)-(5.12)";
+    Single => "single-effect", "one effect: its own model";
+    AdhesiveInterpolation => "adhesive-interpolation",
+        "JKR fixed grip + interpolation plasticity: (5.111)-(5.126), at least the superposition (5.109)";
+    AdhesivePlasticExcess => "adhesive-plastic-excess",
+        "a range or load-controlled adhesion + plasticity: elastic adhesive loss + the plastic part of (5.111)-(5.126)";
+    ViscousAdhesive => "viscous-adhesive",
+        "adhesion + Kelvin-Voigt viscosity: adhesive force + Kuwabara-Kono force (5.66), simulated";
+    Superposition => "superposition", "the sum of the effects' losses (5.109)";
+    SuperpositionBound => "superposition-bound",
+        "adhesion + plasticity where the adhesive interpolation model dissipates less: the superposition (5.109) as its lower bound";
 }
 
 impl Rule {
-    /// The rule's name in outputs.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Rule::Elastic => "elastic",
-            Rule::Single => "single-effect",
-            Rule::AdhesiveInterpolation => "adhesive-interpolation",
-            Rule::AdhesivePlasticExcess => "adhesive-plastic-excess",
-            Rule::ViscousAdhesive => "viscous-adhesive",
-            Rule::Superposition => "superposition",
-        }
-    }
-
     /// Where the rule comes from.
     pub fn source(self) -> &'static str {
         match self {
-            Rule::Elastic => "seed 000 (5.5)-(5.12): an elastic impact loses nothing",
+            Rule::Elastic => "Willert 2020 (5.5)-(5.12): an elastic impact loses nothing",
             Rule::Single => "the effect's own model (exact reduction: no other effect is used)",
             Rule::AdhesiveInterpolation => {
-                "seed 000 (5.111)-(5.126) (constants in tabor-plastic's README), at least the superposition (5.109) (crates/tabor-scene/README.md)"
+                "Willert 2020 (5.111)-(5.126) (constants in tabor-plastic's README), at least the superposition (5.109) (crates/tabor-scene/README.md)"
             }
             Rule::AdhesivePlasticExcess => {
                 "tabor (crates/tabor-scene/README.md): elastic adhesive loss + the plastic part of (5.111)-(5.126), at least the non-adhesive plastic loss"
@@ -180,7 +190,10 @@ impl Rule {
             Rule::ViscousAdhesive => {
                 "tabor (crates/tabor-viscoadhesive/README.md): adhesive force + Kuwabara-Kono force (5.66) with the adhesive contact radius"
             }
-            Rule::Superposition => "seed 000 (5.109): the losses are added",
+            Rule::Superposition => "Willert 2020 (5.109): the losses are added",
+            Rule::SuperpositionBound => {
+                "Willert 2020 (5.109): the adhesive and plastic losses added, the lower bound of the adhesive interpolation rules where the adhesive interpolation model (5.111)-(5.126) dissipates less (crates/tabor-scene/README.md)"
+            }
         }
     }
 }
@@ -215,13 +228,13 @@ pub fn rule(set: &EffectSet) -> Result<Rule, Refusal> {
     if set.graded && set.plasticity.is_some() {
         return Err(Refusal {
             effect: EffectKind::Plasticity,
-            message: "plasticity on a graded target: no model exists (the plastic models of seed 000 section 5.5 and seed 001 assume a homogeneous half-space)".into(),
+            message: "plasticity on a graded target: no model exists (the plastic models of Willert 2020 section 5.5 and the dimensionless FEM fit assume a homogeneous half-space)".into(),
         });
     }
     if set.graded && set.viscoelasticity.is_some() {
         return Err(Refusal {
             effect: EffectKind::Viscoelasticity,
-            message: "viscoelasticity with a graded target: no model exists (the viscoelastic models of seed 000 section 5.4 assume homogeneous bodies)".into(),
+            message: "viscoelasticity with a graded target: no model exists (the viscoelastic models of Willert 2020 section 5.4 assume homogeneous bodies)".into(),
         });
     }
     if set.viscoelasticity == Some(TwoRelaxationTimes) {

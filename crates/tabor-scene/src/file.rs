@@ -27,6 +27,54 @@ pub struct SceneFile {
     pub plasticity: Option<PlasticityFile>,
     /// The impact (optional: speed).
     pub impact: Option<ImpactFile>,
+    /// Friction, rolling and twisting resistance (optional; LAMMPS `pair granular`
+    /// sub-models), for the oblique impact.
+    pub friction: Option<FrictionFile>,
+}
+
+/// The `[friction]` section: LAMMPS `pair granular`'s tangential, rolling and
+/// twisting sub-models.
+#[derive(Clone, Debug, Default, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct FrictionFile {
+    /// The sliding friction coefficient μ.
+    pub coefficient: f64,
+    /// "mindlin" (default), "mindlin_rescale" or "linear_history".
+    pub tangential: Option<String>,
+    /// k_t: for the Mindlin models the coefficient of the contact radius (Pa;
+    /// default 8 G* from the materials, LAMMPS `mindlin NULL`), for
+    /// `linear_history` the spring (N/m, required).
+    pub tangential_stiffness: Option<f64>,
+    /// x_γ,t: the tangential damping as a multiple of the normal damping
+    /// coefficient (default 0).
+    pub tangential_damping: Option<f64>,
+    /// Rolling resistance `sds`.
+    pub rolling: Option<SdsFile>,
+    /// Twisting resistance: "marshall", or `{ stiffness, damping, coefficient }`
+    /// for `sds`.
+    pub twisting: Option<TwistingFile>,
+}
+
+/// A spring-dashpot-slider (`sds`) as written: stiffness, damping, coefficient.
+#[derive(Clone, Debug, Default, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct SdsFile {
+    /// Stiffness (rolling: N/m; twisting: N m/rad).
+    pub stiffness: f64,
+    /// Damping (rolling: N s/m; twisting: N m s/rad); default 0.
+    pub damping: Option<f64>,
+    /// Coefficient of the limit μ F_n0 (twisting: m).
+    pub coefficient: f64,
+}
+
+/// The twisting model as written: a name or an `sds` table.
+#[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
+#[serde(untagged)]
+pub enum TwistingFile {
+    /// "marshall".
+    Name(String),
+    /// `{ stiffness, damping, coefficient }`: `sds`.
+    Sds(SdsFile),
 }
 
 /// A body as written in a scene file.
@@ -98,8 +146,15 @@ pub struct PlasticityFile {
 #[derive(Clone, Debug, Default, PartialEq, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct ImpactFile {
-    /// Relative normal impact speed (m/s).
+    /// Relative impact speed (m/s).
     pub speed: Option<f64>,
+    /// Degrees between the relative velocity and the line of centres at first
+    /// touch (default 0: central impact).
+    pub angle: Option<f64>,
+    /// Initial angular velocity of the sphere (rad/s, [x, y, z] in the impact frame).
+    pub sphere_spin: Option<[f64; 3]>,
+    /// Initial angular velocity of the target (rad/s).
+    pub target_spin: Option<[f64; 3]>,
 }
 
 /// The format of a scene text.

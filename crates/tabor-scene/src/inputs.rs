@@ -16,7 +16,7 @@ use tabor_restitution::effective::{
 use tabor_restitution::{validate, ElasticMaterial, Error};
 
 /// The default requested relative accuracy.
-pub const DEFAULT_ACCURACY: f64 = 1e-10;
+pub const DEFAULT_ACCURACY: f64 = tabor_numerics::tolerance::ACCURACY;
 
 /// A body of the scene, validated.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -58,32 +58,12 @@ pub struct Adhesion {
     pub separation: SeparationRule,
 }
 
-/// The non-adhesive plasticity model a scene asks for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum PlasticityModel {
-    /// The interpolation model (5.107) (the most complete: beyond the fully plastic
-    /// onset too).
-    Auto,
-    /// Thornton (5.104)-(5.106).
-    Thornton,
-    /// The interpolation model (5.107).
-    Interpolation,
-    /// The Jackson-Green type law (5.108), solved in the time domain.
-    JacksonGreen,
-    /// Seed 001's dimensionless fit.
-    DimensionlessFit,
-}
-
-/// How adhesion and plasticity combine.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum AdhesivePlasticity {
-    /// The adhesive interpolation model (5.111)-(5.125).
-    Interpolation,
-    /// Superposition of the plastic and the JKR losses (5.109)-(5.110).
-    Superposition,
-}
+/// How adhesion and plasticity combine (the menu of `tabor-plastic`).
+pub use tabor_plastic::AdhesivePlasticity;
+/// The plastic-model menu (`tabor-plastic`); a scene's `[plasticity] model` is one
+/// of [`PlasticModel::NON_ADHESIVE`], or `auto` (`None`: the interpolation model
+/// (5.107), the most complete, beyond the fully plastic onset too).
+pub use tabor_plastic::PlasticModel;
 
 /// The validated physics of a scene (what its models are built from): equal
 /// inputs build equal models.
@@ -92,7 +72,7 @@ pub(crate) struct Inputs {
     pub sphere: Body,
     pub target: Body,
     pub adhesion: Option<Adhesion>,
-    pub plasticity: PlasticityModel,
+    pub plasticity: Option<PlasticModel>,
     pub adhesive_plasticity: AdhesivePlasticity,
     pub accuracy: f64,
     pub effective_modulus: f64,
@@ -319,6 +299,18 @@ fn adhesion(a: &AdhesionFile, e: f64, r: f64) -> Result<Adhesion, SceneError> {
             "give at most one of range, cohesive_stress, tabor_parameter, maugis_parameter, tabor_mu",
         ));
     }
+    // every number given is checked, also where it does not enter (Δγ = 0)
+    for (key, value) in [
+        ("range", a.range),
+        ("cohesive_stress", a.cohesive_stress),
+        ("tabor_parameter", a.tabor_parameter),
+        ("maugis_parameter", a.maugis_parameter),
+        ("tabor_mu", a.tabor_mu),
+    ] {
+        if let Some(x) = value {
+            validate::positive(key, x).map_err(in_field("adhesion", key))?;
+        }
+    }
     let range = if w == 0.0 || given == 0 {
         AdhesionRange::Jkr
     } else if let Some(h) = a.range {
@@ -347,14 +339,12 @@ fn adhesion(a: &AdhesionFile, e: f64, r: f64) -> Result<Adhesion, SceneError> {
         AdhesionRange::Jkr
     };
     let separation = match a.separation.as_deref() {
-        None | Some("fixed-grip") => SeparationRule::FixedGrip,
-        Some("load-controlled") => SeparationRule::LoadControlled,
-        Some(other) => {
-            return Err(SceneError::field(
-                "adhesion.separation",
-                format!("unknown rule \"{other}\": expected \"fixed-grip\" or \"load-controlled\""),
-            ))
-        }
+        None => SeparationRule::default(),
+        Some(name) => name
+            .parse()
+            .map_err(|e: tabor_restitution::UnknownChoice| {
+                SceneError::field("adhesion.separation", e.to_string())
+            })?,
     };
     Ok(Adhesion {
         work_of_adhesion: w,
@@ -365,31 +355,33 @@ fn adhesion(a: &AdhesionFile, e: f64, r: f64) -> Result<Adhesion, SceneError> {
 
 fn plasticity(
     p: Option<&PlasticityFile>,
-) -> Result<(PlasticityModel, AdhesivePlasticity), SceneError> {
+) -> Result<(Option<PlasticModel>, AdhesivePlasticity), SceneError> {
     let model = match p.and_then(|p| p.model.as_deref()) {
-        None | Some("auto") => PlasticityModel::Auto,
-        Some("thornton") => PlasticityModel::Thornton,
-        Some("interpolation") => PlasticityModel::Interpolation,
-        Some("jackson-green") => PlasticityModel::JacksonGreen,
-        Some("dimensionless-fit") => PlasticityModel::DimensionlessFit,
-        Some(other) => {
-            return Err(SceneError::field(
-                "plasticity.model",
-                format!(
-                    "unknown model \"{other}\": expected auto, thornton, interpolation, jackson-green or dimensionless-fit"
-                ),
-            ))
-        }
+        None | Some("auto") => None,
+        Some(name) => match name.parse::<PlasticModel>() {
+            Ok(m) if !m.is_adhesive() => Some(m),
+            _ => {
+                let names: Vec<&str> = PlasticModel::NON_ADHESIVE
+                    .iter()
+                    .map(|m| m.as_str())
+                    .collect();
+                return Err(SceneError::field(
+                    "plasticity.model",
+                    format!(
+                        "unknown model \"{name}\": expected auto, {} (adhesion and plasticity combine by adhesive_model)",
+                        names.join(", ")
+                    ),
+                ));
+            }
+        },
     };
     let adhesive = match p.and_then(|p| p.adhesive_model.as_deref()) {
-        None | Some("interpolation") => AdhesivePlasticity::Interpolation,
-        Some("superposition") => AdhesivePlasticity::Superposition,
-        Some(other) => {
-            return Err(SceneError::field(
-                "plasticity.adhesive_model",
-                format!("unknown model \"{other}\": expected interpolation or superposition"),
-            ))
-        }
+        None => AdhesivePlasticity::default(),
+        Some(name) => name
+            .parse()
+            .map_err(|e: tabor_restitution::UnknownChoice| {
+                SceneError::field("plasticity.adhesive_model", e.to_string())
+            })?,
     };
     Ok((model, adhesive))
 }

@@ -12,6 +12,8 @@
 //!   sticking velocity, total and per-effect losses, effects used and skipped,
 //!   model, branch, accuracy, cost and warnings ([`Outcome`]);
 //! - [`Scene::sticking_velocity`], [`Scene::simulate`] (time domain);
+//! - [`Scene::oblique`]: the oblique impact (`[friction]`, `[impact] angle`),
+//!   with translation and rotation (`tabor-tangential`);
 //! - [`sweep`]: outcomes over a range of speeds or another parameter, in parallel.
 //!
 //! Effect selection (seed 000 chapter 5 and the issue that specified it):
@@ -22,9 +24,15 @@
 //! form when Λ ≤ Λ1, the numerical Maugis-Dugdale solution otherwise. Plasticity is
 //! used when a yield stress is given and the impact exceeds the yield onset
 //! (adhesive or not); with adhesion it is the adhesive interpolation model
-//! (superposition on request). Viscoelasticity (an incompressible Kelvin-Voigt
-//! body, rigorous model) is used when a viscosity is given and its loss matters;
-//! combined with other losses it is added to them, with a warning.
+//! (superposition on request). Viscoelasticity is used when a viscosity is given
+//! and its loss matters: the contact of both bodies by the correspondence
+//! principle (a viscous body on an elastic one is a standard medium, two viscous
+//! bodies with equal relaxation times a Kelvin-Voigt contact, different ones are
+//! refused). With adhesion on a Kelvin-Voigt contact it is coupled to it in the
+//! time domain (the viscous-adhesive rule, `tabor-viscoadhesive`); otherwise its
+//! loss is added to the others' on the kinetic energy they leave (superposition,
+//! with a warning). The one rule per combination of effects: [`rule`] and the
+//! crate README.
 
 mod builder;
 mod combination;
@@ -32,6 +40,7 @@ mod error;
 pub mod file;
 mod inputs;
 mod models;
+mod oblique;
 mod outcome;
 mod parameter;
 mod scene;
@@ -45,11 +54,12 @@ pub use combination::{
     ViscoKind,
 };
 pub use error::SceneError;
-pub use file::{Format, ParseError, SceneFile};
+pub use file::{Format, FrictionFile, ParseError, SceneFile, SdsFile, TwistingFile};
 pub use inputs::{
-    Adhesion, AdhesionRange, AdhesivePlasticity, Body, PlasticityModel, DEFAULT_ACCURACY,
+    Adhesion, AdhesionRange, AdhesivePlasticity, Body, PlasticModel, DEFAULT_ACCURACY,
 };
 pub use outcome::{Effect, Outcome};
 pub use parameter::SweepParameter;
 pub use scene::Scene;
+pub use select::Sticking;
 pub use sweep::{spaced, sweep};

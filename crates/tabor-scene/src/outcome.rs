@@ -3,7 +3,7 @@
 
 use crate::combination::{Combination, EffectKind, Rule};
 use crate::error::SceneError;
-use crate::select::{is_superposed, Prepared, Selection};
+use crate::select::{is_superposed, Prepared, Selection, Sticking};
 use serde::Serialize;
 use tabor_numerics::Cost;
 use tabor_restitution::checks::{elastic_limit_check, quasi_static_check};
@@ -26,7 +26,10 @@ pub struct Effect {
     pub model: Option<String>,
     /// Its share of the total loss (J), when the total is a sum of the effects'
     /// losses (the shares add up to the total); `None` when the effects are coupled
-    /// (their loss is not a sum) or the effect is not used.
+    /// (their loss is not a sum) or the effect is not used. When the bodies stick
+    /// the whole kinetic energy is lost and the effects' losses add up to more: each
+    /// share is then its loss scaled by (kinetic energy)/(sum of the losses), a
+    /// proportional split.
     pub energy_loss: Option<f64>,
 }
 
@@ -69,8 +72,16 @@ pub struct Outcome {
     pub warnings: Vec<Warning>,
 }
 
-fn effect_list(prepared: &Prepared, selection: &Selection) -> Vec<Effect> {
+fn effect_list(prepared: &Prepared, selection: &Selection, kinetic: f64) -> Vec<Effect> {
     let models = prepared.models();
+    // sticking: the effects' losses exceed the kinetic energy, all of which is
+    // lost; split it in proportion to them
+    let total = selection.evaluation.loss.joules;
+    let split = if total > kinetic {
+        kinetic / total
+    } else {
+        1.0
+    };
     let inputs = prepared.inputs();
     let mut effects = vec![Effect {
         name: EffectKind::Elasticity,
@@ -131,7 +142,8 @@ fn effect_list(prepared: &Prepared, selection: &Selection) -> Vec<Effect> {
             .parts
             .iter()
             .find(|(k, _)| *k == kind)
-            .and_then(|(_, l)| *l);
+            .and_then(|(_, l)| *l)
+            .map(|l| l * split);
         let coupled = if share.is_none() {
             format!(
                 "; coupled in the {} model",
@@ -221,8 +233,29 @@ impl Prepared<'_> {
         )
         .map_err(err)?;
         let restitution = restitution_from_loss(joules, m, v).map_err(err)?;
-        let (sticking, sticking_cost) = self.sticking()?;
         let mut warnings = Vec::new();
+        // the answer at v never fails because of another speed: a sticking velocity
+        // that cannot be found is reported, not raised
+        let (sticking, sticking_cost) = match self.sticking() {
+            Ok((s, cost)) => {
+                if let Sticking::UpToLimit { limit, reason } = s {
+                    warnings.push(Warning {
+                        code: "sticks-up-to-limit",
+                        message: format!(
+                            "sticks at every speed up to {limit:.6e} m/s ({reason}): no sticking velocity within the model's validity"
+                        ),
+                    });
+                }
+                (s.velocity(), cost)
+            }
+            Err(e) => {
+                warnings.push(Warning {
+                    code: "sticking-velocity-unknown",
+                    message: format!("the sticking velocity could not be found: {e}"),
+                });
+                (None, Cost::ZERO)
+            }
+        };
         if let Some((e, rho)) = scene.wave_speed_body() {
             if let Some(w) = quasi_static_check(v, e, rho).map_err(err)?.warning() {
                 warnings.push(w);
@@ -253,7 +286,7 @@ impl Prepared<'_> {
         if selection.evaluation.rule == Rule::ViscousAdhesive {
             warnings.extend(viscous_adhesive_remark(self, v));
         }
-        let effects = effect_list(self, &selection);
+        let effects = effect_list(self, &selection, kinetic);
         let combination = selection.combination();
         let e = selection.evaluation;
         Ok(Outcome {

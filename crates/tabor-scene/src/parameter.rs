@@ -16,11 +16,13 @@ pub enum SweepParameter {
     TaborParameter,
     /// The target's yield stress (Pa).
     YieldStress,
+    /// The impact angle (degrees; the oblique impact, [`crate::Scene::oblique`]).
+    Angle,
 }
 
 impl SweepParameter {
     /// The parameter named as on the command line (`speed`, `sphere-radius`,
-    /// `work-of-adhesion`, `tabor-parameter`, `yield-stress`).
+    /// `work-of-adhesion`, `tabor-parameter`, `yield-stress`, `angle`).
     pub fn from_name(name: &str) -> Option<Self> {
         Some(match name {
             "speed" => SweepParameter::Speed,
@@ -28,6 +30,7 @@ impl SweepParameter {
             "work-of-adhesion" => SweepParameter::WorkOfAdhesion,
             "tabor-parameter" => SweepParameter::TaborParameter,
             "yield-stress" => SweepParameter::YieldStress,
+            "angle" => SweepParameter::Angle,
             _ => return None,
         })
     }
@@ -40,6 +43,7 @@ impl SweepParameter {
             SweepParameter::WorkOfAdhesion => "work-of-adhesion",
             SweepParameter::TaborParameter => "tabor-parameter",
             SweepParameter::YieldStress => "yield-stress",
+            SweepParameter::Angle => "angle",
         }
     }
 }

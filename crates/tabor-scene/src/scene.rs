@@ -4,10 +4,10 @@
 use crate::combination::Combination;
 use crate::error::{impact_speed, in_field, located, SceneError, Source};
 use crate::file::{parse, AdhesionFile, Format, ImpactFile, SceneFile};
-use crate::inputs::{Adhesion, AdhesivePlasticity, Body, Inputs, PlasticityModel};
+use crate::inputs::{Adhesion, AdhesivePlasticity, Body, Inputs, PlasticModel};
 use crate::outcome::Outcome;
 use crate::parameter::SweepParameter;
-use crate::select::{Cache, Prepared};
+use crate::select::{Cache, Prepared, Sticking};
 use rayon::prelude::*;
 use std::path::Path;
 use tabor_dynamics::{ImpactSimulation, SimulationSettings};
@@ -32,8 +32,9 @@ pub struct Scene {
     pub target: Body,
     /// Adhesion, when given.
     pub adhesion: Option<Adhesion>,
-    /// The plasticity model.
-    pub plasticity: PlasticityModel,
+    /// The plasticity model: one of [`PlasticModel::NON_ADHESIVE`], or `None`
+    /// (`auto`: the interpolation model (5.107)).
+    pub plasticity: Option<PlasticModel>,
     /// How adhesion and plasticity combine.
     pub adhesive_plasticity: AdhesivePlasticity,
     /// The impact speed, when given (m/s).
@@ -52,6 +53,7 @@ impl Scene {
     /// Validates scene data (from a file or the [`SceneBuilder`](crate::SceneBuilder)).
     pub fn from_data(data: SceneFile) -> Result<Scene, SceneError> {
         let inputs = Inputs::validate(&data)?;
+        crate::oblique::validate_data(&data)?;
         let speed = match data.impact.as_ref().and_then(|i| i.speed) {
             None => None,
             Some(v) => Some(validate::positive("speed", v).map_err(in_field("impact", "speed"))?),
@@ -152,12 +154,48 @@ impl Scene {
         self.inputs().wave_speed_body()
     }
 
-    /// The same scene with `parameter` set to `value`, validated again.
+    /// Whether the scene has `parameter` to vary: an error names the parameter and
+    /// the section that would give it (a sweep never adds an effect the scene does
+    /// not call for). The work of adhesion and the Tabor parameter need an
+    /// `[adhesion]` section, the yield stress a `yield_stress` on a body.
+    pub fn check_parameter(&self, parameter: SweepParameter) -> Result<(), SceneError> {
+        let missing =
+            |field: &str, message: String| Err(self.locate(SceneError::field(field, message)));
+        match parameter {
+            SweepParameter::Speed | SweepParameter::SphereRadius => Ok(()),
+            SweepParameter::WorkOfAdhesion | SweepParameter::TaborParameter
+                if self.data.adhesion.is_none() =>
+            {
+                missing(
+                    "adhesion",
+                    format!(
+                        "the scene has no {}: add an [adhesion] section (work_of_adhesion, and a range or tabor_parameter) to sweep it",
+                        parameter.name()
+                    ),
+                )
+            }
+            SweepParameter::YieldStress
+                if self.data.sphere.yield_stress.is_none()
+                    && self.data.target.yield_stress.is_none() =>
+            {
+                missing(
+                    "target.yield_stress",
+                    "the scene has no yield-stress: give the target (or the sphere) a yield_stress (Pa) to sweep it".into(),
+                )
+            }
+            _ => Ok(()),
+        }
+    }
+
+    /// The same scene with `parameter` set to `value`, validated again; an error
+    /// when the scene lacks the parameter ([`Scene::check_parameter`]). The yield
+    /// stress set is the target's when it has one, else the sphere's.
     pub fn with_parameter(
         &self,
         parameter: SweepParameter,
         value: f64,
     ) -> Result<Scene, SceneError> {
+        self.check_parameter(parameter)?;
         let mut data = self.data.clone();
         match parameter {
             SweepParameter::Speed => return self.with_speed(value),
@@ -175,7 +213,16 @@ impl Scene {
                 a.tabor_mu = None;
                 a.tabor_parameter = Some(value);
             }
-            SweepParameter::YieldStress => data.target.yield_stress = Some(value),
+            SweepParameter::YieldStress => {
+                if data.target.yield_stress.is_some() {
+                    data.target.yield_stress = Some(value)
+                } else {
+                    data.sphere.yield_stress = Some(value)
+                }
+            }
+            SweepParameter::Angle => {
+                data.impact.get_or_insert_with(ImpactFile::default).angle = Some(value)
+            }
         }
         let mut s = Scene::from_data(data).map_err(|e| self.locate(e))?;
         s.name = self.name.clone();
@@ -233,8 +280,16 @@ impl Scene {
     }
 
     /// The sticking velocity (m/s) of the scene's model (the root of ε(v) = 0 of the
-    /// model that answers at each speed), or `None` when the bodies never stick.
+    /// model that answers at each speed), or `None` when the bodies never stick or
+    /// stick at every speed the model is valid for ([`Scene::sticking`] tells which).
     pub fn sticking_velocity(&self) -> Result<Option<f64>, SceneError> {
+        Ok(self.sticking()?.velocity())
+    }
+
+    /// Where the bodies stick, as far as the scene's model is valid: below a
+    /// sticking velocity, never, or at every speed up to the model's validity
+    /// limit (the small-strain limit of the simulated viscous-adhesive model).
+    pub fn sticking(&self) -> Result<Sticking, SceneError> {
         Ok(self.prepared()?.sticking()?.0)
     }
 

@@ -6,10 +6,11 @@ use crate::combination::{Combination, EffectKind, EffectSet, Rule};
 use crate::error::{located, SceneError, Source};
 use crate::inputs::Inputs;
 use crate::models::{Evaluation, Models};
+use serde::Serialize;
 use std::fmt;
 use std::sync::{Arc, OnceLock};
 use tabor_numerics::Cost;
-use tabor_restitution::{sticking_velocity, EnergyLoss, ImpactModel, StickingMethod};
+use tabor_restitution::{sticking_velocity, EnergyLoss, ImpactModel, SpeedLimit, StickingMethod};
 
 /// Why an effect given by the scene does not enter the result at one speed.
 pub(crate) struct Dropped {
@@ -35,7 +36,7 @@ impl Selection {
 pub(crate) struct Built {
     inputs: Inputs,
     models: Models,
-    sticking: OnceLock<Result<(Option<f64>, Cost), SceneError>>,
+    sticking: OnceLock<Result<(Sticking, Cost), SceneError>>,
 }
 
 impl Built {
@@ -159,7 +160,12 @@ impl<'a> Prepared<'a> {
                 continue;
             }
             let without = used.without(effect);
-            let reduced = models.evaluate(&without, speed).map_err(locate)?;
+            // a reduced set its models cannot answer (the Kelvin-Voigt sphere of a
+            // coupled viscous-adhesive scene beyond its range) does not show the
+            // effect negligible: the effect stays
+            let Ok(reduced) = models.evaluate(&without, speed) else {
+                continue;
+            };
             let marginal = evaluation.loss.joules - reduced.loss.joules;
             if marginal.abs() < threshold {
                 dropped.push(Dropped {
@@ -181,21 +187,72 @@ impl<'a> Prepared<'a> {
         })
     }
 
-    /// The sticking velocity of the scene's model (the root of ε(v) = 0 of the
-    /// model that answers at each speed), `None` when the bodies never stick.
-    pub(crate) fn sticking(&self) -> Result<(Option<f64>, Cost), SceneError> {
+    /// Where the scene's model sticks (the root of ε(v) = 0 of the model that
+    /// answers at each speed, searched within the model's validity), with the
+    /// work spent.
+    pub(crate) fn sticking(&self) -> Result<(Sticking, Cost), SceneError> {
         self.built
             .sticking
             .get_or_init(|| {
+                if self.models().candidates.adhesion.is_none() {
+                    // without adhesion nothing holds the bodies together: every
+                    // model of tabor rebounds (ε > 0)
+                    return Ok((Sticking::Never, Cost::ZERO));
+                }
                 let whole = SceneModel { prepared: self };
                 let vc = sticking_velocity(&whole, self.inputs().accuracy.max(1e-14))
                     .map_err(SceneError::model)?;
-                Ok(match vc.method {
-                    StickingMethod::NeverSticks => (None, vc.cost),
-                    _ => (Some(vc.speed), vc.cost),
-                })
+                let sticking = match vc.method {
+                    StickingMethod::NeverSticks => Sticking::Never,
+                    StickingMethod::SticksUpToLimit => Sticking::UpToLimit {
+                        limit: vc.speed,
+                        reason: whole.speed_limit().map_or("validity limit", |l| l.reason),
+                    },
+                    StickingMethod::ClosedForm | StickingMethod::Root => {
+                        Sticking::Below { velocity: vc.speed }
+                    }
+                };
+                Ok((sticking, vc.cost))
             })
             .clone()
+    }
+}
+
+/// Where a scene's bodies stick, as far as its model is valid.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(rename_all = "kebab-case", tag = "kind")]
+pub enum Sticking {
+    /// The bodies stick below the sticking velocity `velocity` (m/s) and rebound
+    /// above it (the root of ε(v) = 0, (5.38) for a speed-independent loss).
+    Below {
+        /// The sticking velocity (m/s).
+        velocity: f64,
+    },
+    /// The bodies never stick (no adhesion, or ε > 0 down to 1e-12 of the speed
+    /// scale).
+    Never,
+    /// The bodies stick at every speed up to `limit` (m/s), where the model's
+    /// validity ends: no sticking velocity exists within it.
+    UpToLimit {
+        /// The highest speed at which the model is valid (m/s).
+        limit: f64,
+        /// What ends the validity ("small-strain limit").
+        reason: &'static str,
+    },
+}
+
+impl Sticking {
+    /// The sticking velocity, when one exists within the model's validity.
+    pub fn velocity(&self) -> Option<f64> {
+        match self {
+            Sticking::Below { velocity } => Some(*velocity),
+            Sticking::Never | Sticking::UpToLimit { .. } => None,
+        }
+    }
+
+    /// Whether the bodies stick at some speed.
+    pub fn sticks_ever(&self) -> bool {
+        !matches!(self, Sticking::Never)
     }
 }
 
@@ -242,9 +299,15 @@ impl ImpactModel for SceneModel<'_, '_> {
             1.0
         }
     }
+    /// The lowest validity limit of the models the scene can use (the
+    /// small-strain limit of the simulated viscous-adhesive model).
+    fn speed_limit(&self) -> Option<SpeedLimit> {
+        let m = self.prepared.models();
+        m.viscous_adhesive.as_ref().and_then(|v| v.speed_limit())
+    }
 }
 
 /// Whether a rule's result is a superposition that deserves a warning.
 pub(crate) fn is_superposed(rule: Rule) -> bool {
-    rule == Rule::Superposition
+    matches!(rule, Rule::Superposition | Rule::SuperpositionBound)
 }

@@ -19,6 +19,10 @@ use tabor_visco::contact::StandardMediumSphere;
 use tabor_visco::models::KelvinVoigtSphere;
 use tabor_visco::SphereModel;
 
+mod common;
+
+use common::{rebound, Grains};
+
 const PI: f64 = std::f64::consts::PI;
 
 /// 1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2, written out here.
@@ -192,11 +196,20 @@ fn adhesive_interpolation_cell_equals_the_plastic_crate() {
     for f in [1.5, 3.0, 10.0, 30.0, 100.0, 300.0] {
         let v = f * ai.yield_velocity().max(interp.yield_velocity());
         let o = s.outcome_at(v).unwrap();
-        assert_eq!(o.combination.rule, Rule::AdhesiveInterpolation);
         // max(L_AI, L_JKR + L_interpolation), written out here
         let coupled = ai.energy_loss(v).unwrap().joules;
         let superposed = jkr.energy_loss(v).unwrap().joules + interp.energy_loss(v).unwrap().joules;
         assert_relative_eq!(o.energy_loss, coupled.max(superposed), max_relative = 1e-12);
+        // the branch names the rule: the superposition bound is its own rule, with
+        // the superposition's warning (issue 22 item 3)
+        let superposition_warned = o.warnings.iter().any(|w| w.code == "superposed-losses");
+        if coupled >= superposed {
+            assert_eq!(o.combination.rule, Rule::AdhesiveInterpolation);
+            assert!(!superposition_warned);
+        } else {
+            assert_eq!(o.combination.rule, Rule::SuperpositionBound);
+            assert!(superposition_warned, "{:?}", o.warnings);
+        }
         if coupled > superposed {
             seen.0 = true;
             assert_relative_eq!(
@@ -229,7 +242,9 @@ fn range_with_plasticity_keeps_the_range() {
     let md_stick = tabor_restitution::sticking_velocity(&md, 1e-12)
         .unwrap()
         .speed;
-    assert!((md_stick - 0.0104).abs() < 0.0005, "{md_stick}");
+    // 0.0106480241 m/s: the independent value of issue 22 (was checked only as
+    // 0.0104 ± 5e-4)
+    assert!((md_stick / 0.0106480241 - 1.0).abs() < 1e-8, "{md_stick}");
     let o = s.outcome().unwrap();
     assert_relative_eq!(o.sticking_velocity.unwrap(), md_stick, max_relative = 1e-8);
     assert!(!o.sticks && o.impact_speed > md_stick);
@@ -257,11 +272,15 @@ fn range_with_plasticity_keeps_the_range() {
     .unwrap();
     let onset = ai.yield_velocity();
     let v = 3.0 * onset;
-    let expected = md.energy_loss(v).unwrap().joules
-        + (ai.energy_loss(v).unwrap().joules - jkr.energy_loss(v).unwrap().joules)
-            .max(interp.energy_loss(v).unwrap().joules);
+    let excess = ai.energy_loss(v).unwrap().joules - jkr.energy_loss(v).unwrap().joules;
+    let plastic = interp.energy_loss(v).unwrap().joules;
+    let expected = md.energy_loss(v).unwrap().joules + excess.max(plastic);
     let o = s.outcome_at(v).unwrap();
-    assert_eq!(o.combination.rule, Rule::AdhesivePlasticExcess);
+    // here the non-adhesive plastic loss is the larger: the superposition bound
+    // answers, named as such (was labelled adhesive-plastic-excess)
+    assert!(excess < plastic, "the bound branch: {excess} vs {plastic}");
+    assert_eq!(o.combination.rule, Rule::SuperpositionBound);
+    assert!(o.warnings.iter().any(|w| w.code == "superposed-losses"));
     assert_relative_eq!(o.energy_loss, expected, max_relative = 1e-10);
     // the shares add up to the total
     let shares: f64 = o.effects.iter().filter_map(|e| e.energy_loss).sum();
@@ -584,101 +603,14 @@ fn bundled(name: &str) -> Scene {
     Scene::from_path(&dir.join(name)).unwrap()
 }
 
-/// One classical Runge-Kutta step of ẍ = acc(x, ẋ).
-fn rk4(x: f64, u: f64, h: f64, acc: &dyn Fn(f64, f64) -> f64) -> (f64, f64) {
-    let k1 = (u, acc(x, u));
-    let k2 = (
-        u + 0.5 * h * k1.1,
-        acc(x + 0.5 * h * k1.0, u + 0.5 * h * k1.1),
-    );
-    let k3 = (
-        u + 0.5 * h * k2.1,
-        acc(x + 0.5 * h * k2.0, u + 0.5 * h * k2.1),
-    );
-    let k4 = (u + h * k3.1, acc(x + h * k3.0, u + h * k3.1));
-    (
-        x + h / 6.0 * (k1.0 + 2.0 * k2.0 + 2.0 * k3.0 + k4.0),
-        u + h / 6.0 * (k1.1 + 2.0 * k2.1 + 2.0 * k3.1 + k4.1),
-    )
-}
-
-/// Integrates ẍ = acc(x, ẋ) from (0, v0) with `steps` steps per `time_scale` until
-/// `end(x, ẋ)` (positive while in contact) falls to 0 while ẋ < 0; the last step is
-/// shortened by bisection to land on the end. Returns the rebound speed, or 0 when
-/// ẋ turns positive again (caught: sticks).
-fn rebound(
-    v0: f64,
-    time_scale: f64,
-    steps: usize,
-    acc: &dyn Fn(f64, f64) -> f64,
-    end: &dyn Fn(f64, f64) -> f64,
-) -> f64 {
-    let h = time_scale / steps as f64;
-    let (mut x, mut u) = (0.0, v0);
-    let mut turned = false;
-    for _ in 0..100 * steps {
-        let (xn, un) = rk4(x, u, h, acc);
-        if un < 0.0 {
-            turned = true;
-        }
-        if turned && un > 0.0 {
-            return 0.0;
-        }
-        if turned && end(xn, un) <= 0.0 {
-            let (mut lo, mut hi) = (0.0, h);
-            for _ in 0..200 {
-                let mid = 0.5 * (lo + hi);
-                let (xm, um) = rk4(x, u, mid, acc);
-                if end(xm, um) > 0.0 {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
-            return -rk4(x, u, hi, acc).1;
-        }
-        (x, u) = (xn, un);
-    }
-    panic!("no end of contact");
-}
-
 #[test]
 fn bundled_viscoadhesive_scene_against_a_direct_integration() {
     // JKR (fixed grip) + the Kuwabara-Kono force 2 η_c a ḋ with the JKR contact
-    // radius, integrated here with RK4; JKR written out: d(a) = a²/R − √(2πΔγa/E*),
-    // F(a) = 4E*a³/(3R) − √(8πΔγE*a³), snap-off at dd/da = 0.
+    // radius, integrated here with RK4 (tests/common)
     let s = bundled("polymer_grains_viscoadhesive.toml");
-    let (r, dg) = (2.5e-6, 0.04);
-    let m_body = 2e6 / (1.0 - 0.49 * 0.49);
-    let e = m_body / 2.0;
-    let tau = 4.0 * 2e-4 / m_body;
-    let eta_c = e * tau;
-    let m = mass(5e-6, 970.0) / 2.0;
-    let d_of = |a: f64| a * a / r - (2.0 * PI * dg * a / e).sqrt();
-    let f_of = |a: f64| 4.0 * e * a.powi(3) / (3.0 * r) - (8.0 * PI * dg * e * a.powi(3)).sqrt();
-    let a_c = (PI * dg * r * r / (8.0 * e)).cbrt();
-    let d_c = d_of(a_c);
-    let a_of = |d: f64| {
-        // the stable branch a ≥ a_c, where d(a) increases: bisection
-        let (mut lo, mut hi) = (a_c, a_c.max((r * d.abs()).sqrt()) * 4.0 + a_c);
-        while d_of(hi) < d {
-            hi *= 2.0;
-        }
-        for _ in 0..100 {
-            let mid = 0.5 * (lo + hi);
-            if d_of(mid) < d {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        0.5 * (lo + hi)
-    };
-    let acc = |d: f64, u: f64| {
-        let a = a_of(d.max(d_c));
-        -(f_of(a) + 2.0 * eta_c * a * u) / m
-    };
-    let end = |d: f64, _u: f64| d - d_c;
+    let g = Grains::new(2e-4);
+    let (acc, end) = (|d: f64, u: f64| g.acc(d, u), |d: f64, u: f64| g.end(d, u));
+    let (m, r, e) = (g.m, g.r, g.e);
     for v0 in [1.0, 1.5, 3.0] {
         // time scale: the Hertz contact time of this contact, 2.87 (m²/(R E*² v0))^(1/5)
         let t = 2.87 * (m * m / (r * e * e * v0)).powf(0.2);
@@ -750,44 +682,98 @@ fn bundled_range_plastic_scene_below_and_above_the_yield_onset() {
         .unwrap();
     assert_eq!(o.combination.rule, Rule::Single);
     assert_relative_eq!(sim.restitution, o.restitution, max_relative = 1e-6);
-    // the sticking velocity is Maugis-Dugdale's (0.0104 m/s), not JKR's (0.0866)
-    assert!((o.sticking_velocity.unwrap() - 0.0106).abs() < 2e-4);
-    // above it: the excess rule, continuous in the speed through the onset
-    let hi = s.outcome_at(4.0).unwrap();
-    assert_eq!(hi.combination.rule, Rule::AdhesivePlasticExcess);
+    // the sticking velocity is Maugis-Dugdale's, 0.0106480241 m/s (the independent
+    // value of issue 22), not JKR's (0.0866); was checked only as 0.0106 ± 2e-4
     assert!(
-        hi.restitution < 1.0 && hi.restitution > 0.5,
-        "{}",
-        hi.restitution
+        (o.sticking_velocity.unwrap() / 0.0106480241 - 1.0).abs() < 1e-8,
+        "{:?}",
+        o.sticking_velocity
+    );
+    // above it: the excess rule, its value written out from the model crates
+    // (was checked only as 0.5 < ε < 1)
+    let sphere = JkrSphere::new(silica_e(), 0.5e-6, 0.05).unwrap();
+    let md = MaugisDugdaleImpact::new(
+        MaugisContact::from_range(sphere, 0.3e-9).unwrap(),
+        silica_m(),
+    )
+    .unwrap();
+    let ai = AdhesiveInterpolationImpact::new(
+        AdhesivePlasticContact::from_yield_stress(sphere, 1e9).unwrap(),
+        silica_m(),
+    )
+    .unwrap();
+    let jkr = JkrImpact::new(sphere, silica_m()).unwrap();
+    let interp = PlasticImpact::new(
+        PlasticContact::new(silica_e(), 0.5e-6, 1e9).unwrap(),
+        Interpolation::default(),
+        silica_m(),
+    )
+    .unwrap();
+    let v = 4.0;
+    let excess = ai.energy_loss(v).unwrap().joules - jkr.energy_loss(v).unwrap().joules;
+    let plastic = interp.energy_loss(v).unwrap().joules;
+    // the range weight φ = ΔU_MD/ΔU_JKR,fg of the excess over the plastic loss
+    let md_loss = md.energy_loss(v).unwrap().joules;
+    let weight = (md_loss / jkr.energy_loss(v).unwrap().joules).min(1.0);
+    let loss = md_loss + plastic + weight * (excess - plastic).max(0.0);
+    let hi = s.outcome_at(v).unwrap();
+    assert_eq!(
+        hi.combination.rule,
+        if excess >= plastic {
+            Rule::AdhesivePlasticExcess
+        } else {
+            Rule::SuperpositionBound
+        }
+    );
+    assert_relative_eq!(
+        hi.restitution,
+        restitution_from_loss(loss, silica_m(), v).unwrap(),
+        max_relative = 1e-10
     );
 }
 
 #[test]
 fn viscous_adhesive_cell_tends_to_its_limits() {
-    // η → 0: the elastic adhesive model; (the Δγ → 0 limit, the Kuwabara-Kono
-    // sphere, is tested in tabor-viscoadhesive)
+    // η → 0: the elastic adhesive model, approached linearly in η (README of
+    // tabor-viscoadhesive); at small η the coupled model is still used (was: η =
+    // 2e-12, where the viscosity is dropped and JKR was compared with JKR).
+    // (The Δγ → 0 limit, the Kuwabara-Kono sphere, is tested in tabor-viscoadhesive.)
     let text = std::fs::read_to_string(
         std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
             .join("../../examples/scenes/polymer_grains_viscoadhesive.toml"),
     )
     .unwrap();
-    let weak = Scene::from_str(
-        &text.replace("viscosity = 2e-4", "viscosity = 2e-12"),
-        Format::Toml,
-    )
-    .unwrap();
-    let o = weak.outcome_at(1.5).unwrap();
+    let with_eta = |eta: f64| {
+        Scene::from_str(
+            &text.replace("viscosity = 2e-4", &format!("viscosity = {eta:e}")),
+            Format::Toml,
+        )
+        .unwrap()
+    };
     let e = e_star(2e6, 0.49, 2e6, 0.49);
     let jkr = JkrImpact::new(
         JkrSphere::new(e, 2.5e-6, 0.04).unwrap(),
         mass(5e-6, 970.0) / 2.0,
     )
     .unwrap();
+    let v = 1.5;
+    let eps_jkr = impact(&jkr, v).unwrap().restitution;
+    let drop = |eta: f64| {
+        let o = with_eta(eta).outcome_at(v).unwrap();
+        assert_eq!(o.combination.rule, Rule::ViscousAdhesive, "eta = {eta}");
+        eps_jkr - o.restitution
+    };
+    let (d1, d2) = (drop(4e-6), drop(2e-6));
+    assert!(d2 > 0.0 && d1 > d2, "{d1} {d2}");
+    // linear in η: halving η halves the drop of ε (to the O(η²) term)
+    assert!((d1 / d2 - 2.0).abs() < 0.02, "{}", d1 / d2);
+    // and at that small η the value is the independent RK4 integration's
+    let g = Grains::new(2e-6);
+    let eps = g.rebound(v, 20_000) / v;
     assert!(
-        (o.restitution - impact(&jkr, 1.5).unwrap().restitution).abs() < 1e-6,
-        "{} {}",
-        o.restitution,
-        o.model
+        (eps_jkr - d2 - eps).abs() < 2e-6,
+        "{} vs {eps}",
+        eps_jkr - d2
     );
 }
 

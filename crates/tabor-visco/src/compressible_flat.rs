@@ -15,6 +15,7 @@
 //! correspondence principle).
 
 use crate::scaled::{flat_punch_impact, ode_tolerance, positive_up_to, Method, ScaledImpact};
+use tabor_numerics::tolerance::ACCURACY;
 use tabor_restitution::{validate, Error, Result};
 
 /// Largest damping ratios D1, D2 accepted.
@@ -104,7 +105,7 @@ pub fn restitution(
         poisson_ratio,
         shear_damping_ratio,
         bulk_damping_ratio,
-        1e-10,
+        ACCURACY,
     )?
     .restitution)
 }

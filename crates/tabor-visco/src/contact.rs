@@ -110,8 +110,8 @@ pub const KELVIN_VOIGT_LIMIT_ERROR: f64 = 0.2;
 /// Below this δ the Kelvin-Voigt limit is the first order (5.71) (remainder ~3δ
 /// relative; the integration, accurate down to δ = 1e-100, underflows near 1e-300).
 const FIRST_ORDER_VISCOUS_PARAMETER: f64 = 1e-30;
-/// Relative tolerance of the integrations.
-const TOLERANCE: f64 = 1e-9;
+/// Relative tolerance of the integrations (1e-9).
+const TOLERANCE: f64 = tabor_numerics::tolerance::COSTLY_TOLERANCE;
 const MODEL: &str = "viscoelastic contact";
 
 /// One body of a contact: its contact modulus `M = E/(1 − ν²)` and, for a

@@ -38,6 +38,7 @@
 use crate::hertz_damped::{self, Outcome, Restitution};
 use crate::scaled::{positive_up_to, ScaledImpact};
 use serde::Serialize;
+use tabor_numerics::tolerance::ACCURACY;
 use tabor_restitution::{validate, Error, Result};
 
 /// Largest scaled damping γ accepted.
@@ -53,6 +54,13 @@ pub enum DampingLaw {
     Tsuji,
     /// β = 3/2 (Hunt & Crossley).
     HuntCrossley,
+}
+
+tabor_restitution::menu! {
+    DampingLaw, "damping law";
+    LeeHerrmann => "lee-herrmann", "linear damping, β = 0 (5.72)";
+    Tsuji => "tsuji", "β = 1/4 (5.72), with (5.73)";
+    HuntCrossley => "hunt-crossley", "β = 3/2 (5.72)";
 }
 
 impl DampingLaw {
@@ -116,11 +124,12 @@ fn check_exponent(exponent: f64) -> Result<f64> {
 }
 
 /// The coefficient of restitution of the law (5.72) with exponent β ∈ [0, 3/2] and
-/// scaled damping γ ∈ (0, 1e3], integrated with relative tolerance 1e-10.
+/// scaled damping γ ∈ (0, 1e3], integrated with relative tolerance
+/// [`ACCURACY`] (1e-10).
 ///
 /// Seed 000, eq. (5.72).
 pub fn restitution(exponent: f64, damping: f64) -> Result<f64> {
-    Ok(solve(exponent, damping, 1e-10)?.restitution)
+    Ok(solve(exponent, damping, ACCURACY)?.restitution)
 }
 
 /// The impact under the law (5.72) in the scaling (5.74) (module docs), integrated

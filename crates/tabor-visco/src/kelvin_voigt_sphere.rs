@@ -32,6 +32,7 @@ use crate::scaled::{positive_up_to, ScaledImpact, ScaledPoint};
 use serde::Serialize;
 use tabor_numerics::root_finding::{brent, RootTolerance};
 use tabor_numerics::special::beta;
+use tabor_numerics::tolerance::ACCURACY;
 use tabor_restitution::{validate, Error, Result};
 
 /// Largest viscous parameter δ accepted.
@@ -48,14 +49,10 @@ pub enum SphereModel {
     Rigorous,
 }
 
-impl SphereModel {
-    /// A short name ("kuwabara-kono", "rigorous").
-    pub fn as_str(self) -> &'static str {
-        match self {
-            SphereModel::KuwabaraKono => "kuwabara-kono",
-            SphereModel::Rigorous => "rigorous",
-        }
-    }
+tabor_restitution::menu! {
+    SphereModel, "Kelvin-Voigt sphere model";
+    KuwabaraKono => "kuwabara-kono", "Kuwabara-Kono: (5.66) during the whole impact";
+    Rigorous => "rigorous", "compression (5.64)-(5.66) and restitution (5.64), (5.67) apart (MDR)";
 }
 
 /// The scaled damping coefficient `c = 8 (15/64)^(3/5) δ` of the scaled (5.66).
@@ -114,11 +111,12 @@ pub fn first_order_restitution(viscous_parameter: f64) -> Result<f64> {
 }
 
 /// The coefficient of restitution ε(δ) of a sphere on a Kelvin-Voigt half-space,
-/// integrated with relative tolerance 1e-10.
+/// integrated with relative tolerance
+/// [`ACCURACY`] (1e-10).
 ///
 /// Seed 000, eqs. (5.64)-(5.68), Fig. 5.4.
 pub fn restitution(viscous_parameter: f64, model: SphereModel) -> Result<f64> {
-    Ok(solve(viscous_parameter, model, 1e-10)?.restitution)
+    Ok(solve(viscous_parameter, model, ACCURACY)?.restitution)
 }
 
 /// The impact of a sphere on a Kelvin-Voigt half-space in the scaled variables of

@@ -25,6 +25,9 @@
 //! `hertz_damped`, README). Every impact ends where the normal force vanishes (seed
 //! footnote 6). All inputs are validated; errors name the parameter and value;
 //! restitution is always in [0, 1].
+//!
+//! [`ViscoModel`] is the menu the front ends name these models by (`ALL`,
+//! `as_str`, `FromStr`).
 
 pub mod compressible_flat;
 pub mod contact;
@@ -33,11 +36,14 @@ mod hertz_damped;
 pub mod kelvin_maxwell_sphere;
 pub mod kelvin_voigt_flat;
 pub mod kelvin_voigt_sphere;
+pub mod kuwabara_kono;
 mod mdr;
+mod menu;
 pub mod models;
 mod scaled;
 pub mod standard_flat;
 pub mod standard_sphere;
 
 pub use kelvin_voigt_sphere::SphereModel;
+pub use menu::ViscoModel;
 pub use scaled::{ScaledImpact, ScaledPoint};

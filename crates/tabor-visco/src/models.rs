@@ -8,8 +8,8 @@ use crate::scaled::ScaledImpact;
 use crate::{kelvin_maxwell_sphere, kelvin_voigt_flat, kelvin_voigt_sphere, standard_sphere};
 use tabor_restitution::{validate, EnergyLoss, ImpactModel, Result};
 
-/// Relative tolerance of the integrations behind the physical models.
-const TOLERANCE: f64 = 1e-9;
+/// Relative tolerance of the integrations behind the physical models (1e-9).
+const TOLERANCE: f64 = tabor_numerics::tolerance::COSTLY_TOLERANCE;
 
 fn loss_from(scaled: &ScaledImpact, mass: f64, speed: f64, branch: &str) -> Result<EnergyLoss> {
     let kinetic = 0.5 * mass * speed * speed;

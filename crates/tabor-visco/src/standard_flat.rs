@@ -16,6 +16,7 @@
 use crate::kelvin_voigt_flat;
 use crate::scaled::{flat_punch_impact, ode_tolerance, positive_up_to, Method, ScaledImpact};
 use tabor_numerics::rosenbrock::Jacobian;
+use tabor_numerics::tolerance::ACCURACY;
 use tabor_restitution::{validate, Error, Result};
 
 /// Range of the modulus ratio β = G∞/G1.
@@ -85,11 +86,12 @@ pub fn parameters(
 }
 
 /// The exact coefficient of restitution of the flat punch on a standard medium,
-/// ε(β, δ), integrated with relative tolerance 1e-10.
+/// ε(β, δ), integrated with relative tolerance
+/// [`ACCURACY`] (1e-10).
 ///
 /// Seed 000, eqs. (5.76)-(5.81), Fig. 5.11.
 pub fn restitution(modulus_ratio: f64, viscous_parameter: f64) -> Result<f64> {
-    Ok(solve(modulus_ratio, viscous_parameter, 1e-10)?.restitution)
+    Ok(solve(modulus_ratio, viscous_parameter, ACCURACY)?.restitution)
 }
 
 /// The exact impact (module docs) in the units of (5.78), integrated with

@@ -37,6 +37,15 @@ pub trait SeparationPotential: ForceLaw {
 impl SeparationPotential for JkrForceLaw {}
 impl SeparationPotential for MaugisDugdaleForceLaw {}
 
+/// An impact that starts without the energy to separate (README eq. (V4)) can never
+/// separate: its record ends once the kinetic energy has fallen below this fraction
+/// of the impact's (at once when damping dominates, else when the body decelerates
+/// back through its impact speed, before the first turning point). The outcome,
+/// sticking, does not depend on it; a strongly damped body would otherwise creep
+/// into the adhesive well on the viscous time scale, with steps limited by the
+/// far shorter inertial one.
+const CREEP_END: f64 = 1.0 - 1e-6;
+
 /// An inner force law plus the viscous force of a Kelvin-Voigt contact modulus
 /// `E*(s) = E* + η_c s` acting over the inner law's contact radius:
 ///
@@ -78,6 +87,8 @@ pub struct ViscousDamping<L> {
     mass: f64,
     /// length per energy for the energy branch end: L / (m v0²/2) (m/J).
     length_per_energy: f64,
+    /// m v0²/2 (J), set by `begin_impact`.
+    kinetic_energy: f64,
     /// The impact starts in contact without the energy to separate: it sticks, at
     /// the first turning point at the latest.
     doomed: bool,
@@ -93,6 +104,7 @@ impl<L: SeparationPotential> ViscousDamping<L> {
             contact_viscosity: validate::positive("contact_viscosity", contact_viscosity)?,
             mass: f64::NAN,
             length_per_energy: f64::NAN,
+            kinetic_energy: f64::NAN,
             doomed: false,
         })
     }
@@ -104,6 +116,7 @@ impl<L: SeparationPotential> ViscousDamping<L> {
             contact_viscosity,
             mass: f64::NAN,
             length_per_energy: f64::NAN,
+            kinetic_energy: f64::NAN,
             doomed: false,
         }
     }
@@ -144,17 +157,33 @@ impl<L: SeparationPotential> ViscousDamping<L> {
     }
 
     fn viscous_force_at(&self, contact_radius: f64, overlap_rate: f64) -> f64 {
-        2.0 * self.contact_viscosity * contact_radius.max(0.0) * overlap_rate
+        tabor_visco::kuwabara_kono::viscous_force(
+            self.contact_viscosity,
+            contact_radius,
+            overlap_rate,
+        )
     }
 
     /// The energy criterion as a length (> 0 while the body can still separate).
+    /// An impact that started without the energy to separate (`doomed`) instead
+    /// ends when its kinetic energy has fallen below [`CREEP_END`] of the impact's:
+    /// it can never separate, whatever it does next (README eq. (V4)).
     fn energy_branch_end(&self, overlap: f64, overlap_rate: f64) -> Result<Option<f64>> {
         if self.doomed {
-            return Ok(None);
+            let kinetic = 0.5 * self.mass * overlap_rate * overlap_rate;
+            return Ok(Some(
+                kinetic * self.length_per_energy - CREEP_END * self.length_scale(),
+            ));
         }
         Ok(self
             .escape_energy(overlap, overlap_rate)?
             .map(|e| e * self.length_per_energy))
+    }
+
+    /// The overlap scale L of the impact (m), with `length_per_energy`
+    /// = L/(m v0²/2).
+    fn length_scale(&self) -> f64 {
+        self.length_per_energy * self.kinetic_energy
     }
 }
 
@@ -179,7 +208,8 @@ impl<L: SeparationPotential> ForceLaw for ViscousDamping<L> {
         let v = validate::positive("impact_speed", impact_speed)?;
         let scale = self.inner.overlap_scale(m, v)?;
         self.mass = m;
-        self.length_per_energy = scale / (0.5 * m * v * v);
+        self.kinetic_energy = 0.5 * m * v * v;
+        self.length_per_energy = scale / self.kinetic_energy;
         self.doomed = false;
         let start = self.inner.start_overlap();
         if let Some(e) = self.escape_energy(start, v)? {

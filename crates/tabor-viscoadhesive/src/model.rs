@@ -8,7 +8,7 @@ use serde::Serialize;
 use tabor_dynamics::{simulate_impact, ImpactSimulation, SimulationSettings};
 use tabor_jkr::{JkrImpact, JkrSphere, SeparationRule};
 use tabor_maugis::{MaugisContact, MaugisDugdaleForceLaw, MaugisDugdaleImpact};
-use tabor_restitution::{validate, EnergyLoss, Error, ImpactModel, Result};
+use tabor_restitution::{validate, EnergyLoss, Error, ImpactModel, Result, SpeedLimit};
 use tabor_visco::models::KelvinVoigtSphere;
 use tabor_visco::SphereModel;
 
@@ -237,22 +237,32 @@ impl ViscoadhesiveImpact {
     ) -> Result<ImpactSimulation> {
         let v = validate::positive("impact_speed", impact_speed)?;
         let mut law = self.force_law();
-        // small-strain contact mechanics: the Hertz overlap d_max (5.8) below R
-        let d_max = (15.0 * self.effective_mass * v * v
-            / (16.0 * self.effective_modulus * self.effective_radius.sqrt()))
-        .powf(0.4);
-        if d_max.is_nan() || d_max > self.effective_radius {
+        // small-strain contact mechanics: the Hertz overlap d_max (5.8) at most R
+        if v > self.small_strain_limit() {
+            let d_max = (15.0 * self.effective_mass * v * v
+                / (16.0 * self.effective_modulus * self.effective_radius.sqrt()))
+            .powf(0.4);
             return Err(Error::Model {
                 model: MODEL,
                 message: format!(
                     "at impact_speed = {v:e} m/s the elastic overlap d_max = {d_max:e} m \
                      exceeds the effective radius R = {:e} m: outside small-strain contact \
-                     mechanics",
-                    self.effective_radius
+                     mechanics (valid up to {:e} m/s)",
+                    self.effective_radius,
+                    self.small_strain_limit()
                 ),
             });
         }
         simulate_impact(&mut law, self.effective_mass, v, settings)
+    }
+
+    /// The small-strain limit (m/s): the impact speed at which the elastic (Hertz)
+    /// overlap d_max of seed 000 eq. (5.8), `(15 m v²/(16 E* √R))^(2/5)`, equals R,
+    /// `v = √(16 E* R³/(15 m))`. [`ViscoadhesiveImpact::simulate`] answers up to it
+    /// and errs above it.
+    pub fn small_strain_limit(&self) -> f64 {
+        let r = self.effective_radius;
+        (16.0 * self.effective_modulus * r * r * r / (15.0 * self.effective_mass)).sqrt()
     }
 
     /// The simulation record of one impact at `impact_speed` (m/s) at the model's
@@ -373,6 +383,14 @@ impl ImpactModel for ViscoadhesiveImpact {
             error_estimate: validate::finite_output(MODEL, "error estimate", error)?,
             branch: format!("time-domain simulation of {}", sim.law),
             cost: sim.cost,
+        })
+    }
+
+    /// The small-strain limit ([`ViscoadhesiveImpact::small_strain_limit`]).
+    fn speed_limit(&self) -> Option<SpeedLimit> {
+        Some(SpeedLimit {
+            speed: self.small_strain_limit(),
+            reason: "small-strain limit",
         })
     }
 

@@ -3,26 +3,39 @@
 #include "atom.h"
 #include "error.h"
 #include "memory.h"
+#include "utils.h"
+
+#include <cstring>
 
 using namespace LAMMPS_NS;
 
+static constexpr int INITIAL_CAPACITY = 8;
+
+/* fix ID group tabor/history WIDTH */
 FixTaborHistory::FixTaborHistory(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), overflow(0), npartner(nullptr), partner(nullptr), hist(nullptr)
+    Fix(lmp, narg, arg), dnum(0), capacity(INITIAL_CAPACITY), nmax_alloc(0), npartner(nullptr),
+    partner(nullptr), values(nullptr)
 {
-  if (narg != 3) error->all(FLERR, "Illegal fix tabor/history command");
+  if (narg != 4) error->all(FLERR, "Illegal fix tabor/history command (created by pair style tabor)");
+  dnum = utils::inumeric(FLERR, arg[3], false, lmp);
+  if (dnum < 1) error->all(FLERR, "fix tabor/history: width {} must be at least 1", dnum);
   create_attribute = 1;
-  maxexchange = 1 + MAXPARTNER * (1 + TABOR_HISTORY_LEN);
+  restart_peratom = 1;
+  maxexchange_dynamic = 1;
+  maxexchange = 1 + capacity * (1 + dnum);
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
-  for (int i = 0; i < atom->nmax; i++) npartner[i] = 0;
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < nmax_alloc; i++) npartner[i] = 0;
 }
 
 FixTaborHistory::~FixTaborHistory()
 {
   atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
   memory->destroy(npartner);
-  memory->destroy(partner);
-  memory->sfree(hist);
+  memory->sfree(partner);
+  memory->sfree(values);
 }
 
 int FixTaborHistory::setmask()
@@ -33,23 +46,40 @@ int FixTaborHistory::setmask()
 void FixTaborHistory::grow_arrays(int nmax)
 {
   memory->grow(npartner, nmax, "tabor/history:npartner");
-  memory->grow(partner, nmax, MAXPARTNER, "tabor/history:partner");
-  // one contiguous block of nmax * MAXPARTNER histories
-  TaborHistory *old = hist ? hist[0] : nullptr;
-  auto *block = (TaborHistory *) memory->srealloc(old, sizeof(TaborHistory) * nmax * MAXPARTNER,
-                                                  "tabor/history:block");
-  hist = (TaborHistory **) memory->srealloc(hist ? hist : nullptr, sizeof(TaborHistory *) * nmax,
-                                            "tabor/history:hist");
-  for (int i = 0; i < nmax; i++) hist[i] = block + (bigint) i * MAXPARTNER;
+  partner = (tagint *) memory->srealloc(partner, sizeof(tagint) * (bigint) nmax * capacity,
+                                        "tabor/history:partner");
+  values = (double *) memory->srealloc(values, sizeof(double) * (bigint) nmax * capacity * dnum,
+                                       "tabor/history:values");
+  for (int i = nmax_alloc; i < nmax; i++) npartner[i] = 0;
+  nmax_alloc = nmax;
+}
+
+void FixTaborHistory::grow_capacity()
+{
+  int wider = 2 * capacity;
+  auto *p = (tagint *) memory->smalloc(sizeof(tagint) * (bigint) nmax_alloc * wider, "tabor/history:partner");
+  auto *v = (double *) memory->smalloc(sizeof(double) * (bigint) nmax_alloc * wider * dnum, "tabor/history:values");
+  for (int i = 0; i < nmax_alloc; i++) {
+    int n = npartner[i] < capacity ? npartner[i] : capacity;
+    if (n > 0) {
+      memcpy(p + (bigint) i * wider, partner + (bigint) i * capacity, sizeof(tagint) * n);
+      memcpy(v + (bigint) i * wider * dnum, values + (bigint) i * capacity * dnum, sizeof(double) * n * dnum);
+    }
+  }
+  memory->sfree(partner);
+  memory->sfree(values);
+  partner = p;
+  values = v;
+  capacity = wider;
+  maxexchange = 1 + capacity * (1 + dnum);
 }
 
 void FixTaborHistory::copy_arrays(int i, int j, int /*delflag*/)
 {
   npartner[j] = npartner[i];
-  for (int k = 0; k < npartner[i]; k++) {
-    partner[j][k] = partner[i][k];
-    hist[j][k] = hist[i][k];
-  }
+  memcpy(partner + (bigint) j * capacity, partner + (bigint) i * capacity, sizeof(tagint) * npartner[i]);
+  memcpy(values + (bigint) j * capacity * dnum, values + (bigint) i * capacity * dnum,
+         sizeof(double) * npartner[i] * dnum);
 }
 
 void FixTaborHistory::set_arrays(int i)
@@ -61,10 +91,11 @@ int FixTaborHistory::pack_exchange(int i, double *buf)
 {
   int m = 0;
   buf[m++] = npartner[i];
+  const tagint *p = partner + (bigint) i * capacity;
+  const double *v = values + (bigint) i * capacity * dnum;
   for (int k = 0; k < npartner[i]; k++) {
-    buf[m++] = ubuf(partner[i][k]).d;
-    buf[m++] = hist[i][k].contact;
-    buf[m++] = hist[i][k].max_overlap;
+    buf[m++] = ubuf(p[k]).d;
+    for (int d = 0; d < dnum; d++) buf[m++] = v[k * dnum + d];
   }
   return m;
 }
@@ -72,47 +103,87 @@ int FixTaborHistory::pack_exchange(int i, double *buf)
 int FixTaborHistory::unpack_exchange(int nlocal, double *buf)
 {
   int m = 0;
-  npartner[nlocal] = static_cast<int>(buf[m++]);
-  for (int k = 0; k < npartner[nlocal]; k++) {
-    partner[nlocal][k] = (tagint) ubuf(buf[m++]).i;
-    hist[nlocal][k].contact = buf[m++];
-    hist[nlocal][k].max_overlap = buf[m++];
+  int n = static_cast<int>(buf[m++]);
+  while (n > capacity) grow_capacity();
+  npartner[nlocal] = n;
+  tagint *p = partner + (bigint) nlocal * capacity;
+  double *v = values + (bigint) nlocal * capacity * dnum;
+  for (int k = 0; k < n; k++) {
+    p[k] = (tagint) ubuf(buf[m++]).i;
+    for (int d = 0; d < dnum; d++) v[k * dnum + d] = buf[m++];
   }
   return m;
 }
 
-double FixTaborHistory::memory_usage()
+/* restart layout per atom: [size, npartner, (tag, dnum values) * npartner];
+   buf[0] counts every value including itself (LAMMPS's convention) */
+int FixTaborHistory::pack_restart(int i, double *buf)
 {
-  return (double) atom->nmax * (sizeof(int) + MAXPARTNER * (sizeof(tagint) + sizeof(TaborHistory)));
+  int m = 1;
+  m += pack_exchange(i, &buf[1]);
+  buf[0] = m;
+  return m;
 }
 
-TaborHistory *FixTaborHistory::find(int i, tagint t)
+void FixTaborHistory::unpack_restart(int nlocal, int nth)
 {
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  unpack_exchange(nlocal, &extra[nlocal][m]);
+}
+
+int FixTaborHistory::size_restart(int i)
+{
+  return 2 + npartner[i] * (1 + dnum);
+}
+
+int FixTaborHistory::maxsize_restart()
+{
+  int most = 0;
+  for (int i = 0; i < atom->nlocal; i++) most = MAX(most, npartner[i]);
+  int all = 0;
+  MPI_Allreduce(&most, &all, 1, MPI_INT, MPI_MAX, world);
+  return 2 + all * (1 + dnum);
+}
+
+double FixTaborHistory::memory_usage()
+{
+  return (double) nmax_alloc * (sizeof(int) + capacity * (sizeof(tagint) + sizeof(double) * dnum));
+}
+
+double *FixTaborHistory::find(int i, tagint t)
+{
+  const tagint *p = partner + (bigint) i * capacity;
   for (int k = 0; k < npartner[i]; k++)
-    if (partner[i][k] == t) return &hist[i][k];
+    if (p[k] == t) return values + ((bigint) i * capacity + k) * dnum;
   return nullptr;
 }
 
-void FixTaborHistory::store(int i, tagint t, const TaborHistory &h)
+void FixTaborHistory::store(int i, tagint t, const double *h)
 {
+  tagint *p = partner + (bigint) i * capacity;
+  double *v = values + (bigint) i * capacity * dnum;
   for (int k = 0; k < npartner[i]; k++) {
-    if (partner[i][k] == t) {
-      if (h.contact != 0.0) {
-        hist[i][k] = h;
+    if (p[k] == t) {
+      if (h[0] != 0.0) {
+        if (v + k * dnum != h) memcpy(v + k * dnum, h, sizeof(double) * dnum);
       } else {
         int last = --npartner[i];
-        partner[i][k] = partner[i][last];
-        hist[i][k] = hist[i][last];
+        p[k] = p[last];
+        memmove(v + k * dnum, v + last * dnum, sizeof(double) * dnum);
       }
       return;
     }
   }
-  if (h.contact == 0.0) return;
-  if (npartner[i] >= MAXPARTNER) {
-    overflow++;
-    return;
+  if (h[0] == 0.0) return;
+  if (npartner[i] >= capacity) {
+    grow_capacity();
+    p = partner + (bigint) i * capacity;
+    v = values + (bigint) i * capacity * dnum;
   }
-  partner[i][npartner[i]] = t;
-  hist[i][npartner[i]] = h;
+  p[npartner[i]] = t;
+  memcpy(v + npartner[i] * dnum, h, sizeof(double) * dnum);
   npartner[i]++;
 }

@@ -1,19 +1,22 @@
 /* fix tabor/history: per-contact history of pair style tabor, stored with the
-   atoms (partner tags and TABOR_HISTORY_LEN doubles per partner) so that it moves
-   with an atom between MPI ranks (pack/unpack_exchange), as LAMMPS's own
-   fix neigh/history does. Created by pair style tabor; not for direct use. */
+   atoms (partner tags and `width` doubles per partner) so that it moves with an
+   atom between MPI ranks (pack/unpack_exchange), as LAMMPS's own
+   fix neigh/history does, and is written to restart files (pack/unpack_restart):
+   after read_restart, when pair style tabor recreates this fix (same ID), every
+   contact gets its history back. Created by pair style tabor; not for direct use.
+
+   Storage: per atom a row of `capacity` partners, grown (doubled, for all atoms)
+   when an atom gets more contacts than fit, so there is no fixed limit. Memory:
+   nmax * capacity * (8 + 8 * width) bytes. */
 #ifndef TABOR_FIX_HISTORY_H
 #define TABOR_FIX_HISTORY_H
 
 #include "fix.h"
-#include "tabor_ffi.h"
 
 namespace LAMMPS_NS {
 
 class FixTaborHistory : public Fix {
  public:
-  static constexpr int MAXPARTNER = 24;
-
   FixTaborHistory(class LAMMPS *, int, char **);
   ~FixTaborHistory() override;
   int setmask() override;
@@ -23,18 +26,30 @@ class FixTaborHistory : public Fix {
   void set_arrays(int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
   double memory_usage() override;
 
+  // the doubles of one contact
+  int width() const { return dnum; }
   // the history of atom i with partner tag t, or nullptr
-  TaborHistory *find(int i, tagint t);
-  // stores h for (i, t); removes the entry when h.contact == 0
-  void store(int i, tagint t, const TaborHistory &h);
-  int overflow;    // entries that did not fit (reported by the pair style)
+  double *find(int i, tagint t);
+  // stores h (width doubles) for (i, t); removes the entry when h[0] == 0
+  // (h[0] is the contact flag)
+  void store(int i, tagint t, const double *h);
+  // number of stored contacts of atom i
+  int count(int i) const { return npartner[i]; }
 
  private:
+  int dnum;        // doubles per contact
+  int capacity;    // partners per atom row
+  int nmax_alloc;
   int *npartner;
-  tagint **partner;
-  TaborHistory **hist;
+  tagint *partner;    // nmax_alloc * capacity
+  double *values;     // nmax_alloc * capacity * dnum
+  void grow_capacity();
 };
 
 }    // namespace LAMMPS_NS

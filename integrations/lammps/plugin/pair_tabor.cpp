@@ -18,14 +18,21 @@
 
 using namespace LAMMPS_NS;
 
-static constexpr std::size_t MAX_RADII_PER_PAIR = 256;
+static const char *const HISTORY_ID = "TABOR_HISTORY";
 
 PairTabor::PairTabor(LAMMPS *lmp) :
-    Pair(lmp), maxrad(nullptr), fix_history(nullptr), evaluations(0), overflow_reported(0)
+    Pair(lmp), maxrad(nullptr), fix_history(nullptr), history_width(TABOR_CONTACT_HISTORY_LEN)
 {
-  single_enable = 0;
+  single_enable = 1;
+  // compute pair/local p1..p4: normal force, tangential force, contact radius, F_n0
+  single_extra = 4;
+  svector = new double[single_extra];
   no_virial_fdotr_compute = 1;
   finitecutflag = 1;
+  // pair_style and pair_coeff are not stored in restart files: after read_restart
+  // include the fragment again (plugin load, pair_style, pair_coeff); the contact
+  // histories come back with the atoms (fix tabor/history)
+  restartinfo = 0;
 }
 
 PairTabor::~PairTabor()
@@ -36,23 +43,32 @@ PairTabor::~PairTabor()
     memory->destroy(cutsq);
   }
   memory->destroy(maxrad);
-  if (fix_history && modify->get_fix_by_id("TABOR_HISTORY")) modify->delete_fix("TABOR_HISTORY");
+  delete[] svector;
+  if (fix_history && modify->get_fix_by_id(HISTORY_ID)) modify->delete_fix(HISTORY_ID);
 }
 
 void PairTabor::free_laws()
 {
   for (auto &c : coeffs) {
-    for (auto &l : c.laws) tabor_law_free(l.law);
-    c.laws.clear();
+    tabor_contact_free(c.contact);
+    c.contact = nullptr;
   }
 }
 
-void PairTabor::check(int status, const char *what)
+void PairTabor::fail_all(int status, const char *what)
 {
-  if (status == TABOR_OK) return;
   char buf[512];
   tabor_last_error(buf, sizeof(buf));
-  error->one(FLERR, "pair tabor: {} failed (status {}): {}", what, status, buf);
+  error->all(FLERR, "pair tabor: {} (status {}): {}", what, status, buf);
+  throw;    // not reached: error->all does not return
+}
+
+void PairTabor::fail_one(int status, const char *what)
+{
+  char buf[512];
+  tabor_last_error(buf, sizeof(buf));
+  error->one(FLERR, "pair tabor: {} (status {}): {}", what, status, buf);
+  throw;    // not reached
 }
 
 void PairTabor::settings(int narg, char ** /*arg*/)
@@ -60,16 +76,23 @@ void PairTabor::settings(int narg, char ** /*arg*/)
   if (narg != 0) error->all(FLERR, "Illegal pair_style tabor command: it takes no arguments");
 }
 
-/* pair_coeff I J hertz E* [damping A]
-   pair_coeff I J jkr/fixed-grip E* w [damping A]
-   pair_coeff I J jkr/load-controlled E* w [damping A]
-   pair_coeff I J maugis E* w Lambda [damping A]
+/* pair_coeff I J MODEL PARAMETERS [poisson nu] [damping A]
+              [tangential TMODEL k_t|NULL x_gamma mu] [rolling sds k_roll gamma_roll mu_roll]
+              [twisting marshall | twisting sds k_tw gamma_tw mu_tw]
+   MODEL PARAMETERS: hertz E* | jkr/fixed-grip E* w | jkr/load-controlled E* w |
+   maugis E* w Lambda.
    E*: effective modulus (Pa), w: work of adhesion (J/m^2, = 2 gamma of LAMMPS jkr),
-   Lambda: Tabor parameter (used for every effective radius), A: Kuwabara-Kono
-   dissipative time (s). */
+   Lambda: Tabor parameter (held fixed for every effective radius: the Dugdale
+   range h = d_n(R*)/Lambda grows as R*^(1/3)), A: Kuwabara-Kono dissipative time
+   (s); the normal damping coefficient the tangential x_gamma multiplies is 2 E* A a.
+   tangential, rolling, twisting: the keywords and parameters of pair_style granular
+   (TMODEL linear_history, mindlin, mindlin_rescale; k_t NULL for the Mindlin models
+   means 8 G* with G* = E* (1 - nu) / (2 (2 - nu)), the value pair granular computes
+   for two bodies of one material, which needs `poisson nu`).
+   Every error is reported on all ranks (error->all). */
 void PairTabor::coeff(int narg, char **arg)
 {
-  if (narg < 4) error->all(FLERR, "Incorrect args for pair coefficients (pair tabor)");
+  if (narg < 4) error->all(FLERR, "Incorrect args for pair coefficients (pair tabor): pair_coeff I J MODEL E* ...");
   if (!allocated) {
     allocated = 1;
     int n = atom->ntypes;
@@ -86,46 +109,109 @@ void PairTabor::coeff(int narg, char **arg)
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
 
   TaborLawParams p{};
+  TaborFrictionParams fr{};
   std::string model = arg[2];
   int iarg = 3;
-  auto number = [&](const char *what) {
+  auto number = [&](const std::string &what) {
     if (iarg >= narg) error->all(FLERR, "pair tabor {}: missing {}", model, what);
     return utils::numeric(FLERR, arg[iarg++], false, lmp);
   };
-  p.effective_modulus = number("E*");
+  auto word = [&](const std::string &what) -> std::string {
+    if (iarg >= narg) error->all(FLERR, "pair tabor {}: missing {}", model, what);
+    return arg[iarg++];
+  };
   if (model == "hertz") {
     p.model = TABOR_MODEL_HERTZ;
   } else if (model == "jkr/fixed-grip" || model == "jkr/load-controlled") {
     p.model = model == "jkr/fixed-grip" ? TABOR_MODEL_JKR_FIXED_GRIP : TABOR_MODEL_JKR_LOAD_CONTROLLED;
-    p.work_of_adhesion = number("w");
   } else if (model == "maugis") {
     p.model = TABOR_MODEL_MAUGIS_DUGDALE;
-    p.work_of_adhesion = number("w");
-    p.tabor_parameter = number("Lambda");
   } else {
     error->all(FLERR, "pair tabor: unknown model {} (hertz, jkr/fixed-grip, jkr/load-controlled, maugis)", model);
   }
+  p.effective_modulus = number("E*");
+  if (p.model != TABOR_MODEL_HERTZ) p.work_of_adhesion = number("w");
+  if (p.model == TABOR_MODEL_MAUGIS_DUGDALE) p.tabor_parameter = number("Lambda");
+  double poisson = 0.0;
+  bool have_poisson = false;
+  bool stiffness_null = false;
   while (iarg < narg) {
-    if (strcmp(arg[iarg], "damping") == 0) {
-      iarg++;
+    std::string key = arg[iarg++];
+    if (key == "damping") {
       p.damping_time = number("damping time A");
+    } else if (key == "poisson") {
+      poisson = number("Poisson ratio");
+      have_poisson = true;
+      if (!(poisson > -1.0 && poisson < 0.5))
+        error->all(FLERR, "pair tabor: poisson {} must lie in (-1, 0.5)", poisson);
+    } else if (key == "tangential") {
+      std::string t = word("tangential model");
+      if (t == "linear_history") fr.tangential_model = TABOR_TANGENTIAL_LINEAR_HISTORY;
+      else if (t == "mindlin") fr.tangential_model = TABOR_TANGENTIAL_MINDLIN;
+      else if (t == "mindlin_rescale") fr.tangential_model = TABOR_TANGENTIAL_MINDLIN_RESCALE;
+      else
+        error->all(FLERR, "pair tabor: unknown tangential model {} (linear_history, mindlin, mindlin_rescale)", t);
+      if (iarg < narg && strcmp(arg[iarg], "NULL") == 0) {
+        if (fr.tangential_model == TABOR_TANGENTIAL_LINEAR_HISTORY)
+          error->all(FLERR, "pair tabor: tangential linear_history needs a stiffness k_t (N/m), not NULL");
+        stiffness_null = true;
+        iarg++;
+      } else {
+        fr.tangential_stiffness = number("tangential stiffness k_t");
+      }
+      fr.tangential_damping = number("tangential damping x_gamma");
+      fr.friction_coefficient = number("friction coefficient mu");
+    } else if (key == "rolling") {
+      std::string r = word("rolling model");
+      if (r != "sds") error->all(FLERR, "pair tabor: unknown rolling model {} (sds)", r);
+      fr.rolling_model = TABOR_ROLLING_SDS;
+      fr.rolling_stiffness = number("rolling stiffness k_roll");
+      fr.rolling_damping = number("rolling damping gamma_roll");
+      fr.rolling_coefficient = number("rolling coefficient mu_roll");
+    } else if (key == "twisting") {
+      std::string t = word("twisting model");
+      if (t == "marshall") {
+        fr.twisting_model = TABOR_TWISTING_MARSHALL;
+      } else if (t == "sds") {
+        fr.twisting_model = TABOR_TWISTING_SDS;
+        fr.twisting_stiffness = number("twisting stiffness k_twist");
+        fr.twisting_damping = number("twisting damping gamma_twist");
+        fr.twisting_coefficient = number("twisting coefficient mu_twist");
+      } else {
+        error->all(FLERR, "pair tabor: unknown twisting model {} (marshall, sds)", t);
+      }
     } else {
-      error->all(FLERR, "pair tabor: unknown keyword {}", arg[iarg]);
+      error->all(FLERR, "pair tabor: unknown keyword {} (poisson, damping, tangential, rolling, twisting)", key);
     }
   }
-  // validate once with a unit radius: errors are reported here, not mid-run
+  if (stiffness_null) {
+    if (!have_poisson)
+      error->all(FLERR, "pair tabor: tangential {} NULL needs `poisson nu` (k_t = 8 G*, G* = E* (1 - nu) / (2 (2 - nu)))",
+                 fr.tangential_model == TABOR_TANGENTIAL_MINDLIN ? "mindlin" : "mindlin_rescale");
+    fr.tangential_stiffness = 8.0 * p.effective_modulus * (1.0 - poisson) / (2.0 * (2.0 - poisson));
+  }
+  if ((fr.rolling_model != TABOR_ROLLING_NONE || fr.twisting_model != TABOR_TWISTING_NONE) &&
+      fr.tangential_model == TABOR_TANGENTIAL_NONE)
+    error->all(FLERR, "pair tabor: rolling and twisting need a tangential model (as in pair granular)");
+  // one contact model for every radius; the reference radius only sets where the
+  // exact law is evaluated beyond the table (an overlap 1e6 adhesive depths deep)
   p.effective_radius = 1.0;
-  TaborLaw *probe = nullptr;
-  check(tabor_law_new(&p, &probe), "pair_coeff");
-  tabor_law_free(probe);
+  TaborContact *probe = nullptr;
+  int status = tabor_contact_new(&p, &fr, &probe);
+  if (status != TABOR_OK) fail_all(status, "pair_coeff");
+  tabor_contact_free(probe);
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++)
     for (int j = MAX(jlo, i); j <= jhi; j++) {
-      for (auto &l : coeff_of(i, j).laws) tabor_law_free(l.law);
-      coeff_of(i, j) = Coeff();
-      coeff_of(i, j).set = 1;
-      coeff_of(i, j).params = p;
+      Coeff &c = coeff_of(i, j);
+      tabor_contact_free(c.contact);
+      c = Coeff();
+      c.set = 1;
+      c.params = p;
+      c.friction = fr;
+      status = tabor_contact_new(&p, &fr, &c.contact);
+      if (status != TABOR_OK) fail_all(status, "pair_coeff");
       setflag[i][j] = 1;
       count++;
     }
@@ -136,55 +222,97 @@ void PairTabor::init_style()
 {
   if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR, "Pair tabor requires atom attributes radius, rmass (atom_style sphere)");
-  if (comm->ghost_velocity == 0) error->all(FLERR, "Pair tabor requires ghost atoms store velocity (comm_modify vel yes)");
-  if (force->newton_pair)
-    error->all(FLERR, "Pair tabor requires newton pair off (its history is kept on both atoms of a pair)");
-  neighbor->add_request(this, NeighConst::REQ_SIZE);
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "Pair tabor requires ghost atoms store velocity (comm_modify vel yes)");
+  if (atom->tag_enable == 0) error->all(FLERR, "Pair tabor requires atom IDs");
+  if (!atom->omega_flag || !atom->torque_flag)
+    error->all(FLERR, "Pair tabor requires atom attributes omega, torque (atom_style sphere)");
+  // a newton-off half list whatever the newton setting: a pair across two ranks
+  // is computed on both (each applies the force to its own atom and keeps the
+  // contact's history with it), so no reverse communication of history is needed
+  neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_NEWTON_OFF);
 
-  fix_history = dynamic_cast<FixTaborHistory *>(modify->get_fix_by_id("TABOR_HISTORY"));
-  if (!fix_history) fix_history = dynamic_cast<FixTaborHistory *>(modify->add_fix("TABOR_HISTORY all tabor/history"));
+  // the history fix: recreated after read_restart with the same ID and style,
+  // LAMMPS hands it the histories stored in the restart file
+  fix_history = dynamic_cast<FixTaborHistory *>(modify->get_fix_by_id(HISTORY_ID));
+  if (fix_history && fix_history->width() != history_width) {
+    modify->delete_fix(HISTORY_ID);
+    fix_history = nullptr;
+  }
+  if (!fix_history)
+    fix_history = dynamic_cast<FixTaborHistory *>(
+        modify->add_fix(fmt::format("{} all tabor/history {}", HISTORY_ID, history_width)));
   if (!fix_history) error->all(FLERR, "pair tabor: could not create fix tabor/history");
 
   // largest radius per type, over all ranks (as pair granular's maxrad_dynamic)
   int n = atom->ntypes;
   std::vector<double> local(n + 1, 0.0);
-  for (int i = 0; i < atom->nlocal; i++)
-    local[atom->type[i]] = MAX(local[atom->type[i]], atom->radius[i]);
+  for (int i = 0; i < atom->nlocal; i++) local[atom->type[i]] = MAX(local[atom->type[i]], atom->radius[i]);
   MPI_Allreduce(local.data(), maxrad, n + 1, MPI_DOUBLE, MPI_MAX, world);
 }
 
 double PairTabor::init_one(int i, int j)
 {
-  Coeff &c = coeff_of(MIN(i, j), MAX(i, j));
+  Coeff &c = coeff_of(i, j);
   if (!c.set) error->all(FLERR, "pair tabor: no pair_coeff for types {} {}", i, j);
   double ri = maxrad[i], rj = maxrad[j];
+  c.reach = 0.0;
   if (ri <= 0.0 || rj <= 0.0) return 0.0;
-  // the largest effective radius has the largest interaction range (h ∝ R*^(1/3))
-  const Law &l = law_for(MIN(i, j), MAX(i, j), ri * rj / (ri + rj));
-  double range = l.info.interaction_range;
-  if (neighbor->skin < range)
+  // the largest effective radius has the largest interaction range (∝ R*^(1/3))
+  TaborLawInfo info;
+  int status = tabor_contact_info_at(c.contact, ri * rj / (ri + rj), &info);
+  if (status != TABOR_OK) fail_all(status, "init");
+  c.reach = info.interaction_range;
+  if (neighbor->skin < c.reach)
     error->all(FLERR, "pair tabor: neighbor skin {} is below the interaction range {} of types {} {}",
-               neighbor->skin, range, i, j);
-  return ri + rj + range;
+               neighbor->skin, c.reach, i, j);
+  return ri + rj + c.reach;
 }
 
-const PairTabor::Law &PairTabor::law_for(int itype, int jtype, double rstar)
+/* One contact, evaluated with the atom of the lower tag as body 1 (whatever the
+   neighbor list's order), so that the ranks that both compute a pair across a
+   sub-domain boundary do the same arithmetic and keep the same history; the
+   history is stored identically on both atoms. Returns 0 when the pair is beyond
+   reach and has no history; `first` is 1 when i is body 1. */
+int PairTabor::evaluate(int i, int j, int update_history, TaborContactForces &out, int &first)
 {
-  Coeff &c = coeff_of(itype, jtype);
-  for (auto &l : c.laws)
-    if (l.rstar == rstar) return l;
-  if (c.laws.size() >= MAX_RADII_PER_PAIR)
-    error->one(FLERR, "pair tabor: more than {} distinct effective radii for types {} {} "
-               "(each needs its own table; polydisperse systems are not supported)",
-               MAX_RADII_PER_PAIR, itype, jtype);
-  Law l{};
-  l.rstar = rstar;
-  TaborLawParams p = c.params;
-  p.effective_radius = rstar;
-  check(tabor_law_new(&p, &l.law), "tabor_law_new");
-  check(tabor_law_info(l.law, &l.info), "tabor_law_info");
-  c.laws.push_back(l);
-  return c.laws.back();
+  double **x = atom->x;
+  double *radius = atom->radius;
+  tagint *tag = atom->tag;
+  const Coeff &c = coeff_of(atom->type[i], atom->type[j]);
+  first = tag[i] < tag[j];
+  int a = first ? i : j, b = first ? j : i;
+  double del[3] = {x[a][0] - x[b][0], x[a][1] - x[b][1], x[a][2] - x[b][2]};
+  double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+  double radsum = radius[a] + radius[b];
+  double *stored = fix_history->find(i, tag[j]);
+  double reach = radsum + c.reach;
+  if (!stored && rsq >= reach * reach) return 0;
+  double r = sqrt(rsq);
+  double rinv = 1.0 / r;
+  double **v = atom->v;
+  double **omega = atom->omega;
+  TaborContactState s;
+  for (int k = 0; k < 3; k++) {
+    s.normal[k] = del[k] * rinv;
+    s.relative_velocity[k] = v[a][k] - v[b][k];
+    s.angular_velocity_i[k] = omega[a][k];
+    s.angular_velocity_j[k] = omega[b][k];
+  }
+  s.overlap = radsum - r;
+  s.radius_i = radius[a];
+  s.radius_j = radius[b];
+  s.time_step = update->dt;
+  s.update_history = update_history > 0 ? 1 : 0;
+  TaborContactHistory h{};
+  if (stored) std::memcpy(&h, stored, sizeof(h));
+  int status = tabor_contact_step(c.contact, &s, &h, &out);
+  if (status != TABOR_OK) fail_one(status, "tabor_contact_step");
+  if (update_history >= 0 && (stored || h.contact != 0.0)) {
+    fix_history->store(i, tag[j], reinterpret_cast<double *>(&h));
+    if (j < atom->nlocal) fix_history->store(j, tag[i], reinterpret_cast<double *>(&h));
+  }
+  return 1;
 }
 
 void PairTabor::compute(int eflag, int vflag)
@@ -192,84 +320,74 @@ void PairTabor::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
 
   double **x = atom->x;
-  double **v = atom->v;
   double **f = atom->f;
-  double *radius = atom->radius;
-  int *type = atom->type;
-  tagint *tag = atom->tag;
+  double **torque = atom->torque;
   int nlocal = atom->nlocal;
+  // pair granular's convention: the setup force call of a run does not advance
+  // the friction displacements
+  int update_history = update->setupflag ? 0 : 1;
 
   int inum = list->inum;
   int *ilist = list->ilist;
   int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
 
-  // a one-entry cache of the last law: monodisperse runs never search
-  int last_i = -1, last_j = -1;
-  double last_r = -1.0;
-  const Law *law = nullptr;
-
   for (int ii = 0; ii < inum; ii++) {
     int i = ilist[ii];
-    int itype = type[i];
     int *jlist = firstneigh[i];
     int jnum = numneigh[i];
     for (int jj = 0; jj < jnum; jj++) {
       int j = jlist[jj] & NEIGHMASK;
-      int jtype = type[j];
-      double delx = x[i][0] - x[j][0];
-      double dely = x[i][1] - x[j][1];
-      double delz = x[i][2] - x[j][2];
-      double rsq = delx * delx + dely * dely + delz * delz;
-      double radsum = radius[i] + radius[j];
-      double rstar = radius[i] * radius[j] / radsum;
-      int ti = MIN(itype, jtype), tj = MAX(itype, jtype);
-      if (ti != last_i || tj != last_j || rstar != last_r) {
-        law = &law_for(ti, tj, rstar);
-        last_i = ti;
-        last_j = tj;
-        last_r = rstar;
-      }
-      TaborHistory *stored = fix_history->find(i, tag[j]);
-      double reach = radsum + law->info.interaction_range;
-      if (!stored && rsq >= reach * reach) continue;
-      double r = sqrt(rsq);
-      double overlap = radsum - r;
-      double rinv = 1.0 / r;
-      // overlap rate = -(v_i - v_j) . n, n = (x_i - x_j)/r
-      double vrn = (v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely + (v[i][2] - v[j][2]) * delz;
-      double rate = -vrn * rinv;
-      TaborHistory h = stored ? *stored : TaborHistory{0.0, 0.0};
-      TaborForce out;
-      int status = tabor_law_evaluate(law->law, overlap, rate, &h, &out);
-      if (status != TABOR_OK) check(status, "tabor_law_evaluate");
-      evaluations++;
-      if (stored || h.contact != 0.0) {
-        fix_history->store(i, tag[j], h);
-        if (j < nlocal) fix_history->store(j, tag[i], h);
-      }
-      if (out.force == 0.0) continue;
-      double fpair = out.force * rinv;
-      double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
+      TaborContactForces out;
+      int first;
+      if (!evaluate(i, j, update_history, out, first)) continue;
+      if (out.normal_force == 0.0 && out.tangential_force == 0.0) continue;
+      // force on i
+      double sign = first ? 1.0 : -1.0;
+      double fx = sign * out.force[0], fy = sign * out.force[1], fz = sign * out.force[2];
+      const double *ti = first ? out.torque_i : out.torque_j;
+      const double *tj = first ? out.torque_j : out.torque_i;
       f[i][0] += fx;
       f[i][1] += fy;
       f[i][2] += fz;
+      torque[i][0] += ti[0];
+      torque[i][1] += ti[1];
+      torque[i][2] += ti[2];
       if (j < nlocal) {
         f[j][0] -= fx;
         f[j][1] -= fy;
         f[j][2] -= fz;
+        torque[j][0] += tj[0];
+        torque[j][1] += tj[1];
+        torque[j][2] += tj[2];
       }
-      if (evflag) ev_tally_xyz(i, j, nlocal, 0, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+      if (evflag)
+        ev_tally_xyz(i, j, nlocal, 0, 0.0, 0.0, fx, fy, fz, x[i][0] - x[j][0], x[i][1] - x[j][1],
+                     x[i][2] - x[j][2]);
     }
   }
-  if (fix_history->overflow > overflow_reported) {
-    overflow_reported = fix_history->overflow;
-    error->warning(FLERR, "pair tabor: more than {} contacts on one atom: {} histories dropped",
-                   FixTaborHistory::MAXPARTNER, fix_history->overflow);
-  }
+}
+
+/* the contact between i and j as compute pair/local sees it: the stored history
+   is read, not advanced; fforce * r is the normal force; the energy is not
+   tallied (0); svector: normal force, tangential force, contact radius, F_n0 */
+double PairTabor::single(int i, int j, int /*itype*/, int /*jtype*/, double rsq, double /*factor_coul*/,
+                         double /*factor_lj*/, double &fforce)
+{
+  fforce = 0.0;
+  for (int k = 0; k < single_extra; k++) svector[k] = 0.0;
+  TaborContactForces out;
+  int first;
+  if (!evaluate(i, j, -1, out, first)) return 0.0;
+  fforce = out.normal_force / sqrt(rsq);
+  svector[0] = out.normal_force;
+  svector[1] = out.tangential_force;
+  svector[2] = out.contact_radius;
+  svector[3] = out.critical_force;
+  return 0.0;
 }
 
 double PairTabor::memory_usage()
 {
-  return 0.0;
+  return (double) coeffs.size() * sizeof(Coeff);
 }

@@ -1,6 +1,13 @@
 /* pair_style tabor: tabor's normal contact laws (Hertz, JKR with the fixed-grip or
    load-controlled separation, Maugis-Dugdale at any Tabor parameter, optional
-   Kuwabara-Kono damping) through the tabor-ffi C ABI. Normal forces only. */
+   Kuwabara-Kono damping) with the friction, rolling and twisting models of LAMMPS's
+   pair_style granular (tabor-tangential), through the tabor-ffi C ABI.
+
+   One law per pair of atom types serves every effective radius (the branch is
+   tabulated in normalized variables; crates/tabor-ffi), so any polydispersity is
+   allowed. Works with newton on and off (it requests a newton-off neighbor list
+   and keeps each contact's history on both atoms). Contact history is written to
+   restart files. single() serves compute pair/local. */
 #ifndef TABOR_PAIR_TABOR_H
 #define TABOR_PAIR_TABOR_H
 
@@ -20,29 +27,28 @@ class PairTabor : public Pair {
   void coeff(int, char **) override;
   void init_style() override;
   double init_one(int, int) override;
+  double single(int, int, int, int, double, double, double, double &) override;
   double memory_usage() override;
 
  private:
-  struct Law {
-    double rstar;
-    TaborLaw *law;
-    TaborLawInfo info;
-  };
   struct Coeff {
     int set = 0;
     TaborLawParams params{};
-    std::vector<Law> laws;    // one per distinct effective radius
+    TaborFrictionParams friction{};
+    TaborContact *contact = nullptr;    // serves every effective radius
+    double reach = 0.0;                 // interaction range at the largest R* of the types
   };
-  std::vector<Coeff> coeffs;    // (ntypes+1)^2
+  std::vector<Coeff> coeffs;    // (ntypes+1)^2, upper triangle used
   double *maxrad;
   class FixTaborHistory *fix_history;
-  bigint evaluations, overflow_reported;
+  int history_width;
 
   int ntypes_alloc = 0;
-  Coeff &coeff_of(int i, int j) { return coeffs[i * (ntypes_alloc + 1) + j]; }
-  const Law &law_for(int itype, int jtype, double rstar);
+  Coeff &coeff_of(int i, int j) { return coeffs[MIN(i, j) * (ntypes_alloc + 1) + MAX(i, j)]; }
   void free_laws();
-  void check(int status, const char *what);
+  int evaluate(int i, int j, int update_history, TaborContactForces &out, int &first);
+  [[noreturn]] void fail_all(int status, const char *what);
+  [[noreturn]] void fail_one(int status, const char *what);
 };
 
 }    // namespace LAMMPS_NS

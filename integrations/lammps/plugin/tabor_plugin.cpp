@@ -29,7 +29,7 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.version = TABOR_LAMMPS_VERSION;
   plugin.style = "pair";
   plugin.name = "tabor";
-  plugin.info = "tabor normal contact laws: Hertz, JKR (fixed grip / load controlled), Maugis-Dugdale";
+  plugin.info = "tabor contact laws: Hertz, JKR (fixed grip / load controlled), Maugis-Dugdale";
   plugin.author = "tabor developers";
   plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_tabor_creator;
   plugin.handle = handle;

@@ -2,7 +2,7 @@
 //! (`--check`) the restitution a user's LAMMPS granular line really produces.
 //! Derivations: `crates/tabor-lammps/README.md`.
 
-use crate::output::{print_json, stdout, Outcome};
+use crate::output::{json_text, print_json, stdout, Outcome};
 use std::io::Write;
 use std::path::PathBuf;
 use tabor::lammps::{check, export, export_plugin, Check};
@@ -47,6 +47,18 @@ pub struct LammpsArgs {
     /// exists): tabor's own force law
     #[arg(long, value_name = "PATH")]
     plugin: Option<PathBuf>,
+    /// A LAMMPS variable used in the --check line ($x, ${name}), as NAME=VALUE
+    /// (repeatable)
+    #[arg(long = "var", value_name = "NAME=VALUE", value_parser = parse_var, requires = "check")]
+    vars: Vec<(String, String)>,
+}
+
+/// `NAME=VALUE` of `--var`.
+fn parse_var(s: &str) -> Result<(String, String), String> {
+    match s.split_once('=') {
+        Some((n, v)) if !n.is_empty() => Ok((n.to_string(), v.to_string())),
+        _ => Err(format!("--var {s}: expected NAME=VALUE")),
+    }
 }
 
 /// Writes `text` to stdout; a closed pipe ends the output quietly.
@@ -109,7 +121,8 @@ pub fn run(args: &Args) -> Outcome {
     let Target::Lammps(a) = &args.target;
     let scene = Scene::from_path(&a.scene).map_err(|e| format!("{}: {e}", a.scene.display()))?;
     if let Some(line) = &a.check {
-        let c = check(&scene, line, a.speed).map_err(|e| format!("{}: {e}", a.scene.display()))?;
+        let c = check(&scene, line, a.speed, &a.vars)
+            .map_err(|e| format!("{}: {e}", a.scene.display()))?;
         if a.json {
             return print_json(&c);
         }
@@ -121,6 +134,10 @@ pub fn run(args: &Args) -> Outcome {
         let plugin = std::fs::canonicalize(plugin).unwrap_or_else(|_| plugin.clone());
         let x = export_plugin(&scene, &plugin.to_string_lossy(), a.speed)
             .map_err(|e| format!("{}: {e}", a.scene.display()))?;
+        // also in the fragment (# WARNING) and the JSON; stderr so it is seen
+        for w in &x.warnings {
+            eprintln!("warning: {w}");
+        }
         return write_out(a, &x, &x.fragment());
     }
     let x = export(&scene, a.speed).map_err(|e| format!("{}: {e}", a.scene.display()))?;
@@ -131,15 +148,9 @@ pub fn run(args: &Args) -> Outcome {
 fn write_out(a: &LammpsArgs, x: &impl serde::Serialize, fragment: &str) -> Outcome {
     match (&a.out, a.json) {
         (None, true) => print_json(x),
-        (Some(path), true) => {
-            let text = serde_json::to_string_pretty(&serde_json::json!({
-                "tabor_version": tabor::VERSION,
-                "export": x,
-            }))
-            .map_err(|e| e.to_string())?;
-            std::fs::write(path, text + "\n")
-                .map_err(|e| format!("cannot write {}: {e}", path.display()).into())
-        }
+        // the same object as on stdout
+        (Some(path), true) => std::fs::write(path, json_text(x)? + "\n")
+            .map_err(|e| format!("cannot write {}: {e}", path.display()).into()),
         (Some(path), false) => std::fs::write(path, fragment)
             .map_err(|e| format!("cannot write {}: {e}", path.display()).into()),
         (None, false) => emit(fragment),

@@ -2,21 +2,12 @@
 //! adhesive energy loss, the sticking velocity and, for a given impact speed, the
 //! maximum contact radius and the coefficient of restitution.
 
+use crate::args::{self, Tolerance};
 use crate::output::{message, print_json, print_table, stdout, Outcome};
 use std::io::Write;
 use tabor::jkr::SeparationRule;
+use tabor::numerics::tolerance;
 use tabor::single::jkr::{jkr, JkrArgs};
-
-/// Where contact breaks on the way out.
-#[derive(Clone, Copy, Debug, clap::ValueEnum)]
-pub enum Separation {
-    /// Displacement-controlled instability dd/da = 0, force −(5/6)πΔγR (the seed's
-    /// choice, physical for an impact)
-    FixedGrip,
-    /// Load-controlled pull-off dF/da = 0, force −(3/2)πΔγR (as some DEM codes do;
-    /// about half the loss)
-    LoadControlled,
-}
 
 /// Arguments of `tabor jkr`. All inputs are effective quantities of the collision.
 #[derive(clap::Args)]
@@ -42,11 +33,13 @@ pub struct Args {
     #[arg(long, allow_negative_numbers = true)]
     speed: Option<f64>,
     /// Where contact breaks
-    #[arg(long, value_enum, default_value = "fixed-grip")]
-    separation: Separation,
+    #[arg(long, value_parser = args::menu(&SeparationRule::ALL, |_| String::new()),
+        default_value_t = SeparationRule::FixedGrip)]
+    separation: SeparationRule,
     /// Relative tolerance of quadratures and root searches, in [1e-15, 0.5]
-    #[arg(long, allow_negative_numbers = true, default_value = "1e-12")]
-    tolerance: f64,
+    #[arg(long, allow_negative_numbers = true,
+        default_value_t = Tolerance(tolerance::DEFAULT_TOLERANCE))]
+    tolerance: Tolerance,
     /// Print one JSON object instead of a table
     #[arg(long)]
     json: bool,
@@ -54,18 +47,14 @@ pub struct Args {
 
 /// Runs `tabor jkr`.
 pub fn run(args: &Args) -> Outcome {
-    let separation = match args.separation {
-        Separation::FixedGrip => SeparationRule::FixedGrip,
-        Separation::LoadControlled => SeparationRule::LoadControlled,
-    };
     let out = jkr(&JkrArgs {
         modulus: args.modulus,
         radius: args.radius,
         work_of_adhesion: args.work_of_adhesion,
         mass: args.mass,
         speed: args.speed,
-        separation,
-        tolerance: args.tolerance,
+        separation: args.separation,
+        tolerance: args.tolerance.0,
     })
     .map_err(message)?;
     if args.json {

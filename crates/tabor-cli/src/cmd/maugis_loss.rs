@@ -1,16 +1,19 @@
 //! `tabor maugis-loss`: the Maugis-Dugdale adhesive loss W(Λ) (seed 000 eq. (5.43),
 //! Fig. 5.2) as a tab-separated table.
 
+use crate::args::Tolerance;
 use crate::output::{message, number, print_json_array, stdout, Outcome, VERSION};
 use serde::Serialize;
 use tabor::maugis::units::{tabor_parameter_from_maugis, tabor_parameter_from_tabor_mu};
 use tabor::maugis::{jkr_normalized_loss, loss_over_jkr_fast, normalized_loss, TaborCase};
+use tabor::numerics::tolerance;
+use tabor::restitution::Error;
 
 /// Arguments of `tabor maugis-loss`.
 #[derive(clap::Args)]
 #[command(
     after_help = "Three ways to give the Tabor parameter, each repeatable and mixable:\n  \
---lambda            the seed's Λ = d_n/h (the column `lambda`)\n  \
+--lambda            Willert's (2020) Λ = d_n/h (the column `lambda`)\n  \
 --maugis-parameter  Maugis' λ = 2σ0 (R/(πΔγK²))^(1/3), K = 4E*/3; Λ = 0.6861 λ\n  \
 --tabor-mu          Tabor's μ = (RΔγ²/(E*² z0³))^(1/3), through the Dugdale equivalence \
 λ ≈ 1.157 μ (an approximation)\n\
@@ -44,8 +47,8 @@ pub struct Args {
     #[arg(long)]
     log: bool,
     /// Relative tolerance of the direct evaluation
-    #[arg(long, default_value_t = 1e-12, allow_negative_numbers = true)]
-    tolerance: f64,
+    #[arg(long, default_value_t = Tolerance(tolerance::DEFAULT_TOLERANCE), allow_negative_numbers = true)]
+    tolerance: Tolerance,
     /// Use the precomputed fast tier (relative error < 1e-10) instead
     #[arg(long)]
     fast: bool,
@@ -67,35 +70,85 @@ struct Row {
     method: &'static str,
 }
 
-/// The values of Λ: first the explicit ones (`--lambda`, `--maugis-parameter`,
-/// `--tabor-mu`, in this order), then the range; and how many are explicit.
-fn lambdas(args: &Args) -> Result<(Vec<f64>, usize), String> {
-    let mut out = args.lambdas.clone();
+/// Where a value of Λ came from, to name the flag the user typed in an error.
+#[derive(Clone, Copy)]
+enum Origin {
+    /// `--lambda` (or a point of the range: its ends are `--from`/`--to`).
+    Flag(&'static str),
+    /// Converted from `--maugis-parameter`/`--tabor-mu` with this value.
+    Converted(&'static str, f64),
+}
+
+impl Origin {
+    /// A library error on Λ, naming the flag it came from.
+    fn message(self, e: Error) -> String {
+        match (self, e) {
+            (
+                Origin::Flag(flag),
+                Error::InvalidParameter {
+                    parameter: "tabor_parameter",
+                    value,
+                    requirement,
+                },
+            ) => format!("invalid {flag} = {value:e}: {requirement}"),
+            (
+                Origin::Converted(flag, given),
+                Error::InvalidParameter {
+                    parameter: "tabor_parameter",
+                    value,
+                    requirement,
+                },
+            ) => format!("invalid {flag} = {given:e}: gives Λ = {value:e}, which {requirement}"),
+            (_, other) => message(other),
+        }
+    }
+}
+
+/// The values of Λ with their origin: first the explicit ones (`--lambda`,
+/// `--maugis-parameter`, `--tabor-mu`, in this order), then the range; and how
+/// many are explicit.
+fn lambdas(args: &Args) -> Result<(Vec<(f64, Origin)>, usize), String> {
+    let mut out: Vec<(f64, Origin)> = args
+        .lambdas
+        .iter()
+        .map(|&l| (l, Origin::Flag("--lambda")))
+        .collect();
     for &l in &args.maugis_parameters {
-        out.push(tabor_parameter_from_maugis(l).map_err(message)?);
+        let origin = Origin::Converted("--maugis-parameter", l);
+        out.push((tabor_parameter_from_maugis(l).map_err(message)?, origin));
     }
     for &mu in &args.tabor_mus {
-        out.push(tabor_parameter_from_tabor_mu(mu).map_err(message)?);
+        let origin = Origin::Converted("--tabor-mu", mu);
+        out.push((tabor_parameter_from_tabor_mu(mu).map_err(message)?, origin));
     }
     let explicit = out.len();
     if let (Some(from), Some(to), Some(points)) = (args.from, args.to, args.points) {
         if !(2..=MAX_POINTS).contains(&points) {
             return Err(format!(
-                "invalid points = {points}: must be at least 2 and at most {MAX_POINTS}"
+                "invalid --points = {points}: must be at least 2 and at most {MAX_POINTS}"
             ));
         }
         if args.log && !(from > 0.0 && to > 0.0) {
             return Err(format!(
-                "invalid range {from}..{to}: --log needs positive ends"
+                "invalid range --from {from} --to {to}: --log needs positive ends"
             ));
         }
         for i in 0..points {
             let f = i as f64 / (points - 1) as f64;
-            out.push(if args.log {
-                from * (to / from).powf(f)
-            } else {
-                from + (to - from) * f
-            });
+            let origin = match i {
+                0 => Origin::Flag("--from"),
+                i if i + 1 == points => Origin::Flag("--to"),
+                // between the ends: valid when both ends are
+                _ => Origin::Flag("--from"),
+            };
+            out.push((
+                if args.log {
+                    from * (to / from).powf(f)
+                } else {
+                    from + (to - from) * f
+                },
+                origin,
+            ));
         }
     }
     if out.is_empty() {
@@ -108,9 +161,9 @@ fn lambdas(args: &Args) -> Result<(Vec<f64>, usize), String> {
     Ok((out, explicit))
 }
 
-fn row(args: &Args, lambda: f64) -> Result<Row, String> {
+fn row(args: &Args, (lambda, origin): (f64, Origin)) -> Result<Row, String> {
     Ok(if args.fast {
-        let r = loss_over_jkr_fast(lambda).map_err(message)?;
+        let r = loss_over_jkr_fast(lambda).map_err(|e| origin.message(e))?;
         Row {
             lambda,
             case: TaborCase::of(lambda).number(),
@@ -120,7 +173,7 @@ fn row(args: &Args, lambda: f64) -> Result<Row, String> {
             method: "fast tier (Chebyshev interpolant, relative error < 1e-10)",
         }
     } else {
-        let w = normalized_loss(lambda, args.tolerance).map_err(message)?;
+        let w = normalized_loss(lambda, args.tolerance.0).map_err(|e| origin.message(e))?;
         Row {
             lambda,
             case: w.case.number(),
@@ -142,14 +195,14 @@ pub fn run(args: &Args) -> Outcome {
         let mut checked = lambdas[..explicit].to_vec();
         checked.extend(lambdas[explicit..].first());
         checked.extend(lambdas[explicit..].last());
-        for lambda in checked {
-            row(args, lambda)?;
+        for point in checked {
+            row(args, point)?;
         }
     }
     if args.json {
         let rows = lambdas
             .iter()
-            .map(|&l| row(args, l))
+            .map(|&point| row(args, point))
             .collect::<Result<Vec<_>, _>>()?;
         return print_json_array(&rows);
     }
@@ -157,8 +210,8 @@ pub fn run(args: &Args) -> Outcome {
         .delimiter(b'\t')
         .from_writer(stdout());
     table.write_record(["lambda", "case", "loss", "loss_over_jkr", "tabor_version"])?;
-    for lambda in lambdas {
-        let r = row(args, lambda)?;
+    for point in lambdas {
+        let r = row(args, point)?;
         table.write_record([
             number(r.lambda),
             r.case.to_string(),

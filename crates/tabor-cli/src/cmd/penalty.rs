@@ -3,23 +3,11 @@
 //! Lankarani-Nikravesh or Flores law for a nominal restitution, and the restitution
 //! the law actually achieves in a simulated impact.
 
-use crate::output::{message, print_json, print_table, stdout, Outcome};
+use crate::args;
+use crate::output::{print_json, print_table, stdout, Outcome};
 use std::io::Write;
 use tabor::single::penalty::{penalty, PenaltyArgs, PenaltyLaw};
 use tabor::single::Naming;
-
-/// Which penalty law.
-#[derive(Clone, Copy, Debug, clap::ValueEnum)]
-pub enum Law {
-    /// Seed 002: F = k κ(h, ε) l(v, V); the loss speed V is calibrated exactly
-    Characteristic,
-    /// F = K δⁿ (1 + χ δ̇), χ = 3(1 − e)/(2 v0) (Hunt & Crossley 1975)
-    HuntCrossley,
-    /// χ = 3(1 − e²)/(4 v0) (Lankarani & Nikravesh 1990)
-    LankaraniNikravesh,
-    /// χ = 8(1 − e)/(5 e v0) (Flores et al. 2011)
-    Flores,
-}
 
 /// Arguments of `tabor penalty`.
 #[derive(clap::Args)]
@@ -30,8 +18,8 @@ pub enum Law {
 )]
 pub struct Args {
     /// The penalty law
-    #[arg(long, value_enum)]
-    law: Law,
+    #[arg(long, value_parser = args::menu(&PenaltyLaw::ALL, |_| String::new()))]
+    law: PenaltyLaw,
     /// Nominal coefficient of restitution e, in (0, 1]
     #[arg(long, allow_negative_numbers = true)]
     restitution: f64,
@@ -58,15 +46,9 @@ pub struct Args {
 
 /// Runs `tabor penalty`.
 pub fn run(args: &Args) -> Outcome {
-    let law = match args.law {
-        Law::Characteristic => PenaltyLaw::Characteristic,
-        Law::HuntCrossley => PenaltyLaw::HuntCrossley,
-        Law::LankaraniNikravesh => PenaltyLaw::LankaraniNikravesh,
-        Law::Flores => PenaltyLaw::Flores,
-    };
     let out = penalty(
         &PenaltyArgs {
-            law,
+            law: args.law,
             restitution: args.restitution,
             stiffness: args.stiffness,
             exponent: args.exponent,
@@ -76,7 +58,7 @@ pub fn run(args: &Args) -> Outcome {
         },
         Naming::Flags,
     )
-    .map_err(|e| e.message(message))?;
+    .map_err(|e| e.render(Naming::Flags))?;
     if args.json {
         return print_json(&out);
     }

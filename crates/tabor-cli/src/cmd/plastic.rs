@@ -2,40 +2,11 @@
 //! sections 5.5-5.6, (5.101)-(5.126); seed 001, eqs. (12), (18), (19)): energy loss,
 //! restitution, yield velocity and, for the adhesive models, sticking velocity.
 
-use crate::output::{message, print_json, print_table, stdout, Outcome};
+use crate::args;
+use crate::output::{print_json, print_table, stdout, Outcome};
 use std::io::Write;
-use tabor::single::plastic::{self as single, plastic, PlasticArgs};
+use tabor::single::plastic::{model_inputs, plastic, PlasticArgs, PlasticModel};
 use tabor::single::Naming;
-
-/// Which elasto-plastic model.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Model {
-    /// Thornton (5.101)-(5.106)
-    Thornton,
-    /// Interpolation model, Q = 5, D = 80 (5.107)
-    Interpolation,
-    /// Jackson-Green FEM-based law, time-domain simulation (5.108); needs --poisson-ratio
-    JacksonGreen,
-    /// Seed 001 fitted restitution (12), (18), (19); needs --density
-    DimensionlessFit,
-    /// Adhesive interpolation model (5.111)-(5.126); needs --work-of-adhesion
-    AdhesiveInterpolation,
-    /// Plastic + JKR losses (5.109)-(5.110); needs --work-of-adhesion
-    Superposition,
-}
-
-/// The non-adhesive model under `--model superposition`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum PlasticModel {
-    /// Thornton (5.101)-(5.106)
-    Thornton,
-    /// Interpolation model (5.107)
-    Interpolation,
-    /// Jackson-Green (5.108); needs --poisson-ratio
-    JacksonGreen,
-    /// Seed 001 fit; needs --density
-    DimensionlessFit,
-}
 
 /// Arguments of `tabor plastic`. All inputs are effective quantities of the collision.
 #[derive(clap::Args)]
@@ -46,7 +17,7 @@ pub enum PlasticModel {
     Which model needs which flag:\n  \
     thornton, interpolation      --modulus --radius --mass --yield-stress --speed\n  \
     jackson-green                + --poisson-ratio (of the yielding body; hardness H/sigma_Y = 2.67)\n  \
-    dimensionless-fit            + --density (of the sphere, seed 001)\n  \
+    dimensionless-fit            + --density (of the sphere; the dimensionless FEM fit)\n  \
     adhesive-interpolation       + --work-of-adhesion (or --adhesion-parameter to give Phi)\n  \
     superposition                + --work-of-adhesion, --plastic-model (default interpolation)\n\
     With --json the output has model, restitution, energy_loss, yield_velocity, \
@@ -54,8 +25,8 @@ pub enum PlasticModel {
 )]
 pub struct Args {
     /// The model
-    #[arg(long, value_enum)]
-    model: Model,
+    #[arg(long, value_parser = args::menu(&PlasticModel::ALL, |m| args::needs(model_inputs(m))))]
+    model: PlasticModel,
     /// Effective modulus E* (Pa)
     #[arg(long, allow_negative_numbers = true)]
     modulus: f64,
@@ -85,7 +56,8 @@ pub struct Args {
     #[arg(long, allow_negative_numbers = true)]
     adhesion_parameter: Option<f64>,
     /// The non-adhesive model of --model superposition
-    #[arg(long, value_enum, default_value = "interpolation")]
+    #[arg(long, value_parser = args::menu(PlasticModel::NON_ADHESIVE, |m| args::needs(model_inputs(m))),
+        default_value_t = PlasticModel::Interpolation)]
     plastic_model: PlasticModel,
     /// Print one JSON object instead of a table
     #[arg(long)]
@@ -94,23 +66,9 @@ pub struct Args {
 
 /// Runs `tabor plastic`.
 pub fn run(args: &Args) -> Outcome {
-    let shared = |m: PlasticModel| match m {
-        PlasticModel::Thornton => single::PlasticModel::Thornton,
-        PlasticModel::Interpolation => single::PlasticModel::Interpolation,
-        PlasticModel::JacksonGreen => single::PlasticModel::JacksonGreen,
-        PlasticModel::DimensionlessFit => single::PlasticModel::DimensionlessFit,
-    };
-    let model = match args.model {
-        Model::Thornton => single::PlasticModel::Thornton,
-        Model::Interpolation => single::PlasticModel::Interpolation,
-        Model::JacksonGreen => single::PlasticModel::JacksonGreen,
-        Model::DimensionlessFit => single::PlasticModel::DimensionlessFit,
-        Model::AdhesiveInterpolation => single::PlasticModel::AdhesiveInterpolation,
-        Model::Superposition => single::PlasticModel::Superposition,
-    };
     let out = plastic(
         &PlasticArgs {
-            model,
+            model: args.model,
             modulus: args.modulus,
             radius: args.radius,
             mass: args.mass,
@@ -120,11 +78,11 @@ pub fn run(args: &Args) -> Outcome {
             density: args.density,
             work_of_adhesion: args.work_of_adhesion,
             adhesion_parameter: args.adhesion_parameter,
-            plastic_model: shared(args.plastic_model),
+            plastic_model: args.plastic_model,
         },
         Naming::Flags,
     )
-    .map_err(|e| e.message(message))?;
+    .map_err(|e| e.render(Naming::Flags))?;
     if args.json {
         return print_json(&out);
     }

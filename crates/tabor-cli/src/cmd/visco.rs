@@ -2,37 +2,12 @@
 //! the coefficient of restitution as a function of each model's dimensionless
 //! parameters.
 
-use crate::output::{message, print_json, print_table, stdout, Outcome};
+use crate::args::{self, Tolerance};
+use crate::output::{print_json, print_table, stdout, Outcome};
 use std::io::Write;
-use tabor::single::visco::{visco, ViscoArgs, ViscoModel};
+use tabor::numerics::tolerance;
+use tabor::single::visco::{model_inputs, visco, ViscoArgs, ViscoModel};
 use tabor::single::Naming;
-
-/// The viscoelastic models.
-#[derive(Clone, Copy, Debug, clap::ValueEnum)]
-pub enum Model {
-    /// Flat punch, Kelvin-Voigt, closed form (5.61)-(5.63); needs --damping-ratio
-    KelvinVoigtFlat,
-    /// Sphere, Kelvin-Voigt, Kuwabara-Kono (5.66); needs --viscous-parameter
-    KuwabaraKono,
-    /// Sphere, Kelvin-Voigt, compression and restitution apart (5.64)-(5.67); needs --viscous-parameter
-    KelvinVoigtSphere,
-    /// Sphere, linear damping β = 0 (5.72); needs --damping
-    LeeHerrmann,
-    /// Sphere, β = 1/4 with (5.73); needs --alpha
-    Tsuji,
-    /// Sphere, β = 3/2 (5.72); needs --damping
-    HuntCrossley,
-    /// Sphere, damping exponent of your choice (5.72); needs --damping-exponent, --damping
-    PowerDamping,
-    /// Flat punch, standard medium (5.76)-(5.81), with the equivalent Kelvin-Voigt value (5.83); needs --modulus-ratio, --viscous-parameter
-    StandardFlat,
-    /// Sphere, standard medium, MDR (5.84)-(5.90); needs --modulus-ratio, --viscous-parameter
-    StandardSphere,
-    /// Sphere, Kelvin-Maxwell medium, MDR (5.91)-(5.92); needs --modulus-ratio, --viscous-parameter
-    KelvinMaxwellSphere,
-    /// Flat punch, compressible Kelvin-Voigt (5.96)-(5.99); needs --poisson-ratio, --damping-ratio [, --bulk-damping-ratio, default (5.100)]
-    CompressibleFlat,
-}
 
 /// Arguments of `tabor visco`. All parameters are dimensionless.
 #[derive(clap::Args)]
@@ -43,8 +18,8 @@ pub enum Model {
 )]
 pub struct Args {
     /// The model
-    #[arg(long, value_enum)]
-    model: Model,
+    #[arg(long, value_parser = args::menu(&ViscoModel::ALL, |m| args::needs(model_inputs(m))))]
+    model: ViscoModel,
     /// Damping ratio D (flat punch; D1 of the compressible model), > 0
     #[arg(long, allow_negative_numbers = true)]
     damping_ratio: Option<f64>,
@@ -70,8 +45,9 @@ pub struct Args {
     #[arg(long, allow_negative_numbers = true)]
     bulk_damping_ratio: Option<f64>,
     /// Relative integration tolerance, in [1e-15, 0.5]
-    #[arg(long, allow_negative_numbers = true, default_value = "1e-10")]
-    tolerance: f64,
+    #[arg(long, allow_negative_numbers = true,
+        default_value_t = Tolerance(tolerance::ACCURACY))]
+    tolerance: Tolerance,
     /// Print one JSON object instead of a table
     #[arg(long)]
     json: bool,
@@ -79,22 +55,9 @@ pub struct Args {
 
 /// Runs `tabor visco`.
 pub fn run(args: &Args) -> Outcome {
-    let model = match args.model {
-        Model::KelvinVoigtFlat => ViscoModel::KelvinVoigtFlat,
-        Model::KuwabaraKono => ViscoModel::KuwabaraKono,
-        Model::KelvinVoigtSphere => ViscoModel::KelvinVoigtSphere,
-        Model::LeeHerrmann => ViscoModel::LeeHerrmann,
-        Model::Tsuji => ViscoModel::Tsuji,
-        Model::HuntCrossley => ViscoModel::HuntCrossley,
-        Model::PowerDamping => ViscoModel::PowerDamping,
-        Model::StandardFlat => ViscoModel::StandardFlat,
-        Model::StandardSphere => ViscoModel::StandardSphere,
-        Model::KelvinMaxwellSphere => ViscoModel::KelvinMaxwellSphere,
-        Model::CompressibleFlat => ViscoModel::CompressibleFlat,
-    };
     let out = visco(
         &ViscoArgs {
-            model,
+            model: args.model,
             damping_ratio: args.damping_ratio,
             viscous_parameter: args.viscous_parameter,
             modulus_ratio: args.modulus_ratio,
@@ -103,11 +66,11 @@ pub fn run(args: &Args) -> Outcome {
             alpha: args.alpha,
             poisson_ratio: args.poisson_ratio,
             bulk_damping_ratio: args.bulk_damping_ratio,
-            tolerance: args.tolerance,
+            tolerance: args.tolerance.0,
         },
         Naming::Flags,
     )
-    .map_err(|e| e.message(message))?;
+    .map_err(|e| e.render(Naming::Flags))?;
     if args.json {
         return print_json(&out);
     }

@@ -18,8 +18,8 @@
 #![allow(clippy::needless_range_loop)] // component loops over small fixed arrays
 
 use super::{
-    drive, finite, first_non_finite, locate_event_in_step, no_event, DenseStepper, EventDirection,
-    EventPoint, FailureNames, OdeSolution, OdeTolerance, StepperCore,
+    drive, finite, first_non_finite, locate_event_in_step, no_event, one_step_method, DenseStepper,
+    EventDirection, EventPoint, FailureNames, OdeSolution, OdeTolerance, StepperCore,
 };
 use crate::{Cost, Result};
 
@@ -182,38 +182,6 @@ impl<const N: usize> DormandPrince<N> {
         }
     }
 
-    /// Current time (end of the last accepted step).
-    pub fn t(&self) -> f64 {
-        self.core.t
-    }
-
-    /// Current state.
-    pub fn y(&self) -> [f64; N] {
-        self.core.y
-    }
-
-    /// `f(t, y)` at the current point.
-    pub fn derivative(&self) -> [f64; N] {
-        self.dy
-    }
-
-    /// Start of the last accepted step (equal to [`DormandPrince::t`] right after a
-    /// (re)start).
-    pub fn previous_t(&self) -> f64 {
-        self.core.t_old
-    }
-
-    /// Accepted and rejected steps so far.
-    pub fn steps(&self) -> (u64, u64) {
-        self.core.steps()
-    }
-
-    /// Right-hand-side evaluations (`evaluations`) and steps, accepted plus rejected
-    /// (`iterations`), so far.
-    pub fn cost(&self) -> Cost {
-        self.core.cost()
-    }
-
     /// Takes one accepted step, not beyond `t_limit` (> current time). Rejected trial
     /// steps are retried with a smaller step.
     ///
@@ -327,26 +295,9 @@ impl<const N: usize> DormandPrince<N> {
         }
         out
     }
-
-    /// Searches the last accepted step for a crossing of the event function `g` in
-    /// `direction`, given its values `g_before` at the start and `g_after` at the end
-    /// of the step. Returns the crossing located by Brent's method on the dense
-    /// output to `time_tolerance` (absolute, in t), with the evaluations of `g`
-    /// spent, or `None` when the step has no such crossing.
-    pub fn locate_event<G>(
-        &self,
-        mut g: G,
-        direction: EventDirection,
-        g_before: f64,
-        g_after: f64,
-        time_tolerance: f64,
-    ) -> Result<Option<(EventPoint<N>, Cost)>>
-    where
-        G: FnMut(f64, &[f64; N]) -> f64,
-    {
-        locate_event_in_step(self, &mut g, direction, g_before, g_after, time_tolerance)
-    }
 }
+
+one_step_method!(DormandPrince);
 
 /// The coefficients of the continuous extension of an accepted step of size `h`
 /// from `y` to `y_new` with stages `k` (Hairer's `CONTD5`).
@@ -374,30 +325,6 @@ fn dense_coefficients<const N: usize>(
                 + D7 * k[6][i]);
     }
     cont
-}
-
-impl<const N: usize> DenseStepper<N> for DormandPrince<N> {
-    fn current(&self) -> (f64, [f64; N]) {
-        (self.core.t, self.core.y)
-    }
-    fn step_start(&self) -> f64 {
-        self.core.t_old
-    }
-    fn dense(&self, t: f64) -> [f64; N] {
-        self.dense_output(t)
-    }
-    fn advance<F>(&mut self, f: &mut F, t_limit: f64) -> Result<()>
-    where
-        F: FnMut(f64, &[f64; N]) -> [f64; N],
-    {
-        self.step(f, t_limit)
-    }
-    fn step_counts(&self) -> (u64, u64) {
-        self.core.steps()
-    }
-    fn spent(&self) -> Cost {
-        self.core.cost()
-    }
 }
 
 /// Integrates `y' = f(t, y)` from `(t0, y0)` to `t_end` > `t0`.

@@ -5,6 +5,9 @@
 //! - [`DormandPrince`] (module `dormand_prince`): explicit Runge-Kutta 5(4) with a
 //!   4th-order dense output, for non-stiff systems; [`solve`] and
 //!   [`solve_until_event`] integrate with it;
+//! - [`DormandPrince853`] (module `dop853`): explicit Runge-Kutta of order 8 with a
+//!   7th-order dense output prepared on demand, for tight tolerances (the impact
+//!   simulator of `tabor-dynamics`);
 //! - [`rosenbrock`]: the L-stable Rosenbrock methods Rodas5P (default) and RODAS4,
 //!   for stiff systems.
 //!
@@ -16,18 +19,22 @@
 //!   step with Brent's method ([`crate::root_finding::brent`]), so locating them
 //!   costs no evaluations of `f`;
 //! - [`DenseStepper`]: the interface of a one-step integrator with dense output;
-//! - [`drive`]: the one step-and-locate-event loop, with an observer called after
-//!   every accepted step (to record a trajectory or watch the state); every solver
-//!   and phase integration in the workspace is built on it;
+//! - [`drive`] and [`drive_events`]: the one step-and-locate-event loop (one event
+//!   function, or several of which the earliest crossing wins), with an observer
+//!   called after every accepted step (to record a trajectory or watch the state);
+//!   every solver, phase integration and the impact simulator of the workspace is
+//!   built on it;
 //! - [`OdeSolution`], [`Integration`]: what a driver returns.
 //!
 //! The state is a fixed-size array `[f64; N]` (no allocation per step).
 
 #![allow(clippy::needless_range_loop)] // component loops over small fixed arrays
 
+mod dop853;
 mod dormand_prince;
 pub mod rosenbrock;
 
+pub use dop853::DormandPrince853;
 pub use dormand_prince::{solve, solve_until_event, DormandPrince};
 
 use crate::root_finding::{brent, RootTolerance};
@@ -133,9 +140,15 @@ impl OdeTolerance {
 }
 
 impl Default for OdeTolerance {
-    /// `relative = 1e-10`, `absolute = 1e-12`.
+    /// `relative` = [`ODE_TOLERANCE`](crate::tolerance::ODE_TOLERANCE) (1e-11),
+    /// `absolute` = [`ODE_ABSOLUTE_TOLERANCE`](crate::tolerance::ODE_ABSOLUTE_TOLERANCE)
+    /// (1e-13): the default of every simulated impact
+    /// (`tabor_dynamics::SimulationSettings::default`).
     fn default() -> Self {
-        OdeTolerance::new(1e-10, 1e-12)
+        OdeTolerance::new(
+            crate::tolerance::ODE_TOLERANCE,
+            crate::tolerance::ODE_ABSOLUTE_TOLERANCE,
+        )
     }
 }
 
@@ -209,7 +222,111 @@ pub trait DenseStepper<const N: usize> {
     fn step_counts(&self) -> (u64, u64);
     /// Evaluations of f and steps so far.
     fn spent(&self) -> Cost;
+    /// Makes [`DenseStepper::dense`] available on the last accepted step. Methods
+    /// whose continuous extension needs extra evaluations of f
+    /// ([`DormandPrince853`]) do them here, once per step, only when asked; for the
+    /// others it does nothing. [`drive`] calls it before it locates an event or
+    /// hands a step to its observer, [`drive_events`] only on the step that
+    /// contains an event.
+    fn prepare_dense<F>(&mut self, _f: &mut F) -> Result<()>
+    where
+        F: FnMut(f64, &[f64; N]) -> [f64; N],
+    {
+        Ok(())
+    }
 }
+
+/// The accessors, the event search on the last step and the [`DenseStepper`]
+/// implementation that every one-step method of this module shares, written once:
+/// the method provides `core: StepperCore<N>`, `dense_output(&self, t)` and
+/// `step(&mut self, f, t_limit)` (and, for a lazily prepared dense output,
+/// `prepare_dense_output(&mut self, f)`).
+macro_rules! one_step_method {
+    ($method:ident $(, prepare = $prepare:ident)?) => {
+        impl<const N: usize> $method<N> {
+            /// Current time (end of the last accepted step).
+            pub fn t(&self) -> f64 {
+                self.core.t
+            }
+
+            /// Current state.
+            pub fn y(&self) -> [f64; N] {
+                self.core.y
+            }
+
+            /// Start of the last accepted step (equal to the current time right after
+            /// a (re)start).
+            pub fn previous_t(&self) -> f64 {
+                self.core.t_old
+            }
+
+            /// Accepted and rejected steps so far.
+            pub fn steps(&self) -> (u64, u64) {
+                self.core.steps()
+            }
+
+            /// Right-hand-side evaluations (`evaluations`, including those of a
+            /// Jacobian by differences) and steps, accepted plus rejected
+            /// (`iterations`), so far.
+            pub fn cost(&self) -> Cost {
+                self.core.cost()
+            }
+
+            /// Searches the last accepted step for a crossing of the event function
+            /// `g` in `direction`, given its values `g_before` at the start and
+            /// `g_after` at the end of the step. Returns the crossing located by
+            /// Brent's method on the dense output to `time_tolerance` (absolute, in
+            /// t), with the evaluations of `g` spent, or `None` when the step has no
+            /// such crossing ([`locate_event_in_step`]).
+            pub fn locate_event<G>(
+                &self,
+                mut g: G,
+                direction: EventDirection,
+                g_before: f64,
+                g_after: f64,
+                time_tolerance: f64,
+            ) -> Result<Option<(EventPoint<N>, Cost)>>
+            where
+                G: FnMut(f64, &[f64; N]) -> f64,
+            {
+                locate_event_in_step(self, &mut g, direction, g_before, g_after, time_tolerance)
+            }
+        }
+
+        impl<const N: usize> DenseStepper<N> for $method<N> {
+            fn current(&self) -> (f64, [f64; N]) {
+                (self.core.t, self.core.y)
+            }
+            fn step_start(&self) -> f64 {
+                self.core.t_old
+            }
+            fn dense(&self, t: f64) -> [f64; N] {
+                self.dense_output(t)
+            }
+            fn advance<F>(&mut self, f: &mut F, t_limit: f64) -> Result<()>
+            where
+                F: FnMut(f64, &[f64; N]) -> [f64; N],
+            {
+                self.step(f, t_limit)
+            }
+            fn step_counts(&self) -> (u64, u64) {
+                self.core.steps()
+            }
+            fn spent(&self) -> Cost {
+                self.core.cost()
+            }
+            $(
+            fn prepare_dense<F>(&mut self, f: &mut F) -> Result<()>
+            where
+                F: FnMut(f64, &[f64; N]) -> [f64; N],
+            {
+                self.$prepare(f)
+            }
+            )?
+        }
+    };
+}
+pub(crate) use one_step_method;
 
 /// The crossing of `g` in `direction` on the last accepted step of `stepper`,
 /// located by Brent's method on the dense output to `time_tolerance` (absolute,
@@ -230,10 +347,26 @@ where
         return Ok(None);
     }
     let (b, y_b) = stepper.current();
-    if g_after == 0.0 {
-        return Ok(Some((EventPoint { t: b, y: y_b }, Cost::ZERO)));
-    }
     let a = stepper.step_start();
+    locate_crossing(stepper, g, (a, g_before), (b, g_after, y_b), time_tolerance).map(Some)
+}
+
+/// The sign change of `g` between `(a, g_a)` and `(b, g_b)` (state `y_b` at b) inside
+/// the last accepted step of `stepper`, by Brent's method on the dense output.
+fn locate_crossing<S, G, const N: usize>(
+    stepper: &S,
+    g: &mut G,
+    (a, g_a): (f64, f64),
+    (b, g_b, y_b): (f64, f64, [f64; N]),
+    time_tolerance: f64,
+) -> Result<(EventPoint<N>, Cost)>
+where
+    S: DenseStepper<N>,
+    G: FnMut(f64, &[f64; N]) -> f64,
+{
+    if g_b == 0.0 {
+        return Ok((EventPoint { t: b, y: y_b }, Cost::ZERO));
+    }
     let tol = RootTolerance {
         absolute: time_tolerance.max(0.0),
         relative: 4.0 * f64::EPSILON,
@@ -242,9 +375,9 @@ where
     let root = brent(
         |s| {
             if s <= a {
-                g_before
+                g_a
             } else if s >= b {
-                g_after
+                g_b
             } else {
                 g(s, &stepper.dense(s))
             }
@@ -254,13 +387,13 @@ where
         tol,
     )?;
     let t = root.value;
-    Ok(Some((
+    Ok((
         EventPoint {
             t,
             y: stepper.dense(t),
         },
         root.cost(),
-    )))
+    ))
 }
 
 /// What [`drive`] returns: the solution and what locating the event cost.
@@ -286,9 +419,11 @@ pub struct Integration<const N: usize> {
 /// ends; pass `&mut |_: &S, _: f64| {}` when nothing is to be observed.
 ///
 /// Every solver of this module ([`solve_until_event`],
-/// [`rosenbrock::solve_until_event`]) and every phase integration built on them is
-/// this loop. `g` is evaluated once at the start, once per step end, and on the
-/// dense output of the step that contains the crossing.
+/// [`rosenbrock::solve_until_event`]) is this loop, and so is every integration with
+/// several event functions ([`drive_events`], which the impact simulator of
+/// `tabor-dynamics` runs segment by segment). `g` is evaluated once at the start,
+/// once per step end, and on the dense output of the step that contains the
+/// crossing.
 pub fn drive<S, F, G, O, const N: usize>(
     stepper: &mut S,
     f: &mut F,
@@ -303,27 +438,203 @@ where
     G: FnMut(f64, &[f64; N]) -> f64,
     O: FnMut(&S, f64),
 {
+    let run = event_loop(
+        stepper,
+        f,
+        &mut |t: f64, y: &[f64; N]| [g(t, y)],
+        [direction],
+        t_end,
+        true,
+        &mut |s: &mut S, f: &mut F, stop: f64| {
+            s.prepare_dense(f)?;
+            observer(s, stop);
+            Ok(())
+        },
+    )?;
+    Ok(Integration {
+        solution: run.solution,
+        event_cost: run.event_cost,
+    })
+}
+
+/// What [`drive_events`] returns: the solution, which event stopped it (if any) and
+/// what locating it cost.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EventsIntegration<const N: usize> {
+    /// Where the integration stopped, the steps taken and the evaluations of f.
+    pub solution: OdeSolution<N>,
+    /// The index of the event function that crossed first (the lowest index when
+    /// several cross at the same time); `None` when `t_end` was reached.
+    pub event: Option<usize>,
+    /// Evaluations of the event functions on the dense output and Brent iterations
+    /// spent locating the event ([`Cost::ZERO`] when none was found).
+    pub event_cost: Cost,
+}
+
+/// [`drive`] with `M` event functions `g(t, y) = [g_0, …, g_{M−1}]`, each with its
+/// direction: stops at the earliest crossing of any of them (each located on the
+/// dense output to a few ulps of t; on a tie, the lowest index), or at `t_end`.
+/// An event function that is NaN at a step end is an error
+/// ([`NumericsError::NonFinite`]).
+///
+/// `observer(t, y)` sees the end of every accepted step that contains no event
+/// (the event point itself is returned); the dense output is prepared only on the
+/// step that contains the event ([`DenseStepper::prepare_dense`]), so a method
+/// whose dense output costs evaluations ([`DormandPrince853`]) pays for it once.
+pub fn drive_events<S, F, G, O, const N: usize, const M: usize>(
+    stepper: &mut S,
+    f: &mut F,
+    g: &mut G,
+    directions: [EventDirection; M],
+    t_end: f64,
+    observer: &mut O,
+) -> Result<EventsIntegration<N>>
+where
+    S: DenseStepper<N>,
+    F: FnMut(f64, &[f64; N]) -> [f64; N],
+    G: FnMut(f64, &[f64; N]) -> [f64; M],
+    O: FnMut(f64, &[f64; N]),
+{
+    event_loop(
+        stepper,
+        f,
+        g,
+        directions,
+        t_end,
+        false,
+        &mut |s: &mut S, _: &mut F, _: f64| {
+            let (t, y) = s.current();
+            observer(t, &y);
+            Ok(())
+        },
+    )
+}
+
+/// The one step-and-locate-event loop behind [`drive`] and [`drive_events`]:
+/// `after_step(stepper, f, stop)` runs after every accepted step (on the step that
+/// contains the event, after the dense output was prepared, with `stop` the event
+/// time) when `event_step_too` (for [`drive`]), else on the steps without an
+/// event only (for [`drive_events`]).
+fn event_loop<S, F, G, A, const N: usize, const M: usize>(
+    stepper: &mut S,
+    f: &mut F,
+    g: &mut G,
+    directions: [EventDirection; M],
+    t_end: f64,
+    event_step_too: bool,
+    after_step: &mut A,
+) -> Result<EventsIntegration<N>>
+where
+    S: DenseStepper<N>,
+    F: FnMut(f64, &[f64; N]) -> [f64; N],
+    G: FnMut(f64, &[f64; N]) -> [f64; M],
+    A: FnMut(&mut S, &mut F, f64) -> Result<()>,
+{
     let (t0, y0) = stepper.current();
-    let mut g_prev = g(t0, &y0);
+    let mut g_prev = finite_events(g(t0, &y0), t0)?;
     while stepper.current().0 < t_end {
         stepper.advance(f, t_end)?;
         let (t, y) = stepper.current();
-        let g_new = g(t, &y);
-        let hit = locate_event_in_step(stepper, g, direction, g_prev, g_new, 0.0)?;
-        observer(stepper, hit.as_ref().map_or(t, |(p, _)| p.t));
-        if let Some((point, event_cost)) = hit {
-            return Ok(Integration {
-                solution: solution_of(stepper, point.t, point.y, true),
-                event_cost,
-            });
+        let g_new = finite_events(g(t, &y), t)?;
+        let crossing = (0..M).any(|i| directions[i].is_crossing(g_prev[i], g_new[i]));
+        if !crossing {
+            after_step(stepper, f, t)?;
+            g_prev = g_new;
+            continue;
         }
-        g_prev = g_new;
+        stepper.prepare_dense(f)?;
+        let (index, point, event_cost) = earliest_crossing(stepper, g, directions, g_prev, g_new)?;
+        if event_step_too {
+            after_step(stepper, f, point.t)?;
+        }
+        return Ok(EventsIntegration {
+            solution: solution_of(stepper, point.t, point.y, true),
+            event: Some(index),
+            event_cost,
+        });
     }
     let (t, y) = stepper.current();
-    Ok(Integration {
+    Ok(EventsIntegration {
         solution: solution_of(stepper, t, y, false),
+        event: None,
         event_cost: Cost::ZERO,
     })
+}
+
+/// The earliest crossing on the last step of `stepper`, given that at least one of
+/// the event functions crosses between its values `g_prev` at the step's start and
+/// `g_new` at its end: each such crossing is located; then every function is also
+/// checked at the earliest point found, so that one which crosses and crosses back
+/// within the step (no sign change at the ends) is still found when it crossed
+/// before that point (a body that passes a branch end and turns back within one
+/// step). Returns the index, the point and the evaluations of g spent.
+fn earliest_crossing<S, G, const N: usize, const M: usize>(
+    stepper: &S,
+    g: &mut G,
+    directions: [EventDirection; M],
+    g_prev: [f64; M],
+    g_new: [f64; M],
+) -> Result<(usize, EventPoint<N>, Cost)>
+where
+    S: DenseStepper<N>,
+    G: FnMut(f64, &[f64; N]) -> [f64; M],
+{
+    let a = stepper.step_start();
+    let (b, y_b) = stepper.current();
+    let mut first: Option<(usize, EventPoint<N>)> = None;
+    let mut cost = Cost::ZERO;
+    for i in 0..M {
+        if directions[i].is_crossing(g_prev[i], g_new[i]) {
+            let mut gi = |t: f64, y: &[f64; N]| g(t, y)[i];
+            let (point, c) =
+                locate_crossing(stepper, &mut gi, (a, g_prev[i]), (b, g_new[i], y_b), 0.0)?;
+            cost += c;
+            if first.as_ref().is_none_or(|(_, p)| point.t < p.t) {
+                first = Some((i, point));
+            }
+        }
+    }
+    let Some((mut index, mut point)) = first else {
+        return Err(NumericsError::NoConvergence {
+            method: "event location: no crossing on a step whose ends show one",
+            iterations: 0,
+            estimate: b,
+            error: 0.0,
+        });
+    };
+    // At most M rounds: each moves the event to an earlier one of another function.
+    for _ in 0..M {
+        let at_point = g(point.t, &point.y);
+        cost += Cost::new(1, 0);
+        let earlier =
+            (0..M).find(|&i| i != index && directions[i].is_crossing(g_prev[i], at_point[i]));
+        let Some(i) = earlier else {
+            break;
+        };
+        let mut gi = |t: f64, y: &[f64; N]| g(t, y)[i];
+        let (p, c) = locate_crossing(
+            stepper,
+            &mut gi,
+            (a, g_prev[i]),
+            (point.t, at_point[i], point.y),
+            0.0,
+        )?;
+        cost += c;
+        if p.t > point.t || (p.t == point.t && i > index) {
+            break;
+        }
+        index = i;
+        point = p;
+    }
+    Ok((index, point, cost))
+}
+
+/// The event values at time `t`, or an error naming the first that is NaN.
+fn finite_events<const M: usize>(g: [f64; M], t: f64) -> Result<[f64; M]> {
+    match g.iter().find(|v| v.is_nan()) {
+        Some(&value) => Err(NumericsError::NonFinite { at: t, value }),
+        None => Ok(g),
+    }
 }
 
 fn solution_of<S: DenseStepper<N>, const N: usize>(

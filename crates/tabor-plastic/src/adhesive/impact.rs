@@ -83,7 +83,7 @@ impl AdhesiveInterpolationImpact {
     pub fn new(contact: AdhesivePlasticContact, effective_mass: f64) -> Result<Self> {
         let AdhesivePlasticContact { sphere, model } = contact;
         let elastic = JkrImpact::new(sphere, effective_mass)?;
-        let v_c = sticking_velocity(&elastic, 1e-12)?.speed;
+        let v_c = sticking_velocity(&elastic, tabor_numerics::tolerance::DEFAULT_TOLERANCE)?.speed;
         let v_c = positive_output(MODEL, "elastic sticking velocity", v_c)?;
         let energy = sphere.scales().energy;
         let yield_velocity = finite_output(

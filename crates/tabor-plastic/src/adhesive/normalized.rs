@@ -409,7 +409,11 @@ impl AdhesiveInterpolation {
     /// Seed 000, text after (5.125): ε depends on `v0/v_c` and Φ only.
     pub fn restitution(&self, speed_ratio: f64) -> Result<f64> {
         let s = validate::positive("speed_ratio", speed_ratio)?;
-        let u_jkr = jkr::energy_loss(SeparationRule::FixedGrip, 1e-12)?.value;
+        let u_jkr = jkr::energy_loss(
+            SeparationRule::FixedGrip,
+            tabor_numerics::tolerance::DEFAULT_TOLERANCE,
+        )?
+        .value;
         let kinetic = finite_output(MODEL, "kinetic energy", u_jkr * s * s)?;
         // Units: v_c = 1, energy F_n d_n, so the mass is 2 Û_JKR.
         restitution_from_loss(self.energy_loss(kinetic)?, 2.0 * u_jkr, s)

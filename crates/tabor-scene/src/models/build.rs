@@ -3,7 +3,7 @@
 use super::types::{Adhesive, AdhesiveModel, EffectFields, Models, Plastic, Visco};
 use crate::combination::{rule, AdhesionKind, EffectKind, EffectSet, PlasticityKind, ViscoKind};
 use crate::error::SceneError;
-use crate::inputs::{AdhesionRange, AdhesivePlasticity, Body, Inputs, PlasticityModel};
+use crate::inputs::{AdhesionRange, AdhesivePlasticity, Body, Inputs, PlasticModel};
 use tabor_dynamics::SimulationSettings;
 use tabor_elastic::{ElasticContact, ElasticImpact};
 use tabor_jkr::{GradedSphere, JkrImpact, JkrSphere, SeparationRule};
@@ -126,7 +126,7 @@ fn build_plastic(scene: &Inputs) -> Result<Option<Plastic>, SceneError> {
     };
     let in_yield = |e: Error| SceneError::field(scene.yield_stress_field(), e.to_string());
     Ok(Some(match scene.plasticity {
-        PlasticityModel::Thornton => Plastic::Thornton(
+        Some(PlasticModel::Thornton) => Plastic::Thornton(
             PlasticImpact::new(
                 PlasticContact::new(e, r, sy).map_err(in_yield)?,
                 Thornton,
@@ -134,7 +134,7 @@ fn build_plastic(scene: &Inputs) -> Result<Option<Plastic>, SceneError> {
             )
             .map_err(err)?,
         ),
-        PlasticityModel::Auto | PlasticityModel::Interpolation => Plastic::Interpolation(
+        None | Some(PlasticModel::Interpolation) => Plastic::Interpolation(
             PlasticImpact::new(
                 PlasticContact::new(e, r, sy).map_err(in_yield)?,
                 Interpolation::default(),
@@ -142,14 +142,18 @@ fn build_plastic(scene: &Inputs) -> Result<Option<Plastic>, SceneError> {
             )
             .map_err(err)?,
         ),
-        PlasticityModel::JacksonGreen => Plastic::JacksonGreen(Box::new(
+        Some(PlasticModel::JacksonGreen) => Plastic::JacksonGreen(Box::new(
             PlasticContact::new(e, r, sy)
                 .and_then(|contact| JacksonGreen::new(contact, scene.plastic_poisson_ratio()))
                 .map_err(in_yield)?
-                .impact(m, SimulationSettings::default())
+                .impact(
+                    m,
+                    // the scene's accuracy, as every other model it builds
+                    SimulationSettings::with_tolerance(scene.accuracy).map_err(err)?,
+                )
                 .map_err(err)?,
         )),
-        PlasticityModel::DimensionlessFit => {
+        Some(PlasticModel::DimensionlessFit) => {
             let rho = scene.sphere.density.ok_or_else(|| {
                 SceneError::field(
                     "sphere.density",
@@ -157,6 +161,12 @@ fn build_plastic(scene: &Inputs) -> Result<Option<Plastic>, SceneError> {
                 )
             })?;
             Plastic::Fit(DimensionlessFit::new(e, sy, rho, m).map_err(in_yield)?)
+        }
+        Some(adhesive @ (PlasticModel::AdhesiveInterpolation | PlasticModel::Superposition)) => {
+            return Err(SceneError::field(
+                "plasticity.model",
+                format!("\"{adhesive}\" includes adhesion: give a non-adhesive model and adhesive_model"),
+            ))
         }
     }))
 }
@@ -232,7 +242,7 @@ impl Models {
                         {
                             return Err(SceneError::field(
                                 "adhesion.work_of_adhesion",
-                                format!("adhesion with plasticity (the adhesive interpolation model (5.111)-(5.126)): {e}"),
+                                format!("adhesion with plasticity (the adhesive interpolation model (5.111)-(5.126)): {e}; the model does not cover this scene: set [plasticity] adhesive_model = \"superposition\" to add the adhesive and the plastic losses instead (Willert 2020 (5.109), reported with a warning)"),
                             ))
                         }
                         // only used to measure the superposition's error

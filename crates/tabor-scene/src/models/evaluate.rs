@@ -1,7 +1,7 @@
 //! Evaluating the loss of a set of effects by the rule of the combination table.
 
 use super::types::{Evaluation, Models};
-use crate::combination::{rule, EffectKind, EffectSet, Rule, ViscoKind};
+use crate::combination::{rule, AdhesionKind, EffectKind, EffectSet, Rule, ViscoKind};
 use crate::error::SceneError;
 use tabor_plastic::AdhesiveInterpolationImpact;
 use tabor_restitution::{EnergyLoss, ImpactModel};
@@ -42,17 +42,19 @@ impl Models {
     /// would otherwise let adhesion raise ε, tabor-plastic README); otherwise the
     /// plastic model's loss. 0 at the yield onset, so adding it last keeps every
     /// combination continuous there.
+    /// The flag is true where the superposition bound answers (the coupled excess
+    /// is below the non-adhesive plastic loss).
     fn plastic_part(
         &self,
         set: &EffectSet,
         speed: f64,
-    ) -> Result<(EnergyLoss, String), SceneError> {
+    ) -> Result<(EnergyLoss, String, bool), SceneError> {
         let f = self.fields;
         let plastic_error = |e| f.error(EffectKind::Plasticity, e);
         let plastic = self.plastic_model()?;
         let pl = plastic.energy_loss(speed).map_err(plastic_error)?;
         let Some(ai) = self.coupled_plastic_part(set) else {
-            return Ok((pl, plastic.name()));
+            return Ok((pl, plastic.name(), false));
         };
         let jkr = self
             .jkr_fixed_grip
@@ -63,6 +65,23 @@ impl Models {
             .energy_loss(speed)
             .map_err(|e| f.error(EffectKind::Adhesion, e))?;
         let excess = coupled.joules - elastic_part.joules;
+        // range-aware: the adhesive interpolation model is built on JKR, whose
+        // adhesive pressure makes the contact yield early; a Maugis-Dugdale range
+        // spreads the adhesive stress outside the contact (the DMT limit Λ → 0 adds
+        // none), so the early-yield excess over the non-adhesive plastic loss is
+        // weighted by φ = ΔU_MD/ΔU_JKR,fg ∈ [0, 1] (1 in the JKR limit, where the
+        // rule is the seed's model; 0 in the DMT limit, where it is the
+        // superposition); crates/tabor-scene/README.md
+        let weight = match set.adhesion {
+            Some(AdhesionKind::MaugisDugdale) => {
+                let md = self
+                    .adhesive_model()?
+                    .energy_loss(speed)
+                    .map_err(|e| f.error(EffectKind::Adhesion, e))?;
+                (md.joules / elastic_part.joules).clamp(0.0, 1.0)
+            }
+            _ => 1.0,
+        };
         let name = format!(
             "plastic part of the adhesive interpolation model (5.111)-(5.126), at least {}",
             plastic.name()
@@ -71,17 +90,32 @@ impl Models {
         let error_estimate =
             coupled.error_estimate + elastic_part.error_estimate + pl.error_estimate;
         Ok(if excess >= pl.joules {
-            (
-                EnergyLoss {
-                    joules: excess,
-                    error_estimate,
-                    branch: format!(
+            let (joules, branch) = if weight < 1.0 {
+                (
+                    pl.joules + weight * (excess - pl.joules),
+                    format!(
+                        "{} + {weight:.6e} x (plastic excess of {} over {}, less it) (range weight MD/JKR loss)",
+                        pl.branch, coupled.branch, elastic_part.branch
+                    ),
+                )
+            } else {
+                (
+                    excess,
+                    format!(
                         "plastic excess of {} over {}",
                         coupled.branch, elastic_part.branch
                     ),
+                )
+            };
+            (
+                EnergyLoss {
+                    joules,
+                    error_estimate,
+                    branch,
                     cost,
                 },
                 name,
+                false,
             )
         } else {
             (
@@ -92,6 +126,7 @@ impl Models {
                     cost,
                 },
                 name,
+                true,
             )
         })
     }
@@ -143,7 +178,10 @@ impl Models {
                     ],
                 })
             }
-            Rule::AdhesiveInterpolation | Rule::AdhesivePlasticExcess | Rule::Superposition => {
+            Rule::AdhesiveInterpolation
+            | Rule::AdhesivePlasticExcess
+            | Rule::Superposition
+            | Rule::SuperpositionBound => {
                 let kinetic = 0.5 * self.mass * speed * speed;
                 // Which effect comes last, and how it adds:
                 // - adhesion and plasticity alone: the plastic part is added to the
@@ -157,10 +195,12 @@ impl Models {
                 //   viscoelastic loss.
                 let coupled_rest =
                     set.adhesion.is_some() && set.viscoelasticity == Some(ViscoKind::KelvinVoigt);
+                let mut bound = false;
                 let (mut inner, (kind, extra, name), as_fraction) = if set.plasticity.is_some()
                     && (set.viscoelasticity.is_none() || coupled_rest)
                 {
-                    let (l, name) = self.plastic_part(set, speed)?;
+                    let (l, name, is_bound) = self.plastic_part(set, speed)?;
+                    bound = is_bound;
                     (
                         self.evaluate(&set.without(EffectKind::Plasticity), speed)?,
                         (EffectKind::Plasticity, l, name),
@@ -194,7 +234,14 @@ impl Models {
                     format!("{} + {}", inner.loss.branch, extra.branch)
                 };
                 inner.model = format!("{} + {name}", inner.model);
-                inner.rule = r;
+                // where the adhesive rules take their lower bound, the superposition
+                // (5.109) answers: named as such
+                inner.rule = match r {
+                    Rule::AdhesiveInterpolation | Rule::AdhesivePlasticExcess if bound => {
+                        Rule::SuperpositionBound
+                    }
+                    _ => r,
+                };
                 inner.parts.push((kind, Some(share)));
                 Ok(inner)
             }

@@ -50,8 +50,8 @@ mod tableau;
 pub use lu::Matrix;
 
 use super::{
-    drive, finite, first_non_finite, locate_event_in_step, no_event, DenseStepper, EventDirection,
-    EventPoint, FailureNames, OdeSolution, OdeTolerance, StepperCore,
+    drive, finite, first_non_finite, locate_event_in_step, no_event, one_step_method, DenseStepper,
+    EventDirection, EventPoint, FailureNames, OdeSolution, OdeTolerance, StepperCore,
 };
 use crate::{Cost, Result};
 use lu::Lu;
@@ -256,33 +256,6 @@ impl<const N: usize> Rosenbrock<N> {
     /// The method.
     pub fn scheme(&self) -> Scheme {
         self.scheme
-    }
-
-    /// Current time (end of the last accepted step).
-    pub fn t(&self) -> f64 {
-        self.core.t
-    }
-
-    /// Current state.
-    pub fn y(&self) -> [f64; N] {
-        self.core.y
-    }
-
-    /// Start of the last accepted step (equal to [`Rosenbrock::t`] right after a
-    /// (re)start).
-    pub fn previous_t(&self) -> f64 {
-        self.core.t_old
-    }
-
-    /// Accepted and rejected steps so far.
-    pub fn steps(&self) -> (u64, u64) {
-        self.core.steps()
-    }
-
-    /// Right-hand-side evaluations (`evaluations`, including those of the Jacobian
-    /// by differences) and steps, accepted plus rejected (`iterations`), so far.
-    pub fn cost(&self) -> Cost {
-        self.core.cost()
     }
 
     /// Takes one accepted step, not beyond `t_limit` (> current time), with the
@@ -522,48 +495,9 @@ impl<const N: usize> Rosenbrock<N> {
         }
         out
     }
-
-    /// Searches the last accepted step for a crossing of the event function `g` in
-    /// `direction`, given its values `g_before` at the start and `g_after` at the end
-    /// of the step; as [`DormandPrince::locate_event`](crate::ode::DormandPrince::locate_event).
-    pub fn locate_event<G>(
-        &self,
-        mut g: G,
-        direction: EventDirection,
-        g_before: f64,
-        g_after: f64,
-        time_tolerance: f64,
-    ) -> Result<Option<(EventPoint<N>, Cost)>>
-    where
-        G: FnMut(f64, &[f64; N]) -> f64,
-    {
-        locate_event_in_step(self, &mut g, direction, g_before, g_after, time_tolerance)
-    }
 }
 
-impl<const N: usize> DenseStepper<N> for Rosenbrock<N> {
-    fn current(&self) -> (f64, [f64; N]) {
-        (self.core.t, self.core.y)
-    }
-    fn step_start(&self) -> f64 {
-        self.core.t_old
-    }
-    fn dense(&self, t: f64) -> [f64; N] {
-        self.dense_output(t)
-    }
-    fn advance<F>(&mut self, f: &mut F, t_limit: f64) -> Result<()>
-    where
-        F: FnMut(f64, &[f64; N]) -> [f64; N],
-    {
-        self.step(f, t_limit)
-    }
-    fn step_counts(&self) -> (u64, u64) {
-        self.core.steps()
-    }
-    fn spent(&self) -> Cost {
-        self.core.cost()
-    }
-}
+one_step_method!(Rosenbrock);
 
 /// Integrates `y' = f(t, y)` from `(t0, y0)` with Rodas5P (Jacobian strategy
 /// `jacobian`) until the event function `g(t, y)` crosses zero in `direction`, or

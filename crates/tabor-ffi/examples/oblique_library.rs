@@ -1,0 +1,86 @@
+//! tabor's library answer for oblique collisions of two equal spheres
+//! (`tabor_tangential::oblique`, continuous time with located stick/slip events):
+//! the reference the LAMMPS plugin test (`integrations/lammps/test_plugin_friction.py`)
+//! compares `pair_style tabor` with.
+//!
+//! stdin, one case a line: `R rho E nu w model lambda speed angle spin_z mu k_roll mu_roll`
+//! (SI units, angle in degrees, model `jkr` (load-controlled) or `maugis`, spin_z the
+//! initial spin of the sphere about z); stdout, one line each: the relative velocity
+//! sphere − target after the impact (x, y), the sphere's and the target's spin about z,
+//! 1 if they stick, the relative energy error of the integration.
+#![allow(missing_docs, clippy::unwrap_used, clippy::expect_used)]
+
+use std::io::BufRead;
+use tabor_dynamics::{ForceLaw, SimulationSettings};
+use tabor_ffi::ContactLaw;
+use tabor_jkr::{JkrForceLaw, JkrSphere, SeparationRule};
+use tabor_maugis::{MaugisContact, MaugisDugdaleForceLaw, MaugisDugdaleImpact};
+use tabor_tangential::oblique::{Body, NormalContact, ObliqueImpact};
+use tabor_tangential::{EffectiveShear, Friction, Rolling, Tangential, Twisting};
+
+fn main() {
+    for line in std::io::stdin().lock().lines() {
+        let line = line.unwrap();
+        let f: Vec<&str> = line.split_whitespace().collect();
+        if f.is_empty() {
+            continue;
+        }
+        let x = |k: usize| f[k].parse::<f64>().expect("number");
+        let (r, rho, e, nu, w) = (x(0), x(1), x(2), x(3), x(4));
+        let (model, lambda, speed, angle, spin) = (f[5], x(6), x(7), x(8), x(9));
+        let (mu, k_roll, mu_roll) = (x(10), x(11), x(12));
+        let e_star = e / (2.0 * (1.0 - nu * nu));
+        let reff = 0.5 * r;
+        let sphere = JkrSphere::new(e_star, reff, w).unwrap();
+        let (mut law, pull_off): (Box<dyn ForceLaw>, f64) = match model {
+            "jkr" => (
+                Box::new(JkrForceLaw::new(sphere, SeparationRule::LoadControlled)),
+                1.5 * std::f64::consts::PI * w * reff,
+            ),
+            "maugis" => {
+                let m = MaugisDugdaleImpact::new(MaugisContact::new(sphere, lambda).unwrap(), 1.0)
+                    .unwrap();
+                // the plugin's F_pulloff: the most tensile force of the law's branch
+                let p = ContactLaw::maugis_dugdale(e_star, reff, w, lambda)
+                    .unwrap()
+                    .pull_off_force();
+                (Box::new(MaugisDugdaleForceLaw::new(&m).unwrap()), -p)
+            }
+            other => panic!("unknown model {other}"),
+        };
+        let shear = EffectiveShear::of_pair(e, nu, e, nu).unwrap();
+        let friction = Friction::sliding(Tangential::mindlin(shear, 0.0, mu).unwrap())
+            .with_rolling(Rolling::sds(k_roll, 0.0, mu_roll).unwrap())
+            .with_twisting(Twisting::Marshall);
+        let body = Body::solid_sphere(r, rho).unwrap();
+        let imp = ObliqueImpact {
+            sphere: body,
+            target: body,
+            normal: NormalContact {
+                pull_off_force: pull_off,
+                damping: 0.0,
+            },
+            friction: Some(friction),
+            sphere_spin: [0.0, 0.0, spin],
+            target_spin: [0.0; 3],
+        };
+        let out = imp
+            .simulate(
+                law.as_mut(),
+                speed,
+                angle,
+                &SimulationSettings::with_tolerance(1e-9).unwrap(),
+            )
+            .unwrap();
+        let (s, t) = (out.after.sphere, out.after.target);
+        println!(
+            "{:.17e} {:.17e} {:.17e} {:.17e} {} {:.3e}",
+            s.velocity[0] - t.velocity[0],
+            s.velocity[1] - t.velocity[1],
+            s.angular_velocity[2],
+            t.angular_velocity[2],
+            u8::from(out.sticks),
+            out.energy_error
+        );
+    }
+}

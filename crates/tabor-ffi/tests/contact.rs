@@ -1,0 +1,226 @@
+//! The contact ABI (normal law + friction) against closed forms independent of
+//! the code: JKR's parametric relations (seed 000 (5.33)-(5.34)) for the normal
+//! force and the contact radius a, the Mindlin no-slip spring 8 G* a, the Coulomb
+//! limit μ |F_n,elastic + 2 (3/2)πwR*| of LAMMPS's `jkr`, the torque arm R − δ/2,
+//! and the exchange symmetry of bodies i and j.
+#![allow(missing_docs, clippy::unwrap_used, clippy::expect_used)]
+
+use std::f64::consts::PI;
+use tabor_ffi::*;
+
+const E: f64 = 2.78e10;
+const W: f64 = 0.05;
+const G: f64 = 1.2e10; // G* (Pa)
+const MU: f64 = 0.3;
+
+fn contact(friction: TaborFrictionParams) -> *mut TaborContact {
+    let p = TaborLawParams {
+        model: TABOR_MODEL_JKR_LOAD_CONTROLLED,
+        effective_modulus: E,
+        effective_radius: 1e-6,
+        work_of_adhesion: W,
+        tabor_parameter: 0.0,
+        damping_time: 0.0,
+    };
+    let mut c = std::ptr::null_mut();
+    assert_eq!(
+        unsafe { tabor_contact_new(&p, &friction, &mut c) },
+        TABOR_OK
+    );
+    c
+}
+
+fn mindlin() -> TaborFrictionParams {
+    TaborFrictionParams {
+        tangential_model: TABOR_TANGENTIAL_MINDLIN,
+        tangential_stiffness: 8.0 * G,
+        friction_coefficient: MU,
+        rolling_model: TABOR_ROLLING_SDS,
+        rolling_stiffness: 50.0,
+        rolling_coefficient: 0.1,
+        twisting_model: TABOR_TWISTING_MARSHALL,
+        ..TaborFrictionParams::default()
+    }
+}
+
+fn step(
+    c: *const TaborContact,
+    s: &TaborContactState,
+    h: &mut TaborContactHistory,
+) -> TaborContactForces {
+    let mut out = TaborContactForces::default();
+    assert_eq!(unsafe { tabor_contact_step(c, s, h, &mut out) }, TABOR_OK);
+    out
+}
+
+/// JKR at contact radius a for effective radius r: (δ, F).
+fn jkr(a: f64, r: f64) -> (f64, f64) {
+    (
+        a * a / r - (2.0 * PI * W * a / E).sqrt(),
+        4.0 * E * a.powi(3) / (3.0 * r) - (8.0 * PI * W * E * a.powi(3)).sqrt(),
+    )
+}
+
+#[test]
+fn stick_is_the_mindlin_spring_and_slip_the_coulomb_limit_of_jkr() {
+    let c = contact(mindlin());
+    let (ri, rj) = (1.3e-6, 0.7e-6);
+    let r = ri * rj / (ri + rj);
+    let a = 0.12 * r;
+    let (delta, f_n) = jkr(a, r);
+    let dt = 1e-10;
+    let state = |vt: f64| TaborContactState {
+        normal: [1.0, 0.0, 0.0],
+        overlap: delta,
+        radius_i: ri,
+        radius_j: rj,
+        relative_velocity: [0.0, vt, 0.0],
+        time_step: dt,
+        update_history: 1,
+        ..TaborContactState::default()
+    };
+    // the contact forms at δ ≥ 0 (here δ > 0 on the first call)
+    let mut h = TaborContactHistory::default();
+    let vt = 1e-3;
+    let f = step(c, &state(vt), &mut h);
+    assert!(
+        (f.normal_force / f_n - 1.0).abs() < 1e-7,
+        "{} vs {f_n}",
+        f.normal_force
+    );
+    assert!((f.contact_radius / a - 1.0).abs() < 1e-7);
+    // one step of sliding velocity vt: ξ = vt dt, F_t = −8 G* a ξ (stick)
+    let ft = -8.0 * G * a * vt * dt;
+    assert!(
+        (f.force[1] / ft - 1.0).abs() < 1e-7,
+        "{} vs {ft}",
+        f.force[1]
+    );
+    assert_eq!(f.sliding, 0);
+    assert!((f.force[0] / f_n - 1.0).abs() < 1e-7);
+    // torque on i: −(R_i − δ/2) n × F_t, along z
+    let tz = -(ri - 0.5 * delta) * f.force[1];
+    assert!((f.torque_i[2] / tz - 1.0).abs() < 1e-12);
+    assert!((f.torque_j[2] / (-(rj - 0.5 * delta) * f.force[1]) - 1.0).abs() < 1e-12);
+    // gross sliding: the limit μ |F_n,e + 2 (3/2)πwR*| (Thornton 1991, LAMMPS jkr)
+    let f = step(c, &state(1e3), &mut h);
+    let limit = MU * (f_n + 3.0 * PI * W * r).abs();
+    assert_eq!(f.sliding, 1);
+    assert!((f.tangential_force / limit - 1.0).abs() < 1e-7);
+    assert!((f.critical_force / (f_n + 3.0 * PI * W * r) - 1.0).abs() < 1e-7);
+    // the stored displacement is the elastic part of the limit force
+    assert!((h.tangential[1] * 8.0 * G * a / limit - 1.0).abs() < 1e-7);
+    // snap-off clears the whole history
+    let mut s = state(0.0);
+    s.overlap = -1e-6;
+    let f = step(c, &s, &mut h);
+    assert_eq!((f.event, f.force), (2, [0.0; 3]));
+    assert_eq!(h, TaborContactHistory::default());
+    unsafe { tabor_contact_free(c) };
+}
+
+#[test]
+fn swapping_the_bodies_reverses_forces_and_histories() {
+    let c = contact(mindlin());
+    let (ri, rj) = (1.1e-6, 0.8e-6);
+    let n = [0.6, 0.0, 0.8];
+    let a = TaborContactState {
+        normal: n,
+        overlap: 2e-9,
+        radius_i: ri,
+        radius_j: rj,
+        relative_velocity: [0.01, -0.02, 0.003],
+        angular_velocity_i: [1e3, -2e3, 5e2],
+        angular_velocity_j: [-3e2, 1e3, 4e3],
+        time_step: 1e-10,
+        update_history: 1,
+    };
+    let b = TaborContactState {
+        normal: n.map(|x| -x),
+        radius_i: rj,
+        radius_j: ri,
+        relative_velocity: a.relative_velocity.map(|x| -x),
+        angular_velocity_i: a.angular_velocity_j,
+        angular_velocity_j: a.angular_velocity_i,
+        ..a
+    };
+    let (mut ha, mut hb) = (
+        TaborContactHistory::default(),
+        TaborContactHistory::default(),
+    );
+    for _ in 0..50 {
+        let fa = step(c, &a, &mut ha);
+        let fb = step(c, &b, &mut hb);
+        for k in 0..3 {
+            let scale = fa.normal_force.abs();
+            assert!((fa.force[k] + fb.force[k]).abs() <= 1e-12 * scale);
+            assert!((fa.torque_i[k] - fb.torque_j[k]).abs() <= 1e-12 * scale * ri);
+            assert!(
+                (ha.tangential[k] + hb.tangential[k]).abs()
+                    <= 1e-12 * ha.tangential[k].abs().max(1e-30)
+            );
+        }
+    }
+    unsafe { tabor_contact_free(c) };
+}
+
+#[test]
+fn bad_friction_and_states_are_status_codes() {
+    let p = TaborLawParams {
+        model: TABOR_MODEL_HERTZ,
+        effective_modulus: E,
+        effective_radius: 1e-6,
+        work_of_adhesion: 0.0,
+        tabor_parameter: 0.0,
+        damping_time: 0.0,
+    };
+    let mut c = std::ptr::null_mut();
+    for f in [
+        TaborFrictionParams {
+            tangential_model: 9,
+            ..mindlin()
+        },
+        TaborFrictionParams {
+            friction_coefficient: -1.0,
+            ..mindlin()
+        },
+        TaborFrictionParams {
+            tangential_model: TABOR_TANGENTIAL_NONE,
+            ..mindlin()
+        },
+    ] {
+        assert_eq!(
+            unsafe { tabor_contact_new(&p, &f, &mut c) },
+            TABOR_ERR_INVALID
+        );
+    }
+    // null friction: normal forces only
+    assert_eq!(
+        unsafe { tabor_contact_new(&p, std::ptr::null(), &mut c) },
+        TABOR_OK
+    );
+    let mut h = TaborContactHistory::default();
+    let mut out = TaborContactForces::default();
+    let s = TaborContactState {
+        normal: [2.0, 0.0, 0.0],
+        overlap: 1e-9,
+        radius_i: 1e-6,
+        radius_j: 1e-6,
+        ..TaborContactState::default()
+    };
+    assert_eq!(
+        unsafe { tabor_contact_step(c, &s, &mut h, &mut out) },
+        TABOR_ERR_INVALID
+    );
+    let s = TaborContactState {
+        normal: [1.0, 0.0, 0.0],
+        radius_j: f64::NAN,
+        ..s
+    };
+    assert_eq!(
+        unsafe { tabor_contact_step(c, &s, &mut h, &mut out) },
+        TABOR_ERR_INVALID
+    );
+    assert_eq!(h, TaborContactHistory::default());
+    unsafe { tabor_contact_free(c) };
+}
