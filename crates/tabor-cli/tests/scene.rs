@@ -278,6 +278,7 @@ fn a_bad_angle_is_named() {
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("angle"), "{err}");
+}
 
 /// The bundled polymer grains with shear viscosity `eta` (Pa s) on both, written
 /// to a temporary file.
