@@ -17,6 +17,7 @@ use serde_json::Value;
 use std::borrow::Cow;
 use std::collections::HashMap;
 use std::fmt;
+use std::sync::Mutex;
 
 /// A column's values.
 enum Data {
@@ -60,6 +61,16 @@ impl Data {
             Data::I64(_) => Data::I64(Vec::with_capacity(capacity)),
             Data::Str(_) => Data::Str(Vec::with_capacity(capacity)),
             Data::Json(_) => Data::Json(Vec::with_capacity(capacity)),
+        }
+    }
+
+    fn reserve(&mut self, more: usize) {
+        match self {
+            Data::Null(_) => {}
+            Data::F64(v) => v.reserve(more),
+            Data::Bool(v) => v.reserve(more),
+            Data::I64(v) => v.reserve(more),
+            Data::Str(v) | Data::Json(v) => v.reserve(more),
         }
     }
 
@@ -171,6 +182,15 @@ pub struct Columns {
     pub offset: usize,
     /// Per row: false where the element failed.
     valid: Vec<bool>,
+    /// Rows expected (room reserved when a column gets its type).
+    capacity: usize,
+}
+
+/// Whether two column names are equal (a field's name is a `&'static str`, so
+/// the same pointer is the common case).
+#[inline]
+fn same_name(a: &str, b: &str) -> bool {
+    (a.as_ptr() == b.as_ptr() && a.len() == b.len()) || a == b
 }
 
 /// Serialization can fail only on a type mismatch between rows (a bug).
@@ -189,6 +209,69 @@ impl ser::Error for Error {
     fn custom<T: fmt::Display>(msg: T) -> Self {
         Error(msg.to_string())
     }
+}
+
+/// Whether the strings of column `name` are split into a template and numbers:
+/// a scene's effect reasons, which quote the numbers that decided them (a speed,
+/// a yield onset), so that a sweep stores one template per kind of reason, not
+/// one string per point.
+fn templated(name: &str) -> bool {
+    name.ends_with(".reason")
+}
+
+/// `text` with each number in Rust's `{:e}` notation (`1.25e-3`, `-4e0`: a token
+/// with an exponent, not inside a word) replaced by `{}` and appended to
+/// `numbers`; braces already in the text doubled (so that Python's `str.format`
+/// with the numbers gives the text back, the numbers printed Python's way).
+fn split_numbers(text: &str, numbers: &mut Vec<f64>) -> String {
+    let bytes = text.as_bytes();
+    let mut out = String::with_capacity(text.len());
+    let mut i = 0;
+    let mut copied = 0;
+    let word = |b: u8| b.is_ascii_alphanumeric() || b == b'_' || b == b'.';
+    while i < bytes.len() {
+        let starts = (bytes[i].is_ascii_digit()
+            || (bytes[i] == b'-' && bytes.get(i + 1).is_some_and(u8::is_ascii_digit)))
+            && (i == 0 || !word(bytes[i - 1]));
+        if starts {
+            let mut j = i + 1;
+            while j < bytes.len() && bytes[j].is_ascii_digit() {
+                j += 1;
+            }
+            if j + 1 < bytes.len() && bytes[j] == b'.' && bytes[j + 1].is_ascii_digit() {
+                j += 1;
+                while j < bytes.len() && bytes[j].is_ascii_digit() {
+                    j += 1;
+                }
+            }
+            if j < bytes.len() && bytes[j] == b'e' {
+                let mut k = j + 1;
+                if k < bytes.len() && bytes[k] == b'-' {
+                    k += 1;
+                }
+                let digits = k;
+                while k < bytes.len() && bytes[k].is_ascii_digit() {
+                    k += 1;
+                }
+                let ends = k == bytes.len() || !bytes[k].is_ascii_alphanumeric();
+                if k > digits && ends {
+                    if let Ok(x) = text[i..k].parse::<f64>() {
+                        out.push_str(&text[copied..i].replace('{', "{{").replace('}', "}}"));
+                        out.push_str("{}");
+                        numbers.push(x);
+                        copied = k;
+                        i = k;
+                        continue;
+                    }
+                }
+            }
+            i = j;
+            continue;
+        }
+        i += 1;
+    }
+    out.push_str(&text[copied..].replace('{', "{{").replace('}', "}}"));
+    out
 }
 
 /// Marks a list or map value, which is stored as a whole (see the module doc).
@@ -241,7 +324,7 @@ impl Columns {
 
     fn column(&mut self, name: Cow<'static, str>) -> usize {
         let n = self.columns.len();
-        if self.hint < n && self.columns[self.hint].name == name {
+        if self.hint < n && same_name(&self.columns[self.hint].name, &name) {
             self.hint += 1;
             return self.hint - 1;
         }
@@ -258,7 +341,30 @@ impl Columns {
         n
     }
 
+    /// Reserves room for `rows` more rows in every typed column (and in those
+    /// typed later).
+    pub fn reserve(&mut self, rows: usize) {
+        self.capacity = self.rows + rows;
+        for c in &mut self.columns {
+            c.data.reserve(rows);
+        }
+    }
+
     fn put(&mut self, name: Cow<'static, str>, value: Scalar<'_>) -> Result<(), Error> {
+        if let Scalar::Str(text) = value {
+            if templated(&name) {
+                let mut numbers = Vec::new();
+                let template = split_numbers(text, &mut numbers);
+                for (k, x) in numbers.into_iter().enumerate() {
+                    self.put_scalar(Cow::Owned(format!("{name}_values.{k}")), Scalar::F64(x))?;
+                }
+                return self.put_scalar(name, Scalar::Str(&template));
+            }
+        }
+        self.put_scalar(name, value)
+    }
+
+    fn put_scalar(&mut self, name: Cow<'static, str>, value: Scalar<'_>) -> Result<(), Error> {
         let i = self.column(name);
         let rows = self.rows;
         let Column { data, last, name } = &mut self.columns[i];
@@ -273,6 +379,7 @@ impl Columns {
                 Scalar::I64(_) => Data::I64(vec![-1; k]),
                 Scalar::Str(_) => Data::Str(vec![0; k]),
             };
+            data.reserve(self.capacity.saturating_sub(k));
         }
         match (data, value) {
             (d, Scalar::Missing) => d.push_missing(1),
@@ -384,105 +491,300 @@ impl Columns {
         }
         self.put_json(Cow::Borrowed("warnings"), &Value::Array(codes))
     }
+}
 
-    /// Concatenates the chunks' columns into one set of columns, in order.
-    /// With `valid`, a bool column `valid` (false where an element failed) is
-    /// added.
-    pub fn concat(chunks: Vec<Columns>, valid: bool) -> (Merged, Warnings) {
-        let total: usize = chunks.iter().map(|c| c.rows).sum();
-        let mut warnings = Warnings::default();
-        let mut names: Vec<Cow<'static, str>> = Vec::new();
-        for c in &chunks {
-            for col in &c.columns {
-                if !names.contains(&col.name) {
-                    names.push(col.name.clone());
+/// The code of a row without a shared record (a failed element).
+const NO_RECORD: u32 = u32::MAX;
+
+/// Rows made of a record shared by many rows (computed once per distinct set of
+/// the inputs it depends on) and a few fields of each row's own: the shared
+/// records are stored once, each row keeps the code of its record, and
+/// [`SharedRows::finish`] gathers them into full columns. A row's own field
+/// replaces the shared field of the same name. The shared records carry no
+/// `warnings` (their tally would count records, not rows): that is an error.
+pub struct SharedRows {
+    shared: Columns,
+    codes: Vec<u32>,
+    own: Columns,
+}
+
+impl SharedRows {
+    /// Empty rows whose first row has flat index `offset`, with room for `rows`.
+    pub fn at(offset: usize, rows: usize) -> Self {
+        let mut own = Columns::at(offset);
+        own.reserve(rows);
+        own.valid.reserve(rows);
+        SharedRows {
+            shared: Columns::default(),
+            codes: Vec::with_capacity(rows),
+            own,
+        }
+    }
+
+    /// Stores a shared record; returns its code.
+    pub fn add_shared<T: Serialize>(&mut self, record: &T) -> Result<u32, Error> {
+        self.shared.push(record)?;
+        if !self.shared.warnings.entries.is_empty() {
+            return Err(Error("a shared record carries warnings".into()));
+        }
+        Ok(self.shared.rows as u32 - 1)
+    }
+
+    /// Appends a row: shared record `code` and the row's own fields (none for
+    /// `None`). On a serialization error the row is left empty.
+    pub fn push<T: Serialize>(&mut self, code: u32, own: Option<&T>) -> Result<(), Error> {
+        let r = match own {
+            Some(t) => self.own.push(t),
+            None => {
+                self.own.valid.push(true);
+                self.own.end_row();
+                Ok(())
+            }
+        };
+        match r {
+            Ok(()) => {
+                self.codes.push(code);
+                Ok(())
+            }
+            Err(e) => {
+                // complete the row as missing (`push` stopped before ending it)
+                self.own.push_missing();
+                self.codes.push(NO_RECORD);
+                Err(e)
+            }
+        }
+    }
+
+    /// Appends an empty row (a failed element).
+    pub fn push_missing(&mut self) {
+        self.own.push_missing();
+        self.codes.push(NO_RECORD);
+    }
+
+    /// The rows as columns: the shared records' fields gathered by code (in the
+    /// records' order), then the rows' own fields.
+    pub fn finish(self) -> Columns {
+        let SharedRows {
+            shared,
+            codes,
+            mut own,
+        } = self;
+        let mut out = Columns {
+            strings: shared.strings,
+            json: shared.json,
+            rows: own.rows,
+            warnings: std::mem::take(&mut own.warnings),
+            offset: own.offset,
+            valid: std::mem::take(&mut own.valid),
+            ..Columns::default()
+        };
+        let gather = |d: &Data| -> Data {
+            fn take<T: Copy>(v: &[T], codes: &[u32], missing: T) -> Vec<T> {
+                codes
+                    .iter()
+                    .map(|&c| v.get(c as usize).copied().unwrap_or(missing))
+                    .collect()
+            }
+            match d {
+                Data::Null(_) => Data::Null(codes.len()),
+                Data::F64(v) => Data::F64(take(v, &codes, f64::NAN)),
+                Data::Bool(v) => Data::Bool(take(v, &codes, false)),
+                Data::I64(v) => Data::I64(take(v, &codes, -1)),
+                Data::Str(v) => Data::Str(take(v, &codes, 0)),
+                Data::Json(v) => Data::Json(take(v, &codes, 0)),
+            }
+        };
+        let mut own_columns: Vec<Option<Column>> = own.columns.into_iter().map(Some).collect();
+        let own_strings = own.strings.values;
+        let own_json = own.json.values;
+        let own_data = |out: &mut Columns, c: Column| -> Data {
+            match c.data {
+                Data::Str(v) => {
+                    let map: Vec<u32> = std::iter::once(0)
+                        .chain(own_strings.iter().map(|s| out.strings.code(s)))
+                        .collect();
+                    Data::Str(v.iter().map(|&k| map[k as usize]).collect())
+                }
+                Data::Json(v) => {
+                    let map: Vec<u32> = std::iter::once(0)
+                        .chain(own_json.iter().map(|s| out.json.code(s)))
+                        .collect();
+                    Data::Json(v.iter().map(|&k| map[k as usize]).collect())
+                }
+                d => d,
+            }
+        };
+        for c in shared.columns {
+            let mine = own_columns
+                .iter_mut()
+                .find(|o| o.as_ref().is_some_and(|o| o.name == c.name))
+                .and_then(Option::take);
+            let data = match mine {
+                Some(o) => own_data(&mut out, o),
+                None => gather(&c.data),
+            };
+            out.columns.push(Column {
+                name: c.name,
+                data,
+                last: 0,
+            });
+        }
+        for o in own_columns.into_iter().flatten() {
+            let name = o.name.clone();
+            let data = own_data(&mut out, o);
+            out.columns.push(Column {
+                name,
+                data,
+                last: 0,
+            });
+        }
+        out
+    }
+}
+
+/// The columns of a whole batch, filled as chunks finish: each chunk's rows are
+/// copied to their place in full-length columns and the chunk freed at once, so
+/// that a batch holds little more than its outputs (no second copy of them).
+pub struct Sink {
+    state: Mutex<SinkState>,
+}
+
+struct SinkColumn {
+    name: Cow<'static, str>,
+    data: Data,
+    /// Where the column first appeared (chunk offset, position): the order of
+    /// the merged columns.
+    first: (usize, usize),
+}
+
+struct SinkState {
+    n: usize,
+    columns: Vec<SinkColumn>,
+    strings: Table,
+    json: Table,
+    valid: Vec<bool>,
+    warnings: Warnings,
+}
+
+/// A typed column of `n` missing values, like `like`.
+fn missing_like(like: &Data, n: usize) -> Data {
+    let mut d = like.empty_like(n);
+    d.push_missing(n);
+    d
+}
+
+/// Writes `data` (a chunk's column) into `d` from row `at`, string and JSON codes
+/// remapped; a type that differs between chunks (a bug) stays missing.
+fn write_at(d: &mut Data, at: usize, data: Data, smap: &[u32], jmap: &[u32]) {
+    fn put<T: Copy>(a: &mut [T], at: usize, b: impl ExactSizeIterator<Item = T>) {
+        for (x, y) in a[at..at + b.len()].iter_mut().zip(b) {
+            *x = y;
+        }
+    }
+    match (d, data) {
+        (_, Data::Null(_)) => {}
+        (Data::F64(a), Data::F64(b)) => a[at..at + b.len()].copy_from_slice(&b),
+        (Data::Bool(a), Data::Bool(b)) => a[at..at + b.len()].copy_from_slice(&b),
+        (Data::I64(a), Data::I64(b)) => a[at..at + b.len()].copy_from_slice(&b),
+        (Data::F64(a), Data::I64(b)) => put(a, at, b.iter().map(|&x| x as f64)),
+        (Data::Str(a), Data::Str(b)) => put(a, at, b.iter().map(|&c| smap[c as usize])),
+        (Data::Json(a), Data::Json(b)) => put(a, at, b.iter().map(|&c| jmap[c as usize])),
+        _ => {}
+    }
+}
+
+impl Sink {
+    /// Columns of `n` rows, every value missing so far.
+    pub fn new(n: usize) -> Self {
+        Sink {
+            state: Mutex::new(SinkState {
+                n,
+                columns: Vec::new(),
+                strings: Table::default(),
+                json: Table::default(),
+                valid: vec![false; n],
+                warnings: Warnings::default(),
+            }),
+        }
+    }
+
+    /// Copies a finished chunk into place (its first row is `chunk.offset`) and
+    /// frees it.
+    pub fn absorb(&self, chunk: Columns) {
+        let Ok(mut state) = self.state.lock() else {
+            return;
+        };
+        let state = &mut *state;
+        let at = chunk.offset;
+        if at + chunk.rows > state.n {
+            return;
+        }
+        let smap: Vec<u32> = std::iter::once(0)
+            .chain(chunk.strings.values.iter().map(|v| state.strings.code(v)))
+            .collect();
+        let jmap: Vec<u32> = std::iter::once(0)
+            .chain(chunk.json.values.iter().map(|v| state.json.code(v)))
+            .collect();
+        state.valid[at..at + chunk.valid.len()].copy_from_slice(&chunk.valid);
+        state.warnings.merge(chunk.warnings);
+        for (pos, c) in chunk.columns.into_iter().enumerate() {
+            let n = state.n;
+            let i = match state
+                .columns
+                .iter()
+                .position(|x| same_name(&x.name, &c.name))
+            {
+                Some(i) => i,
+                None => {
+                    state.columns.push(SinkColumn {
+                        name: c.name,
+                        data: Data::Null(n),
+                        first: (at, pos),
+                    });
+                    state.columns.len() - 1
+                }
+            };
+            let column = &mut state.columns[i];
+            column.first = column.first.min((at, pos));
+            if let Data::Null(_) = column.data {
+                if !matches!(c.data, Data::Null(_)) {
+                    column.data = missing_like(&c.data, n);
                 }
             }
-        }
-        let mut strings = Table::default();
-        let mut json = Table::default();
-        // per chunk: its string and JSON codes in the merged tables
-        let mut remaps: Vec<(Vec<u32>, Vec<u32>)> = Vec::with_capacity(chunks.len());
-        for c in &chunks {
-            let s = std::iter::once(0)
-                .chain(c.strings.values.iter().map(|v| strings.code(v)))
-                .collect();
-            let j = std::iter::once(0)
-                .chain(c.json.values.iter().map(|v| json.code(v)))
-                .collect();
-            remaps.push((s, j));
-        }
-        let mut chunks = chunks;
-        let mut out = Vec::with_capacity(names.len());
-        for name in names {
-            let mut merged: Option<Data> = None;
-            let mut missing_before = 0usize;
-            for (c, (smap, jmap)) in chunks.iter_mut().zip(&remaps) {
-                let pos = c.columns.iter().position(|x| x.name == name);
-                let Some(pos) = pos else {
-                    match &mut merged {
-                        Some(d) => d.push_missing(c.rows),
-                        None => missing_before += c.rows,
-                    }
-                    continue;
-                };
-                // take the chunk's column (frees it as we go)
-                let data = std::mem::replace(&mut c.columns[pos].data, Data::Null(0));
-                let d = merged.get_or_insert_with(|| {
-                    let mut d = data.empty_like(total);
-                    d.push_missing(missing_before);
-                    d
-                });
-                append(d, data, smap, jmap);
+            if let (Data::I64(v), Data::F64(_)) = (&column.data, &c.data) {
+                // integers so far, a float now: the column becomes float
+                column.data = Data::F64(
+                    v.iter()
+                        .map(|&x| if x == -1 { f64::NAN } else { x as f64 })
+                        .collect(),
+                );
             }
-            let mut d = merged.unwrap_or(Data::Null(0));
-            let short = total - d.len();
-            d.push_missing(short);
-            out.push((name, d));
+            write_at(&mut column.data, at, c.data, &smap, &jmap);
         }
+    }
+
+    /// The merged columns (with `valid`, a bool column `valid`: false where an
+    /// element failed or did not run) and the warning tally.
+    pub fn finish(self, valid: bool) -> (Merged, Warnings) {
+        let state = match self.state.into_inner() {
+            Ok(s) => s,
+            Err(poisoned) => poisoned.into_inner(),
+        };
+        let mut columns = state.columns;
+        columns.sort_by_key(|c| c.first);
+        let mut out: Vec<(Cow<'static, str>, Data)> =
+            columns.into_iter().map(|c| (c.name, c.data)).collect();
         if valid {
-            let mut mask = Vec::with_capacity(total);
-            for c in &chunks {
-                mask.extend_from_slice(&c.valid);
-            }
-            out.push((Cow::Borrowed("valid"), Data::Bool(mask)));
-        }
-        for c in chunks {
-            warnings.merge(c.warnings);
+            out.push((Cow::Borrowed("valid"), Data::Bool(state.valid)));
         }
         (
             Merged {
                 columns: out,
-                strings: strings.values,
-                json: json.values,
+                strings: state.strings.values,
+                json: state.json.values,
             },
-            warnings,
+            state.warnings,
         )
-    }
-}
-
-fn append(d: &mut Data, data: Data, smap: &[u32], jmap: &[u32]) {
-    // unify a Null column with a typed one
-    if let (Data::Null(k), typed) = (&*d, &data) {
-        if !matches!(typed, Data::Null(_)) {
-            let k = *k;
-            let mut t = typed.empty_like(k);
-            t.push_missing(k);
-            *d = t;
-        }
-    }
-    match (d, data) {
-        (d, Data::Null(k)) => d.push_missing(k),
-        (Data::F64(a), Data::F64(b)) => a.extend_from_slice(&b),
-        (Data::Bool(a), Data::Bool(b)) => a.extend_from_slice(&b),
-        (Data::I64(a), Data::I64(b)) => a.extend_from_slice(&b),
-        (Data::F64(a), Data::I64(b)) => a.extend(b.iter().map(|&x| x as f64)),
-        (Data::Str(a), Data::Str(b)) => a.extend(b.iter().map(|&c| smap[c as usize])),
-        (Data::Json(a), Data::Json(b)) => a.extend(b.iter().map(|&c| jmap[c as usize])),
-        (d, b) => {
-            // a type that differs between chunks (a bug): keep the length right
-            d.push_missing(b.len());
-        }
     }
 }
 
@@ -501,6 +803,7 @@ impl Merged {
         let dict = PyDict::new(py);
         let mut strings: Option<Bound<'_, PyList>> = None;
         let mut json: Option<Bound<'_, PyList>> = None;
+        let (n_strings, n_json) = (self.strings.len() + 1, self.json.len() + 1);
         for (name, data) in self.columns {
             match data {
                 Data::Null(n) => dict.set_item(name.as_ref(), ("null", n))?,
@@ -522,7 +825,7 @@ impl Merged {
                             py,
                             [
                                 table.into_pyobject(py)?.into_any(),
-                                PyArray1::from_vec(py, v).into_any(),
+                                small_codes(py, v, n_strings),
                             ],
                         )?,
                     )?;
@@ -543,7 +846,7 @@ impl Merged {
                             py,
                             [
                                 table.into_pyobject(py)?.into_any(),
-                                PyArray1::from_vec(py, v).into_any(),
+                                small_codes(py, v, n_json),
                             ],
                         )?,
                     )?;
@@ -551,6 +854,18 @@ impl Merged {
             }
         }
         Ok(dict)
+    }
+}
+
+/// Codes into a table of `table` entries as the smallest unsigned array that
+/// holds them (1 byte per element for up to 256 distinct values).
+fn small_codes(py: Python<'_>, codes: Vec<u32>, table: usize) -> Bound<'_, PyAny> {
+    if table <= 1 << 8 {
+        PyArray1::from_vec(py, codes.into_iter().map(|c| c as u8).collect()).into_any()
+    } else if table <= 1 << 16 {
+        PyArray1::from_vec(py, codes.into_iter().map(|c| c as u16).collect()).into_any()
+    } else {
+        PyArray1::from_vec(py, codes).into_any()
     }
 }
 
@@ -837,5 +1152,30 @@ impl<'a> ser::Serializer for Field<'a> {
         _: usize,
     ) -> Result<Self::SerializeStructVariant, Error> {
         compound()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::split_numbers;
+
+    #[test]
+    fn reasons_split_into_a_template_and_numbers() {
+        let mut x = Vec::new();
+        let t = split_numbers(
+            "impact speed 1.2617695852173827e-1 m/s does not exceed the adhesive yield onset (5.111) 1.9449639560565972e0 m/s: {below}",
+            &mut x,
+        );
+        assert_eq!(
+            t,
+            "impact speed {} m/s does not exceed the adhesive yield onset (5.111) {} m/s: {{below}}"
+        );
+        assert_eq!(x, [1.2617695852173827e-1, 1.9449639560565972e0]);
+        // no exponent, inside a word, or a bare sign: not a number
+        let mut y = Vec::new();
+        let t = split_numbers("case 1, (5.44), x2e5, Q = 5, -e3, -5e-2.", &mut y);
+        assert_eq!(t, "case 1, (5.44), x2e5, Q = 5, -e3, {}.");
+        assert_eq!(y, [-5e-2]);
+        assert_eq!(split_numbers("", &mut y), "");
     }
 }

@@ -51,21 +51,18 @@ impl Failure {
         Failure { kind, message }
     }
 
-    /// A scene error: a field or a line is bad input; otherwise the message of the
-    /// model error it carries is classified by its wording (the scene keeps only the
-    /// text of the library error).
+    /// A scene error, of the kind the scene gives it (`SceneError::kind`).
     pub fn scene(e: &tabor::scene::SceneError) -> Self {
-        let message = e.to_string();
-        let kind = if e.field.is_some() || e.line.is_some() {
-            Kind::Input
-        } else if e.message.starts_with("numerical failure") {
-            Kind::Convergence
-        } else if e.message.starts_with("invalid ") {
-            Kind::Input
-        } else {
-            Kind::Validity
+        use tabor::scene::SceneErrorKind;
+        let kind = match e.kind() {
+            SceneErrorKind::Input => Kind::Input,
+            SceneErrorKind::Validity => Kind::Validity,
+            SceneErrorKind::Convergence => Kind::Convergence,
         };
-        Failure { kind, message }
+        Failure {
+            kind,
+            message: e.to_string(),
+        }
     }
 
     /// The Python exception, with ` (at index …)` appended when `index` is given.

@@ -15,7 +15,7 @@ use pyo3::types::{PyDict, PyList, PyTuple};
 use tabor::jkr::SeparationRule;
 use tabor::restitution::Error;
 use tabor::single::effective::{effective, EffectiveArgs};
-use tabor::single::jkr::{jkr, JkrArgs};
+use tabor::single::jkr::{jkr, prepare as prepare_jkr, JkrArgs, JkrAtSpeed, JkrPrepared};
 use tabor::single::penalty::{penalty, PenaltyArgs, PenaltyLaw};
 use tabor::single::plastic::{plastic, PlasticArgs, PlasticModel};
 use tabor::single::visco::{visco, ViscoArgs, ViscoModel};
@@ -247,6 +247,15 @@ pub static JKR: Model<JkrArgs, tabor::single::jkr::Jkr> = Model {
         tolerance: f64::NAN,
     },
     compute: |a| jkr(a).map_err(library),
+};
+
+/// `jkr` over speeds: the model once per distinct set of the other inputs
+/// (`tabor::single::jkr::prepare`).
+pub static JKR_BY_SPEED: Split<JkrArgs, JkrPrepared, tabor::single::jkr::Jkr, JkrAtSpeed> = Split {
+    varying: &["speed"],
+    prepare: |a| prepare_jkr(a).map_err(library),
+    record: JkrPrepared::record,
+    own: |p, a| a.speed.map(|v| p.at_speed(v)).transpose().map_err(library),
 };
 
 const PLASTIC_MODELS: [PlasticModel; 6] = [
@@ -482,12 +491,17 @@ enum Given<'a> {
     Optional(Option<Col<'a>>),
 }
 
-fn run_model<'py, A: Sync + Clone + 'static, R: serde::Serialize>(
-    py: Python<'py>,
+/// The scalars of a call set in `base`, and its array keywords (index into the
+/// table, array).
+struct Parsed<'py, A> {
+    base: A,
+    arrays: Vec<(usize, PyReadonlyArray1<'py, f64>)>,
+}
+
+fn parse<'py, A: 'static, R>(
     model: &Model<A, R>,
     args: &Bound<'py, PyDict>,
-    call: &Call<'_>,
-) -> PyResult<Bound<'py, PyTuple>> {
+) -> PyResult<Parsed<'py, A>> {
     let mut base = (model.blank)();
     let mut arrays: Vec<(usize, PyReadonlyArray1<'py, f64>)> = Vec::new();
     for (k, input) in model.inputs.iter().enumerate() {
@@ -535,14 +549,24 @@ fn run_model<'py, A: Sync + Clone + 'static, R: serde::Serialize>(
             }
         }
     }
-    let named: Vec<(&str, &PyReadonlyArray1<'py, f64>)> = arrays
+    Ok(Parsed { base, arrays })
+}
+
+/// The number keywords of a call: (index into the table, its column).
+fn given<'a, A: 'static, R>(
+    model: &Model<A, R>,
+    parsed: &'a Parsed<'_, A>,
+    call: &Call<'_>,
+) -> PyResult<Vec<(usize, Given<'a>)>> {
+    let named: Vec<(&str, &PyReadonlyArray1<'_, f64>)> = parsed
+        .arrays
         .iter()
         .map(|(k, a)| (model.inputs[*k].name, a))
         .collect();
     let cols = call.columns(&named)?;
-    let mut given: Vec<(usize, Given<'_>)> = Vec::new();
+    let mut given = Vec::new();
     for (k, input) in model.inputs.iter().enumerate() {
-        let pos = arrays.iter().position(|(j, _)| *j == k);
+        let pos = parsed.arrays.iter().position(|(j, _)| *j == k);
         match &input.kind {
             Kind::Number { .. } => {
                 if let Some(p) = pos {
@@ -553,19 +577,83 @@ fn run_model<'py, A: Sync + Clone + 'static, R: serde::Serialize>(
             _ => {}
         }
     }
-    let inputs = model.inputs;
-    let compute = model.compute;
-    call.records(py, |i, out| {
-        let mut a = base.clone();
-        for (k, g) in &given {
-            match (&inputs[*k].kind, g) {
-                (Kind::Number { set, .. }, Given::Number(c)) => set(&mut a, c.at(i)),
-                (Kind::Optional { set }, Given::Optional(c)) => set(&mut a, c.map(|c| c.at(i))),
-                _ => {}
-            }
+    Ok(given)
+}
+
+/// The inputs of element `i`.
+fn element<A: Clone>(inputs: &[Input<A>], base: &A, given: &[(usize, Given<'_>)], i: usize) -> A {
+    let mut a = base.clone();
+    for (k, g) in given {
+        match (&inputs[*k].kind, g) {
+            (Kind::Number { set, .. }, Given::Number(c)) => set(&mut a, c.at(i)),
+            (Kind::Optional { set }, Given::Optional(c)) => set(&mut a, c.map(|c| c.at(i))),
+            _ => {}
         }
-        push(out, &compute(&a)?)
+    }
+    a
+}
+
+fn run_model<'py, A: Sync + Clone + 'static, R: serde::Serialize>(
+    py: Python<'py>,
+    model: &Model<A, R>,
+    args: &Bound<'py, PyDict>,
+    call: &Call<'_>,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let parsed = parse(model, args)?;
+    let given = given(model, &parsed, call)?;
+    let (inputs, compute, base) = (model.inputs, model.compute, &parsed.base);
+    call.records(py, |i, out| {
+        push(out, &compute(&element(inputs, base, &given, i))?)
     })
+}
+
+/// A model whose record splits into a part that depends on all inputs but
+/// `varying` (computed once per distinct set of them: a batch over speeds pays for
+/// the model once) and the fields of each element's own.
+pub struct Split<A: 'static, P: 'static, R: 'static, V: 'static> {
+    /// The keywords of the element's own fields.
+    pub varying: &'static [&'static str],
+    /// Validates the other inputs and computes the shared part.
+    pub prepare: fn(&A) -> Result<P, Failure>,
+    /// The shared part's record (the own fields unset).
+    pub record: fn(&P) -> &R,
+    /// The element's own fields (None when its varying inputs are not given).
+    pub own: fn(&P, &A) -> Result<Option<V>, Failure>,
+}
+
+fn run_split<'py, A, P, R, V>(
+    py: Python<'py>,
+    model: &Model<A, R>,
+    split: &Split<A, P, R, V>,
+    args: &Bound<'py, PyDict>,
+    call: &Call<'_>,
+) -> PyResult<Bound<'py, PyTuple>>
+where
+    A: Sync + Clone + 'static,
+    R: serde::Serialize,
+    V: serde::Serialize,
+{
+    let parsed = parse(model, args)?;
+    let given = given(model, &parsed, call)?;
+    // the columns that can change the shared part (a broadcast scalar cannot)
+    let key: Vec<Col<'_>> = given
+        .iter()
+        .filter(|(k, _)| !split.varying.contains(&model.inputs[*k].name))
+        .filter_map(|(_, g)| match g {
+            Given::Number(c) | Given::Optional(Some(c)) => Some(*c),
+            Given::Optional(None) => None,
+        })
+        .filter(|c| c.0.len() > 1)
+        .collect();
+    let (inputs, base) = (model.inputs, &parsed.base);
+    call.shared_records(
+        py,
+        |i, j| key.iter().all(|c| c.at(i).to_bits() == c.at(j).to_bits()),
+        |i| key.iter().map(|c| c.at(i).to_bits()).collect(),
+        |i| (split.prepare)(&element(inputs, base, &given, i)),
+        split.record,
+        |p, i| (split.own)(p, &element(inputs, base, &given, i)),
+    )
 }
 
 /// `_tabor.model(name, args, shape, errors, threads)`: the model `name` over the
@@ -588,7 +676,7 @@ pub fn model<'py>(
     };
     match name {
         "effective" => run_model(py, &EFFECTIVE, args, &call),
-        "jkr" => run_model(py, &JKR, args, &call),
+        "jkr" => run_split(py, &JKR, &JKR_BY_SPEED, args, &call),
         "plastic" => run_model(py, &PLASTIC, args, &call),
         "visco" => run_model(py, &VISCO, args, &call),
         "penalty" => run_model(py, &PENALTY, args, &call),

@@ -2,13 +2,14 @@
 //! columns of a record per element ([`crate::columns`]); both return the failure
 //! count and the warning tally to the Python layer.
 
-use crate::batch::{chunks_of, run, Options, Report, Stop, CHUNK};
-use crate::columns::{Columns, Warnings};
+use crate::batch::{chunks_of, run, Chunk, Options, Report, Stop, CHUNK};
+use crate::columns::{Columns, SharedRows, Sink, Warnings};
 use crate::failure::Failure;
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use serde::Serialize;
+use std::collections::HashMap;
 
 /// A flat input column: length 1 (a broadcast scalar) or the batch length.
 #[derive(Clone, Copy)]
@@ -163,9 +164,7 @@ impl Call<'_> {
         py: Python<'py>,
         f: impl Fn(usize, &mut Columns) -> Result<(), Failure> + Sync,
     ) -> PyResult<Bound<'py, PyTuple>> {
-        let k_chunks = chunks_of(self.n, CHUNK);
-        let outs: Vec<Columns> = (0..k_chunks).map(|c| Columns::at(c * CHUNK)).collect();
-        let result = run(py, self.n, CHUNK, outs, self.options, |chunk| {
+        self.record_chunks(py, |chunk| {
             let range = chunk.range.clone();
             for i in range {
                 if !chunk.go(i) {
@@ -179,16 +178,7 @@ impl Call<'_> {
                     chunk.fail(i, e);
                 }
             }
-        });
-        let (chunks, report) = match result {
-            Ok(x) => x,
-            Err(s) => return Err(self.stop(py, s)),
-        };
-        let valid = self.options.errors == crate::batch::Errors::Nan;
-        let (merged, warnings) = py.detach(|| Columns::concat(chunks, valid));
-        let report = self.report(py, report, &warnings)?;
-        let dict: Bound<'py, PyDict> = merged.into_py(py)?;
-        PyTuple::new(py, [dict.into_any(), report.into_any()])
+        })
     }
 }
 
@@ -231,50 +221,149 @@ impl Call<'_> {
         PyTuple::new(py, [arrays.into_any(), report.into_any()])
     }
 
-    /// Like [`Call::records`], with one call of `chunk` per chunk of elements
-    /// returning each element's result; `put` appends a result as a row.
+    /// Like [`Call::records`], with one call of `chunk` per [`RECORDS_PER_CALL`]
+    /// elements returning each element's result (which can share work between
+    /// them); `put` appends a result as a row. The results of one call are all
+    /// that is held besides the columns.
     pub fn chunked_records<'py, T>(
         &self,
         py: Python<'py>,
         chunk: impl Fn(std::ops::Range<usize>) -> Vec<Result<T, Failure>> + Sync,
         put: impl Fn(&mut Columns, T) -> Result<(), Failure> + Sync,
     ) -> PyResult<Bound<'py, PyTuple>> {
-        let k_chunks = chunks_of(self.n, CHUNK);
-        let outs: Vec<Columns> = (0..k_chunks).map(|c| Columns::at(c * CHUNK)).collect();
-        let result = run(py, self.n, CHUNK, outs, self.options, |c| {
-            let range = c.range.clone();
-            if range.is_empty() || !c.go(range.start) {
-                return;
-            }
-            let results = match crate::batch::guarded(|| Ok(chunk(range.clone()))) {
-                Ok(r) => r,
-                Err(f) => {
-                    c.fail(range.start, f);
+        self.record_chunks(py, |c| {
+            let whole = c.range.clone();
+            for start in whole.clone().step_by(RECORDS_PER_CALL) {
+                let range = start..(start + RECORDS_PER_CALL).min(whole.end);
+                if !c.go(range.start) {
                     return;
                 }
-            };
-            for (i, r) in range.zip(results) {
-                if !c.go(i) {
-                    return;
-                }
-                match r.and_then(|t| put(&mut c.out, t)) {
-                    Ok(()) => {}
+                let results = match crate::batch::guarded(|| Ok(chunk(range.clone()))) {
+                    Ok(r) => r,
                     Err(f) => {
-                        c.out.push_missing();
-                        c.fail(i, f);
+                        c.fail(range.start, f);
+                        return;
+                    }
+                };
+                for (i, r) in range.zip(results) {
+                    if !c.go(i) {
+                        return;
+                    }
+                    match r.and_then(|t| put(&mut c.out, t)) {
+                        Ok(()) => {}
+                        Err(f) => {
+                            c.out.push_missing();
+                            c.fail(i, f);
+                        }
                     }
                 }
             }
+        })
+    }
+}
+
+/// Elements per call of [`Call::chunked_records`]'s `chunk`: enough to share its
+/// set-up (a scene's models), few enough that the records held at once (a
+/// scene's outcome is about 2 kB) stay small.
+pub const RECORDS_PER_CALL: usize = 256;
+
+impl Call<'_> {
+    /// Runs `work` on every chunk of rows (each chunk's `out` starts empty), each
+    /// finished chunk copied into the batch's columns at once ([`Sink`]); returns
+    /// `(columns, (failed, first message))`, the warnings emitted.
+    fn record_chunks<'py>(
+        &self,
+        py: Python<'py>,
+        work: impl Fn(&mut Chunk<'_, Columns>) + Sync,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        let k_chunks = chunks_of(self.n, CHUNK);
+        let outs: Vec<Columns> = (0..k_chunks)
+            .map(|c| {
+                let mut cols = Columns::at(c * CHUNK);
+                cols.reserve(CHUNK.min(self.n.saturating_sub(c * CHUNK)));
+                cols
+            })
+            .collect();
+        let sink = Sink::new(self.n);
+        let result = run(py, self.n, CHUNK, outs, self.options, |chunk| {
+            work(chunk);
+            sink.absorb(std::mem::take(&mut chunk.out));
         });
-        let (chunks, report) = match result {
-            Ok(x) => x,
+        let report = match result {
+            Ok((_, report)) => report,
             Err(s) => return Err(self.stop(py, s)),
         };
         let valid = self.options.errors == crate::batch::Errors::Nan;
-        let (merged, warnings) = py.detach(|| Columns::concat(chunks, valid));
+        let (merged, warnings) = py.detach(|| sink.finish(valid));
         let report = self.report(py, report, &warnings)?;
         let dict: Bound<'py, PyDict> = merged.into_py(py)?;
         PyTuple::new(py, [dict.into_any(), report.into_any()])
+    }
+
+    /// Like [`Call::records`] for a model whose record splits into a part shared
+    /// by the elements with equal `key` and fields of each element's own (the
+    /// impact speed's, say): per chunk, `prepare(i)` runs once per distinct key
+    /// (`same(i, j)` recognises an element that shares the previous one's key
+    /// without building it), its `record` is stored once ([`SharedRows`]), and
+    /// `own(&prepared, i)` runs per element (`None`: no fields of its own).
+    #[allow(clippy::too_many_arguments)]
+    pub fn shared_records<'py, P, R, V>(
+        &self,
+        py: Python<'py>,
+        same: impl Fn(usize, usize) -> bool + Sync,
+        key: impl Fn(usize) -> Vec<u64> + Sync,
+        prepare: impl Fn(usize) -> Result<P, Failure> + Sync,
+        record: impl Fn(&P) -> &R + Sync,
+        own: impl Fn(&P, usize) -> Result<Option<V>, Failure> + Sync,
+    ) -> PyResult<Bound<'py, PyTuple>>
+    where
+        R: Serialize,
+        V: Serialize,
+    {
+        let internal = |e: crate::columns::Error| Failure {
+            kind: crate::failure::Kind::Internal,
+            message: e.to_string(),
+        };
+        self.record_chunks(py, |chunk| {
+            let mut rows = SharedRows::at(chunk.range.start, chunk.range.len());
+            let mut prepared: Vec<P> = Vec::new();
+            let mut by_key: HashMap<Vec<u64>, Result<u32, Failure>> = HashMap::new();
+            let mut last: Option<(usize, Result<u32, Failure>)> = None;
+            for i in chunk.range.clone() {
+                if !chunk.go(i) {
+                    break;
+                }
+                let code = match &last {
+                    Some((j, r)) if same(i, *j) => r.clone(),
+                    _ => by_key
+                        .entry(key(i))
+                        .or_insert_with(|| {
+                            let p = crate::batch::guarded(|| prepare(i))?;
+                            let code = rows.add_shared(record(&p)).map_err(internal)?;
+                            prepared.push(p);
+                            Ok(code)
+                        })
+                        .clone(),
+                };
+                let row = code.clone().and_then(|c| {
+                    let p = &prepared[c as usize];
+                    crate::batch::guarded(|| own(p, i)).map(|v| (c, v))
+                });
+                last = Some((i, code));
+                match row {
+                    Ok((c, v)) => {
+                        if let Err(e) = rows.push(c, v.as_ref()) {
+                            chunk.fail(i, internal(e));
+                        }
+                    }
+                    Err(f) => {
+                        rows.push_missing();
+                        chunk.fail(i, f);
+                    }
+                }
+            }
+            chunk.out = rows.finish();
+        })
     }
 }
 

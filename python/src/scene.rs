@@ -14,8 +14,70 @@ use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use std::path::PathBuf;
-use tabor::dynamics::SimulationSettings;
+use tabor::dynamics::{BranchChange, ForceLaw, SimulationSettings};
 use tabor::scene::{Format, Outcome, SceneError, SweepParameter};
+
+/// The force of `law` (begun for an impact of mass `mass` at `speed`) at overlap
+/// `d` and rate `rate` on the loading path: the branch the overlap reaches from
+/// the start (a branch that ends before `d`, such as Maugis-Dugdale's approach at
+/// its jump into contact, hands over to the next); the law is begun again after a
+/// change of branch. An overlap the loading path does not reach (before first
+/// touch, say) is a validity error.
+fn loading_force(
+    law: &mut dyn ForceLaw,
+    mass: f64,
+    speed: f64,
+    d: f64,
+    rate: f64,
+) -> Result<f64, Failure> {
+    let library = |e: tabor::restitution::Error| {
+        let m = e.to_string();
+        Failure::library(&e, m)
+    };
+    let mut switched = false;
+    let mut result = Err(Failure {
+        kind: crate::failure::Kind::Validity,
+        message: format!("overlap = {d:e} m: beyond the branches of the loading path"),
+    });
+    for _ in 0..MAX_BRANCHES {
+        match law.branch_end(d, rate).map_err(library) {
+            Ok(end) if end >= 0.0 => {
+                result = law.force(d, rate).map_err(library);
+                break;
+            }
+            Ok(_) => {}
+            Err(f) => {
+                result = Err(f);
+                break;
+            }
+        }
+        switched = true;
+        match law.on_branch_end(d, rate) {
+            Ok(BranchChange::Continue) => {}
+            Ok(_) => {
+                result = Err(Failure {
+                    kind: crate::failure::Kind::Validity,
+                    message: format!(
+                        "overlap = {d:e} m: not on the loading path of {} (the bodies are not in contact there)",
+                        law.name()
+                    ),
+                });
+                break;
+            }
+            Err(e) => {
+                result = Err(library(e));
+                break;
+            }
+        }
+    }
+    if switched {
+        law.begin_impact(mass, speed).map_err(library)?;
+    }
+    result
+}
+
+/// Branches a loading path passes at most (approach, contact, ...).
+const MAX_BRANCHES: usize = 8;
 
 /// A collision described once (the native half of `tabor.Scene`).
 #[pyclass(module = "tabor._tabor", frozen)]
@@ -46,23 +108,6 @@ fn warn(
         }
     }
     w.emit(py, total, index)
-}
-
-/// The sections that give a sweep parameter, when the scene lacks them.
-fn missing_section(scene: &tabor::scene::Scene, p: SweepParameter) -> Option<&'static str> {
-    let data = scene.data();
-    match p {
-        SweepParameter::Speed | SweepParameter::SphereRadius | SweepParameter::Angle => None,
-        SweepParameter::WorkOfAdhesion | SweepParameter::TaborParameter => {
-            data.adhesion.is_none().then_some(
-                "[adhesion] (work_of_adhesion, and range or cohesive_stress for a Tabor parameter)",
-            )
-        }
-        SweepParameter::YieldStress => scene
-            .yield_stress()
-            .is_none()
-            .then_some("[target] yield_stress (or [plasticity])"),
-    }
 }
 
 #[pymethods]
@@ -217,6 +262,62 @@ impl Scene {
         Ok(result)
     }
 
+    /// The force F(d) (N) of the scene's force law at each overlap d (m) and
+    /// overlap rate (m/s), flat in and out: the law of the rule that answers at
+    /// `speed` (default the scene's), on the branch the impact starts on
+    /// (`tabor::scene::Scene::force_law`).
+    #[pyo3(signature = (overlaps, rates, speed, n, shape, errors, threads))]
+    #[allow(clippy::too_many_arguments)]
+    fn force<'py>(
+        &self,
+        py: Python<'py>,
+        overlaps: PyReadonlyArray1<'py, f64>,
+        rates: PyReadonlyArray1<'py, f64>,
+        speed: Option<f64>,
+        n: usize,
+        shape: Vec<usize>,
+        errors: &str,
+        threads: Option<usize>,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        let speed = speed.or(self.inner.speed).ok_or_else(|| {
+            Failure::input("give speed, or [impact] speed in the scene (m/s)").into_pyerr(py, None)
+        })?;
+        let scene = &self.inner;
+        // a rule without a force law of its own fails once, before the batch
+        detached(py, || {
+            scene
+                .force_law(speed)
+                .map(drop)
+                .map_err(|e| Failure::scene(&e))
+        })?;
+        let call = Call {
+            n,
+            shape: &shape,
+            options: Options::new(errors, threads)?,
+        };
+        let cols = call.columns(&[("overlap", &overlaps), ("overlap_rate", &rates)])?;
+        let (d, rate) = (cols[0], cols[1]);
+        let mass = scene.effective_mass;
+        let force =
+            |law: &mut dyn ForceLaw, i: usize| loading_force(law, mass, speed, d.at(i), rate.at(i));
+        // one law per chunk (a law keeps its branch: it is not shared)
+        call.chunked_floats(
+            py,
+            |range| {
+                let mut law = scene
+                    .force_law(speed)
+                    .map_err(|e| (range.start, Failure::scene(&e)))?;
+                range
+                    .map(|i| force(law.as_mut(), i).map_err(|f| (i, f)))
+                    .collect()
+            },
+            |i| {
+                let mut law = scene.force_law(speed).map_err(|e| Failure::scene(&e))?;
+                force(law.as_mut(), i)
+            },
+        )
+    }
+
     /// The sticking velocity (m/s) or None.
     fn sticking_velocity(&self, py: Python<'_>) -> PyResult<Option<f64>> {
         detached(py, || {
@@ -246,13 +347,12 @@ impl Scene {
             ))
             .into_pyerr_static()
         })?;
-        if let Some(section) = missing_section(&self.inner, which) {
-            return Err(Failure::input(format!(
-                "invalid parameter = \"{parameter}\": the scene has no {}; add {section} to sweep it",
-                parameter.replace('-', "_")
-            ))
-            .into_pyerr_static());
-        }
+        // the scene's own check: a sweep never adds an effect the scene lacks
+        self.inner.check_parameter(which).map_err(|e| {
+            let mut f = Failure::scene(&e);
+            f.message = format!("invalid parameter = \"{parameter}\": {}", f.message);
+            f.into_pyerr_static()
+        })?;
         let call = Call {
             n,
             shape: &shape,

@@ -349,6 +349,25 @@ class Scene:
             None if angle is None else _core.float_array("angle", angle).item(),
         )
 
+    def force(self, overlap: Any, *, speed: Optional[float] = None, overlap_rate: Any = 0.0,
+              errors: str = "raise", threads: Optional[int] = None) -> Any:
+        """The scene's force law F(d): the normal force (N, repulsive > 0) at each
+        overlap d (m) and overlap rate (m/s, default 0; rate-dependent laws use it),
+        in parallel.
+
+        The law is the one the time-domain simulation (``trajectory``) integrates at
+        ``speed`` (m/s, default the scene's ``[impact] speed``): the force law of the
+        combination rule that answers there, on the branch the impact starts on
+        (loading, or the approach of an adhesive contact). A rule without a force
+        law of its own (a sum or bound of losses, a model solved without one) is a
+        ``ModelValidityError`` naming why. Returns a float for scalar input, else a
+        float64 array of the broadcast shape.
+        """
+        b = _core.Batch({"overlap": overlap, "overlap_rate": overlap_rate})
+        speed = None if speed is None else _core.float_array("speed", speed).item()
+        return b.outs(self._core.force(b["overlap"], b["overlap_rate"], speed, b.n, b.shape_list,
+                                       _core.check_errors(errors), _core.check_threads(threads)))[0]
+
     def restitution(self, speeds: Any, *, errors: str = "raise", threads: Optional[int] = None) -> Any:
         """The coefficient of restitution (5.37) at each impact speed (m/s), in parallel.
 
@@ -390,7 +409,11 @@ class Scene:
             the effects by name (``effects.adhesion.used``,
             ``effects.adhesion.energy_loss``, ...); ``warnings`` holds the warning
             codes of each point (the messages are emitted as ``TaborWarning``);
-            plus ``parameter`` and ``values``.
+            plus ``parameter`` and ``values``. An effect's ``reason`` is a
+            template and ``reason_values`` its numbers (a float array with a last
+            axis, NaN-padded), so that a sweep stores one string per kind of
+            reason, not one per point: ``reason.format(*reason_values)`` is the
+            text of ``outcome()`` (numbers printed Python's way).
         """
         parameter = _core.check_str("parameter", parameter)
         errors = _core.check_errors(errors)

@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import inspect
+import itertools
 import numbers
 import warnings
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
@@ -134,22 +135,34 @@ class Batch:
             return x
         return flat.reshape(self.shape)
 
+    def numbers(self, key: str, columns: Dict[str, Any]) -> np.ndarray:
+        """The float columns ``key.0``, ``key.1``, ... (a reason's numbers) as one
+        array with a last axis of their count (NaN where a point has fewer)."""
+        parts = []
+        while f"{key}.{len(parts)}" in columns:
+            v = columns.pop(f"{key}.{len(parts)}")
+            if isinstance(v, tuple):  # no point had this many numbers
+                v = np.full(v[1], np.nan)
+            parts.append(v)
+        flat = np.stack(parts, axis=-1) if parts else np.empty((self.n, 0))
+        if self.scalar:
+            return flat[0] if len(flat) else np.empty(0)
+        return flat.reshape(tuple(self.shape) + (flat.shape[-1],))
+
     def record_columns(self, result: Tuple[Dict[str, Any], Tuple[int, Optional[str]]],
                        schema: Dict[str, str], errors: str) -> Dict[str, Any]:
         columns, report = result
         self.report(report)
-        out: Dict[str, Any] = {}
-        for k, kind in schema.items():
-            if k in columns:
-                out[k] = columns[k]
-            else:
-                out[k] = ("null", self.n)
-        for k, v in columns.items():
-            if k not in out:
-                out[k] = v
+        # the schema's keys, then any other key (after the schema's have been popped)
+        keys = itertools.chain(schema, iter(lambda: next(iter(columns), None), None))
         result_dict = {}
-        for k, v in out.items():
+        for k in keys:
             kind = schema.get(k)
+            if kind == "floats":
+                result_dict[k] = self.numbers(k, columns)
+                continue
+            # popped one by one: a column's codes are freed once it is expanded
+            v = columns.pop(k, ("null", self.n))
             if isinstance(v, tuple) and v[0] == "null" and kind in ("float", "int", "bool"):
                 v = np.full(v[1], {"float": np.nan, "int": -1, "bool": False}[kind],
                             dtype={"float": np.float64, "int": np.int64, "bool": np.bool_}[kind])

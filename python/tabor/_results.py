@@ -101,7 +101,8 @@ SWEEP: Dict[str, str] = {
     "combination.source": "str",
     "tabor_parameter": "float",
     **{f"effects.{e}.{k}": kind for e in EFFECTS
-       for k, kind in (("used", "bool"), ("reason", "str"), ("model", "str"), ("energy_loss", "float"))},
+       for k, kind in (("used", "bool"), ("reason", "str"), ("reason_values", "floats"), ("model", "str"),
+                       ("energy_loss", "float"))},
     "accuracy": "float",
     "energy_loss_error": "float",
     "cost.evaluations": "int",

@@ -114,6 +114,16 @@ class Scene:
     def tabor_parameter(self) -> Optional[float]: ...
     def outcome(self, speed: Optional[float] = ..., angle: Optional[float] = ...) -> Dict[str, Any]: ...
     @overload
+    def force(
+        self, overlap: float, *, speed: Optional[float] = ..., overlap_rate: float = ...,
+        errors: Errors = ..., threads: Optional[int] = ...,
+    ) -> float: ...
+    @overload
+    def force(
+        self, overlap: ArrayLike, *, speed: Optional[float] = ..., overlap_rate: ArrayLike = ...,
+        errors: Errors = ..., threads: Optional[int] = ...,
+    ) -> Floats: ...
+    @overload
     def restitution(self, speeds: float, *, errors: Errors = ..., threads: Optional[int] = ...) -> float: ...
     @overload
     def restitution(self, speeds: ArrayLike, *, errors: Errors = ..., threads: Optional[int] = ...) -> Floats: ...
@@ -129,13 +139,14 @@ class Scene:
     def trajectory(self, speed: Optional[float] = ..., *, tolerance: float = ...) -> Dict[str, Any]: ...
 '''
 
-SCALAR = {"float": "float", "int": "int", "bool": "bool", "str": "str", "object": "Any"}
+SCALAR = {"float": "float", "int": "int", "bool": "bool", "str": "str", "object": "Any", "floats": "Floats"}
 ARRAY = {
     "float": "Floats",
     "int": "npt.NDArray[np.int64]",
     "bool": "npt.NDArray[np.bool_]",
     "str": "npt.NDArray[np.object_]",
     "object": "npt.NDArray[np.object_]",
+    "floats": "Floats",
 }
 RESULTS = {
     "effective": ("Effective", _results.EFFECTIVE),

@@ -40,6 +40,48 @@ def test_jkr_closed_forms():
     assert "restitution" not in lc
 
 
+def test_jkr_over_a_grid_of_speeds_and_masses():
+    """The model is prepared once per distinct mass (consecutive or not) and each
+    speed's fields computed on top: every element against (5.35)-(5.38) written out."""
+    e, r, w = 1e9, 1e-6, 0.05
+    m = np.array([1e-14, 3e-14, 1e-14, 3e-14, 2e-14])[:, None]  # repeats, not consecutive
+    v = np.geomspace(0.01, 30.0, 41)[None, :]
+    out = tabor.jkr(modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v)
+    assert out["restitution"].shape == (5, 41)
+    loss = (1 + 864 ** (1 / 3)) / 10 * (r**4 * (math.pi * w) ** 5 / e**2) ** (1 / 3)  # (5.36)
+    v_c = np.sqrt(2 * loss / m)  # (5.38)
+    np.testing.assert_allclose(out["sticking_velocity"], np.broadcast_to(v_c, (5, 41)), rtol=1e-10)
+    ref = np.sqrt(np.clip(1 - (v_c / v) ** 2, 0, None))  # (5.37)
+    np.testing.assert_allclose(out["restitution"], ref, rtol=1e-10, atol=1e-12)
+    np.testing.assert_array_equal(out["sticks"], v < v_c)
+    np.testing.assert_array_equal(out["impact_speed"], np.broadcast_to(v, (5, 41)))
+    # (5.35): m v²/2 = F_n d_n [(6/5) â⁵ − 4 â^(7/2) + 2 â² + (6/5)(4/3)^(4/3)], â = a/a_c
+    a_c = (9 * math.pi * w * r**2 / (8 * e)) ** (1 / 3)
+    energy = 1.5 * math.pi * w * r * a_c**2 / (3 * r)
+    a = out["max_contact_radius"] / a_c
+    offset = 1.2 * (4 / 3) ** (4 / 3)
+    work = 1.2 * a**5 - 4 * a**3.5 + 2 * a**2 + offset
+    kinetic = 0.5 * m * v**2 / energy
+    assert np.all(np.abs(work - kinetic) / (kinetic + offset) < 1e-11)
+    assert (out["model"] == out["model"][0, 0]).all() and (out["evaluations"] == 0).all()
+
+
+def test_jkr_over_speeds_with_invalid_points():
+    e, r, w = 1e9, 1e-6, 0.05
+    m = np.array([1e-14, -1.0, 1e-14])[:, None]
+    v = np.array([[0.5, -2.0, 1.0]])
+    with pytest.warns(tabor.InvalidPointsWarning, match=r"5 of 9 points invalid.*\(at index \(0, 1\)\)"):
+        out = tabor.jkr(modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v, errors="nan")
+    valid = np.array([[True, False, True], [False] * 3, [True, False, True]])
+    np.testing.assert_array_equal(out["valid"], valid)
+    assert np.isnan(out["restitution"][~valid]).all() and (out["evaluations"][~valid] == -1).all()
+    assert (out["model"][~valid] == None).all() and (out["model"][valid] != None).all()  # noqa: E711
+    assert out["restitution"][2, 2] == tabor.jkr(modulus=e, radius=r, work_of_adhesion=w, mass=1e-14,
+                                                  speed=1.0)["restitution"]
+    with pytest.raises(tabor.InputError, match=r"invalid speed = -2e0.*\(at index \(0, 1\)\)"):
+        tabor.jkr(modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v)
+
+
 def test_jkr_matches_cli(cli):
     py = tabor.jkr(modulus=1e9, radius=1e-6, work_of_adhesion=0.05, mass=1e-14, speed=0.7)
     ref = cli("jkr", "--modulus", "1e9", "--radius", "1e-6", "--work-of-adhesion", "0.05",

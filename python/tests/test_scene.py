@@ -3,6 +3,8 @@ restitution batch against outcome() and the JKR closed form (5.37)/(5.38), sweep
 and trajectories."""
 
 import math
+import re
+import warnings
 
 import numpy as np
 import pytest
@@ -125,6 +127,71 @@ def test_sweep_columns():
     # another parameter: the work of adhesion (the loss grows like Δγ^(5/3))
     w = scene.sweep("work_of_adhesion", [0.025, 0.05])
     assert w["energy_loss"][1] / w["energy_loss"][0] == pytest.approx(2 ** (5 / 3), rel=1e-10)
+
+
+def test_sweep_reasons_are_templates_with_their_numbers():
+    # the plastic reason quotes the speed and the yield onset: one template for
+    # every point below the onset, its numbers in reason_values
+    scene = tabor.Scene.from_path(SCENES / "silica_maugis_plastic.toml")
+    v = np.geomspace(0.05, 5, 8).reshape(2, 4)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        s = scene.sweep("speed", v)
+        outcomes = {idx: scene.outcome(speed=v[idx]) for idx in np.ndindex(v.shape)}
+    assert s["effects.plasticity.reason_values"].shape == (2, 4, 2)
+    assert len(set(s["effects.plasticity.reason"][v < 1.9])) == 1
+    number = re.compile(r"-?\d+(\.\d+)?e-?\d+")
+    for idx, o in outcomes.items():
+        for e in o["effects"]:
+            text = s[f"effects.{e['name']}.reason"][idx].format(*s[f"effects.{e['name']}.reason_values"][idx])
+            assert text == number.sub(lambda m: repr(float(m.group())), e["reason"]), (idx, e["name"])
+    assert s["effects.elasticity.reason_values"].shape == (2, 4, 0)
+
+
+def _silica_pair():
+    eff = tabor.effective(youngs_modulus=54e9, poisson_ratio=0.17, radius=1e-6, density=2650.0, target_radius=1e-6)
+    return eff["effective_modulus"], eff["effective_radius"], 0.05
+
+
+def test_force_law_jkr_is_the_closed_form():
+    # (5.33)/(5.34) parametrized by the contact radius, from first touch up
+    e, r, w = _silica_pair()
+    a0 = (9 * math.pi * w * r**2 / (8 * e)) ** (1 / 3) * (4 / 3) ** (2 / 3)  # d = 0
+    a = a0 * np.linspace(1.0, 6.0, 40)
+    d = a**2 / r - np.sqrt(2 * math.pi * w * a / e)
+    f = 4 * e * a**3 / (3 * r) - np.sqrt(8 * math.pi * w * e * a**3)
+    scene = tabor.Scene.from_path(SCENES / "silica.toml")
+    np.testing.assert_allclose(scene.force(d), f, rtol=1e-9, atol=1e-12 * abs(f[0]))
+    assert isinstance(scene.force(float(d[3])), float)
+    assert scene.force(d.reshape(4, 10), overlap_rate=0.1).shape == (4, 10)
+
+
+def test_force_law_maugis_dugdale_loading_path():
+    # zero while the spheres approach, then the Maugis-Dugdale curve (in SI units,
+    # force_displacement) beyond the jump into contact
+    e, r, w = _silica_pair()
+    sigma0 = w / 0.3e-9
+    a = np.geomspace(2e-8, 1e-7, 30)
+    f, d = tabor.force_displacement("maugis-dugdale", a, radius=r, elastic_modulus=e, work_of_adhesion=w,
+                                    cohesive_stress=sigma0)
+    scene = tabor.Scene.from_path(SCENES / "silica_maugis.toml")
+    on_curve = d > 0
+    assert on_curve.sum() > 10
+    np.testing.assert_allclose(scene.force(d[on_curve]), f[on_curve], rtol=1e-8, atol=1e-10 * abs(f).max())
+    assert scene.force(-2e-9) == 0.0
+
+
+def test_force_law_errors():
+    with pytest.raises(tabor.ModelValidityError, match="no time-domain force law"):
+        tabor.Scene.from_path(SCENES / "rubber_balls.toml").force(1e-6)
+    scene = tabor.Scene.from_path(SCENES / "silica.toml")
+    with pytest.raises(tabor.InputError, match="speed"):
+        scene.force(1e-9, speed=-1.0)
+    with pytest.raises(TypeError):
+        scene.force("1e-9")
+    with pytest.warns(tabor.InvalidPointsWarning, match="1 of 2"):
+        out = scene.force([1e-9, -1e-6], errors="nan")
+    assert np.isfinite(out[0]) and np.isnan(out[1])
 
 
 def test_trajectory():

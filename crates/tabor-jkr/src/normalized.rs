@@ -18,8 +18,8 @@
 //! [`crate::JkrSphere`] is the thin physical shell around them.
 
 use crate::common::{
-    finite_output, loss_by_quadrature, solve_energy_balance, Balance, JkrContactState,
-    JkrNormalizedLoss, MaxContactRadius, SeparationRule,
+    finite_output, loss_by_quadrature, JkrContactState, JkrNormalizedLoss, MaxContactRadius,
+    SeparationRule,
 };
 use tabor_numerics::Cost;
 use tabor_restitution::{validate, Result};
@@ -212,29 +212,88 @@ pub fn kinetic_energy_to_reach(max_contact_radius: f64) -> Result<f64> {
 }
 
 /// The maximum contact radius `â_max` reached with kinetic energy `kinetic_energy`
-/// (units of `F_n d_n`, > 0), by Brent's method on the energy balance, so that the
+/// (units of `F_n d_n`, > 0), by Newton's method on the energy balance, so that the
 /// residual is below `tolerance · (kinetic_energy + ΔÛ_0)` (`tolerance` relative,
 /// in [1e-15, 0.5]; below about 1e-13 the residual stops at the rounding error of
 /// the work, see [`MaxContactRadius::energy_residual`]).
+///
+/// Beyond the zero-force radius `4^(1/3)` the work `W(â)` grows and is convex (its
+/// slope `F̂ dd̂/dâ` is a product of two positive increasing factors), so Newton's
+/// method needs no bracket there: from a start below the root the first step lands
+/// above it (the tangent lies below `W`), and from above the iterates fall
+/// monotonically to the root. The start (the tangent at the radius where `W = 0`
+/// for small energies, `W ≈ (6/5)â⁵ − 4â^(7/2)` for large ones) leaves 2 to 7
+/// evaluations. Written out rather than `tabor_numerics`' safeguarded Newton, which
+/// evaluates a bracket first: a batch over speeds pays this per element.
 ///
 /// Seed 000, eq. (5.35).
 pub fn max_contact_radius(kinetic_energy: f64, tolerance: f64) -> Result<MaxContactRadius> {
     let kinetic = validate::positive("kinetic_energy", kinetic_energy)?;
     let tol = validate::tolerance("tolerance", tolerance)?;
-    let upper_guess = 1.5 * (kinetic / 1.2).powf(0.2);
-    solve_energy_balance(
-        Balance {
-            work: |a| {
-                finite_output(MODEL, "kinetic energy", balance_work(a)).map(|w| (w, Cost::ZERO))
-            },
-            slope: |a| force_hat(a) * depth_slope_hat(a),
-            zero_force_radius: ZERO_FORCE_RADIUS,
-            upper_guess,
-            offset: LOADING_OFFSET,
-        },
-        kinetic,
-        tol,
-    )
+    // a step below 0.05·tolerance·â keeps the residual below the tolerance:
+    // â W'(â)/(K + ΔÛ_0) stays below 20 beyond the zero-force radius
+    let width = 0.05 * tol;
+    let mut a = newton_start(kinetic);
+    let mut evaluations = 0;
+    for iteration in 1..=NEWTON_MAX_STEPS {
+        evaluations += 1;
+        let excess = balance_work(a) - kinetic;
+        if !excess.is_finite() {
+            break;
+        }
+        // from above, W − K ≤ 0 means rounding has reached the root
+        if iteration > 1 && excess <= 0.0 {
+            return max_radius(a, kinetic, evaluations, iteration);
+        }
+        let step = excess / (force_hat(a) * depth_slope_hat(a));
+        let next = a - step;
+        if step.abs() <= width * a || (iteration > 1 && next >= a) {
+            let root = if next < a || iteration == 1 { next } else { a };
+            return max_radius(root, kinetic, evaluations + 1, iteration);
+        }
+        a = next;
+    }
+    Err(tabor_restitution::Error::Model {
+        model: MODEL,
+        message: format!(
+            "maximum contact radius: Newton's method did not converge at kinetic energy {kinetic:e}"
+        ),
+    })
+}
+
+/// Newton steps of [`max_contact_radius`]: at most 7 needed over kinetic energies
+/// from 1e-10 to 1e14.
+const NEWTON_MAX_STEPS: u64 = 100;
+
+/// `â` where the work of (5.35) vanishes (beyond the zero-force radius):
+/// `W(1.83654…) = 0`.
+const ZERO_WORK_RADIUS: f64 = 1.836_544_531_210_768_7;
+const _: () = assert!(ZERO_WORK_RADIUS > ZERO_FORCE_RADIUS);
+
+/// A start for Newton's method on `W(â) = K`, beyond the zero-force radius: the
+/// tangent at [`ZERO_WORK_RADIUS`] (above the root, `W` being convex), or, when
+/// smaller, the root of the two leading terms, `g (1 + (2/3) g^(−3/2))` with
+/// `g = (K/1.2)^(1/5)`.
+fn newton_start(kinetic: f64) -> f64 {
+    let tangent = ZERO_WORK_RADIUS
+        + kinetic / (force_hat(ZERO_WORK_RADIUS) * depth_slope_hat(ZERO_WORK_RADIUS));
+    let g = (kinetic / 1.2).powf(0.2);
+    let leading = if g > 1.0 {
+        g * (1.0 + 2.0 / 3.0 / (g * g.sqrt()))
+    } else {
+        f64::INFINITY
+    };
+    tangent.min(leading).max(ZERO_WORK_RADIUS)
+}
+
+fn max_radius(a: f64, kinetic: f64, evaluations: u64, iterations: u64) -> Result<MaxContactRadius> {
+    let w = finite_output(MODEL, "kinetic energy", balance_work(a))?;
+    let a = finite_output(MODEL, "maximum contact radius", a)?;
+    Ok(MaxContactRadius {
+        contact_radius: a,
+        energy_residual: (w - kinetic).abs() / (kinetic + LOADING_OFFSET),
+        cost: Cost::new(evaluations + 1, iterations),
+    })
 }
 
 /// The adhesive energy loss |ΔU_kin| of an impact in units of `F_n d_n`.
@@ -310,12 +369,50 @@ fn balance_work(a: f64) -> f64 {
 mod tests {
     use super::*;
 
+    /// Newton's root against bisection of the balance (5.35) written out, over 24
+    /// decades of kinetic energy, with its cost bounded.
+    #[test]
+    fn max_contact_radius_by_newton_matches_bisection() {
+        let work = |a: f64| 1.2 * a.powi(5) - 4.0 * a.powf(3.5) + 2.0 * a * a + LOADING_OFFSET;
+        for k in 0..=96 {
+            let kinetic = 10f64.powf(-10.0 + 0.25 * f64::from(k));
+            let (mut lo, mut hi) = (4f64.cbrt(), 2.0 + kinetic);
+            for _ in 0..200 {
+                let mid = 0.5 * (lo + hi);
+                if work(mid) < kinetic {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            for tol in [1e-6, 1e-12, 1e-15] {
+                let m = max_contact_radius(kinetic, tol).unwrap();
+                let a = m.contact_radius;
+                let limit = tol.max(1e-13);
+                assert!(m.energy_residual <= limit, "K {kinetic:e} tol {tol}: {m:?}");
+                assert!(
+                    (a - lo).abs() <= 20.0 * limit * lo,
+                    "K {kinetic:e}: {a} vs {lo}"
+                );
+                assert!(m.cost.evaluations <= 10, "K {kinetic:e}: {m:?}");
+            }
+        }
+        // no overflow at the largest energies, a clear error beyond
+        assert!(max_contact_radius(1e300, 1e-12)
+            .unwrap()
+            .contact_radius
+            .is_finite());
+        assert!(max_contact_radius(f64::MAX, 1e-12).is_err());
+    }
+
     #[test]
     fn constants_are_what_their_comments_say() {
         let eps = 4.0 * f64::EPSILON;
         assert!((FIRST_TOUCH_RADIUS - (4.0f64 / 3.0).powf(2.0 / 3.0)).abs() < eps);
         assert!((ZERO_FORCE_RADIUS - 4f64.cbrt()).abs() < eps);
         assert!((LOADING_OFFSET - 1.2 * (4.0f64 / 3.0).powf(4.0 / 3.0)).abs() < eps);
+        // W(â) = 0 there, to rounding (|W| ≤ a few ε of its terms, which reach ~20)
+        assert!(balance_work(ZERO_WORK_RADIUS).abs() < 1e-14);
         let fg = separation_radius(SeparationRule::FixedGrip);
         assert!((fg - (1.0f64 / 3.0).powf(2.0 / 3.0)).abs() < eps);
         assert!((SQRT_FIXED_GRIP_RADIUS - 3f64.powf(-1.0 / 3.0)).abs() < eps);

@@ -6,6 +6,33 @@ use std::fmt;
 use std::sync::Arc;
 use tabor_restitution::Error;
 
+/// What kind of failure a [`SceneError`] is, for front ends that map errors to
+/// exception classes or exit codes (the message alone does not say).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SceneErrorKind {
+    /// Bad input: a field, its value, the file.
+    Input,
+    /// Valid input outside a model's validity (or a model that cannot answer).
+    Validity,
+    /// A numerical method did not converge.
+    Convergence,
+}
+
+impl SceneErrorKind {
+    /// The kind of a model error: a bad parameter is input, a numerical failure
+    /// (but an invalid argument) non-convergence, anything else validity.
+    pub fn of(e: &Error) -> Self {
+        match e {
+            Error::InvalidParameter { .. } => SceneErrorKind::Input,
+            Error::Numerics(tabor_numerics::NumericsError::InvalidArgument { .. }) => {
+                SceneErrorKind::Input
+            }
+            Error::Numerics(_) => SceneErrorKind::Convergence,
+            Error::Model { .. } => SceneErrorKind::Validity,
+        }
+    }
+}
+
 /// Why a scene is not valid: the field, its value, the rule, and where in the file.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SceneError {
@@ -17,6 +44,8 @@ pub struct SceneError {
     pub field: Option<String>,
     /// What is wrong (one line).
     pub message: String,
+    /// What kind of failure ([`SceneError::kind`]).
+    kind: SceneErrorKind,
 }
 
 impl fmt::Display for SceneError {
@@ -40,29 +69,56 @@ impl From<ParseError> for SceneError {
             column: e.column,
             field: e.field,
             message: e.message,
+            kind: SceneErrorKind::Input,
         }
     }
 }
 
 impl SceneError {
-    /// An error about field `field`.
+    /// A bad-input error about field `field`.
     pub fn field(field: impl Into<String>, message: impl Into<String>) -> Self {
         SceneError {
             line: None,
             column: None,
             field: Some(field.into()),
             message: message.into(),
+            kind: SceneErrorKind::Input,
         }
     }
 
-    /// An error of a model computation (no field).
+    /// An error of a model computation (no field), of the model error's kind.
     pub fn model(e: Error) -> Self {
         SceneError {
             line: None,
             column: None,
             field: None,
+            kind: SceneErrorKind::of(&e),
             message: e.to_string(),
         }
+    }
+
+    /// A model error pointing at field `field`, of the model error's kind.
+    pub fn field_model(field: impl Into<String>, e: Error) -> Self {
+        SceneError {
+            field: Some(field.into()),
+            ..SceneError::model(e)
+        }
+    }
+
+    /// A bad-input error without a field (a file that cannot be read).
+    pub fn input(message: impl Into<String>) -> Self {
+        SceneError {
+            line: None,
+            column: None,
+            field: None,
+            message: message.into(),
+            kind: SceneErrorKind::Input,
+        }
+    }
+
+    /// Bad input, a model's validity, or non-convergence.
+    pub fn kind(&self) -> SceneErrorKind {
+        self.kind
     }
 }
 
@@ -78,7 +134,10 @@ pub(crate) fn in_field<'a>(
             } => format!("= {value:e}: {requirement}"),
             other => other.to_string(),
         };
-        SceneError::field(format!("{section}.{key}"), message)
+        SceneError {
+            kind: SceneErrorKind::of(&e),
+            ..SceneError::field(format!("{section}.{key}"), message)
+        }
     }
 }
 
@@ -110,4 +169,54 @@ pub(crate) fn located(source: Option<&Source>, mut e: SceneError) -> SceneError 
 pub(crate) fn impact_speed(speed: f64) -> Result<f64, SceneError> {
     tabor_restitution::validate::positive("speed", speed)
         .map_err(|e| SceneError::field("impact.speed", e.to_string()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use tabor_numerics::NumericsError;
+
+    #[test]
+    fn each_error_has_its_kind() {
+        let bad = Error::invalid("radius", -1.0, "must be > 0");
+        let validity = Error::Model {
+            model: "JKR sphere",
+            message: "outside".into(),
+        };
+        let stuck = Error::Numerics(NumericsError::NoConvergence {
+            method: "brent",
+            iterations: 100,
+            estimate: 1.0,
+            error: 1e-3,
+        });
+        assert_eq!(SceneError::model(bad.clone()).kind(), SceneErrorKind::Input);
+        assert_eq!(
+            SceneError::model(validity.clone()).kind(),
+            SceneErrorKind::Validity
+        );
+        assert_eq!(
+            SceneError::model(stuck.clone()).kind(),
+            SceneErrorKind::Convergence
+        );
+        // a model error pointing at a field keeps its kind and names the field
+        let e = SceneError::field_model("target.yield_stress", validity);
+        assert_eq!(e.kind(), SceneErrorKind::Validity);
+        assert_eq!(e.field.as_deref(), Some("target.yield_stress"));
+        assert_eq!(
+            SceneError::field_model("x", stuck).kind(),
+            SceneErrorKind::Convergence
+        );
+        assert_eq!(
+            SceneError::field("sphere.radius", "bad").kind(),
+            SceneErrorKind::Input
+        );
+        assert_eq!(
+            in_field("sphere", "radius")(bad).kind(),
+            SceneErrorKind::Input
+        );
+        assert_eq!(
+            SceneError::input("cannot read").kind(),
+            SceneErrorKind::Input
+        );
+    }
 }

@@ -53,7 +53,7 @@ pub use combination::{
     rule, AdhesionKind, Combination, EffectKind, EffectSet, PlasticityKind, Refusal, Rule,
     ViscoKind,
 };
-pub use error::SceneError;
+pub use error::{SceneError, SceneErrorKind};
 pub use file::{Format, FrictionFile, ParseError, SceneFile, SdsFile, TwistingFile};
 pub use inputs::{
     Adhesion, AdhesionRange, AdhesivePlasticity, Body, PlasticModel, DEFAULT_ACCURACY,

@@ -17,7 +17,7 @@ use tabor_tangential::{
 };
 
 fn field_error(field: &str) -> impl Fn(Error) -> SceneError + '_ {
-    move |e| SceneError::field(field.to_string(), e.to_string())
+    move |e| SceneError::field_model(field.to_string(), e)
 }
 
 /// The validated friction of scene data (`None` without a `[friction]` section),
@@ -92,7 +92,7 @@ fn friction_field(f: &FrictionFile, e: Error) -> SceneError {
         _ if f.tangential_stiffness.is_some() => "friction.tangential_stiffness",
         _ => "friction",
     };
-    SceneError::field(field, e.to_string())
+    SceneError::field_model(field, e)
 }
 
 /// G* of the two bodies (Mindlin), the flat of its own material.

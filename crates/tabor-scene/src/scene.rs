@@ -10,7 +10,7 @@ use crate::parameter::SweepParameter;
 use crate::select::{Cache, Prepared, Sticking};
 use rayon::prelude::*;
 use std::path::Path;
-use tabor_dynamics::{ImpactSimulation, SimulationSettings};
+use tabor_dynamics::{ForceLaw, ImpactSimulation, SimulationSettings};
 use tabor_restitution::validate;
 
 /// A validated scene. Its fields are read-only views of the validated inputs: a
@@ -95,12 +95,8 @@ impl Scene {
 
     /// Reads and validates a scene file (`.json` is JSON, anything else TOML).
     pub fn from_path(path: &Path) -> Result<Scene, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError {
-            line: None,
-            column: None,
-            field: None,
-            message: format!("cannot read {}: {e}", path.display()),
-        })?;
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| SceneError::input(format!("cannot read {}: {e}", path.display())))?;
         let mut scene = Scene::from_str(&text, Format::of_path(path))?;
         if scene.data.name.is_none() {
             if let Some(stem) = path.file_stem().and_then(|s| s.to_str()) {
@@ -303,6 +299,22 @@ impl Scene {
     ) -> Result<(ImpactSimulation, Outcome), SceneError> {
         let v = impact_speed(speed)?;
         self.prepared()?.simulate(v, settings)
+    }
+
+    /// The force law F(d) of the rule that answers at `speed` (m/s), the one the
+    /// time-domain simulation integrates there, begun for that impact (its first
+    /// branch: loading, or the approach), so that `force(d, ḋ)` gives F (N,
+    /// repulsive > 0) at overlap d (m). An error names why a rule has no force law
+    /// of its own (a loss-level combination, a model solved without one): never a
+    /// substitute. For front ends that evaluate the law itself (Python's
+    /// `Scene.force`).
+    pub fn force_law(&self, speed: f64) -> Result<Box<dyn ForceLaw>, SceneError> {
+        let v = impact_speed(speed)?;
+        let prepared = self.prepared()?;
+        let mut law = prepared.force_law(&prepared.outcome_at(v)?)?;
+        law.begin_impact(self.effective_mass, v)
+            .map_err(SceneError::model)?;
+        Ok(law)
     }
 
     /// The coefficient of restitution (5.37) at each of `speeds` (m/s), computed in

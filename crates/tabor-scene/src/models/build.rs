@@ -124,7 +124,7 @@ fn build_plastic(scene: &Inputs) -> Result<Option<Plastic>, SceneError> {
     let Some(sy) = scene.yield_stress() else {
         return Ok(None);
     };
-    let in_yield = |e: Error| SceneError::field(scene.yield_stress_field(), e.to_string());
+    let in_yield = |e: Error| SceneError::field_model(scene.yield_stress_field(), e);
     Ok(Some(match scene.plasticity {
         Some(PlasticModel::Thornton) => Plastic::Thornton(
             PlasticImpact::new(
@@ -179,9 +179,7 @@ impl Models {
         let elastic = ElasticImpact::new(
             match scene.target.gradation {
                 Some((k, c)) => ElasticContact::graded_sphere(c, k, scene.effective_radius)
-                    .map_err(|e| {
-                        SceneError::field("target.gradation.modulus_factor", e.to_string())
-                    })?,
+                    .map_err(|e| SceneError::field_model("target.gradation.modulus_factor", e))?,
                 None => ElasticContact::hertz(scene.effective_modulus, scene.effective_radius)
                     .map_err(|e| {
                         SceneError::field(
@@ -294,7 +292,7 @@ fn body(section: &str, b: &Body) -> Result<ViscoBody, SceneError> {
         b.material.poisson_ratio(),
         b.viscosity,
     )
-    .map_err(|e| SceneError::field(format!("{section}.viscosity"), e.to_string()))
+    .map_err(|e| SceneError::field_model(format!("{section}.viscosity"), e))
 }
 
 /// The scene's viscoelastic contact model, by the correspondence principle
@@ -311,7 +309,7 @@ fn build_visco(scene: &Inputs) -> Result<Result<Option<Visco>, ViscoKind>, Scene
     } else {
         "sphere.viscosity"
     };
-    let in_field = |e: Error| SceneError::field(field, e.to_string());
+    let in_field = |e: Error| SceneError::field_model(field, e);
     let contact = match ViscoelasticContact::of(
         &body("sphere", &scene.sphere)?,
         &body("target", &scene.target)?,

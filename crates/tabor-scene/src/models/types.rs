@@ -136,7 +136,7 @@ impl EffectFields {
 
     /// An error of the model of `effect`, pointing at its field.
     pub fn error(&self, effect: EffectKind, e: Error) -> SceneError {
-        SceneError::field(self.field(effect), e.to_string())
+        SceneError::field_model(self.field(effect), e)
     }
 }
 
