@@ -53,7 +53,7 @@ fn _tabor(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("SPECS", models::specs(m.py())?)?;
     m.add("VERSION", env!("CARGO_PKG_VERSION"))?;
     m.add("LIBRARY_VERSION", tabor::VERSION)?;
-    m.add("MIN_MAUGIS_PARAMETER", maugis::MIN_MAUGIS_PARAMETER)?;
+    m.add("MIN_MAUGIS_PARAMETER", tabor::maugis::MIN_MAUGIS_PARAMETER)?;
     m.add(
         "LAMBDA_PER_MAUGIS_PARAMETER",
         tabor::maugis::units::LAMBDA_PER_MAUGIS_PARAMETER,
