@@ -9,7 +9,7 @@ use crate::output::Call;
 use numpy::PyReadonlyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
-use tabor::maugis::units;
+use tabor::maugis::{units, CurveModel};
 
 type Arr<'py> = PyReadonlyArray1<'py, f64>;
 
@@ -199,12 +199,9 @@ pub fn maugis_parameter<'py>(
     })
 }
 
-/// The contact models of [`force_displacement`].
-const CURVE_MODELS: [&str; 3] = ["jkr", "dmt", "maugis-dugdale"];
-
 /// Force (N, compression positive) and penetration (m) at contact radius `a` (m).
 fn si_point(
-    model: usize,
+    model: CurveModel,
     a: f64,
     r: f64,
     e: f64,
@@ -212,24 +209,24 @@ fn si_point(
     stress: Option<f64>,
 ) -> Result<[f64; 2], Failure> {
     match model {
-        0 => {
+        CurveModel::Jkr => {
             let s = tabor::jkr::JkrSphere::new(e, r, w).map_err(si_failure)?;
             Ok([
                 s.force(a).map_err(si_failure)?,
                 s.depth(a).map_err(si_failure)?,
             ])
         }
-        1 => {
+        CurveModel::Dmt => {
             let p = tabor::maugis::dmt_curve_point(e, r, w, a).map_err(si_failure)?;
             Ok([p.force, p.penetration])
         }
-        _ => {
+        CurveModel::MaugisDugdale => {
             let s = match stress {
                 Some(s) => s,
                 None => {
-                    return Err(Failure::input(
-                        "missing cohesive_stress: required by model=\"maugis-dugdale\"",
-                    ))
+                    return Err(Failure::input(format!(
+                        "missing cohesive_stress: required by model=\"{model}\""
+                    )))
                 }
             };
             let p = sphere(r, e, w, s)?.curve_point(a).map_err(si_failure)?;
@@ -256,15 +253,9 @@ pub fn force_displacement<'py>(
     errors: &str,
     threads: Option<usize>,
 ) -> PyResult<Bound<'py, PyTuple>> {
-    let which = CURVE_MODELS
-        .iter()
-        .position(|m| *m == model.replace('_', "-"))
-        .ok_or_else(|| {
-            Failure::input(format!(
-                "invalid model = \"{model}\": expected \"jkr\", \"dmt\" or \"maugis-dugdale\""
-            ))
-            .into_pyerr_static()
-        })?;
+    let which: CurveModel = model.replace('_', "-").parse().map_err(|e| {
+        Failure::input(format!("invalid model = \"{model}\": {e}")).into_pyerr_static()
+    })?;
     let c = call(n, &shape, errors, threads)?;
     let k = c.columns(&[
         ("contact_radius", &contact_radius),
@@ -276,10 +267,10 @@ pub fn force_displacement<'py>(
         Some(s) => Some(c.columns(&[("cohesive_stress", s)])?[0]),
         None => None,
     };
-    if which != 2 && stress.is_some() {
+    if which != CurveModel::MaugisDugdale && stress.is_some() {
         return Err(Failure::input(format!(
-            "cohesive_stress is a parameter of model=\"maugis-dugdale\", not of model=\"{}\"",
-            CURVE_MODELS[which]
+            "cohesive_stress is a parameter of model=\"{}\", not of model=\"{which}\"",
+            CurveModel::MaugisDugdale
         ))
         .into_pyerr_static());
     }

@@ -112,6 +112,25 @@ pub fn maugis_curve_point(maugis_parameter: f64, contact_radius: f64) -> Result<
     Ok(MaugisCurvePoint { load, penetration })
 }
 
+/// The force-displacement curves of an adhesive sphere in SI units, by name
+/// (Python's `tabor.force_displacement(model, …)`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CurveModel {
+    /// JKR, seed 000 eqs. (5.33), (5.34) (`tabor_jkr::JkrSphere`).
+    Jkr,
+    /// DMT, [`dmt_curve_point`].
+    Dmt,
+    /// Maugis-Dugdale, [`MaugisDugdaleSphere::curve_point`].
+    MaugisDugdale,
+}
+
+tabor_restitution::menu! {
+    CurveModel, "force-displacement model";
+    Jkr => "jkr", "JKR (Willert 2020, (5.33)-(5.34)): F = K a³/R − √(8πa³E*Δγ), δ = a²/R − √(2πaΔγ/E*)";
+    Dmt => "dmt", "DMT, the Maugis-Dugdale limit λ → 0: F = K a³/R − 2πΔγR, δ = a²/R";
+    MaugisDugdale => "maugis-dugdale", "Maugis-Dugdale (Maugis 1992), needs the cohesive stress σ0";
+}
+
 /// One point of a force-displacement curve of a sphere in SI units.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SphereCurvePoint {

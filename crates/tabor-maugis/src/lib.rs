@@ -78,7 +78,7 @@
 //! - [`maugis_curve_point`], [`contact_state_at_radius`]: the equilibrium curve at a
 //!   given contact radius (in Maugis' units, as `Adhesion` evaluates it);
 //!   [`MaugisDugdaleSphere`] and [`dmt_curve_point`]: the curve and its DMT limit
-//!   in SI units.
+//!   in SI units ([`CurveModel`]: the menu of these curves and JKR's).
 
 pub mod branch;
 mod curve;
@@ -90,7 +90,7 @@ mod trace;
 pub mod units;
 
 pub use curve::{
-    contact_state_at_radius, dmt_curve_point, maugis_curve_point, MaugisCurvePoint,
+    contact_state_at_radius, dmt_curve_point, maugis_curve_point, CurveModel, MaugisCurvePoint,
     MaugisDugdaleSphere, SphereCurvePoint, MIN_MAUGIS_PARAMETER,
 };
 pub use dynamics::MaugisDugdaleForceLaw;
