@@ -8,7 +8,6 @@
 //! - Case 3 (Λ > Λ2) is tabulated in `t = Λ2/Λ ∈ (0, 1)`: the loss tends to the
 //!   JKR value as `1 − c/Λ + O(Λ⁻²)`, analytic in t, so one table covers Λ up to
 //!   infinity (t = 0 is the JKR limit, ratio 1). The table holds the shortfall
-//!   `1 − W/W_JKR`, so the ratio is exact to rounding as t → 0. The table holds the shortfall
 //!   `1 − W/W_JKR`, so the ratio is exact to rounding as t → 0.
 //!
 //! Each piece is the interpolant at [`POINTS`] Chebyshev points (degree 7, Estrin's
