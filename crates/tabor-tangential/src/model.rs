@@ -2,7 +2,7 @@
 //! with the names and coefficients of LAMMPS's `pair_style granular`.
 
 use serde::Serialize;
-use tabor_restitution::{validate, Error, Result};
+use tabor_restitution::{validate, Result};
 
 /// The tangential (sliding friction) model, LAMMPS `pair granular` keyword
 /// `tangential`. Every one is a spring in the tangent plane with a Coulomb limit
@@ -275,19 +275,34 @@ impl Friction {
         Ok(())
     }
 
-    /// The LAMMPS `pair_coeff` sub-model keywords of this friction, e.g.
-    /// `tangential mindlin 1.2e10 0 0.3 rolling sds 50 0 0.1 twisting marshall`
-    /// (the stiffness written out, so that it holds for any normal model).
-    pub fn lammps_keywords(&self) -> String {
+    /// The LAMMPS `pair_coeff` sub-model keywords of this friction (`pair
+    /// granular`'s syntax, which `pair_style tabor` reads too), e.g.
+    /// `tangential mindlin 1.8e10 0 0.3 rolling sds 50 0 0.1 twisting marshall`.
+    /// `null_stiffness` writes the Mindlin stiffness as `NULL` (LAMMPS then
+    /// computes `8 G*` from the materials itself; only for `mindlin` and
+    /// `mindlin_rescale`), else the stiffness is written out, so that it holds for
+    /// any normal model. Every number is written so that it reads back exactly
+    /// ([`lammps_number`]).
+    pub fn lammps_keywords(&self, null_stiffness: bool) -> String {
         let t = &self.tangential;
+        let stiffness = if null_stiffness && t.model != TangentialModel::LinearHistory {
+            "NULL".to_string()
+        } else {
+            lammps_number(t.stiffness)
+        };
         let mut s = format!(
-            "tangential {} {:e} {} {}",
-            t.model, t.stiffness, t.damping_ratio, t.coefficient
+            "tangential {} {stiffness} {} {}",
+            t.model,
+            lammps_number(t.damping_ratio),
+            lammps_number(t.coefficient)
         );
         if let Some(r) = &self.rolling {
             s += &format!(
                 " rolling {} {} {} {}",
-                r.model, r.stiffness, r.damping, r.coefficient
+                r.model,
+                lammps_number(r.stiffness),
+                lammps_number(r.damping),
+                lammps_number(r.coefficient)
             );
         }
         match self.twisting {
@@ -296,10 +311,28 @@ impl Friction {
                 stiffness,
                 damping,
                 coefficient,
-            }) => s += &format!(" twisting sds {stiffness} {damping} {coefficient}"),
+            }) => {
+                s += &format!(
+                    " twisting sds {} {} {}",
+                    lammps_number(stiffness),
+                    lammps_number(damping),
+                    lammps_number(coefficient)
+                )
+            }
             None => {}
         }
         s
+    }
+}
+
+/// A number for a LAMMPS input line that reads back to the same `f64`: the
+/// shortest round-trip form, plain (`50`, `0.3`, `0`) between 10⁻³ and 10⁷, else
+/// with an exponent (`1.8461538461538462e10`, `1e-9`).
+pub fn lammps_number(x: f64) -> String {
+    if x == 0.0 || (1e-3..1e7).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
     }
 }
 
@@ -318,13 +351,5 @@ pub fn critical_force(elastic_force: f64, total_force: f64, pull_off_force: f64)
         (elastic_force + 2.0 * pull_off_force).abs()
     } else {
         total_force.abs()
-    }
-}
-
-#[allow(dead_code)]
-pub(crate) fn invalid_friction(message: String) -> Error {
-    Error::Model {
-        model: "friction",
-        message,
     }
 }
