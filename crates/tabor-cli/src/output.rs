@@ -141,6 +141,31 @@ pub fn print_json_array<T: Serialize>(values: &[T]) -> Outcome {
     out.finish()
 }
 
+/// Prints a single-model result, the one shape of every model subcommand: with
+/// `--json` (`json`) the object `value` ([`print_json`]), else the `header`
+/// lines (`model   thornton`), the aligned `rows` ([`print_table`]) and a
+/// `warning: …` line per warning.
+pub fn print_result<T: Serialize>(
+    json: bool,
+    value: &T,
+    header: &[String],
+    rows: &[(&str, f64, &str)],
+    warnings: &[String],
+) -> Outcome {
+    if json {
+        return print_json(value);
+    }
+    let mut out = stdout();
+    for line in header {
+        writeln!(out, "{line}")?;
+    }
+    print_table(&mut out, rows)?;
+    for w in warnings {
+        writeln!(out, "warning: {w}")?;
+    }
+    out.finish()
+}
+
 /// Prints `(name, value, unit)` rows aligned, each value in shortest round-trip
 /// form (`{:e}`).
 pub fn print_table(out: &mut Out, rows: &[(&str, f64, &str)]) -> Outcome {

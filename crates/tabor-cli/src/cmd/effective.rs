@@ -1,7 +1,7 @@
 //! `tabor effective`: the effective properties of a collision of a sphere with a
 //! second sphere or a flat half-space.
 
-use crate::output::{print_json, print_table, stdout, Outcome};
+use crate::output::{print_result, Outcome};
 use tabor::single::effective::{effective, EffectiveArgs};
 use tabor::single::Naming;
 
@@ -68,18 +68,10 @@ pub fn run(args: &Args) -> Outcome {
         Naming::Flags,
     )
     .map_err(|e| e.message(|e| e.to_string()))?;
-    if args.json {
-        print_json(&out)
-    } else {
-        let mut stdout = stdout();
-        print_table(
-            &mut stdout,
-            &[
-                ("effective_modulus", out.effective_modulus, "Pa"),
-                ("effective_radius", out.effective_radius, "m"),
-                ("effective_mass", out.effective_mass, "kg"),
-            ],
-        )?;
-        stdout.finish()
-    }
+    let rows = [
+        ("effective_modulus", out.effective_modulus, "Pa"),
+        ("effective_radius", out.effective_radius, "m"),
+        ("effective_mass", out.effective_mass, "kg"),
+    ];
+    print_result(args.json, &out, &[], &rows, &[])
 }

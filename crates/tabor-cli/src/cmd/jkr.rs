@@ -3,8 +3,7 @@
 //! maximum contact radius and the coefficient of restitution.
 
 use crate::args::{self, Tolerance};
-use crate::output::{message, print_json, print_table, stdout, Outcome};
-use std::io::Write;
+use crate::output::{message, print_result, Outcome};
 use tabor::jkr::SeparationRule;
 use tabor::numerics::tolerance;
 use tabor::single::jkr::{jkr, JkrArgs};
@@ -57,12 +56,6 @@ pub fn run(args: &Args) -> Outcome {
         tolerance: args.tolerance.0,
     })
     .map_err(message)?;
-    if args.json {
-        return print_json(&out);
-    }
-    let mut stdout = stdout();
-    writeln!(stdout, "model   {}", out.model)?;
-    writeln!(stdout, "branch  {}", out.branch)?;
     let mut rows = vec![
         ("energy_loss", out.energy_loss, "J"),
         ("energy_loss_error", out.energy_loss_error, "J"),
@@ -85,6 +78,9 @@ pub fn run(args: &Args) -> Outcome {
         rows.push(("max_contact_radius", a, "m"));
         rows.push(("restitution", e, ""));
     }
-    print_table(&mut stdout, &rows)?;
-    stdout.finish()
+    let header = [
+        format!("model   {}", out.model),
+        format!("branch  {}", out.branch),
+    ];
+    print_result(args.json, &out, &header, &rows, &[])
 }

@@ -4,8 +4,7 @@
 //! the law actually achieves in a simulated impact.
 
 use crate::args;
-use crate::output::{print_json, print_table, stdout, Outcome};
-use std::io::Write;
+use crate::output::{print_result, Outcome};
 use tabor::single::penalty::{penalty, PenaltyArgs, PenaltyLaw};
 use tabor::single::Naming;
 
@@ -59,11 +58,6 @@ pub fn run(args: &Args) -> Outcome {
         Naming::Flags,
     )
     .map_err(|e| e.render(Naming::Flags))?;
-    if args.json {
-        return print_json(&out);
-    }
-    let mut stdout = stdout();
-    writeln!(stdout, "law  {}", out.law)?;
     let mut rows = vec![
         ("nominal_restitution", out.nominal_restitution, ""),
         ("achieved_restitution", out.achieved_restitution, ""),
@@ -91,6 +85,5 @@ pub fn run(args: &Args) -> Outcome {
     if let Some(t) = out.contact_time {
         rows.push(("contact_time", t, "s"));
     }
-    print_table(&mut stdout, &rows)?;
-    stdout.finish()
+    print_result(args.json, &out, &[format!("law  {}", out.law)], &rows, &[])
 }

@@ -3,8 +3,7 @@
 //! restitution, yield velocity and, for the adhesive models, sticking velocity.
 
 use crate::args;
-use crate::output::{print_json, print_table, stdout, Outcome};
-use std::io::Write;
+use crate::output::{print_result, Outcome};
 use tabor::single::plastic::{model_inputs, plastic, PlasticArgs, PlasticModel};
 use tabor::single::Naming;
 
@@ -83,12 +82,6 @@ pub fn run(args: &Args) -> Outcome {
         Naming::Flags,
     )
     .map_err(|e| e.render(Naming::Flags))?;
-    if args.json {
-        return print_json(&out);
-    }
-    let mut stdout = stdout();
-    writeln!(stdout, "model   {}", out.model)?;
-    writeln!(stdout, "branch  {}", out.branch)?;
     let mut rows = vec![
         ("impact_speed", out.impact_speed, "m/s"),
         ("restitution", out.restitution, ""),
@@ -104,9 +97,9 @@ pub fn run(args: &Args) -> Outcome {
     if let Some(p) = out.adhesion_parameter {
         rows.push(("adhesion_parameter", p, ""));
     }
-    print_table(&mut stdout, &rows)?;
-    for w in &out.warnings {
-        writeln!(stdout, "warning: {w}")?;
-    }
-    stdout.finish()
+    let header = [
+        format!("model   {}", out.model),
+        format!("branch  {}", out.branch),
+    ];
+    print_result(args.json, &out, &header, &rows, &out.warnings)
 }

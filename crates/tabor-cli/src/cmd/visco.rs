@@ -3,8 +3,7 @@
 //! parameters.
 
 use crate::args::{self, Tolerance};
-use crate::output::{print_json, print_table, stdout, Outcome};
-use std::io::Write;
+use crate::output::{print_result, Outcome};
 use tabor::numerics::tolerance;
 use tabor::single::visco::{model_inputs, visco, ViscoArgs, ViscoModel};
 use tabor::single::Naming;
@@ -71,11 +70,6 @@ pub fn run(args: &Args) -> Outcome {
         Naming::Flags,
     )
     .map_err(|e| e.render(Naming::Flags))?;
-    if args.json {
-        return print_json(&out);
-    }
-    let mut stdout = stdout();
-    writeln!(stdout, "model   {}", out.model)?;
     let mut rows = vec![("restitution", out.restitution, "")];
     let optional = [
         ("contact_time", out.contact_time),
@@ -95,6 +89,6 @@ pub fn run(args: &Args) -> Outcome {
             rows.push((k, v, "(scaled)"));
         }
     }
-    print_table(&mut stdout, &rows)?;
-    stdout.finish()
+    let header = [format!("model   {}", out.model)];
+    print_result(args.json, &out, &header, &rows, &[])
 }
