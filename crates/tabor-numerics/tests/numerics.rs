@@ -147,7 +147,9 @@ fn gauss_legendre_pair_value_and_estimate() {
         .unwrap()
         .integrate(f64::exp, -1.0, 2.0)
         .unwrap();
-    let low = GaussLegendre::new(3).unwrap().integrate(f64::exp, -1.0, 2.0);
+    let low = GaussLegendre::new(3)
+        .unwrap()
+        .integrate(f64::exp, -1.0, 2.0);
     assert_relative_eq!(i.error_estimate, (low - exact).abs(), max_relative = 1e-2);
     assert!((i.value - exact).abs() < 1e-2 * i.error_estimate, "{i:?}");
     // a pole at a node (the centre of the odd-point rule) is an error naming where

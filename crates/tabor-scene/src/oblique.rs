@@ -326,19 +326,8 @@ impl Scene {
     }
 }
 
-/// The most tensile force on the Maugis-Dugdale impact branch (N, as a magnitude):
-/// the minimum of F over the contact branch from snap-off to zero overlap, on 2000
-/// equal steps (a smooth minimum: relative error below 10⁻⁶).
+/// The Maugis-Dugdale pull-off force of the impact branch (N, a magnitude),
+/// `MaugisDugdaleForceLaw::pull_off_force`, the plugin's too.
 fn maugis_pull_off(md: &tabor_maugis::MaugisDugdaleImpact) -> Result<f64, Error> {
-    let mut law = MaugisDugdaleForceLaw::new(md)?;
-    law.begin_impact(1.0, 1.0)?;
-    let (jump_in, pull_off) = law.jump_in_and_pull_off_depths();
-    law.on_branch_end(jump_in, 0.0)?;
-    let mut most = 0.0f64;
-    let steps = 2000;
-    for i in 0..=steps {
-        let d = pull_off + (0.0 - pull_off) * i as f64 / steps as f64;
-        most = most.min(law.force(d, 0.0)?);
-    }
-    Ok(-most)
+    MaugisDugdaleForceLaw::new(md)?.pull_off_force()
 }
