@@ -34,7 +34,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-from lammps import lammps  # noqa: E402
+from collide import collide_oblique  # noqa: E402
 from tabor_ffi import law_info  # noqa: E402
 
 PLUGIN = os.environ["TABOR_PLUGIN"]
@@ -82,45 +82,18 @@ def tabor_coeff(friction, normal=f"jkr/load-controlled {E_STAR!r} {W}"):
 
 def collide(coeff_cmds, v, angle, spin=0.0, newton="on", reach=None, contact_times=12):
     """Two equal spheres whose undisturbed paths touch with the line of centres
-    along x (sphere 1 at -x of sphere 2), relative velocity v (cos a, sin a, 0),
-    run in ONE `run` command for the approach plus `contact_times` Hertz contact
-    times (a run split into several `run` commands makes pair granular's result
-    depend on the split when a sphere spins and rolling sds is on; the plugin's
-    does not). Returns (u_x, u_y, omega_z of 1, omega_z of 2, separated), with
-    `separated` true when the spheres are beyond `reach` and receding."""
+    along x, relative velocity v (cos a, sin a, 0), in one `run` of the approach
+    plus `contact_times` Hertz contact times (`collide.collide_oblique`). Returns
+    (u_x, u_y, omega_z of 1, omega_z of 2, separated), with `separated` true when
+    the spheres are beyond `reach` and receding."""
     reach = REACH if reach is None else reach
-    tc = contact_time(v)
-    dt = tc / STEPS_PER_CONTACT
-    a = math.radians(angle)
-    s = (reach + 20 * v * dt) / max(math.cos(a), 0.05)
-    x1 = (-2 * R - s * math.cos(a), -s * math.sin(a))
-    steps = int(s / v / dt) + contact_times * STEPS_PER_CONTACT
-    lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
-    try:
-        for c in ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
-                  f"newton {newton}", "comm_modify vel yes",
-                  f"region box block {-40 * R} {40 * R} {-40 * R} {40 * R} {-40 * R} {40 * R}",
-                  "create_box 1 box",
-                  f"create_atoms 1 single {x1[0] / 2!r} {x1[1] / 2!r} 0",
-                  f"create_atoms 1 single {-x1[0] / 2!r} {-x1[1] / 2!r} 0",
-                  f"set atom * diameter {2 * R} density {RHO}",
-                  f"set atom 1 vx {v * math.cos(a) / 2!r} vy {v * math.sin(a) / 2!r}",
-                  f"set atom 2 vx {-v * math.cos(a) / 2!r} vy {-v * math.sin(a) / 2!r}",
-                  f"set atom 1 omega 0 0 {spin!r}",
-                  *coeff_cmds,
-                  f"neighbor {0.2 * R} bin", "neigh_modify every 1 delay 0 check yes",
-                  "fix 1 all nve/sphere", f"timestep {dt!r}",
-                  "variable d equal sqrt((x[2]-x[1])^2+(y[2]-y[1])^2)",
-                  "variable vr equal (vx[2]-vx[1])*(x[2]-x[1])+(vy[2]-vy[1])*(y[2]-y[1])",
-                  f"run {steps}"]:
-            lmp.command(c)
-        separated = lmp.extract_variable("d") > 2 * R + reach and lmp.extract_variable("vr") > 0
-        tag, vel, om = lmp.extract_atom("id"), lmp.extract_atom("v"), lmp.extract_atom("omega")
-        k = {tag[0]: 0, tag[1]: 1}
-        i, j = k[1], k[2]
-        return (vel[i][0] - vel[j][0], vel[i][1] - vel[j][1], om[i][2], om[j][2], separated)
-    finally:
-        lmp.close()
+    dt = contact_time(v) / STEPS_PER_CONTACT
+    bodies = {"sphere_radius": R, "sphere_density": RHO, "target_radius": R, "target_density": RHO}
+    out = collide_oblique(coeff_cmds, bodies, v, angle, dt, reach, contact_times * STEPS_PER_CONTACT,
+                          spin=(0.0, 0.0, spin), newton=newton)
+    s, t = out["sphere"], out["target"]
+    return (s["velocity"][0] - t["velocity"][0], s["velocity"][1] - t["velocity"][1],
+            s["angular_velocity"][2], t["angular_velocity"][2], out["separated"])
 
 
 def plugin(friction, model=f"jkr/load-controlled {E_STAR!r} {W}"):
