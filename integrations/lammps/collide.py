@@ -121,8 +121,9 @@ def collide_oblique(fragment, bodies, speed, angle, dt, reach, run_steps, spin=(
     touch of the undisturbed paths (from the sphere, atom 1, to the target, atom 2),
     the sphere's velocity relative to the target v (cos a, sin a, 0); initial spin
     `spin` (rad/s) of the sphere. The sphere starts on its undisturbed path
-    outside the interaction range `reach` (m) plus 20 steps, so that an adhesive
-    contact with a range forms as it would from afar. ONE `run` of the approach
+    outside the interaction range `reach` (m), so that an adhesive contact with a
+    range forms as it would from afar, a whole number of steps (20 or more) before
+    the paths touch. ONE `run` of the approach
     plus `run_steps` steps (a run split into several `run` commands changes `pair
     granular`'s answer when a sphere spins with `rolling sds`). Returns
     {"sphere"|"target": {"velocity", "angular_velocity"}, "separated"}, with
@@ -133,10 +134,13 @@ def collide_oblique(fragment, bodies, speed, angle, dt, reach, run_steps, spin=(
     m2 = bodies["target_density"] * r2 ** 3
     a = math.radians(angle)
     u = (speed * math.cos(a), speed * math.sin(a))
-    # distance along the path from the start to first touch of the undisturbed paths
-    s = (reach + 20 * speed * dt) / max(math.cos(a), 0.05)
+    # the undisturbed paths touch after exactly `approach` steps, 20 more than it
+    # takes to cross `reach`: the touch falls on a step boundary at every dt, so
+    # runs at dt and dt/2 differ by the scheme's convergence, not by where the
+    # contact starts within a step (which scatters the answer by ~dt F/m)
+    approach = 20 + math.ceil(reach / max(math.cos(a), 0.05) / (speed * dt))
+    s = approach * speed * dt
     start = (-(r1 + r2) - s * math.cos(a), -s * math.sin(a))
-    approach = int(s / speed / dt)
     span = 40.0 * (r1 + r2) + 2.0 * s
     if not isinstance(fragment, str):
         fragment = "\n".join(fragment) + "\n"
