@@ -17,6 +17,20 @@ pub const STICKING_TOLERANCE: f64 = 1e-10;
 /// root, where g ∝ (v − v_c)/v_c.
 const STICK_EXCESS: f64 = 1e-14;
 
+impl GranularModel {
+    /// Simulates a central impact at relative normal speed `speed` (m/s) with this
+    /// model: the restitution LAMMPS produces in the limit of a small time step
+    /// ([`LammpsImpact::simulate`]).
+    pub fn impact(
+        &self,
+        effective_radius: f64,
+        effective_mass: f64,
+        speed: f64,
+    ) -> Result<ImpactSimulation> {
+        LammpsImpact::new(*self, effective_radius, effective_mass)?.simulate(speed)
+    }
+}
+
 /// A [`GranularModel`] between bodies of effective radius R and reduced mass m.
 #[derive(Clone, Debug)]
 pub struct LammpsImpact {

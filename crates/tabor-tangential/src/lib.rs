@@ -24,6 +24,6 @@ pub mod step;
 
 pub use model::{
     critical_force, lammps_number, EffectiveShear, Friction, Rolling, RollingModel, Tangential,
-    TangentialModel, Twisting, TwistingModel, UnknownModel,
+    TangentialModel, Twisting, TwistingModel,
 };
 pub use step::{ContactForces, ContactHistory, ContactKinematics, NormalResponse};

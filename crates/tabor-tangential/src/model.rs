@@ -4,56 +4,6 @@
 use serde::Serialize;
 use tabor_restitution::{validate, Result};
 
-/// A name that is not on a menu.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("unknown {menu} model '{given}' (expected one of: {expected})")]
-pub struct UnknownModel {
-    /// Which menu (`tangential`, `rolling`, `twisting`).
-    pub menu: &'static str,
-    /// What was given.
-    pub given: String,
-    /// The names on the menu, comma separated.
-    pub expected: String,
-}
-
-macro_rules! menu {
-    ($ty:ident, $menu:literal, [$($variant:ident => $name:literal),+ $(,)?]) => {
-        impl $ty {
-            /// Every model of this menu, in the order of the LAMMPS documentation.
-            pub const ALL: [$ty; menu!(@count $($variant)+)] = [$($ty::$variant),+];
-
-            /// The model's name as LAMMPS's `pair_style granular` (and a scene file)
-            /// spells it.
-            pub fn as_str(self) -> &'static str {
-                match self {
-                    $($ty::$variant => $name),+
-                }
-            }
-        }
-
-        impl std::fmt::Display for $ty {
-            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str(self.as_str())
-            }
-        }
-
-        impl std::str::FromStr for $ty {
-            type Err = UnknownModel;
-            fn from_str(s: &str) -> std::result::Result<Self, UnknownModel> {
-                $ty::ALL
-                    .into_iter()
-                    .find(|m| m.as_str() == s.trim())
-                    .ok_or_else(|| UnknownModel {
-                        menu: $menu,
-                        given: s.to_string(),
-                        expected: $ty::ALL.map(|m| m.as_str()).join(", "),
-                    })
-            }
-        }
-    };
-    (@count $($v:ident)+) => { 0 $(+ { let _ = stringify!($v); 1 })+ };
-}
-
 /// The tangential (sliding friction) model, LAMMPS `pair granular` keyword
 /// `tangential`. Every one is a spring in the tangent plane with a Coulomb limit
 /// `μ F_n0` (see [`crate::critical_force`]) and viscous damping `x_γ,t η_n`.
@@ -75,11 +25,12 @@ pub enum TangentialModel {
     LinearHistory,
 }
 
-menu!(TangentialModel, "tangential", [
-    LinearHistory => "linear_history",
-    Mindlin => "mindlin",
-    MindlinRescale => "mindlin_rescale",
-]);
+tabor_restitution::menu! {
+    TangentialModel, "tangential model";
+    LinearHistory => "linear_history", "a constant spring k_t (N/m) on the accumulated tangential displacement (Cundall & Strack 1979)";
+    Mindlin => "mindlin", "the spring k_t a, k_t = 8 G*, on the accumulated tangential displacement (Mindlin 1949)";
+    MindlinRescale => "mindlin_rescale", "mindlin, the stored displacement scaled by a/a_old as the contact shrinks";
+}
 
 /// The rolling resistance model, LAMMPS keyword `rolling`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize)]
@@ -91,7 +42,10 @@ pub enum RollingModel {
     Sds,
 }
 
-menu!(RollingModel, "rolling", [Sds => "sds"]);
+tabor_restitution::menu! {
+    RollingModel, "rolling model";
+    Sds => "sds", "spring-dashpot-slider on the rolling displacement (Luding 2008)";
+}
 
 /// The twisting resistance model, LAMMPS keyword `twisting`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize)]
@@ -107,7 +61,11 @@ pub enum TwistingModel {
     Sds,
 }
 
-menu!(TwistingModel, "twisting", [Marshall => "marshall", Sds => "sds"]);
+tabor_restitution::menu! {
+    TwistingModel, "twisting model";
+    Marshall => "marshall", "stiffness k_t a²/2, damping η_t a²/2, limit (2/3) μ a F_n0 (Marshall 2009, eq. 32)";
+    Sds => "sds", "spring-dashpot-slider with its own stiffness, damping and coefficient";
+}
 
 /// The tangential contact: model, stiffness, damping ratio and friction
 /// coefficient (LAMMPS `tangential <model> k_t x_γ,t μ_s`).
