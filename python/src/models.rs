@@ -318,7 +318,12 @@ pub static JKR_BY_SPEED: Split<JkrArgs, JkrPrepared, tabor::single::jkr::Jkr, Jk
     varying: "speed",
     prepare: |a| prepare_jkr(a).map_err(library),
     record: JkrPrepared::record,
-    own: |p, speed| speed.map(|v| p.at_speed(v)).transpose().map_err(library),
+    own: |p, speed, near| {
+        speed
+            .map(|v| p.at_speed_near(v, near))
+            .transpose()
+            .map_err(library)
+    },
 };
 
 impl OwnFields for JkrAtSpeed {
@@ -690,6 +695,10 @@ fn run_model<'py, A: Sync + Clone + 'static, R: serde::Serialize>(
     })
 }
 
+/// The own fields of one element of a [`Split`] model: from the prepared part,
+/// the varying input and the previous element's own fields.
+pub type OwnFn<P, V> = fn(&P, Option<f64>, Option<&V>) -> Result<Option<V>, Failure>;
+
 /// A model whose record splits into a part that depends on all inputs but
 /// `varying` (computed once per distinct set of them: a batch over speeds pays for
 /// the model once) and the fields of each element's own.
@@ -701,8 +710,9 @@ pub struct Split<A: 'static, P: 'static, R: 'static, V: 'static> {
     /// The shared part's record (the own fields unset).
     pub record: fn(&P) -> &R,
     /// The element's own fields from the varying input (None when it is not
-    /// given).
-    pub own: fn(&P, Option<f64>) -> Result<Option<V>, Failure>,
+    /// given) and the previous element's own fields when it shares the prepared
+    /// part (a warm start).
+    pub own: OwnFn<P, V>,
 }
 
 fn run_split<'py, A, P, R, V>(
@@ -716,7 +726,7 @@ where
     A: Sync + Clone + 'static,
     P: Send,
     R: serde::Serialize,
-    V: OwnFields,
+    V: OwnFields + Copy,
 {
     let parsed = parse(model, args)?;
     let given = given(model, &parsed, call)?;
@@ -738,7 +748,7 @@ where
         |i| key.iter().map(|c| c.at(i).to_bits()).collect(),
         |i| (split.prepare)(&element(inputs, base, &given, i)),
         split.record,
-        |p, i| (split.own)(p, varying.map(|c| c.at(i))),
+        |p, i, near| (split.own)(p, varying.map(|c| c.at(i)), near),
     )
 }
 

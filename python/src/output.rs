@@ -307,8 +307,10 @@ impl Call<'_> {
     /// impact speed's, say), written straight into the output columns: per chunk,
     /// `prepare(i)` runs once per distinct key (`same(i, j)` recognises an element
     /// that shares the previous one's key without building it) and each element
-    /// stores the code of its prepared part and, from `own(&prepared, i)` (`None`:
-    /// no fields of its own, NaN), its [`OwnFields`] by position. The shared
+    /// stores the code of its prepared part and, from `own(&prepared, i, near)`
+    /// (`None`: no fields of its own, NaN; `near`: the previous element's own
+    /// fields when it shares the prepared part, a warm start), its [`OwnFields`]
+    /// by position. The shared
     /// records are serialized once each, at the end, and gathered by code.
     #[allow(clippy::too_many_arguments)]
     pub fn split_columns<'py, P, R, V>(
@@ -318,12 +320,12 @@ impl Call<'_> {
         key: impl Fn(usize) -> Vec<u64> + Sync,
         prepare: impl Fn(usize) -> Result<P, Failure> + Sync,
         record: impl Fn(&P) -> &R,
-        own: impl Fn(&P, usize) -> Result<Option<V>, Failure> + Sync,
+        own: impl Fn(&P, usize, Option<&V>) -> Result<Option<V>, Failure> + Sync,
     ) -> PyResult<Bound<'py, PyTuple>>
     where
         P: Send,
         R: Serialize,
-        V: OwnFields,
+        V: OwnFields + Copy,
     {
         let internal = |e: crate::columns::Error| Failure {
             kind: crate::failure::Kind::Internal,
@@ -357,6 +359,8 @@ impl Call<'_> {
             let mut by_key: HashMap<Vec<u64>, Result<u32, Failure>> = HashMap::new();
             let mut last: Option<(usize, Result<u32, Failure>)> = None;
             let mut row = vec![f64::NAN; k];
+            // the previous element's prepared code and own fields (a warm start)
+            let mut near: Option<(u32, V)> = None;
             for i in chunk.range.clone() {
                 if !chunk.go(i) {
                     break;
@@ -375,7 +379,8 @@ impl Call<'_> {
                 };
                 let values = code.clone().and_then(|c| {
                     let p = &chunk.out.prepared[c as usize];
-                    crate::batch::guarded(|| own(p, i)).map(|v| (c, v))
+                    let previous = near.as_ref().filter(|(pc, _)| *pc == c).map(|(_, v)| v);
+                    crate::batch::guarded(|| own(p, i, previous)).map(|v| (c, v))
                 });
                 last = Some((i, code));
                 match values {
@@ -386,6 +391,7 @@ impl Call<'_> {
                         out.valid[j] = true;
                         if let Some(v) = v {
                             v.write(&mut row);
+                            near = Some((c, v));
                         } else {
                             row.fill(f64::NAN);
                         }
