@@ -6,6 +6,7 @@
 //! `tabor::single::input_name`.
 
 use crate::batch::Options;
+use crate::columns::{OwnFields, OwnKind};
 use crate::failure::Failure;
 use crate::output::{push, Call, Col};
 use numpy::PyReadonlyArray1;
@@ -314,11 +315,32 @@ pub static JKR: Model<JkrArgs, tabor::single::jkr::Jkr> = Model {
 /// `jkr` over speeds: the model once per distinct set of the other inputs
 /// (`tabor::single::jkr::prepare`).
 pub static JKR_BY_SPEED: Split<JkrArgs, JkrPrepared, tabor::single::jkr::Jkr, JkrAtSpeed> = Split {
-    varying: &["speed"],
+    varying: "speed",
     prepare: |a| prepare_jkr(a).map_err(library),
     record: JkrPrepared::record,
-    own: |p, a| a.speed.map(|v| p.at_speed(v)).transpose().map_err(library),
+    own: |p, speed, near| {
+        speed
+            .map(|v| p.at_speed_near(v, near))
+            .transpose()
+            .map_err(library)
+    },
 };
+
+impl OwnFields for JkrAtSpeed {
+    const FIELDS: &'static [(&'static str, OwnKind)] = &[
+        ("impact_speed", OwnKind::Float),
+        ("max_contact_radius", OwnKind::Float),
+        ("restitution", OwnKind::Float),
+        ("sticks", OwnKind::Bool),
+    ];
+
+    fn write(&self, out: &mut [f64]) {
+        out[0] = self.impact_speed;
+        out[1] = self.max_contact_radius;
+        out[2] = self.restitution;
+        out[3] = if self.sticks { 1.0 } else { 0.0 };
+    }
+}
 
 /// The non-adhesive plastic models (the menu of `plastic_model`).
 fn non_adhesive() -> Vec<(&'static str, &'static str)> {
@@ -548,6 +570,16 @@ enum Given<'a> {
     Optional(Option<Col<'a>>),
 }
 
+impl<'a> Given<'a> {
+    /// The column, when given.
+    fn column(&self) -> Option<Col<'a>> {
+        match self {
+            Given::Number(c) | Given::Optional(Some(c)) => Some(*c),
+            Given::Optional(None) => None,
+        }
+    }
+}
+
 /// The scalars of a call set in `base`, and its array keywords (index into the
 /// table, array).
 struct Parsed<'py, A> {
@@ -663,18 +695,24 @@ fn run_model<'py, A: Sync + Clone + 'static, R: serde::Serialize>(
     })
 }
 
+/// The own fields of one element of a [`Split`] model: from the prepared part,
+/// the varying input and the previous element's own fields.
+pub type OwnFn<P, V> = fn(&P, Option<f64>, Option<&V>) -> Result<Option<V>, Failure>;
+
 /// A model whose record splits into a part that depends on all inputs but
 /// `varying` (computed once per distinct set of them: a batch over speeds pays for
 /// the model once) and the fields of each element's own.
 pub struct Split<A: 'static, P: 'static, R: 'static, V: 'static> {
-    /// The keywords of the element's own fields.
-    pub varying: &'static [&'static str],
+    /// The keyword of the element's own fields (a number or optional number).
+    pub varying: &'static str,
     /// Validates the other inputs and computes the shared part.
     pub prepare: fn(&A) -> Result<P, Failure>,
     /// The shared part's record (the own fields unset).
     pub record: fn(&P) -> &R,
-    /// The element's own fields (None when its varying inputs are not given).
-    pub own: fn(&P, &A) -> Result<Option<V>, Failure>,
+    /// The element's own fields from the varying input (None when it is not
+    /// given) and the previous element's own fields when it shares the prepared
+    /// part (a warm start).
+    pub own: OwnFn<P, V>,
 }
 
 fn run_split<'py, A, P, R, V>(
@@ -686,29 +724,31 @@ fn run_split<'py, A, P, R, V>(
 ) -> PyResult<Bound<'py, PyTuple>>
 where
     A: Sync + Clone + 'static,
+    P: Send,
     R: serde::Serialize,
-    V: serde::Serialize,
+    V: OwnFields + Copy,
 {
     let parsed = parse(model, args)?;
     let given = given(model, &parsed, call)?;
     // the columns that can change the shared part (a broadcast scalar cannot)
     let key: Vec<Col<'_>> = given
         .iter()
-        .filter(|(k, _)| !split.varying.contains(&model.inputs[*k].name))
-        .filter_map(|(_, g)| match g {
-            Given::Number(c) | Given::Optional(Some(c)) => Some(*c),
-            Given::Optional(None) => None,
-        })
+        .filter(|(k, _)| model.inputs[*k].name != split.varying)
+        .filter_map(|(_, g)| g.column())
         .filter(|c| c.0.len() > 1)
         .collect();
+    let varying: Option<Col<'_>> = given
+        .iter()
+        .find(|(k, _)| model.inputs[*k].name == split.varying)
+        .and_then(|(_, g)| g.column());
     let (inputs, base) = (model.inputs, &parsed.base);
-    call.shared_records(
+    call.split_columns(
         py,
         |i, j| key.iter().all(|c| c.at(i).to_bits() == c.at(j).to_bits()),
         |i| key.iter().map(|c| c.at(i).to_bits()).collect(),
         |i| (split.prepare)(&element(inputs, base, &given, i)),
         split.record,
-        |p, i| (split.own)(p, &element(inputs, base, &given, i)),
+        |p, i, near| (split.own)(p, varying.map(|c| c.at(i)), near),
     )
 }
 
@@ -737,5 +777,23 @@ pub fn model<'py>(
         "visco" => run_model(py, &VISCO, args, &call),
         "penalty" => run_model(py, &PENALTY, args, &call),
         other => Err(PyTypeError::new_err(format!("no model function {other}"))),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The positional fields of `JkrAtSpeed` are its serde fields, in order.
+    #[test]
+    fn jkr_own_fields_are_the_serde_fields() {
+        let v = JkrAtSpeed {
+            impact_speed: 1.0,
+            max_contact_radius: 2.0,
+            restitution: 0.5,
+            sticks: false,
+        };
+        let names: Vec<&str> = JkrAtSpeed::FIELDS.iter().map(|(n, _)| *n).collect();
+        assert_eq!(crate::columns::field_names(&v), names);
     }
 }

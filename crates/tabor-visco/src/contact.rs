@@ -61,8 +61,8 @@
 //!   0 < μ ≤ 1.04 (τ̂ = 1) for β = 1e2-1e4, so the error is ≤
 //!   [`WEAK_BRANCH_ERROR`]`/β²` ≤ 2e-8 in 1 − ε;
 //! - otherwise the MDR continuum solution (as [`crate::standard_sphere::solve`],
-//!   also below its β = 1e-5: τ̂ ≥ 1e-5 with δ ≤ 1e3 means β ≥ 5.6e-9; measured
-//!   down to β = 1e-8, 1.5e4-3e4 evaluations, ≤ 20 ms).
+//!   also below its β = 1e-5: τ̂ ≥ 1e-5 with δ ≤ 1e9 means β ≥ 5.6e-15; measured
+//!   down to β = 1e-13, 1.5e4-8e4 evaluations, ≤ 0.1 s).
 //!
 //! A stiff partner does **not** always give the Kelvin-Voigt sphere: the limit
 //! needs τ small against the contact time on the spring G1 ≈ G_b,
@@ -70,7 +70,10 @@
 //! during the impact, which is then an elastic bounce on the partner (β = 1e-5,
 //! δ = 1e3: ε = 0.49, where the Kelvin-Voigt sphere gives 3.3e-6). The MDR
 //! solution covers this; with δ ≤ 1e3 and τ̂ < 1e-5 the ratio τ̂/T_1 is below
-//! 7e-3, where the Kelvin-Voigt limit holds (tests). For a fixed viscous body and
+//! 7e-3, with δ ≤ 1e6 below 0.105, where the Kelvin-Voigt limit holds (tests:
+//! at τ̂/T_1 = 0.1 the MDR solution is the Kelvin-Voigt ε to 1e-8 relative; at
+//! τ̂/T_1 = 1 it is 0.645 at every δ from 1e3 to 1e9). With τ̂ < 1e-5 and
+//! δ > 1e6 neither holds and the loss is an error. For a fixed viscous body and
 //! a partner stiffening without bound, τ̂/T_1 ∝ G_b^{-3/5} → 0: the contact
 //! tends to the Kelvin-Voigt sphere of the viscous body, at the rate O(β).
 //!
@@ -107,6 +110,13 @@ pub const WEAK_BRANCH_ERROR: f64 = 2.0;
 /// (measured maximum 0.195 at δ ≈ 0.3, tests).
 pub const KELVIN_VOIGT_LIMIT_ERROR: f64 = 0.2;
 
+/// Largest δ of the Kelvin-Voigt limit (τ̂ < [`MIN_SCALED_RELAXATION_TIME`]): there
+/// `τ̂/T_1 = 0.61 β^{3/5} δ ≤ 4.2e-4 δ^{2/5} ≤ 0.105` (module docs), where the MDR
+/// solution and the rigorous Kelvin-Voigt sphere agree far inside
+/// [`KELVIN_VOIGT_LIMIT_ERROR`] (tests; they part at τ̂/T_1 ≈ 1, ε = 0.645 against
+/// 3e-11 at δ = 1e6). Above, with τ̂ below the MDR solver's stiffness limit, no
+/// solution is offered.
+pub const KELVIN_VOIGT_LIMIT_MAX_VISCOUS_PARAMETER: f64 = 1e6;
 /// Below this δ the Kelvin-Voigt limit is the first order (5.71) (remainder ~3δ
 /// relative; the integration, accurate down to δ = 1e-100, underflows near 1e-300).
 const FIRST_ORDER_VISCOUS_PARAMETER: f64 = 1e-30;
@@ -285,6 +295,20 @@ impl ViscoelasticContact {
         radius: f64,
         mass: f64,
     ) -> Result<Option<Box<dyn ImpactModel + Send + Sync>>> {
+        self.impact_model_with_tolerance(radius, mass, TOLERANCE)
+    }
+
+    /// [`ViscoelasticContact::impact_model`] integrated at relative tolerance
+    /// `tolerance` ([1e-15, 0.5]) instead of the default 1e-9.
+    ///
+    /// Seed 000, eqs. (5.64)-(5.68), (5.75), (5.84)-(5.90).
+    pub fn impact_model_with_tolerance(
+        &self,
+        radius: f64,
+        mass: f64,
+        tolerance: f64,
+    ) -> Result<Option<Box<dyn ImpactModel + Send + Sync>>> {
+        validate::tolerance("tolerance", tolerance)?;
         Ok(match *self {
             ViscoelasticContact::Elastic { .. } => {
                 validate::positive("radius", radius)?;
@@ -295,23 +319,29 @@ impl ViscoelasticContact {
                 relaxed_modulus,
                 branch_modulus,
                 viscosity,
-            } => Some(Box::new(StandardMediumSphere::new(
-                relaxed_modulus,
-                branch_modulus,
-                viscosity,
-                radius,
-                mass,
-            )?)),
+            } => Some(Box::new(
+                StandardMediumSphere::new(
+                    relaxed_modulus,
+                    branch_modulus,
+                    viscosity,
+                    radius,
+                    mass,
+                )?
+                .with_tolerance(tolerance)?,
+            )),
             ViscoelasticContact::KelvinVoigt {
                 shear_modulus,
                 viscosity,
-            } => Some(Box::new(KelvinVoigtSphere::new(
-                shear_modulus,
-                viscosity,
-                radius,
-                mass,
-                SphereModel::Rigorous,
-            )?)),
+            } => Some(Box::new(
+                KelvinVoigtSphere::new(
+                    shear_modulus,
+                    viscosity,
+                    radius,
+                    mass,
+                    SphereModel::Rigorous,
+                )?
+                .with_tolerance(tolerance)?,
+            )),
         })
     }
 }
@@ -387,8 +417,10 @@ pub fn weak_branch_loss_coefficient(scaled_relaxation_time: f64, tolerance: f64)
 
 /// The loss of a sphere on a standard medium at β = G∞/G1 ∈ (0, ∞) and δ (5.90)
 /// over the whole range (module docs: Kelvin-Voigt limit, MDR, weak branch),
-/// relative integration tolerance `tolerance`. δ above 1e3 is an error (as for the
-/// Kelvin-Voigt and MDR spheres), unless β is in the weak-branch range.
+/// relative integration tolerance `tolerance`. δ above 1e9 is an error (as for the
+/// Kelvin-Voigt and MDR spheres), unless β is in the weak-branch range; so is δ
+/// above [`KELVIN_VOIGT_LIMIT_MAX_VISCOUS_PARAMETER`] with τ̂ below
+/// [`MIN_SCALED_RELAXATION_TIME`].
 ///
 /// Seed 000, eqs. (5.64)-(5.68), (5.84)-(5.90).
 pub fn standard_medium_loss(
@@ -408,6 +440,15 @@ pub fn standard_medium_loss(
         ));
     }
     if tau < MIN_SCALED_RELAXATION_TIME {
+        if delta > KELVIN_VOIGT_LIMIT_MAX_VISCOUS_PARAMETER {
+            return Err(Error::invalid(
+                "viscous_parameter",
+                delta,
+                "must be <= 1e6 where the scaled relaxation time modulus_ratio (64/15)^(2/5) δ \
+                 is below 1e-5: beyond, the viscous body is rigid for a fraction of the \
+                 partner's contact time (no Kelvin-Voigt limit) and the MDR solution is too stiff",
+            ));
+        }
         if delta < FIRST_ORDER_VISCOUS_PARAMETER {
             // (5.71): 1 − ε = sδ (1 + O(δ)), exact here to far below the tolerance
             // (the integration underflows for δ ~ 1e-300).
@@ -448,11 +489,12 @@ pub fn standard_medium_loss(
         return Err(Error::invalid(
             "viscous_parameter",
             delta,
-            "must be finite and lie in (0, 1e3]",
+            "must be finite and lie in (0, 1e9]",
         ));
     }
     // The MDR solution below β = 1e-5 too (the public `standard_sphere` accepts
-    // β ≥ 1e-5): here τ̂ ≥ 1e-5 and δ ≤ 1e3 give β ≥ 5.6e-9, where it is tested.
+    // β ≥ 1e-5): here τ̂ ≥ 1e-5 and δ ≤ 1e9 give β ≥ 5.6e-15, tested against the
+    // discrete MDR down to β = 1e-13 (δ = 1e8) in `src/mdr/tests.rs`.
     let s: ScaledImpact = mdr::solve(
         &ScaledMedium {
             beta,
@@ -483,6 +525,7 @@ pub struct StandardMediumSphere {
     viscosity: f64,
     radius: f64,
     mass: f64,
+    tolerance: f64,
 }
 
 impl StandardMediumSphere {
@@ -503,6 +546,16 @@ impl StandardMediumSphere {
             viscosity: validate::positive("viscosity", viscosity)?,
             radius: validate::positive("radius", radius)?,
             mass: validate::positive("mass", mass)?,
+            tolerance: TOLERANCE,
+        })
+    }
+
+    /// The same sphere solved at relative tolerance `tolerance` (default 1e-9;
+    /// [`standard_medium_loss`] accepts [1e-15, 0.5]).
+    pub fn with_tolerance(self, tolerance: f64) -> Result<Self> {
+        Ok(StandardMediumSphere {
+            tolerance: validate::tolerance("tolerance", tolerance)?,
+            ..self
         })
     }
 
@@ -525,7 +578,7 @@ impl StandardMediumSphere {
     /// Seed 000, eqs. (5.84)-(5.90).
     pub fn loss(&self, impact_speed: f64) -> Result<StandardLoss> {
         let (b, d) = self.parameters(impact_speed)?;
-        standard_medium_loss(b, d, TOLERANCE)
+        standard_medium_loss(b, d, self.tolerance)
     }
 }
 

@@ -14,8 +14,11 @@ use crate::scaled::{positive_up_to, ScaledImpact};
 use crate::standard_flat::check_modulus_ratio;
 use tabor_restitution::{validate, Error, Result};
 
-/// Largest viscous parameter δ accepted.
-pub const MAX_VISCOUS_PARAMETER: f64 = 1e3;
+/// Largest viscous parameter δ accepted (the Kelvin-Voigt sphere's,
+/// [`crate::kelvin_voigt_sphere::MAX_VISCOUS_PARAMETER`]); with τ̂ ≥
+/// [`MIN_RELAXATION_TIME`] the MDR solution agrees with the discrete MDR there
+/// (tests in `src/mdr/tests.rs`).
+pub const MAX_VISCOUS_PARAMETER: f64 = crate::kelvin_voigt_sphere::MAX_VISCOUS_PARAMETER;
 /// Smallest scaled relaxation time τ̂ = β (64/15)^(2/5) δ. The internal variables
 /// relax on τ̂; below τ̂ = 2e-3 the integration is by the L-stable Rodas5P, which
 /// takes ≈ 1.3e3-3.9e3 right-hand-side evaluations (≤ 0.5 ms) at this limit (the
@@ -30,7 +33,7 @@ fn medium(beta: f64, delta: f64) -> Result<ScaledMedium> {
         "viscous_parameter",
         delta,
         MAX_VISCOUS_PARAMETER,
-        "must be finite and lie in (0, 1e3]",
+        "must be finite and lie in (0, 1e9]",
     )?;
     let tau = b * (64.0_f64 / 15.0).powf(0.4) * d;
     if tau < MIN_RELAXATION_TIME {

@@ -9,7 +9,8 @@ use tabor_numerics::special::beta;
 use tabor_restitution::{Error, ImpactModel};
 use tabor_visco::contact::{
     standard_medium_loss, weak_branch_loss_coefficient, Body, StandardRegime, ViscoelasticContact,
-    MAX_MODULUS_RATIO, MIN_SCALED_RELAXATION_TIME, WEAK_BRANCH_ERROR,
+    KELVIN_VOIGT_LIMIT_MAX_VISCOUS_PARAMETER, MAX_MODULUS_RATIO, MIN_SCALED_RELAXATION_TIME,
+    WEAK_BRANCH_ERROR,
 };
 use tabor_visco::models::KelvinVoigtSphere;
 use tabor_visco::{kelvin_voigt_sphere, SphereModel};
@@ -355,12 +356,12 @@ fn regime_and_loss(beta_: f64, delta: f64) -> (StandardRegime, f64, f64) {
 }
 
 /// Both sides of each switch: τ̂ = 1e-5 (Kelvin-Voigt limit | MDR) within the
-/// stated 0.2 τ̂ in ε, over δ from 1e-3 to 1e3 (β down to 1e-8); β = 1e4 (MDR |
+/// stated 0.2 τ̂ in ε, over δ from 1e-3 to 1e6 (β down to 5.6e-12); β = 1e4 (MDR |
 /// weak branch) within 2/β² in 1 − ε², τ̂ from 1e-5 to 1e3.
 #[test]
 fn switches_are_continuous() {
     let eps = 1e-9;
-    for &d in &[1e-3, 1e-1, 0.3, 1.0, 10.0, 100.0, 1e3] {
+    for &d in &[1e-3, 1e-1, 0.3, 1.0, 10.0, 100.0, 1e3, 1e4, 1e5, 1e6] {
         let b = MIN_SCALED_RELAXATION_TIME / (k() * d);
         let (r_lo, _, e_lo) = regime_and_loss(b * (1.0 - eps), d);
         let (r_hi, _, e_hi) = regime_and_loss(b * (1.0 + eps), d);
@@ -410,14 +411,26 @@ fn kelvin_voigt_limit_error_is_linear_in_the_relaxation_time() {
 }
 
 /// The whole range the scene can produce, β from 1e-8 to 1e8 and τ̂ from 1e-9 to
-/// 1e6 (δ ≤ 1e3): always a result, ε in [0, 1], the loss in [0, 1].
+/// 1e6 (δ ≤ 1e9; δ ≤ 1e6 where τ̂ < 1e-5): always a result, ε in [0, 1], the loss
+/// in [0, 1]; beyond, an error naming the viscous parameter.
 #[test]
 fn whole_range_gives_a_result() {
     for &b in &[1e-8, 1e-6, 1e-4, 1e-2, 1.0, 1e2, 1e4, 1e6, 1e8] {
         for &tau in &[1e-9, 1e-6, 1e-4, 1e-2, 1.0, 1e2, 1e4, 1e6] {
             let d = tau / (k() * b);
-            if d > 1e3 {
-                assert!(standard_medium_loss(b, d, 1e-9).is_err() || b > MAX_MODULUS_RATIO);
+            let limit = if tau < MIN_SCALED_RELAXATION_TIME {
+                KELVIN_VOIGT_LIMIT_MAX_VISCOUS_PARAMETER
+            } else {
+                1e9
+            };
+            if d > limit && b <= MAX_MODULUS_RATIO {
+                assert!(matches!(
+                    standard_medium_loss(b, d, 1e-9),
+                    Err(Error::InvalidParameter {
+                        parameter: "viscous_parameter",
+                        ..
+                    })
+                ));
                 continue;
             }
             let s = standard_medium_loss(b, d, 1e-9)

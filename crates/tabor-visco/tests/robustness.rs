@@ -134,10 +134,10 @@ proptest! {
         }
     }
 
-    /// The Kelvin-Voigt sphere over δ ∈ (0, 1e3], both models, any tolerance.
+    /// The Kelvin-Voigt sphere over δ ∈ (0, 1e9], both models, any tolerance.
     #[test]
     fn kelvin_voigt_sphere_solves_its_whole_range(
-        log_delta in -300.0..3.0f64,
+        log_delta in -300.0..9.0f64,
         log_tol in -15.0..-0.302f64,
     ) {
         let (d, t) = (10f64.powf(log_delta), 10f64.powf(log_tol));
@@ -154,7 +154,7 @@ proptest! {
     }
 
     /// The inverse over its accepted range (ε(δ_max) < ε < 1: log-uniform towards
-    /// both ends): a δ in (0, 1e3], never an integration failure.
+    /// both ends): a δ in (0, 1e9], never an integration failure.
     #[test]
     fn inverse_covers_its_whole_range(
         u in 0.0..1.0f64,
@@ -162,12 +162,12 @@ proptest! {
         log_tol in -15.0..-0.302f64,
     ) {
         let t = 10f64.powf(log_tol);
-        // log-uniform in (3.3e-6, 1) or 1 − ε log-uniform in (1e-16, 1)
-        let eps = if near_one { 1.0 - 10f64.powf(-16.0 * u) } else { 10f64.powf(-5.48 * u) };
-        prop_assume!(eps > 3.3e-6 && eps < 1.0);
+        // log-uniform in (3.3e-16, 1) or 1 − ε log-uniform in (1e-16, 1)
+        let eps = if near_one { 1.0 - 10f64.powf(-16.0 * u) } else { 10f64.powf(-15.48 * u) };
+        prop_assume!(eps > 3.3e-16 && eps < 1.0);
         for model in [SphereModel::KuwabaraKono, SphereModel::Rigorous] {
             match kelvin_voigt_sphere::viscous_parameter_for_restitution(eps, model, t) {
-                Ok(d) => prop_assert!(d > 0.0 && d <= 1e3, "{d}"),
+                Ok(d) => prop_assert!(d > 0.0 && d <= 1e9, "{d}"),
                 Err(e) => prop_assert!(false, "{model:?} ε {eps}, tol {t}: {e}"),
             }
         }
@@ -185,7 +185,7 @@ fn errors_name_the_parameter() {
             "damping_ratio",
         ),
         (
-            kelvin_voigt_sphere::restitution(2e3, SphereModel::Rigorous),
+            kelvin_voigt_sphere::restitution(2e9, SphereModel::Rigorous),
             "viscous_parameter",
         ),
         (standard_flat::restitution(0.0, 1.0), "modulus_ratio"),
@@ -206,7 +206,7 @@ fn errors_name_the_parameter() {
         ),
         (
             kelvin_voigt_sphere::viscous_parameter_for_restitution(
-                1e-6,
+                1e-17,
                 SphereModel::KuwabaraKono,
                 1e-8,
             ),

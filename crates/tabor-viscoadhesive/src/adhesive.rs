@@ -10,6 +10,7 @@ use std::sync::Arc;
 use tabor_dynamics::{BranchChange, ForceLaw};
 use tabor_jkr::{JkrForceLaw, JkrSphere, SeparationRule};
 use tabor_maugis::MaugisDugdaleForceLaw;
+use tabor_numerics::root_finding::{brent, RootTolerance};
 use tabor_restitution::{Error, Result};
 
 /// `x_c = 3^(−1/3)`: the fixed-grip instability in `x = √â` (`dd̂/dx = 0`).
@@ -326,6 +327,39 @@ impl SeparationPotential for AdhesiveForceLaw {
             Kind::MaugisDugdale(_, table) => -table.values.iter().copied().fold(0.0, f64::min),
         })
     }
+
+    /// JKR: `d_eq = 2^(4/3) d_n` (F̂ = x⁶ − 2x³ = 0 at x³ = 2, d̂ = 3x⁴ − 4x, seed 000
+    /// eqs. (5.33), (5.34)); Maugis-Dugdale: the root of F on the contact branch
+    /// between the pull-off depth (tensile) and `upper` (compressive), by Brent.
+    fn equilibrium_overlap(&self, upper: f64) -> Result<Option<f64>> {
+        match &self.kind {
+            Kind::Jkr(j) => Ok(Some(2f64.powf(4.0 / 3.0) * j.depth_unit)),
+            Kind::MaugisDugdale(l, table) => {
+                let compressive = l.force(upper, 0.0)? > 0.0;
+                if !l.in_contact() || !compressive || upper <= table.pull_off {
+                    return Ok(None);
+                }
+                let mut failure = None;
+                let f = |d: f64| match l.force(d, 0.0) {
+                    Ok(f) => f,
+                    Err(e) => {
+                        failure.get_or_insert(e);
+                        f64::NAN
+                    }
+                };
+                let root = brent(
+                    f,
+                    table.pull_off,
+                    upper,
+                    RootTolerance::absolute(1e-12 * upper.abs().max(table.span)),
+                );
+                if let Some(e) = failure {
+                    return Err(e);
+                }
+                Ok(Some(root?.value))
+            }
+        }
+    }
 }
 
 #[cfg(test)]
@@ -399,6 +433,47 @@ mod tests {
             assert!(
                 (u + loss).abs() <= 1e-7 * loss,
                 "Lambda {lambda}: {u} vs {loss}"
+            );
+        }
+    }
+
+    #[test]
+    fn equilibrium_overlaps_are_where_the_force_vanishes() {
+        // JKR: the closed form 2^(4/3) d_n against (5.33)/(5.34) in SI,
+        // a_eq³ = 9πΔγR²/(2E*), d_eq = a²/R − √(2πΔγ a/E*); Maugis-Dugdale: the
+        // law's force is 0 there, and the potential table is at its minimum.
+        let sphere = JkrSphere::new(E, R, DG).unwrap();
+        let law = AdhesiveForceLaw::jkr(&sphere, SeparationRule::FixedGrip);
+        let d_eq = law.equilibrium_overlap(1.0).unwrap().unwrap();
+        let a = (9.0 * std::f64::consts::PI * DG * R * R / (2.0 * E)).cbrt();
+        let reference = a * a / R - (2.0 * std::f64::consts::PI * DG * a / E).sqrt();
+        assert!(
+            (d_eq / reference - 1.0).abs() < 1e-12,
+            "{d_eq} vs {reference}"
+        );
+        assert!(law.force(d_eq, 0.0).unwrap().abs() < 1e-12 * sphere.scales().force);
+        for lambda in [0.3, 1.0, 3.0] {
+            let md = MaugisDugdaleImpact::new(
+                MaugisContact::new(JkrSphere::new(E, R, DG).unwrap(), lambda).unwrap(),
+                1e-12,
+            )
+            .unwrap();
+            let f = MaugisDugdaleForceLaw::new(&md).unwrap();
+            let mut law = AdhesiveForceLaw::maugis_dugdale(f.clone(), md.scales().depth).unwrap();
+            let d_n = md.scales().depth;
+            // on the contact branch after jump-in
+            law.begin_impact(1.0, 1.0).unwrap();
+            let (jump_in, _) = f.jump_in_and_pull_off_depths();
+            assert_eq!(
+                law.on_branch_end(jump_in, 1.0).unwrap(),
+                BranchChange::Continue
+            );
+            let d_eq = law.equilibrium_overlap(10.0 * d_n).unwrap().unwrap();
+            let force = law.force(d_eq, 0.0).unwrap();
+            println!("Lambda {lambda}: d_eq {:.6} d_n, F {force:e}", d_eq / d_n);
+            assert!(
+                force.abs() < 1e-9 * md.scales().force,
+                "Lambda {lambda}: {force}"
             );
         }
     }

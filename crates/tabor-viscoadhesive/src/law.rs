@@ -32,7 +32,17 @@ pub trait SeparationPotential: ForceLaw {
     fn well_depth(&self) -> Option<f64> {
         None
     }
+
+    /// The equilibrium overlap `d_eq` (F = 0) of the current contact branch, below
+    /// `upper` (m) where the force is compressive, or `None` when not known.
+    fn equilibrium_overlap(&self, _upper: f64) -> Result<Option<f64>> {
+        Ok(None)
+    }
 }
+
+/// Samples of `F(d)/(d − d_eq)` over `[d_eq, d*]` in the trap test of
+/// [`ViscousDamping`] (their maximum, taken twice, bounds the secant stiffness).
+const TRAP_SAMPLES: usize = 32;
 
 impl SeparationPotential for JkrForceLaw {}
 impl SeparationPotential for MaugisDugdaleForceLaw {}
@@ -180,6 +190,44 @@ impl<L: SeparationPotential> ViscousDamping<L> {
             .map(|e| e * self.length_per_energy))
     }
 
+    /// Whether the body, at rest at its turning point `d*` (m), is trapped between
+    /// the equilibrium d_eq of the contact branch and d*, so that it never reaches
+    /// the separation point (README eq. (V5)). With `s = d − d_eq`,
+    /// `m s̈ = −F − c ṡ`, `c = 2 η_c a(d) ≥ c0 = 2 η_c a(d_eq)` (a grows with d)
+    /// and `0 ≤ F ≤ k s` on [d_eq, d*]: if `c0² ≥ 4 m k`, a λ with
+    /// `(c0/m − λ) λ ≥ k/m` exists, on the line `ṡ = −λ s` the field gives
+    /// `d(ṡ + λs)/dt ≥ −F/m + (c0/m − λ) λ s ≥ 0`, so the body (starting at
+    /// ṡ = 0 above the line) stays above it: `s ≥ s* e^{−λ t} > 0`; and it never
+    /// passes d* again (the energy `½ m ṡ² + U` only falls and U grows on
+    /// [d_eq, d*]). It creeps into the equilibrium and sticks, which the
+    /// simulation would otherwise follow on the viscous time scale with steps
+    /// bounded by the far shorter inertial one. k is the largest of
+    /// [`TRAP_SAMPLES`] samples of `F/s`, taken twice (the test asks
+    /// `c0² ≥ 8 m k_sampled`); false when the inner law does not know d_eq.
+    fn trapped(&self, turning_overlap: f64) -> Result<bool> {
+        if !self.inner.in_contact() || self.mass.is_nan() {
+            return Ok(false);
+        }
+        let Some(d_eq) = self.inner.equilibrium_overlap(turning_overlap)? else {
+            return Ok(false);
+        };
+        let span = turning_overlap - d_eq;
+        if span.is_nan() || span <= 0.0 {
+            return Ok(false);
+        }
+        let damping = 2.0 * self.contact_viscosity * self.inner.contact_radius(d_eq, 0.0)?;
+        let mut stiffness = 0.0f64;
+        for i in 1..=TRAP_SAMPLES {
+            let s = span * i as f64 / TRAP_SAMPLES as f64;
+            let f = self.inner.force(d_eq + s, 0.0)?;
+            if f.is_nan() || f < 0.0 {
+                return Ok(false);
+            }
+            stiffness = stiffness.max(f / s);
+        }
+        Ok(damping * damping >= 8.0 * self.mass * stiffness)
+    }
+
     /// The overlap scale L of the impact (m), with `length_per_energy`
     /// = L/(m v0²/2).
     fn length_scale(&self) -> f64 {
@@ -285,10 +333,12 @@ impl<L: SeparationPotential> ForceLaw for ViscousDamping<L> {
     }
 
     /// The inner law's decision; [`BranchChange::Stick`] when the impact started in
-    /// contact without the energy to separate (README eq. (V4)).
+    /// contact without the energy to separate (README eq. (V4)), or when the body
+    /// turns overdamped and can never leave the equilibrium's neighbourhood
+    /// ([`ViscousDamping::trapped`], README eq. (V5)).
     fn on_max_compression(&mut self, overlap: f64) -> Result<BranchChange> {
         let decision = self.inner.on_max_compression(overlap)?;
-        if self.doomed && decision == BranchChange::Continue {
+        if decision == BranchChange::Continue && (self.doomed || self.trapped(overlap)?) {
             return Ok(BranchChange::Stick);
         }
         Ok(decision)

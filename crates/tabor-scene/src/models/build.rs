@@ -339,8 +339,14 @@ fn build_visco(scene: &Inputs) -> Result<Result<Option<Visco>, ViscoKind>, Scene
             format!("two Kelvin-Voigt bodies with equal relaxation times: a Kelvin-Voigt contact (5.64) with G* = {shear_modulus:e} Pa, eta* = {viscosity:e} Pa s (correspondence principle)"),
         ),
     };
+    // at the scene's accuracy, as every other model it builds (floored at 1e-12,
+    // as the viscous-adhesive model)
     let Some(model) = contact
-        .impact_model(scene.effective_radius, scene.effective_mass)
+        .impact_model_with_tolerance(
+            scene.effective_radius,
+            scene.effective_mass,
+            scene.accuracy.max(1e-12),
+        )
         .map_err(in_field)?
     else {
         return Ok(Ok(None));
