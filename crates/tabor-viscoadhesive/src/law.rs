@@ -335,7 +335,7 @@ impl<L: SeparationPotential> ForceLaw for ViscousDamping<L> {
     /// The inner law's decision; [`BranchChange::Stick`] when the impact started in
     /// contact without the energy to separate (README eq. (V4)), or when the body
     /// turns overdamped and can never leave the equilibrium's neighbourhood
-    /// ([`ViscousDamping::trapped`], README eq. (V5)).
+    /// (`ViscousDamping::trapped`, README eq. (V5)).
     fn on_max_compression(&mut self, overlap: f64) -> Result<BranchChange> {
         let decision = self.inner.on_max_compression(overlap)?;
         if decision == BranchChange::Continue && (self.doomed || self.trapped(overlap)?) {

@@ -90,8 +90,8 @@ impl SpeedTable {
     /// the sticking velocity `sticking_velocity`, when given and higher) with
     /// restitution ≥ [`MIN_RESTITUTION`] up to `upper` (m/s, 0 < lower < upper ≤
     /// the small-strain limit). With a sticking velocity above `lower`, the speeds
-    /// from `lower` to just below it ([`STICKING_MARGIN`]) answer "sticks" with the
-    /// model's loss m v²/2 + well depth, after simulations at [`STICKING_CHECKS`]
+    /// from `lower` to just below it (`STICKING_MARGIN`) answer "sticks" with the
+    /// model's loss m v²/2 + well depth, after simulations at `STICKING_CHECKS`
     /// speeds of that range all stuck. Fails when the range is invalid, when no
     /// speed near the start rebounds well enough, when a sample sticks or fails,
     /// when the pieces do not resolve the loss, or when a certifying simulation
