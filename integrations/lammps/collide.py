@@ -7,6 +7,10 @@ contact_time/5000 in chunks of one contact time until the bodies have parted (or
 for at most `max_contact_times` contact times: then they stuck), and returns the
 measured restitution. No wall-clock dependence: every run is a fixed number of
 steps decided by the contact time.
+
+`collide_oblique(...)` runs one oblique collision of two spheres (with an
+optional spin) and returns both bodies' velocities and spins in tabor's frame;
+`time_step_errors(...)` compares tabor's answer with two such runs at dt and dt/2.
 """
 
 import math
@@ -103,22 +107,43 @@ def collide(fragment, geometry, bodies, speed, contact_time, pulloff=0.0,
         os.unlink(path)
 
 
-def collide_oblique(fragment, bodies, speed, angle, dt, reach, max_contact_steps=400 * 8000):
-    """Runs one oblique collision of two spheres with a fragment (pair style and
-    pair_coeff) included after create_box with LAMMPS's defaults, in tabor's
-    frame: the centre-of-mass frame, x along the line of centres at first touch
-    of the undisturbed paths (from the sphere, atom 1, to the target, atom 2),
-    the sphere's velocity relative to the target v (cos a, sin a, 0), no spin.
-    Separation: centres farther apart than the radii plus `reach` (m) and
-    receding. Returns {"sphere"|"target": {"velocity", "angular_velocity"}}."""
+def collide_oblique(fragment, bodies, speed, angle, dt, reach, run_steps, spin=(0.0, 0.0, 0.0),
+                    newton=None):
+    """Runs one oblique collision of two spheres in LAMMPS, the one home of every
+    oblique LAMMPS run of the test suites (test_oblique.py, test_lammps.py,
+    test_plugin_friction.py).
+
+    fragment: the contact's commands (pair_style, pair_coeff, a `plugin load`),
+    text or a list of lines, included after create_box with LAMMPS's defaults
+    (`newton`: "on" or "off" set before create_box, None: the default, on);
+    bodies: dict with sphere_radius, sphere_density, target_radius, target_density.
+    tabor's frame: the centre-of-mass frame, x along the line of centres at first
+    touch of the undisturbed paths (from the sphere, atom 1, to the target, atom 2),
+    the sphere's velocity relative to the target v (cos a, sin a, 0); initial spin
+    `spin` (rad/s) of the sphere. The sphere starts on its undisturbed path
+    outside the interaction range `reach` (m), so that an adhesive contact with a
+    range forms as it would from afar, a whole number of steps (20 or more) before
+    the paths touch. ONE `run` of the approach
+    plus `run_steps` steps (a run split into several `run` commands changes `pair
+    granular`'s answer when a sphere spins with `rolling sds`). Returns
+    {"sphere"|"target": {"velocity", "angular_velocity"}, "separated"}, with
+    `separated` true when at the end the centres are farther apart than the radii
+    plus `reach` and receding."""
     r1, r2 = bodies["sphere_radius"], bodies["target_radius"]
     m1 = bodies["sphere_density"] * r1 ** 3
     m2 = bodies["target_density"] * r2 ** 3
     a = math.radians(angle)
     u = (speed * math.cos(a), speed * math.sin(a))
-    steps = 20
-    start = (-(r1 + r2) - u[0] * steps * dt, -u[1] * steps * dt)
-    span = 40.0 * (r1 + r2)
+    # the undisturbed paths touch after exactly `approach` steps, 20 more than it
+    # takes to cross `reach`: the touch falls on a step boundary at every dt, so
+    # runs at dt and dt/2 differ by the scheme's convergence, not by where the
+    # contact starts within a step (which scatters the answer by ~dt F/m)
+    approach = 20 + math.ceil(reach / max(math.cos(a), 0.05) / (speed * dt))
+    s = approach * speed * dt
+    start = (-(r1 + r2) - s * math.cos(a), -s * math.sin(a))
+    span = 40.0 * (r1 + r2) + 2.0 * s
+    if not isinstance(fragment, str):
+        fragment = "\n".join(fragment) + "\n"
     lmp = _lmp()
     with tempfile.NamedTemporaryFile("w", suffix=".lmp", delete=False) as f:
         f.write(fragment)
@@ -126,43 +151,60 @@ def collide_oblique(fragment, bodies, speed, angle, dt, reach, max_contact_steps
     try:
         for c in [
             "units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
+            *([f"newton {newton}"] if newton else []),
             f"region box block {-span} {span} {-span} {span} {-span} {span}",
             "create_box 1 box",
-            f"create_atoms 1 single {start[0]} {start[1]} 0",
+            f"create_atoms 1 single {start[0]!r} {start[1]!r} 0",
             "create_atoms 1 single 0 0 0",
-            f"set atom 1 diameter {2 * r1} density {bodies['sphere_density']}",
-            f"set atom 2 diameter {2 * r2} density {bodies['target_density']}",
-            f"set atom 1 vx {u[0] * m2 / (m1 + m2)} vy {u[1] * m2 / (m1 + m2)} vz 0",
-            f"set atom 2 vx {-u[0] * m1 / (m1 + m2)} vy {-u[1] * m1 / (m1 + m2)} vz 0",
+            f"set atom 1 diameter {2 * r1!r} density {bodies['sphere_density']!r}",
+            f"set atom 2 diameter {2 * r2!r} density {bodies['target_density']!r}",
+            f"set atom 1 vx {u[0] * m2 / (m1 + m2)!r} vy {u[1] * m2 / (m1 + m2)!r} vz 0",
+            f"set atom 2 vx {-u[0] * m1 / (m1 + m2)!r} vy {-u[1] * m1 / (m1 + m2)!r} vz 0",
+            f"set atom 1 omega {spin[0]!r} {spin[1]!r} {spin[2]!r}",
+            "comm_modify vel yes",
             f"neighbor {0.2 * min(r1, r2)} bin",
             f"include {path}",
             "neigh_modify every 1 delay 0 check yes",
             "fix integrate all nve/sphere",
-            f"timestep {dt}",
-            "run 0",
+            f"timestep {dt!r}",
+            f"run {approach + run_steps}",
         ]:
             lmp.command(c)
-        chunk = 2000
-        for _ in range(max_contact_steps // chunk):
-            lmp.command(f"run {chunk} pre no post no")
-            x = lmp.extract_atom("x")
-            v = lmp.extract_atom("v")
-            d = [x[1][k] - x[0][k] for k in range(3)]
-            dist = math.sqrt(sum(c * c for c in d))
-            receding = sum(d[k] * (v[1][k] - v[0][k]) for k in range(3)) > 0
-            if dist > r1 + r2 + reach and receding:
-                break
-        else:
-            raise AssertionError(f"LAMMPS: no separation at {speed} m/s, {angle} deg")
-        v = lmp.extract_atom("v")
-        w = lmp.extract_atom("omega")
-        vc = [(m1 * v[0][k] + m2 * v[1][k]) / (m1 + m2) for k in range(3)]
+        tag, x, v, w = (lmp.extract_atom(n) for n in ("id", "x", "v", "omega"))
+        i, j = (0, 1) if tag[0] == 1 else (1, 0)   # atoms may be sorted
+        d = [x[j][k] - x[i][k] for k in range(3)]
+        receding = sum(d[k] * (v[j][k] - v[i][k]) for k in range(3)) > 0
+        separated = math.sqrt(sum(c * c for c in d)) > r1 + r2 + reach and receding
+        vc = [(m1 * v[i][k] + m2 * v[j][k]) / (m1 + m2) for k in range(3)]
         return {
-            "sphere": {"velocity": [v[0][k] - vc[k] for k in range(3)],
-                       "angular_velocity": [w[0][k] for k in range(3)]},
-            "target": {"velocity": [v[1][k] - vc[k] for k in range(3)],
-                       "angular_velocity": [w[1][k] for k in range(3)]},
+            "sphere": {"velocity": [v[i][k] - vc[k] for k in range(3)],
+                       "angular_velocity": [w[i][k] for k in range(3)]},
+            "target": {"velocity": [v[j][k] - vc[k] for k in range(3)],
+                       "angular_velocity": [w[j][k] for k in range(3)]},
+            "separated": separated,
         }
     finally:
         lmp.close()
         os.unlink(path)
+
+
+FLOOR = 1e-6
+
+
+def time_step_errors(after, coarse, fine, speed, radius):
+    """tabor's `after` (the JSON of `tabor impact --angle`) against LAMMPS runs at
+    dt (`coarse`) and dt/2 (`fine`), component by component: LAMMPS's scheme
+    converges to the continuous model at first order or better once dt is below
+    ~t_c/8000 (test_oblique.py's docstring), so the difference of the two runs
+    bounds the error of the finer one, and tabor must lie within twice it of the
+    dt/2 run, plus FLOOR of the scale (speed for velocities, speed/radius for
+    spins) for tabor's own integration tolerance and LAMMPS's rounding. Returns
+    [(name, tabor, fine, coarse, |tabor - fine|, tolerance)] for every component."""
+    rows = []
+    for body in ("sphere", "target"):
+        for field, scale in (("velocity", speed), ("angular_velocity", speed / radius)):
+            for k in range(3):
+                ours, lf, lc = after[body][field][k], fine[body][field][k], coarse[body][field][k]
+                rows.append((f"{body}.{field}[{k}]", ours, lf, lc, abs(ours - lf),
+                             2.0 * abs(lc - lf) + FLOOR * scale))
+    return rows

@@ -17,7 +17,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-from collide import collide, collide_oblique  # noqa: E402
+from collide import collide, collide_oblique, time_step_errors  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(HERE))
 TABOR = os.environ.get("TABOR", os.path.join(ROOT, "target", "release", "tabor"))
@@ -183,6 +183,23 @@ def test_plastic_claim_stops_at_the_yield_onset():
     assert e_run > 0.99 and e_tabor < 0.8, (e_run, e_tabor)
 
 
+def check_oblique(kind, path, fragment, bodies, speed, angle, reach):
+    """The scene at `path` through `tabor impact --angle --json` against its
+    fragment in two LAMMPS runs at t_c/8000 and t_c/16000 (`collide_oblique`),
+    within the time-step error (`time_step_errors`)."""
+    t = json.loads(tabor("impact", path, "--speed", repr(speed), "--angle", repr(angle), "--json"))
+    tc = t["oblique"]["contact_time"]
+    dt = tc / 8000.0
+    coarse, fine = (collide_oblique(fragment, bodies, speed, angle, h, reach, int(3 * tc / h))
+                    for h in (dt, dt / 2.0))
+    assert coarse["separated"] and fine["separated"], (speed, angle)
+    for name, ours, lf, lc, diff, tol in time_step_errors(t["after"], coarse, fine, speed,
+                                                           bodies["sphere_radius"]):
+        if name in ("sphere.velocity[0]", "sphere.velocity[1]", "sphere.angular_velocity[2]"):
+            RESULTS.append((kind, f"silica_oblique {angle} deg {name}", speed, lf, ours, lf - ours, tol))
+        assert diff <= tol, (speed, angle, name, ours, lf, lc)
+
+
 def test_friction_fragment_in_an_oblique_collision():
     """silica_oblique (load-controlled JKR + [friction]): the exported fragment,
     included as its header says, against tabor impact --angle: velocities and
@@ -193,21 +210,7 @@ def test_friction_fragment_in_an_oblique_collision():
     data, fragment = export(path)
     assert "tangential mindlin NULL 0 0.3 rolling sds" in data["model_keywords"], data["model_keywords"]
     for speed, angle in ((0.3, 10.0), (1.0, 30.0)):
-        t = json.loads(tabor("impact", path, "--speed", repr(speed), "--angle", repr(angle), "--json"))
-        dt = t["oblique"]["contact_time"] / 8000.0
-        reach = 2.0 * pulloff(data)
-        coarse = collide_oblique(fragment, data["bodies"], speed, angle, dt, reach)
-        fine = collide_oblique(fragment, data["bodies"], speed, angle, dt / 2.0, reach)
-        r = data["bodies"]["sphere_radius"]
-        for body in ("sphere", "target"):
-            for field, scale in (("velocity", speed), ("angular_velocity", speed / r)):
-                for k in range(3):
-                    ours = t["after"][body][field][k]
-                    lf, lc = fine[body][field][k], coarse[body][field][k]
-                    tol = 2.0 * abs(lc - lf) + 1e-6 * scale
-                    if body == "sphere" and field == "velocity" and k < 2 or field == "angular_velocity" and k == 2 and body == "sphere":
-                        RESULTS.append(("oblique", f"silica_oblique {angle} deg {body}.{field}[{k}]", speed, lf, ours, lf - ours, tol))
-                    assert abs(ours - lf) <= tol, (speed, angle, body, field, k, ours, lf, lc)
+        check_oblique("oblique", path, fragment, data["bodies"], speed, angle, 2.0 * pulloff(data))
 
 
 def test_plugin_friction_fragment_in_an_oblique_collision():
@@ -226,20 +229,8 @@ def test_plugin_friction_fragment_in_an_oblique_collision():
     bodies = {"sphere_radius": 1e-6, "sphere_density": 2650.0,
               "target_radius": 1e-6, "target_density": 2650.0}
     for speed, angle in ((0.3, 10.0), (1.0, 30.0)):
-        t = json.loads(tabor("impact", path, "--speed", repr(speed), "--angle", repr(angle), "--json"))
-        dt = t["oblique"]["contact_time"] / 8000.0
-        reach = 2.0 * data["interaction_range"]
-        coarse = collide_oblique(fragment, bodies, speed, angle, dt, reach)
-        fine = collide_oblique(fragment, bodies, speed, angle, dt / 2.0, reach)
-        for body in ("sphere", "target"):
-            for field, scale in (("velocity", speed), ("angular_velocity", speed / 1e-6)):
-                for k in range(3):
-                    ours = t["after"][body][field][k]
-                    lf, lc = fine[body][field][k], coarse[body][field][k]
-                    tol = 2.0 * abs(lc - lf) + 1e-6 * scale
-                    if body == "sphere" and (field == "velocity" and k < 2 or field == "angular_velocity" and k == 2):
-                        RESULTS.append(("plugin oblique", f"silica_oblique {angle} deg {body}.{field}[{k}]", speed, lf, ours, lf - ours, tol))
-                    assert abs(ours - lf) <= tol, (speed, angle, body, field, k, ours, lf, lc)
+        check_oblique("plugin oblique", path, fragment, bodies, speed, angle,
+                      2.0 * data["interaction_range"])
 
 
 def test_graded_refused():

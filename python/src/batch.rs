@@ -32,6 +32,10 @@ pub enum Errors {
     Nan,
 }
 
+/// The values of the keyword `errors=` of every batch (the first is the default;
+/// the Python layer and the stubs take them from here, `_tabor.ERRORS`).
+pub const ERRORS: [(&str, Errors); 2] = [("raise", Errors::Raise), ("nan", Errors::Nan)];
+
 /// The options every batch takes from Python.
 #[derive(Clone, Copy, Debug)]
 pub struct Options {
@@ -44,16 +48,18 @@ pub struct Options {
 impl Options {
     /// From the Python arguments `errors` ("raise" | "nan") and `threads`.
     pub fn new(errors: &str, threads: Option<usize>) -> PyResult<Self> {
-        let errors = match errors {
-            "raise" => Errors::Raise,
-            "nan" => Errors::Nan,
-            other => {
-                return Err(Failure::input(format!(
-                    "invalid errors = \"{other}\": expected \"raise\" or \"nan\""
+        let errors = ERRORS
+            .iter()
+            .find(|(name, _)| *name == errors)
+            .map(|(_, e)| *e)
+            .ok_or_else(|| {
+                let names: Vec<String> = ERRORS.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+                Failure::input(format!(
+                    "invalid errors = \"{errors}\": expected {}",
+                    names.join(" or ")
                 ))
-                .into_pyerr_static())
-            }
-        };
+                .into_pyerr_static()
+            })?;
         if threads == Some(0) {
             return Err(Failure::input("invalid threads = 0: must be >= 1").into_pyerr_static());
         }

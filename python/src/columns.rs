@@ -20,11 +20,14 @@ use std::fmt;
 use std::sync::Mutex;
 
 /// A column's values.
-enum Data {
+pub enum Data {
     /// Only missing values so far (None).
     Null(usize),
+    /// Floats (NaN missing).
     F64(Vec<f64>),
+    /// Bools (False missing).
     Bool(Vec<bool>),
+    /// Integers (-1 missing).
     I64(Vec<i64>),
     /// Codes into the string table (0 is None).
     Str(Vec<u32>),
@@ -494,92 +497,55 @@ impl Columns {
 }
 
 /// The code of a row without a shared record (a failed element).
-const NO_RECORD: u32 = u32::MAX;
+pub const NO_RECORD: u32 = u32::MAX;
 
-/// Rows made of a record shared by many rows (computed once per distinct set of
-/// the inputs it depends on) and a few fields of each row's own: the shared
-/// records are stored once, each row keeps the code of its record, and
-/// [`SharedRows::finish`] gathers them into full columns. A row's own field
-/// replaces the shared field of the same name. The shared records carry no
-/// `warnings` (their tally would count records, not rows): that is an error.
-pub struct SharedRows {
-    shared: Columns,
-    codes: Vec<u32>,
-    own: Columns,
+/// The kind of an element's own field ([`OwnFields`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OwnKind {
+    /// A float64 column.
+    Float,
+    /// A bool column (stored as 0.0/1.0 while the batch runs).
+    Bool,
 }
 
-impl SharedRows {
-    /// Empty rows whose first row has flat index `offset`, with room for `rows`.
-    pub fn at(offset: usize, rows: usize) -> Self {
-        let mut own = Columns::at(offset);
-        own.reserve(rows);
-        own.valid.reserve(rows);
-        SharedRows {
-            shared: Columns::default(),
-            codes: Vec::with_capacity(rows),
-            own,
-        }
-    }
+/// The fields of each element's own in a model whose record splits into a part
+/// shared by many elements and a few per-element fields (the impact speed's):
+/// written by position straight into the output columns, with no per-element
+/// record. `FIELDS` must be the record's serde field names in order (a test
+/// checks it against the serializer).
+pub trait OwnFields {
+    /// The fields in order: name and kind.
+    const FIELDS: &'static [(&'static str, OwnKind)];
+    /// Writes the fields' values in the order of `FIELDS` (bool as 0.0/1.0).
+    fn write(&self, out: &mut [f64]);
+}
 
-    /// Stores a shared record; returns its code.
-    pub fn add_shared<T: Serialize>(&mut self, record: &T) -> Result<u32, Error> {
-        self.shared.push(record)?;
-        if !self.shared.warnings.entries.is_empty() {
+impl Merged {
+    /// The columns of a batch of split records: the shared records' fields
+    /// (`shared`, one row per record) gathered by `codes` (`NO_RECORD`: missing),
+    /// each replaced by the own field of the same name, then the other own
+    /// fields; `valid` adds the bool column `valid`. A single shared record is
+    /// filled rather than gathered.
+    pub fn from_split(
+        shared: Columns,
+        codes: &[u32],
+        own: Vec<(&'static str, Data)>,
+        valid: Option<Vec<bool>>,
+    ) -> Result<Merged, Error> {
+        if !shared.warnings.entries.is_empty() {
             return Err(Error("a shared record carries warnings".into()));
         }
-        Ok(self.shared.rows as u32 - 1)
-    }
-
-    /// Appends a row: shared record `code` and the row's own fields (none for
-    /// `None`). On a serialization error the row is left empty.
-    pub fn push<T: Serialize>(&mut self, code: u32, own: Option<&T>) -> Result<(), Error> {
-        let r = match own {
-            Some(t) => self.own.push(t),
-            None => {
-                self.own.valid.push(true);
-                self.own.end_row();
-                Ok(())
-            }
-        };
-        match r {
-            Ok(()) => {
-                self.codes.push(code);
-                Ok(())
-            }
-            Err(e) => {
-                // complete the row as missing (`push` stopped before ending it)
-                self.own.push_missing();
-                self.codes.push(NO_RECORD);
-                Err(e)
-            }
-        }
-    }
-
-    /// Appends an empty row (a failed element).
-    pub fn push_missing(&mut self) {
-        self.own.push_missing();
-        self.codes.push(NO_RECORD);
-    }
-
-    /// The rows as columns: the shared records' fields gathered by code (in the
-    /// records' order), then the rows' own fields.
-    pub fn finish(self) -> Columns {
-        let SharedRows {
-            shared,
-            codes,
-            mut own,
-        } = self;
-        let mut out = Columns {
-            strings: shared.strings,
-            json: shared.json,
-            rows: own.rows,
-            warnings: std::mem::take(&mut own.warnings),
-            offset: own.offset,
-            valid: std::mem::take(&mut own.valid),
-            ..Columns::default()
-        };
+        let complete = !codes.contains(&NO_RECORD);
         let gather = |d: &Data| -> Data {
-            fn take<T: Copy>(v: &[T], codes: &[u32], missing: T) -> Vec<T> {
+            fn take<T: Copy + Send + Sync>(
+                v: &[T],
+                codes: &[u32],
+                missing: T,
+                complete: bool,
+            ) -> Vec<T> {
+                if complete && v.len() == 1 {
+                    return vec![v[0]; codes.len()];
+                }
                 codes
                     .iter()
                     .map(|&c| v.get(c as usize).copied().unwrap_or(missing))
@@ -587,59 +553,60 @@ impl SharedRows {
             }
             match d {
                 Data::Null(_) => Data::Null(codes.len()),
-                Data::F64(v) => Data::F64(take(v, &codes, f64::NAN)),
-                Data::Bool(v) => Data::Bool(take(v, &codes, false)),
-                Data::I64(v) => Data::I64(take(v, &codes, -1)),
-                Data::Str(v) => Data::Str(take(v, &codes, 0)),
-                Data::Json(v) => Data::Json(take(v, &codes, 0)),
+                Data::F64(v) => Data::F64(take(v, codes, f64::NAN, complete)),
+                Data::Bool(v) => Data::Bool(take(v, codes, false, complete)),
+                Data::I64(v) => Data::I64(take(v, codes, -1, complete)),
+                Data::Str(v) => Data::Str(take(v, codes, 0, complete)),
+                Data::Json(v) => Data::Json(take(v, codes, 0, complete)),
             }
         };
-        let mut own_columns: Vec<Option<Column>> = own.columns.into_iter().map(Some).collect();
-        let own_strings = own.strings.values;
-        let own_json = own.json.values;
-        let own_data = |out: &mut Columns, c: Column| -> Data {
-            match c.data {
-                Data::Str(v) => {
-                    let map: Vec<u32> = std::iter::once(0)
-                        .chain(own_strings.iter().map(|s| out.strings.code(s)))
-                        .collect();
-                    Data::Str(v.iter().map(|&k| map[k as usize]).collect())
-                }
-                Data::Json(v) => {
-                    let map: Vec<u32> = std::iter::once(0)
-                        .chain(own_json.iter().map(|s| out.json.code(s)))
-                        .collect();
-                    Data::Json(v.iter().map(|&k| map[k as usize]).collect())
-                }
-                d => d,
-            }
-        };
-        for c in shared.columns {
-            let mine = own_columns
+        let mut own: Vec<Option<(&'static str, Data)>> = own.into_iter().map(Some).collect();
+        let mut columns: Vec<(Cow<'static, str>, Data)> = Vec::new();
+        for c in &shared.columns {
+            let mine = own
                 .iter_mut()
-                .find(|o| o.as_ref().is_some_and(|o| o.name == c.name))
+                .find(|o| o.as_ref().is_some_and(|(name, _)| same_name(name, &c.name)))
                 .and_then(Option::take);
             let data = match mine {
-                Some(o) => own_data(&mut out, o),
+                Some((_, d)) => d,
                 None => gather(&c.data),
             };
-            out.columns.push(Column {
-                name: c.name,
-                data,
-                last: 0,
-            });
+            columns.push((c.name.clone(), data));
         }
-        for o in own_columns.into_iter().flatten() {
-            let name = o.name.clone();
-            let data = own_data(&mut out, o);
-            out.columns.push(Column {
-                name,
-                data,
-                last: 0,
-            });
+        for (name, data) in own.into_iter().flatten() {
+            columns.push((Cow::Borrowed(name), data));
         }
-        out
+        if let Some(v) = valid {
+            columns.push((Cow::Borrowed("valid"), Data::Bool(v)));
+        }
+        Ok(Merged {
+            columns,
+            strings: shared.strings.values,
+            json: shared.json.values,
+        })
     }
+}
+
+/// The rows of `columns`.
+pub fn shared_rows(columns: &Columns) -> u32 {
+    columns.rows as u32
+}
+
+/// An own column of `OwnFields` as its typed data.
+pub fn own_column(kind: OwnKind, values: Vec<f64>) -> Data {
+    match kind {
+        OwnKind::Float => Data::F64(values),
+        OwnKind::Bool => Data::Bool(values.into_iter().map(|x| x == 1.0).collect()),
+    }
+}
+
+/// The names of a record's fields as the serializer writes them (for the check
+/// of [`OwnFields::FIELDS`]).
+#[cfg(test)]
+pub fn field_names<T: Serialize>(record: &T) -> Vec<String> {
+    let mut c = Columns::default();
+    c.push(record).unwrap();
+    c.columns.iter().map(|c| c.name.to_string()).collect()
 }
 
 /// The columns of a whole batch, filled as chunks finish: each chunk's rows are

@@ -53,7 +53,22 @@ fn _tabor(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("SPECS", models::specs(m.py())?)?;
     m.add("VERSION", env!("CARGO_PKG_VERSION"))?;
     m.add("LIBRARY_VERSION", tabor::VERSION)?;
-    m.add("MIN_MAUGIS_PARAMETER", maugis::MIN_MAUGIS_PARAMETER)?;
+    m.add(
+        "DEFAULT_TOLERANCE",
+        tabor::numerics::tolerance::DEFAULT_TOLERANCE,
+    )?;
+    m.add("ACCURACY", tabor::numerics::tolerance::ACCURACY)?;
+    m.add(
+        "COSTLY_TOLERANCE",
+        tabor::numerics::tolerance::COSTLY_TOLERANCE,
+    )?;
+    m.add("ERRORS", batch::ERRORS.map(|(name, _)| name))?;
+    m.add("SWEEP_PARAMETERS", scene::sweep_parameters())?;
+    m.add(
+        "FORCE_DISPLACEMENT_MODELS",
+        tabor::maugis::CurveModel::ALL.map(|c| (c.as_str(), c.description())),
+    )?;
+    m.add("MIN_MAUGIS_PARAMETER", tabor::maugis::MIN_MAUGIS_PARAMETER)?;
     m.add(
         "LAMBDA_PER_MAUGIS_PARAMETER",
         tabor::maugis::units::LAMBDA_PER_MAUGIS_PARAMETER,

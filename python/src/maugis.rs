@@ -4,28 +4,14 @@
 //! names and argument meanings of ContactEngineering's `Adhesion` package).
 
 use crate::batch::Options;
-use crate::failure::{Failure, Kind};
+use crate::failure::Failure;
 use crate::output::Call;
 use numpy::PyReadonlyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
-use std::f64::consts::{FRAC_PI_2, PI};
-use tabor::maugis::branch::contact_state;
-use tabor::maugis::units;
-use tabor::numerics::root_finding::{brent, RootTolerance};
+use tabor::maugis::{units, CurveModel};
 
 type Arr<'py> = PyReadonlyArray1<'py, f64>;
-
-/// `a_c / (πΔγR²/K)^(1/3) = (3/2)^(1/3)`: Maugis' contact radius A = (3/2)^(1/3) â.
-fn radius_factor() -> f64 {
-    1.5f64.cbrt()
-}
-
-/// Below this Maugis parameter the θ-parametrized branch loses digits (its terms
-/// cancel): at λ = 1e-15 the load is off by 1e-8 relative, at 1e-30 by 23 %. The
-/// curve is refused there; its DMT limit (`force_displacement("dmt", …)`) differs
-/// from it by O(λ^(1/2)) in the penetration.
-pub const MIN_MAUGIS_PARAMETER: f64 = 1e-10;
 
 fn failure(e: tabor::restitution::Error, rename: Option<(&str, &str)>) -> Failure {
     let mut m = e.to_string();
@@ -84,67 +70,6 @@ pub fn maugis_dugdale_loss<'py>(
     }
 }
 
-/// Load and penetration in Maugis' units at Maugis parameter λ and contact radius A.
-fn curve_point(maugis_parameter: f64, contact_radius: f64) -> Result<(f64, f64), Failure> {
-    let lambda =
-        units::tabor_parameter_from_maugis(maugis_parameter).map_err(|e| failure(e, None))?;
-    if maugis_parameter < MIN_MAUGIS_PARAMETER {
-        return Err(Failure {
-            kind: Kind::Validity,
-            message: format!(
-                "maugis_parameter = {maugis_parameter:e} is below {MIN_MAUGIS_PARAMETER:e}, where the \
-                 Maugis-Dugdale branch can no longer be evaluated to full precision; the DMT limit \
-                 (force_displacement(\"dmt\", ...)) is off from it by O(maugis_parameter^(1/2)) in the penetration"
-            ),
-        });
-    }
-    if !(contact_radius.is_finite() && contact_radius >= 0.0) {
-        return Err(Failure::input(format!(
-            "invalid contact_radius = {contact_radius:e}: must be finite and >= 0"
-        )));
-    }
-    let a_hat = contact_radius / radius_factor();
-    let theta = if a_hat == 0.0 {
-        FRAC_PI_2
-    } else {
-        // â(θ) falls monotonically from +∞ (θ → 0) to 0 (θ = π/2): bracket from below
-        let f = |t: f64| contact_state(lambda, t).contact_radius - a_hat;
-        let mut lo = 0.5;
-        while f(lo) <= 0.0 {
-            lo *= 0.125;
-            if lo < 1e-300 {
-                return Err(Failure::input(format!(
-                    "invalid contact_radius = {contact_radius:e}: too large for maugis_parameter = {maugis_parameter:e}"
-                )));
-            }
-        }
-        let hi = FRAC_PI_2;
-        if f(hi) >= 0.0 {
-            hi
-        } else {
-            brent(f, lo, hi, RootTolerance::relative(0.0))
-                .map_err(|e| Failure {
-                    kind: Kind::Convergence,
-                    message: e.to_string(),
-                })?
-                .value
-        }
-    };
-    let s = contact_state(lambda, theta);
-    // F̂ = F/F_n with F_n = (3/2)πΔγR; d̂ = d/d_n with d_n = (3/2)^(2/3)/3 (π²Δγ²R/K²)^(1/3)
-    let load = 1.5 * s.force;
-    let penetration = s.depth * radius_factor() * radius_factor() / 3.0;
-    if !(load.is_finite() && penetration.is_finite()) {
-        return Err(Failure {
-            kind: Kind::Validity,
-            message: format!(
-                "load or penetration overflows at contact_radius = {contact_radius:e}, maugis_parameter = {maugis_parameter:e}"
-            ),
-        });
-    }
-    Ok((load, penetration))
-}
-
 /// (load, penetration) in Maugis' units (see `tabor.maugis_dugdale_curve`).
 #[pyfunction]
 #[pyo3(signature = (contact_radius, maugis_parameter, n, shape, errors, threads))]
@@ -164,8 +89,9 @@ pub fn maugis_dugdale_curve<'py>(
         ("maugis_parameter", &maugis_parameter),
     ])?;
     c.floats(py, |i| {
-        let (p, d) = curve_point(cols[1].at(i), cols[0].at(i))?;
-        Ok([p, d])
+        tabor::maugis::maugis_curve_point(cols[1].at(i), cols[0].at(i))
+            .map(|p| [p.load, p.penetration])
+            .map_err(|e| failure(e, None))
     })
 }
 
@@ -218,35 +144,32 @@ pub fn jkr_normalized_loss() -> f64 {
     tabor::maugis::jkr_normalized_loss()
 }
 
-fn positive(name: &str, x: f64) -> Result<f64, Failure> {
-    if x.is_finite() && x > 0.0 {
-        Ok(x)
-    } else {
-        Err(Failure::input(format!(
-            "invalid {name} = {x:e}: must be finite and > 0"
-        )))
-    }
+/// The library's SI parameter names as the Python keywords spell them
+/// (Adhesion's vocabulary).
+const SI_NAMES: [(&str, &str); 2] = [
+    ("effective_modulus", "elastic_modulus"),
+    ("effective_radius", "radius"),
+];
+
+/// A library error of an SI curve, its parameter renamed to the Python keyword.
+fn si_failure(e: tabor::restitution::Error) -> Failure {
+    let rename = match &e {
+        tabor::restitution::Error::InvalidParameter { parameter, .. } => {
+            SI_NAMES.into_iter().find(|(lib, _)| lib == parameter)
+        }
+        _ => None,
+    };
+    failure(e, rename)
 }
 
-/// Maugis' λ = 2σ0 / (πΔγK²/R)^(1/3), K = 4E*/3 (Maugis 1992; the argument order
-/// and meaning of `Adhesion.ReferenceSolutions.MaugisDugdale.maugis_parameter`).
-fn maugis_lambda(radius: f64, modulus: f64, work: f64, stress: f64) -> Result<f64, Failure> {
-    let (r, e, w, s) = (
-        positive("radius", radius)?,
-        positive("elastic_modulus", modulus)?,
-        positive("work_of_adhesion", work)?,
-        positive("cohesive_stress", stress)?,
-    );
-    let k = 4.0 * e / 3.0;
-    let lam = 2.0 * s / (PI * w * k * k / r).cbrt();
-    if lam.is_finite() && lam > 0.0 {
-        Ok(lam)
-    } else {
-        Err(Failure {
-            kind: Kind::Validity,
-            message: format!("maugis parameter 2σ0/(πΔγK²/R)^(1/3) = {lam:e} is not representable"),
-        })
-    }
+/// The Maugis-Dugdale sphere of the Python arguments (Adhesion's order).
+fn sphere(
+    radius: f64,
+    modulus: f64,
+    work: f64,
+    stress: f64,
+) -> Result<tabor::maugis::MaugisDugdaleSphere, Failure> {
+    tabor::maugis::MaugisDugdaleSphere::new(modulus, radius, work, stress).map_err(si_failure)
 }
 
 /// Maugis' λ from SI quantities (see `tabor.maugis_parameter`).
@@ -272,81 +195,42 @@ pub fn maugis_parameter<'py>(
         ("cohesive_stress", &cohesive_stress),
     ])?;
     c.floats(py, |i| {
-        Ok([maugis_lambda(
-            k[0].at(i),
-            k[1].at(i),
-            k[2].at(i),
-            k[3].at(i),
-        )?])
+        Ok([sphere(k[0].at(i), k[1].at(i), k[2].at(i), k[3].at(i))?.maugis_parameter()])
     })
 }
 
-/// The contact models of [`force_displacement`].
-const CURVE_MODELS: [&str; 3] = ["jkr", "dmt", "maugis-dugdale"];
-
 /// Force (N, compression positive) and penetration (m) at contact radius `a` (m).
 fn si_point(
-    model: usize,
+    model: CurveModel,
     a: f64,
     r: f64,
     e: f64,
     w: f64,
     stress: Option<f64>,
 ) -> Result<[f64; 2], Failure> {
-    let contact_radius = if a.is_finite() && a >= 0.0 {
-        a
-    } else {
-        return Err(Failure::input(format!(
-            "invalid contact_radius = {a:e}: must be finite and >= 0"
-        )));
-    };
     match model {
-        0 => {
-            let (r, e, w) = (
-                positive("radius", r)?,
-                positive("elastic_modulus", e)?,
-                positive("work_of_adhesion", w)?,
-            );
-            let s = tabor::jkr::JkrSphere::new(e, r, w).map_err(|e| failure(e, None))?;
-            let lib = |x: tabor::restitution::Error| failure(x, None);
+        CurveModel::Jkr => {
+            let s = tabor::jkr::JkrSphere::new(e, r, w).map_err(si_failure)?;
             Ok([
-                s.force(contact_radius).map_err(lib)?,
-                s.depth(contact_radius).map_err(lib)?,
+                s.force(a).map_err(si_failure)?,
+                s.depth(a).map_err(si_failure)?,
             ])
         }
-        1 => {
-            let (r, e, w) = (
-                positive("radius", r)?,
-                positive("elastic_modulus", e)?,
-                positive("work_of_adhesion", w)?,
-            );
-            // DMT: the Hertz contact plus the constant adhesive force 2πΔγR
-            let f = 4.0 * e * contact_radius.powi(3) / (3.0 * r) - 2.0 * PI * w * r;
-            let d = contact_radius * contact_radius / r;
-            if f.is_finite() && d.is_finite() {
-                Ok([f, d])
-            } else {
-                Err(Failure {
-                    kind: Kind::Validity,
-                    message: format!("force or penetration overflows at contact_radius = {a:e}"),
-                })
-            }
+        CurveModel::Dmt => {
+            let p = tabor::maugis::dmt_curve_point(e, r, w, a).map_err(si_failure)?;
+            Ok([p.force, p.penetration])
         }
-        _ => {
+        CurveModel::MaugisDugdale => {
             let s = match stress {
                 Some(s) => s,
                 None => {
-                    return Err(Failure::input(
-                        "missing cohesive_stress: required by model=\"maugis-dugdale\"",
-                    ))
+                    return Err(Failure::input(format!(
+                        "missing cohesive_stress: required by model=\"{model}\""
+                    )))
                 }
             };
-            let lam = maugis_lambda(r, e, w, s)?;
-            let k = 4.0 * e / 3.0;
-            let a_unit = (PI * w * r * r / k).cbrt();
-            let d_unit = (PI * PI * w * w * r / (k * k)).cbrt();
-            let (p, d) = curve_point(lam, contact_radius / a_unit)?;
-            Ok([p * PI * w * r, d * d_unit])
+            let p = sphere(r, e, w, s)?.curve_point(a).map_err(si_failure)?;
+            Ok([p.force, p.penetration])
         }
     }
 }
@@ -369,15 +253,9 @@ pub fn force_displacement<'py>(
     errors: &str,
     threads: Option<usize>,
 ) -> PyResult<Bound<'py, PyTuple>> {
-    let which = CURVE_MODELS
-        .iter()
-        .position(|m| *m == model.replace('_', "-"))
-        .ok_or_else(|| {
-            Failure::input(format!(
-                "invalid model = \"{model}\": expected \"jkr\", \"dmt\" or \"maugis-dugdale\""
-            ))
-            .into_pyerr_static()
-        })?;
+    let which: CurveModel = model.replace('_', "-").parse().map_err(|e| {
+        Failure::input(format!("invalid model = \"{model}\": {e}")).into_pyerr_static()
+    })?;
     let c = call(n, &shape, errors, threads)?;
     let k = c.columns(&[
         ("contact_radius", &contact_radius),
@@ -389,10 +267,10 @@ pub fn force_displacement<'py>(
         Some(s) => Some(c.columns(&[("cohesive_stress", s)])?[0]),
         None => None,
     };
-    if which != 2 && stress.is_some() {
+    if which != CurveModel::MaugisDugdale && stress.is_some() {
         return Err(Failure::input(format!(
-            "cohesive_stress is a parameter of model=\"maugis-dugdale\", not of model=\"{}\"",
-            CURVE_MODELS[which]
+            "cohesive_stress is a parameter of model=\"{}\", not of model=\"{which}\"",
+            CurveModel::MaugisDugdale
         ))
         .into_pyerr_static());
     }

@@ -6,6 +6,7 @@
 //! `tabor::single::input_name`.
 
 use crate::batch::Options;
+use crate::columns::{OwnFields, OwnKind};
 use crate::failure::Failure;
 use crate::output::{push, Call, Col};
 use numpy::PyReadonlyArray1;
@@ -13,7 +14,8 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 use tabor::jkr::SeparationRule;
-use tabor::restitution::Error;
+use tabor::numerics::tolerance;
+use tabor::restitution::{Error, Menu, UnknownChoice};
 use tabor::single::effective::{effective, EffectiveArgs};
 use tabor::single::jkr::{jkr, prepare as prepare_jkr, JkrArgs, JkrAtSpeed, JkrPrepared};
 use tabor::single::penalty::{penalty, PenaltyArgs, PenaltyLaw};
@@ -40,14 +42,16 @@ pub enum Kind<A> {
         /// Stores the value.
         set: fn(&mut A, bool),
     },
-    /// One of `choices` (a str); required when `default` is None.
+    /// One of a menu of the model crates (a str: its `as_str` name; underscores
+    /// may stand for hyphens); required when `default` is None.
     Choice {
-        /// The default.
-        default: Option<&'static str>,
-        /// The names accepted (underscores may stand for hyphens).
-        choices: &'static [&'static str],
-        /// Stores the choice with this index in `choices`.
-        set: fn(&mut A, usize),
+        /// The menu: each choice's name and description (from the crate's `ALL`,
+        /// `as_str`, `description`).
+        menu: fn() -> Vec<(&'static str, &'static str)>,
+        /// The default choice's name.
+        default: Option<fn() -> &'static str>,
+        /// Parses a name of `menu` (the menu's `FromStr`) and stores it.
+        set: fn(&mut A, &str) -> Result<(), UnknownChoice>,
     },
 }
 
@@ -71,6 +75,14 @@ pub struct Model<A: 'static, R> {
     pub blank: fn() -> A,
     /// Validates and computes one element.
     pub compute: fn(&A) -> Result<R, Failure>,
+}
+
+/// Every choice of menu `M`: (name, description).
+fn menu<M: Menu>() -> Vec<(&'static str, &'static str)> {
+    M::ALL
+        .iter()
+        .map(|m| (m.as_str(), m.description()))
+        .collect()
 }
 
 /// A library error with its parameter named as the keyword that gives it.
@@ -223,19 +235,70 @@ pub static EFFECTIVE: Model<EffectiveArgs, tabor::single::effective::Effective> 
     },
 };
 
-const SEPARATION: [SeparationRule; 2] = [SeparationRule::FixedGrip, SeparationRule::LoadControlled];
-
 /// `jkr`.
 pub static JKR: Model<JkrArgs, tabor::single::jkr::Jkr> = Model {
     name: "jkr",
     inputs: &[
-        Input { name: "modulus", help: "effective modulus E* (Pa)", kind: Kind::Number { default: None, set: |a, x| a.modulus = x } },
-        Input { name: "radius", help: "effective radius R (m)", kind: Kind::Number { default: None, set: |a, x| a.radius = x } },
-        Input { name: "work_of_adhesion", help: "work of adhesion Δγ (J/m²)", kind: Kind::Number { default: None, set: |a, x| a.work_of_adhesion = x } },
-        Input { name: "mass", help: "effective (reduced) mass m (kg)", kind: Kind::Number { default: None, set: |a, x| a.mass = x } },
-        Input { name: "speed", help: "impact speed v0 (m/s); adds impact_speed, max_contact_radius, restitution, sticks", kind: Kind::Optional { set: |a, x| a.speed = x } },
-        Input { name: "separation", help: "where contact breaks: fixed grip (force −(5/6)πΔγR, the seed's (5.36)) or load control (−(3/2)πΔγR)", kind: Kind::Choice { default: Some("fixed-grip"), choices: &["fixed-grip", "load-controlled"], set: |a, k| a.separation = SEPARATION[k] } },
-        Input { name: "tolerance", help: "relative tolerance, in [1e-15, 0.5]", kind: Kind::Number { default: Some(1e-12), set: |a, x| a.tolerance = x } },
+        Input {
+            name: "modulus",
+            help: "effective modulus E* (Pa)",
+            kind: Kind::Number {
+                default: None,
+                set: |a, x| a.modulus = x,
+            },
+        },
+        Input {
+            name: "radius",
+            help: "effective radius R (m)",
+            kind: Kind::Number {
+                default: None,
+                set: |a, x| a.radius = x,
+            },
+        },
+        Input {
+            name: "work_of_adhesion",
+            help: "work of adhesion Δγ (J/m²)",
+            kind: Kind::Number {
+                default: None,
+                set: |a, x| a.work_of_adhesion = x,
+            },
+        },
+        Input {
+            name: "mass",
+            help: "effective (reduced) mass m (kg)",
+            kind: Kind::Number {
+                default: None,
+                set: |a, x| a.mass = x,
+            },
+        },
+        Input {
+            name: "speed",
+            help:
+                "impact speed v0 (m/s); adds impact_speed, max_contact_radius, restitution, sticks",
+            kind: Kind::Optional {
+                set: |a, x| a.speed = x,
+            },
+        },
+        Input {
+            name: "separation",
+            help: "where contact breaks",
+            kind: Kind::Choice {
+                menu: menu::<SeparationRule>,
+                default: Some(|| SeparationRule::FixedGrip.as_str()),
+                set: |a, k| {
+                    a.separation = k.parse()?;
+                    Ok(())
+                },
+            },
+        },
+        Input {
+            name: "tolerance",
+            help: "relative tolerance, in [1e-15, 0.5]",
+            kind: Kind::Number {
+                default: Some(tolerance::DEFAULT_TOLERANCE),
+                set: |a, x| a.tolerance = x,
+            },
+        },
     ],
     blank: || JkrArgs {
         modulus: f64::NAN,
@@ -252,26 +315,46 @@ pub static JKR: Model<JkrArgs, tabor::single::jkr::Jkr> = Model {
 /// `jkr` over speeds: the model once per distinct set of the other inputs
 /// (`tabor::single::jkr::prepare`).
 pub static JKR_BY_SPEED: Split<JkrArgs, JkrPrepared, tabor::single::jkr::Jkr, JkrAtSpeed> = Split {
-    varying: &["speed"],
+    varying: "speed",
     prepare: |a| prepare_jkr(a).map_err(library),
     record: JkrPrepared::record,
-    own: |p, a| a.speed.map(|v| p.at_speed(v)).transpose().map_err(library),
+    own: |p, speed, near| {
+        speed
+            .map(|v| p.at_speed_near(v, near))
+            .transpose()
+            .map_err(library)
+    },
 };
 
-const PLASTIC_MODELS: [PlasticModel; 6] = [
-    PlasticModel::Thornton,
-    PlasticModel::Interpolation,
-    PlasticModel::JacksonGreen,
-    PlasticModel::DimensionlessFit,
-    PlasticModel::AdhesiveInterpolation,
-    PlasticModel::Superposition,
-];
+impl OwnFields for JkrAtSpeed {
+    const FIELDS: &'static [(&'static str, OwnKind)] = &[
+        ("impact_speed", OwnKind::Float),
+        ("max_contact_radius", OwnKind::Float),
+        ("restitution", OwnKind::Float),
+        ("sticks", OwnKind::Bool),
+    ];
+
+    fn write(&self, out: &mut [f64]) {
+        out[0] = self.impact_speed;
+        out[1] = self.max_contact_radius;
+        out[2] = self.restitution;
+        out[3] = if self.sticks { 1.0 } else { 0.0 };
+    }
+}
+
+/// The non-adhesive plastic models (the menu of `plastic_model`).
+fn non_adhesive() -> Vec<(&'static str, &'static str)> {
+    PlasticModel::NON_ADHESIVE
+        .iter()
+        .map(|m| (m.as_str(), m.description()))
+        .collect()
+}
 
 /// `plastic`.
 pub static PLASTIC: Model<PlasticArgs, tabor::single::plastic::Plastic> = Model {
     name: "plastic",
     inputs: &[
-        Input { name: "model", help: "thornton (5.101)-(5.106), interpolation (5.107), jackson-green (5.108, needs poisson_ratio), dimensionless-fit (seed 001, needs density), adhesive-interpolation (5.111)-(5.126, needs work_of_adhesion or adhesion_parameter), superposition (5.109)-(5.110, needs work_of_adhesion)", kind: Kind::Choice { default: None, choices: &["thornton", "interpolation", "jackson-green", "dimensionless-fit", "adhesive-interpolation", "superposition"], set: |a, k| a.model = PLASTIC_MODELS[k] } },
+        Input { name: "model", help: "the elasto-plastic model; jackson-green needs poisson_ratio, dimensionless-fit density, adhesive-interpolation work_of_adhesion or adhesion_parameter, superposition work_of_adhesion", kind: Kind::Choice { menu: menu::<PlasticModel>, default: None, set: |a, k| { a.model = k.parse()?; Ok(()) } } },
         Input { name: "modulus", help: "effective modulus E* (Pa)", kind: Kind::Number { default: None, set: |a, x| a.modulus = x } },
         Input { name: "radius", help: "effective radius R (m)", kind: Kind::Number { default: None, set: |a, x| a.radius = x } },
         Input { name: "mass", help: "effective (reduced) mass m (kg)", kind: Kind::Number { default: None, set: |a, x| a.mass = x } },
@@ -281,7 +364,7 @@ pub static PLASTIC: Model<PlasticArgs, tabor::single::plastic::Plastic> = Model 
         Input { name: "density", help: "density of the sphere, kg/m³ (dimensionless-fit)", kind: Kind::Optional { set: |a, x| a.density = x } },
         Input { name: "work_of_adhesion", help: "work of adhesion Δγ (J/m²)", kind: Kind::Optional { set: |a, x| a.work_of_adhesion = x } },
         Input { name: "adhesion_parameter", help: "adhesion parameter Φ, instead of computing it (adhesive-interpolation)", kind: Kind::Optional { set: |a, x| a.adhesion_parameter = x } },
-        Input { name: "plastic_model", help: "the non-adhesive model under superposition", kind: Kind::Choice { default: Some("interpolation"), choices: &["thornton", "interpolation", "jackson-green", "dimensionless-fit"], set: |a, k| a.plastic_model = PLASTIC_MODELS[k] } },
+        Input { name: "plastic_model", help: "the non-adhesive model under superposition", kind: Kind::Choice { menu: non_adhesive, default: Some(|| PlasticModel::Interpolation.as_str()), set: |a, k| { a.plastic_model = k.parse()?; Ok(()) } } },
     ],
     blank: || PlasticArgs {
         model: PlasticModel::Interpolation,
@@ -303,7 +386,7 @@ pub static PLASTIC: Model<PlasticArgs, tabor::single::plastic::Plastic> = Model 
 pub static VISCO: Model<ViscoArgs, tabor::single::visco::Visco> = Model {
     name: "visco",
     inputs: &[
-        Input { name: "model", help: "kelvin-voigt-flat (5.61)-(5.63, damping_ratio), kuwabara-kono (5.66, viscous_parameter), kelvin-voigt-sphere (5.64)-(5.67, viscous_parameter), lee-herrmann (5.72, damping), tsuji (5.73, alpha), hunt-crossley (5.72, damping), power-damping (5.72, damping_exponent, damping), standard-flat (5.76)-(5.83), standard-sphere (5.84)-(5.90), kelvin-maxwell-sphere (5.91)-(5.92) (modulus_ratio, viscous_parameter), compressible-flat (5.96)-(5.100, poisson_ratio, damping_ratio, optional bulk_damping_ratio)", kind: Kind::Choice { default: None, choices: &["kelvin-voigt-flat", "kuwabara-kono", "kelvin-voigt-sphere", "lee-herrmann", "tsuji", "hunt-crossley", "power-damping", "standard-flat", "standard-sphere", "kelvin-maxwell-sphere", "compressible-flat"], set: |a, k| a.model = ViscoModel::ALL[k] } },
+        Input { name: "model", help: "the viscoelastic model; kelvin-voigt-flat needs damping_ratio, kuwabara-kono, kelvin-voigt-sphere viscous_parameter, lee-herrmann, hunt-crossley damping, tsuji alpha, power-damping damping_exponent and damping, kelvin-maxwell-sphere modulus_ratio and viscous_parameter, compressible-flat poisson_ratio, damping_ratio and optionally bulk_damping_ratio", kind: Kind::Choice { menu: menu::<ViscoModel>, default: None, set: |a, k| { a.model = k.parse()?; Ok(()) } } },
         Input { name: "damping_ratio", help: "damping ratio D (> 0)", kind: Kind::Optional { set: |a, x| a.damping_ratio = x } },
         Input { name: "viscous_parameter", help: "viscous parameter δ (> 0)", kind: Kind::Optional { set: |a, x| a.viscous_parameter = x } },
         Input { name: "modulus_ratio", help: "modulus ratio β = G∞/G1, in [1e-5, 1e4]", kind: Kind::Optional { set: |a, x| a.modulus_ratio = x } },
@@ -312,7 +395,7 @@ pub static VISCO: Model<ViscoArgs, tabor::single::visco::Visco> = Model {
         Input { name: "alpha", help: "Tsuji's α of (5.73), > 0", kind: Kind::Optional { set: |a, x| a.alpha = x } },
         Input { name: "poisson_ratio", help: "static Poisson's ratio ν, in (-1, 0.5)", kind: Kind::Optional { set: |a, x| a.poisson_ratio = x } },
         Input { name: "bulk_damping_ratio", help: "bulk damping ratio D2; default (5.100)", kind: Kind::Optional { set: |a, x| a.bulk_damping_ratio = x } },
-        Input { name: "tolerance", help: "relative integration tolerance, in [1e-15, 0.5]", kind: Kind::Number { default: Some(1e-10), set: |a, x| a.tolerance = x } },
+        Input { name: "tolerance", help: "relative integration tolerance, in [1e-15, 0.5]", kind: Kind::Number { default: Some(tolerance::ACCURACY), set: |a, x| a.tolerance = x } },
     ],
     blank: || ViscoArgs {
         model: ViscoModel::KelvinVoigtFlat,
@@ -329,29 +412,20 @@ pub static VISCO: Model<ViscoArgs, tabor::single::visco::Visco> = Model {
     compute: |a| visco(a, Naming::Keywords).map_err(single),
 };
 
-const PENALTY_LAWS: [PenaltyLaw; 4] = [
-    PenaltyLaw::Characteristic,
-    PenaltyLaw::HuntCrossley,
-    PenaltyLaw::LankaraniNikravesh,
-    PenaltyLaw::Flores,
-];
-
 /// `penalty`.
 pub static PENALTY: Model<PenaltyArgs, tabor::single::penalty::Penalty> = Model {
     name: "penalty",
     inputs: &[
         Input {
             name: "law",
-            help: "characteristic (seed 002), hunt-crossley, lankarani-nikravesh or flores",
+            help: "the penalty contact law",
             kind: Kind::Choice {
+                menu: menu::<PenaltyLaw>,
                 default: None,
-                choices: &[
-                    "characteristic",
-                    "hunt-crossley",
-                    "lankarani-nikravesh",
-                    "flores",
-                ],
-                set: |a, k| a.law = PENALTY_LAWS[k],
+                set: |a, k| {
+                    a.law = k.parse()?;
+                    Ok(())
+                },
             },
         },
         Input {
@@ -433,12 +507,10 @@ fn spec<'py, A>(py: Python<'py>, inputs: &[Input<A>]) -> PyResult<Bound<'py, PyL
                 false.into_pyobject(py)?.to_owned().into_any(),
                 none.clone(),
             ),
-            Kind::Choice {
-                default, choices, ..
-            } => (
+            Kind::Choice { default, menu, .. } => (
                 "choice",
-                default.into_pyobject(py)?.into_any(),
-                PyTuple::new(py, choices.iter())?.into_any(),
+                default.map(|d| d()).into_pyobject(py)?.into_any(),
+                PyTuple::new(py, menu())?.into_any(),
             ),
         };
         list.append((i.name, kind, default, choices, i.help))?;
@@ -469,26 +541,43 @@ fn type_error(name: &str, what: &str, value: &Bound<'_, PyAny>) -> PyErr {
     PyTypeError::new_err(format!("{name} must be {what}, not {t}"))
 }
 
-/// The choice `value` of keyword `name` as an index into `choices`.
-fn choose(name: &str, value: &Bound<'_, PyAny>, choices: &[&str]) -> PyResult<usize> {
+/// The choice `value` of keyword `name`: its name on `menu`.
+fn choose(
+    name: &str,
+    value: &Bound<'_, PyAny>,
+    menu: &[(&'static str, &'static str)],
+) -> PyResult<&'static str> {
     let text: String = value
         .extract::<String>()
         .map_err(|_| type_error(name, "a str", value))?;
     let wanted = text.replace('_', "-");
-    choices.iter().position(|c| *c == wanted).ok_or_else(|| {
-        let list: Vec<String> = choices.iter().map(|c| format!("\"{c}\"")).collect();
-        Failure::input(format!(
-            "invalid {name} = \"{text}\": expected one of {}",
-            list.join(", ")
-        ))
-        .into_pyerr_static()
-    })
+    menu.iter()
+        .map(|(c, _)| *c)
+        .find(|c| *c == wanted)
+        .ok_or_else(|| {
+            let list: Vec<String> = menu.iter().map(|(c, _)| format!("\"{c}\"")).collect();
+            Failure::input(format!(
+                "invalid {name} = \"{text}\": expected one of {}",
+                list.join(", ")
+            ))
+            .into_pyerr_static()
+        })
 }
 
 /// A keyword's value for one element.
 enum Given<'a> {
     Number(Col<'a>),
     Optional(Option<Col<'a>>),
+}
+
+impl<'a> Given<'a> {
+    /// The column, when given.
+    fn column(&self) -> Option<Col<'a>> {
+        match self {
+            Given::Number(c) | Given::Optional(Some(c)) => Some(*c),
+            Given::Optional(None) => None,
+        }
+    }
 }
 
 /// The scalars of a call set in `base`, and its array keywords (index into the
@@ -530,14 +619,10 @@ fn parse<'py, A: 'static, R>(
                 };
                 set(&mut base, b);
             }
-            Kind::Choice {
-                default,
-                choices,
-                set,
-            } => {
+            Kind::Choice { menu, default, set } => {
                 let k = match (value, default) {
-                    (Some(v), _) => choose(input.name, &v, choices)?,
-                    (None, Some(d)) => choices.iter().position(|c| c == d).unwrap_or(0),
+                    (Some(v), _) => choose(input.name, &v, &menu())?,
+                    (None, Some(d)) => d(),
                     (None, None) => {
                         return Err(PyTypeError::new_err(format!(
                             "{}() missing the keyword argument {}",
@@ -545,7 +630,10 @@ fn parse<'py, A: 'static, R>(
                         )))
                     }
                 };
-                set(&mut base, k);
+                set(&mut base, k).map_err(|e| {
+                    Failure::input(format!("invalid {} = \"{k}\": {e}", input.name))
+                        .into_pyerr_static()
+                })?;
             }
         }
     }
@@ -607,18 +695,24 @@ fn run_model<'py, A: Sync + Clone + 'static, R: serde::Serialize>(
     })
 }
 
+/// The own fields of one element of a [`Split`] model: from the prepared part,
+/// the varying input and the previous element's own fields.
+pub type OwnFn<P, V> = fn(&P, Option<f64>, Option<&V>) -> Result<Option<V>, Failure>;
+
 /// A model whose record splits into a part that depends on all inputs but
 /// `varying` (computed once per distinct set of them: a batch over speeds pays for
 /// the model once) and the fields of each element's own.
 pub struct Split<A: 'static, P: 'static, R: 'static, V: 'static> {
-    /// The keywords of the element's own fields.
-    pub varying: &'static [&'static str],
+    /// The keyword of the element's own fields (a number or optional number).
+    pub varying: &'static str,
     /// Validates the other inputs and computes the shared part.
     pub prepare: fn(&A) -> Result<P, Failure>,
     /// The shared part's record (the own fields unset).
     pub record: fn(&P) -> &R,
-    /// The element's own fields (None when its varying inputs are not given).
-    pub own: fn(&P, &A) -> Result<Option<V>, Failure>,
+    /// The element's own fields from the varying input (None when it is not
+    /// given) and the previous element's own fields when it shares the prepared
+    /// part (a warm start).
+    pub own: OwnFn<P, V>,
 }
 
 fn run_split<'py, A, P, R, V>(
@@ -630,29 +724,31 @@ fn run_split<'py, A, P, R, V>(
 ) -> PyResult<Bound<'py, PyTuple>>
 where
     A: Sync + Clone + 'static,
+    P: Send,
     R: serde::Serialize,
-    V: serde::Serialize,
+    V: OwnFields + Copy,
 {
     let parsed = parse(model, args)?;
     let given = given(model, &parsed, call)?;
     // the columns that can change the shared part (a broadcast scalar cannot)
     let key: Vec<Col<'_>> = given
         .iter()
-        .filter(|(k, _)| !split.varying.contains(&model.inputs[*k].name))
-        .filter_map(|(_, g)| match g {
-            Given::Number(c) | Given::Optional(Some(c)) => Some(*c),
-            Given::Optional(None) => None,
-        })
+        .filter(|(k, _)| model.inputs[*k].name != split.varying)
+        .filter_map(|(_, g)| g.column())
         .filter(|c| c.0.len() > 1)
         .collect();
+    let varying: Option<Col<'_>> = given
+        .iter()
+        .find(|(k, _)| model.inputs[*k].name == split.varying)
+        .and_then(|(_, g)| g.column());
     let (inputs, base) = (model.inputs, &parsed.base);
-    call.shared_records(
+    call.split_columns(
         py,
         |i, j| key.iter().all(|c| c.at(i).to_bits() == c.at(j).to_bits()),
         |i| key.iter().map(|c| c.at(i).to_bits()).collect(),
         |i| (split.prepare)(&element(inputs, base, &given, i)),
         split.record,
-        |p, i| (split.own)(p, &element(inputs, base, &given, i)),
+        |p, i, near| (split.own)(p, varying.map(|c| c.at(i)), near),
     )
 }
 
@@ -681,5 +777,23 @@ pub fn model<'py>(
         "visco" => run_model(py, &VISCO, args, &call),
         "penalty" => run_model(py, &PENALTY, args, &call),
         other => Err(PyTypeError::new_err(format!("no model function {other}"))),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The positional fields of `JkrAtSpeed` are its serde fields, in order.
+    #[test]
+    fn jkr_own_fields_are_the_serde_fields() {
+        let v = JkrAtSpeed {
+            impact_speed: 1.0,
+            max_contact_radius: 2.0,
+            restitution: 0.5,
+            sticks: false,
+        };
+        let names: Vec<&str> = JkrAtSpeed::FIELDS.iter().map(|(n, _)| *n).collect();
+        assert_eq!(crate::columns::field_names(&v), names);
     }
 }

@@ -3,7 +3,9 @@
 //! count and the warning tally to the Python layer.
 
 use crate::batch::{chunks_of, run, Chunk, Options, Report, Stop, CHUNK};
-use crate::columns::{Columns, SharedRows, Sink, Warnings};
+use crate::columns::{
+    own_column, shared_rows, Columns, Data, Merged, OwnFields, Sink, Warnings, NO_RECORD,
+};
 use crate::failure::Failure;
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
@@ -302,69 +304,151 @@ impl Call<'_> {
 
     /// Like [`Call::records`] for a model whose record splits into a part shared
     /// by the elements with equal `key` and fields of each element's own (the
-    /// impact speed's, say): per chunk, `prepare(i)` runs once per distinct key
-    /// (`same(i, j)` recognises an element that shares the previous one's key
-    /// without building it), its `record` is stored once ([`SharedRows`]), and
-    /// `own(&prepared, i)` runs per element (`None`: no fields of its own).
+    /// impact speed's, say), written straight into the output columns: per chunk,
+    /// `prepare(i)` runs once per distinct key (`same(i, j)` recognises an element
+    /// that shares the previous one's key without building it) and each element
+    /// stores the code of its prepared part and, from `own(&prepared, i, near)`
+    /// (`None`: no fields of its own, NaN; `near`: the previous element's own
+    /// fields when it shares the prepared part, a warm start), its [`OwnFields`]
+    /// by position. The shared
+    /// records are serialized once each, at the end, and gathered by code.
     #[allow(clippy::too_many_arguments)]
-    pub fn shared_records<'py, P, R, V>(
+    pub fn split_columns<'py, P, R, V>(
         &self,
         py: Python<'py>,
         same: impl Fn(usize, usize) -> bool + Sync,
         key: impl Fn(usize) -> Vec<u64> + Sync,
         prepare: impl Fn(usize) -> Result<P, Failure> + Sync,
-        record: impl Fn(&P) -> &R + Sync,
-        own: impl Fn(&P, usize) -> Result<Option<V>, Failure> + Sync,
+        record: impl Fn(&P) -> &R,
+        own: impl Fn(&P, usize, Option<&V>) -> Result<Option<V>, Failure> + Sync,
     ) -> PyResult<Bound<'py, PyTuple>>
     where
+        P: Send,
         R: Serialize,
-        V: Serialize,
+        V: OwnFields + Copy,
     {
         let internal = |e: crate::columns::Error| Failure {
             kind: crate::failure::Kind::Internal,
             message: e.to_string(),
         };
-        self.record_chunks(py, |chunk| {
-            let mut rows = SharedRows::at(chunk.range.start, chunk.range.len());
-            let mut prepared: Vec<P> = Vec::new();
+        let k = V::FIELDS.len();
+        let n = self.n;
+        // zeroed (fresh pages, no fill pass); the rows that did not run are set
+        // missing at the end
+        let mut codes = vec![0u32; n];
+        let mut valid = vec![false; n];
+        let mut own_cols: Vec<Vec<f64>> = (0..k).map(|_| vec![0.0; n]).collect();
+        let outs: Vec<SplitChunk<'_, P>> = {
+            let mut codes_it = codes.chunks_mut(CHUNK);
+            let mut valid_it = valid.chunks_mut(CHUNK);
+            let mut own_its: Vec<_> = own_cols.iter_mut().map(|c| c.chunks_mut(CHUNK)).collect();
+            (0..chunks_of(n, CHUNK))
+                .map(|_| SplitChunk {
+                    codes: codes_it.next().unwrap_or_default(),
+                    valid: valid_it.next().unwrap_or_default(),
+                    own: own_its
+                        .iter_mut()
+                        .map(|it| it.next().unwrap_or_default())
+                        .collect(),
+                    prepared: Vec::new(),
+                })
+                .collect()
+        };
+        let result = run(py, n, CHUNK, outs, self.options, |chunk| {
+            let start = chunk.range.start;
             let mut by_key: HashMap<Vec<u64>, Result<u32, Failure>> = HashMap::new();
             let mut last: Option<(usize, Result<u32, Failure>)> = None;
+            let mut row = vec![f64::NAN; k];
+            // the previous element's prepared code and own fields (a warm start)
+            let mut near: Option<(u32, V)> = None;
             for i in chunk.range.clone() {
                 if !chunk.go(i) {
                     break;
                 }
+                let prepared = &mut chunk.out.prepared;
                 let code = match &last {
                     Some((j, r)) if same(i, *j) => r.clone(),
                     _ => by_key
                         .entry(key(i))
                         .or_insert_with(|| {
                             let p = crate::batch::guarded(|| prepare(i))?;
-                            let code = rows.add_shared(record(&p)).map_err(internal)?;
                             prepared.push(p);
-                            Ok(code)
+                            Ok(prepared.len() as u32 - 1)
                         })
                         .clone(),
                 };
-                let row = code.clone().and_then(|c| {
-                    let p = &prepared[c as usize];
-                    crate::batch::guarded(|| own(p, i)).map(|v| (c, v))
+                let values = code.clone().and_then(|c| {
+                    let p = &chunk.out.prepared[c as usize];
+                    let previous = near.as_ref().filter(|(pc, _)| *pc == c).map(|(_, v)| v);
+                    crate::batch::guarded(|| own(p, i, previous)).map(|v| (c, v))
                 });
                 last = Some((i, code));
-                match row {
+                match values {
                     Ok((c, v)) => {
-                        if let Err(e) = rows.push(c, v.as_ref()) {
-                            chunk.fail(i, internal(e));
+                        let j = i - start;
+                        let out = &mut chunk.out;
+                        out.codes[j] = c;
+                        out.valid[j] = true;
+                        if let Some(v) = v {
+                            v.write(&mut row);
+                            near = Some((c, v));
+                        } else {
+                            row.fill(f64::NAN);
+                        }
+                        for (col, x) in out.own.iter_mut().zip(&row) {
+                            col[j] = *x;
                         }
                     }
-                    Err(f) => {
-                        rows.push_missing();
-                        chunk.fail(i, f);
-                    }
+                    Err(f) => chunk.fail(i, f),
                 }
             }
-            chunk.out = rows.finish();
-        })
+        });
+        let (outs, report) = match result {
+            Ok(r) => r,
+            Err(s) => return Err(self.stop(py, s)),
+        };
+        // the shared records, serialized once each; chunk codes made global
+        let mut shared = Columns::default();
+        for out in outs {
+            let base = shared_rows(&shared);
+            for p in &out.prepared {
+                shared
+                    .push(record(p))
+                    .map_err(|e| internal(e).into_pyerr(py, None))?;
+            }
+            for (c, ok) in out.codes.iter_mut().zip(out.valid.iter()) {
+                *c = if *ok { *c + base } else { NO_RECORD };
+            }
+        }
+        for (j, _) in valid.iter().enumerate().filter(|(_, ok)| !**ok) {
+            for col in &mut own_cols {
+                col[j] = f64::NAN;
+            }
+        }
+        let with_valid = self.options.errors == crate::batch::Errors::Nan;
+        let merged = py
+            .detach(|| {
+                let own: Vec<(&'static str, Data)> = V::FIELDS
+                    .iter()
+                    .zip(own_cols)
+                    .map(|(&(name, kind), values)| (name, own_column(kind, values)))
+                    .collect();
+                Merged::from_split(shared, &codes, own, with_valid.then_some(valid))
+            })
+            .map_err(|e| internal(e).into_pyerr(py, None))?;
+        let report = self.report(py, report, &Warnings::default())?;
+        let dict: Bound<'py, PyDict> = merged.into_py(py)?;
+        PyTuple::new(py, [dict.into_any(), report.into_any()])
     }
+}
+
+/// One chunk's slices of the outputs of [`Call::split_columns`] and its prepared
+/// parts.
+struct SplitChunk<'a, P> {
+    codes: &'a mut [u32],
+    valid: &'a mut [bool],
+    own: Vec<&'a mut [f64]>,
+    prepared: Vec<P>,
 }
 
 /// Appends `record` as a row, a serialization problem being an internal failure.

@@ -341,9 +341,13 @@ impl Scene {
         threads: Option<usize>,
     ) -> PyResult<Bound<'py, PyTuple>> {
         let which = SweepParameter::from_name(&parameter.replace('_', "-")).ok_or_else(|| {
+            let names: Vec<String> = sweep_parameters()
+                .iter()
+                .map(|n| format!("\"{n}\""))
+                .collect();
             Failure::input(format!(
-                "invalid parameter = \"{parameter}\": expected \"speed\", \"sphere_radius\", \
-                 \"work_of_adhesion\", \"tabor_parameter\" or \"yield_stress\""
+                "invalid parameter = \"{parameter}\": expected one of {}",
+                names.join(", ")
             ))
             .into_pyerr_static()
         })?;
@@ -375,13 +379,15 @@ impl Scene {
     }
 
     /// The impact simulated in the time domain: the trajectory and its summary.
-    #[pyo3(signature = (speed=None, tolerance=1e-9))]
+    /// `tolerance` defaults to `tabor_numerics::tolerance::COSTLY_TOLERANCE`.
+    #[pyo3(signature = (speed=None, tolerance=None))]
     fn trajectory<'py>(
         &self,
         py: Python<'py>,
         speed: Option<f64>,
-        tolerance: f64,
+        tolerance: Option<f64>,
     ) -> PyResult<Bound<'py, PyDict>> {
+        let tolerance = tolerance.unwrap_or(tabor::numerics::tolerance::COSTLY_TOLERANCE);
         let speed = speed.or(self.inner.speed).ok_or_else(|| {
             Failure::input("give speed, or [impact] speed in the scene (m/s)").into_pyerr(py, None)
         })?;
@@ -423,4 +429,13 @@ impl Scene {
     fn __repr__(&self) -> String {
         format!("Scene(name={:?})", self.inner.name)
     }
+}
+
+/// The parameters `Scene.sweep` takes, as Python spells them (snake_case of
+/// `SweepParameter::ALL`'s names).
+pub fn sweep_parameters() -> Vec<String> {
+    SweepParameter::ALL
+        .iter()
+        .map(|p| p.name().replace('-', "_"))
+        .collect()
 }

@@ -3,8 +3,12 @@
 Energy loss, coefficient of restitution and sticking velocity of central impacts of
 two spheres (or a sphere on a half-space) with JKR, Maugis-Dugdale, elasto-plastic
 and viscoelastic contact, computed by the Rust workspace ``tabor``. Equation numbers
-refer to seed 000 (the book chapter on quasi-static impact, section 5.3, eqs.
-(5.33)-(5.126); see the repository README's bibliography).
+(5.x) refer to Willert (2020): E. Willert, "Quasistatischer Normalstoß
+axialsymmetrischer Körper", chapter 5 of *Stoßprobleme in Physik, Technik und
+Medizin*, Springer Vieweg 2020, doi:10.1007/978-3-662-60296-6_5. The other sources
+(the dimensionless FEM fit of ``plastic(model="dimensionless-fit")``, the numpedia
+contact characteristic of ``penalty(law="characteristic")``) and the cited papers
+are in the "Sources" and "Bibliography" sections of the repository README.
 
 Conventions (as ContactEngineering's ``Adhesion`` package): module-level functions,
 keyword arguments, SI units unless a name says otherwise; a name shared with
@@ -53,6 +57,8 @@ __all__ = [
     "maugis_parameter_from_tabor",
     "maugis_parameter",
     "force_displacement",
+    "FORCE_DISPLACEMENT_MODELS",
+    "SWEEP_PARAMETERS",
     "jkr_normalized_loss",
     "Scene",
     "effective",
@@ -66,6 +72,9 @@ __all__ = [
     "MAUGIS_PER_TABOR_MU",
     "FAST_TIER_RELATIVE_ERROR",
     "MIN_MAUGIS_PARAMETER",
+    "DEFAULT_TOLERANCE",
+    "ACCURACY",
+    "COSTLY_TOLERANCE",
     "TaborError",
     "InputError",
     "ModelValidityError",
@@ -91,6 +100,13 @@ MAUGIS_PER_TABOR_MU: float = _tabor.MAUGIS_PER_TABOR_MU
 FAST_TIER_RELATIVE_ERROR: float = _tabor.FAST_TIER_RELATIVE_ERROR
 #: The smallest Maugis λ of ``maugis_dugdale_curve`` (below it: ModelValidityError).
 MIN_MAUGIS_PARAMETER: float = _tabor.MIN_MAUGIS_PARAMETER
+#: The default relative tolerance of closed-form and quadrature models (1e-12; the
+#: base of every default tolerance of tabor, ``tabor_numerics::tolerance``).
+DEFAULT_TOLERANCE: float = _tabor.DEFAULT_TOLERANCE
+#: The default requested accuracy of composite answers and of ``visco`` (1e-10).
+ACCURACY: float = _tabor.ACCURACY
+#: The default tolerance of the costliest integrations, ``Scene.trajectory`` (1e-9).
+COSTLY_TOLERANCE: float = _tabor.COSTLY_TOLERANCE
 
 
 def set_num_threads(threads: Optional[int] = None) -> None:
@@ -110,26 +126,26 @@ def get_num_threads() -> int:
 # Maugis-Dugdale
 
 
-def maugis_dugdale_loss(tabor_parameter: Any, *, tolerance: Any = 1e-12, fast: bool = False,
-                        errors: str = "raise", threads: Optional[int] = None) -> Any:
+def maugis_dugdale_loss(tabor_parameter: Any, *, tolerance: Any = DEFAULT_TOLERANCE, fast: bool = False,
+                        errors: str = _core.DEFAULT_ERRORS, threads: Optional[int] = None) -> Any:
     """The adhesive energy loss W(Λ) of a Maugis-Dugdale impact, in units of F_n d_n.
 
-    Seed 000 section 5.3.2, eq. (5.43): ``|ΔU_kin| = F_n d_n · W(Λ)`` with
+    Willert (2020) section 5.3.2, eq. (5.43): ``|ΔU_kin| = F_n d_n · W(Λ)`` with
     ``W = |∫_{-1/Λ}^{d̂_c} F̂ dd̂|`` along the equilibrium branch from the jump-in
     depth −1/Λ (5.40) to the displacement-controlled snap-off; case 1 (Λ ≤ 0.4496)
     is the closed form 17·2¹⁹Λ⁵/(3⁴π⁸) (5.44), case 2 adds (5.46). Scales:
     ``F_n = (3/2)πΔγR`` (N), ``d_n = a_c²/(3R)`` (m), ``a_c = (9πΔγR²/(8E*))^(1/3)``.
-    ``W / jkr_normalized_loss()`` is the ordinate of seed 000 Fig. 5.2.
+    ``W / jkr_normalized_loss()`` is the ordinate of Willert (2020) Fig. 5.2.
 
     Parameters
     ----------
     tabor_parameter : array_like
-        The seed's Tabor parameter Λ = d_n/h > 0 (dimensionless; convert Maugis' λ
+        Willert's (2020) Tabor parameter Λ = d_n/h > 0 (dimensionless; convert Maugis' λ
         or Tabor's μ with ``tabor_parameter_from_maugis`` /
         ``tabor_parameter_from_tabor_mu``).
     tolerance : array_like, optional
         Relative tolerance of the direct evaluation, in [1e-15, 0.5] (default
-        1e-12). Not used with ``fast=True``.
+        ``DEFAULT_TOLERANCE``). Not used with ``fast=True``.
     fast : bool, optional
         Use the precomputed Chebyshev tier (relative error below
         ``FAST_TIER_RELATIVE_ERROR`` = 1e-10) instead of the direct quadrature.
@@ -150,7 +166,7 @@ def maugis_dugdale_loss(tabor_parameter: Any, *, tolerance: Any = 1e-12, fast: b
     return w
 
 
-def maugis_dugdale_curve(*, contact_radius: Any, maugis_parameter: Any, errors: str = "raise",
+def maugis_dugdale_curve(*, contact_radius: Any, maugis_parameter: Any, errors: str = _core.DEFAULT_ERRORS,
                          threads: Optional[int] = None) -> Tuple[Any, Any]:
     """Load and penetration of the Maugis-Dugdale contact at a given contact radius,
     in Maugis' units (every branch, stable and unstable).
@@ -158,7 +174,7 @@ def maugis_dugdale_curve(*, contact_radius: Any, maugis_parameter: Any, errors: 
     The quantities of ``Adhesion.ReferenceSolutions.MaugisDugdale.
     _load_and_displacement(A, λ)``, with keyword arguments (so that the two can
     never be swapped). Computed on tabor's θ-parametrized contact branch (spec
-    maugis-dugdale.md, seed 000 section 3.3.3 as used by (5.43)-(5.46)) and
+    maugis-dugdale.md; Willert (2020) as used by (5.43)-(5.46)) and
     converted: ``A = (3/2)^(1/3) â``, ``P̄ = (3/2) F̂``, ``Δ̄ = (3/2)^(2/3)/3 · d̂``.
 
     Parameters
@@ -185,24 +201,22 @@ def maugis_dugdale_curve(*, contact_radius: Any, maugis_parameter: Any, errors: 
 
 
 def force_displacement(model: str, contact_radius: Any, *, radius: Any, elastic_modulus: Any,
-                       work_of_adhesion: Any, cohesive_stress: Any = None, errors: str = "raise",
+                       work_of_adhesion: Any, cohesive_stress: Any = None, errors: str = _core.DEFAULT_ERRORS,
                        threads: Optional[int] = None) -> Tuple[Any, Any]:
     """Force and penetration of an adhesive sphere-on-flat contact in SI units, at
-    given contact radii: ``model`` is ``"jkr"``, ``"dmt"`` or ``"maugis-dugdale"``.
+    given contact radii, for ``model`` (the menu below, ``FORCE_DISPLACEMENT_MODELS``).
 
     The parameters of ``Adhesion`` (``radius`` R, ``elastic_modulus`` the contact
-    modulus E* = E/(1 − ν²) (for two bodies the effective modulus), K = 4E*/3):
-
-    - JKR (seed 000 (5.33), (5.34)): ``F = K a³/R − √(8πa³E*Δγ)``,
-      ``δ = a²/R − √(2πaΔγ/E*)`` (``Adhesion.ReferenceSolutions.JKR.force`` and
-      ``penetration``);
-    - DMT: ``F = K a³/R − 2πΔγR``, ``δ = a²/R`` (the Λ → 0 limit of Maugis-Dugdale);
-    - Maugis-Dugdale (needs ``cohesive_stress`` σ0, Pa): ``maugis_dugdale_curve``
-      in SI units (``Adhesion.ReferenceSolutions.MaugisDugdale.
-      load_and_displacement``).
+    modulus E* = E/(1 − ν²) (for two bodies the effective modulus), K = 4E*/3,
+    ``work_of_adhesion`` Δγ, ``cohesive_stress`` σ0 for Maugis-Dugdale only). JKR
+    gives ``Adhesion.ReferenceSolutions.JKR.force`` and ``penetration``,
+    Maugis-Dugdale ``maugis_dugdale_curve`` in SI units
+    (``Adhesion.ReferenceSolutions.MaugisDugdale.load_and_displacement``).
 
     Returns ``(force, penetration)``: N (positive in compression) and m, shaped
     like the broadcast inputs.
+
+    Models:
     """
     model = _core.check_str("model", model)
     errors = _core.check_errors(errors)
@@ -215,12 +229,22 @@ def force_displacement(model: str, contact_radius: Any, *, radius: Any, elastic_
     return force, penetration
 
 
+#: The models of ``force_displacement``: their names (from the Rust menu
+#: ``tabor_maugis::CurveModel``).
+FORCE_DISPLACEMENT_MODELS: Tuple[str, ...] = tuple(name for name, _ in _tabor.FORCE_DISPLACEMENT_MODELS)
+force_displacement.__doc__ = (force_displacement.__doc__ or "") + "".join(
+    f'\n    - ``"{name}"``: {about}' for name, about in _tabor.FORCE_DISPLACEMENT_MODELS
+) + "\n"
+#: The parameters ``Scene.sweep`` can vary (from the Rust ``tabor_scene::SweepParameter``).
+SWEEP_PARAMETERS: Tuple[str, ...] = tuple(_tabor.SWEEP_PARAMETERS)
+
+
 def maugis_parameter(radius: Any, elastic_modulus: Any, work_of_adhesion: Any, cohesive_stress: Any, *,
-                     errors: str = "raise", threads: Optional[int] = None) -> Any:
+                     errors: str = _core.DEFAULT_ERRORS, threads: Optional[int] = None) -> Any:
     """Maugis' λ = 2σ0 / (πΔγK²/R)^(1/3), K = 4E*/3, from SI quantities: the
     arguments and meaning of ``Adhesion.ReferenceSolutions.MaugisDugdale.
     maugis_parameter(radius, elastic_modulus, work_of_adhesion, cohesive_stress)``
-    (``elastic_modulus`` is the contact modulus E*). Λ of seed 000 is
+    (``elastic_modulus`` is the contact modulus E*). Λ of Willert (2020) is
     ``tabor_parameter_from_maugis(λ)``."""
     errors = _core.check_errors(errors)
     threads = _core.check_threads(threads)
@@ -239,22 +263,22 @@ def _unary(native: Any, name: str, value: Any, errors: str, threads: Optional[in
     return out
 
 
-def tabor_parameter_from_maugis(maugis_parameter: Any, *, errors: str = "raise",
+def tabor_parameter_from_maugis(maugis_parameter: Any, *, errors: str = _core.DEFAULT_ERRORS,
                                 threads: Optional[int] = None) -> Any:
-    """The seed's Λ from Maugis' λ: ``Λ = π(9/4)^(1/3)/6 · λ ≈ 0.6861 λ``."""
+    """Willert's (2020) Λ from Maugis' λ: ``Λ = π(9/4)^(1/3)/6 · λ ≈ 0.6861 λ``."""
     return _unary(_tabor.tabor_parameter_from_maugis, "maugis_parameter", maugis_parameter, errors, threads)
 
 
-def tabor_parameter_from_tabor_mu(tabor_mu: Any, *, errors: str = "raise", threads: Optional[int] = None) -> Any:
-    """The seed's Λ from Tabor's μ = (RΔγ²/(E*² z0³))^(1/3), through the Dugdale
+def tabor_parameter_from_tabor_mu(tabor_mu: Any, *, errors: str = _core.DEFAULT_ERRORS, threads: Optional[int] = None) -> Any:
+    """Willert's (2020) Λ from Tabor's μ = (RΔγ²/(E*² z0³))^(1/3), through the Dugdale
     equivalence λ ≈ 1.157 μ (an approximation): ``Λ ≈ 0.7938 μ``. So Λ = 4 is
-    μ ≈ 5 (seed 000, after (5.46))."""
+    μ ≈ 5 (Willert 2020, after (5.46))."""
     return _unary(_tabor.tabor_parameter_from_tabor_mu, "tabor_mu", tabor_mu, errors, threads)
 
 
-def maugis_parameter_from_tabor(tabor_parameter: Any, *, errors: str = "raise",
+def maugis_parameter_from_tabor(tabor_parameter: Any, *, errors: str = _core.DEFAULT_ERRORS,
                                 threads: Optional[int] = None) -> Any:
-    """Maugis' λ from the seed's Λ: ``λ = Λ / 0.6861…`` (inverse of
+    """Maugis' λ from Willert's (2020) Λ: ``λ = Λ / 0.6861…`` (inverse of
     ``tabor_parameter_from_maugis``; ``maugis_parameter`` computes λ from SI
     quantities, as in ``Adhesion``)."""
     return _unary(_tabor.maugis_parameter_from_tabor, "tabor_parameter", tabor_parameter, errors, threads)
@@ -314,7 +338,7 @@ class Scene:
 
     @property
     def tabor_parameter(self) -> Optional[float]:
-        """The seed's Tabor parameter Λ when the interface has a range, else None."""
+        """Willert's (2020) Tabor parameter Λ when the interface has a range, else None."""
         return self._core.tabor_parameter
 
     def outcome(self, speed: Optional[float] = None, angle: Optional[float] = None) -> Dict[str, Any]:
@@ -350,7 +374,7 @@ class Scene:
         )
 
     def force(self, overlap: Any, *, speed: Optional[float] = None, overlap_rate: Any = 0.0,
-              errors: str = "raise", threads: Optional[int] = None) -> Any:
+              errors: str = _core.DEFAULT_ERRORS, threads: Optional[int] = None) -> Any:
         """The scene's force law F(d): the normal force (N, repulsive > 0) at each
         overlap d (m) and overlap rate (m/s, default 0; rate-dependent laws use it),
         in parallel.
@@ -368,7 +392,7 @@ class Scene:
         return b.outs(self._core.force(b["overlap"], b["overlap_rate"], speed, b.n, b.shape_list,
                                        _core.check_errors(errors), _core.check_threads(threads)))[0]
 
-    def restitution(self, speeds: Any, *, errors: str = "raise", threads: Optional[int] = None) -> Any:
+    def restitution(self, speeds: Any, *, errors: str = _core.DEFAULT_ERRORS, threads: Optional[int] = None) -> Any:
         """The coefficient of restitution (5.37) at each impact speed (m/s), in parallel.
 
         Same model and combination rule as ``outcome(speed)["restitution"]``.
@@ -386,7 +410,7 @@ class Scene:
         when the bodies never stick."""
         return self._core.sticking_velocity()
 
-    def sweep(self, parameter: str, values: Any, *, errors: str = "raise",
+    def sweep(self, parameter: str, values: Any, *, errors: str = _core.DEFAULT_ERRORS,
               threads: Optional[int] = None) -> Dict[str, Any]:
         """Outcomes over values of one scene parameter, computed in parallel, as
         columns.
@@ -394,10 +418,11 @@ class Scene:
         Parameters
         ----------
         parameter : str
-            ``"speed"`` (m/s), ``"sphere_radius"`` (m), ``"work_of_adhesion"``
-            (J/m², needs an ``[adhesion]`` section), ``"tabor_parameter"`` (Λ,
-            replaces any range; needs ``[adhesion]``) or ``"yield_stress"`` (Pa;
-            needs a yield stress); a parameter the scene lacks is an InputError.
+            One of ``tabor.SWEEP_PARAMETERS``: the impact speed (m/s), the
+            sphere's radius (m), the work of adhesion (J/m², needs an
+            ``[adhesion]`` section), the Tabor parameter Λ (replaces any range;
+            needs ``[adhesion]``), the yield stress (Pa; needs one) or the impact
+            angle (degrees); a parameter the scene lacks is an InputError.
         values : array_like
             The values (use ``numpy.linspace``/``numpy.geomspace`` for ranges).
 
@@ -425,7 +450,7 @@ class Scene:
         result["values"] = b.out(b["values"])
         return result
 
-    def trajectory(self, speed: Optional[float] = None, *, tolerance: float = 1e-9) -> Dict[str, Any]:
+    def trajectory(self, speed: Optional[float] = None, *, tolerance: float = COSTLY_TOLERANCE) -> Dict[str, Any]:
         """The impact simulated in the time domain (like ``tabor trajectory``).
 
         Returns a dict of arrays ``t`` (s), ``d`` (overlap, m), ``d_dot`` (m/s),
@@ -440,7 +465,8 @@ class Scene:
         speed : float, optional
             Impact speed (m/s); default the scene's ``[impact] speed``.
         tolerance : float, optional
-            Requested relative accuracy of the simulated outcome (default 1e-9).
+            Requested relative accuracy of the simulated outcome (default
+            ``COSTLY_TOLERANCE``).
         """
         v = None if speed is None else _core.float_array("speed", speed).item()
         return self._core.trajectory(v, _core.float_array("tolerance", tolerance).item())
@@ -458,14 +484,14 @@ effective = _core.model_function(
     "effective",
     "Effective modulus, radius and mass of a two-body collision (``tabor effective``).\n\n"
     "``1/E* = (1-ν1²)/E1 + (1-ν2²)/E2``, ``1/R = 1/R1 + 1/R2``, ``m = m1 m2/(m1 + m2)``\n"
-    "(seed 000 section 5.1).",
+    "(Willert 2020, section 5.1).",
     "Returns a dict of ``effective_modulus`` (Pa), ``effective_radius`` (m), ``effective_mass`` (kg).",
     _results.keys(_results.EFFECTIVE),
 )
 
 _jkr = _core.model_function(
     "jkr",
-    "JKR adhesive impact of a sphere (``tabor jkr``), seed 000 (5.33)-(5.38).\n\n"
+    "JKR adhesive impact of a sphere (``tabor jkr``), Willert (2020) (5.33)-(5.38).\n\n"
     "Energy loss (5.36) ``|ΔU| = (1 + 864^(1/3))/10 · [R⁴(πΔγ)⁵/E*²]^(1/3)`` (fixed grip),\n"
     "sticking velocity (5.38) ``v_c = √(2|ΔU|/m)``, and at a given speed the maximum contact\n"
     "radius (5.35) and the restitution (5.37) ``ε = √(1 − v_c²/v0²)``. Inputs are the\n"
@@ -495,7 +521,8 @@ jkr.__signature__ = _jkr.__signature__  # type: ignore[attr-defined]
 plastic = _core.model_function(
     "plastic",
     "Elasto-plastic impact with and without adhesion (``tabor plastic``).\n\n"
-    "Seed 000 sections 5.5-5.6, (5.101)-(5.126); seed 001 eqs. (12), (18), (19). Inputs are\n"
+    "Willert (2020) sections 5.5-5.6, (5.101)-(5.126); the dimensionless FEM fit (README,\n"
+    "Sources) eqs. (12), (18), (19). Inputs are\n"
     "the effective quantities of the collision and the yield stress of the softer body.",
     "Returns a dict: ``model``, ``branch``, ``impact_speed``, ``restitution``, ``energy_loss``\n"
     "(J), ``sticks``, ``yield_velocity`` (m/s), ``sticking_velocity``,\n"
@@ -508,7 +535,7 @@ plastic = _core.model_function(
 
 visco = _core.model_function(
     "visco",
-    "Viscoelastic impact without adhesion (``tabor visco``), seed 000 section 5.4.\n\n"
+    "Viscoelastic impact without adhesion (``tabor visco``), Willert (2020) section 5.4.\n\n"
     "All parameters are dimensionless: D = η√(2a/(mG)) (5.55); δ = η(Rv0/(m²G³))^(1/5) for\n"
     "spheres (5.68), (5.90), (5.92), δ = η√(8a/(mG∞)) for the standard flat punch (5.79);\n"
     "β = G∞/G1; γ = λ d0^(b+1)/(m v0) (5.72).",
@@ -522,7 +549,7 @@ penalty = _core.model_function(
     "penalty",
     "Penalty contact laws for multibody codes (``tabor penalty``): the parameters for a\n"
     "nominal restitution and what a simulated impact achieves.\n\n"
-    "Laws: seed 002's contact characteristic ``F = k κ(h, ε) l(v, V)`` with the loss speed V\n"
+    "Laws: numpedia's contact characteristic (README, Sources) ``F = k κ(h, ε) l(v, V)`` with the loss speed V\n"
     "calibrated exactly; ``F = K δⁿ (1 + χ δ̇)`` with χ = 3(1 − e)/(2v0) (Hunt-Crossley),\n"
     "3(1 − e²)/(4v0) (Lankarani-Nikravesh), 8(1 − e)/(5 e v0) (Flores).",
     "Returns a dict: ``law``, ``nominal_restitution``, ``achieved_restitution`` (simulated),\n"

@@ -30,10 +30,15 @@ LAMBDA_PER_MAUGIS_PARAMETER: float
 MAUGIS_PER_TABOR_MU: float
 FAST_TIER_RELATIVE_ERROR: float
 MIN_MAUGIS_PARAMETER: float
+DEFAULT_TOLERANCE: float
+ACCURACY: float
+COSTLY_TOLERANCE: float
+FORCE_DISPLACEMENT_MODELS: Tuple[str, ...]
+SWEEP_PARAMETERS: Tuple[str, ...]
 
 ArrayLike = Union[float, Sequence[float], Sequence[Sequence[float]], npt.NDArray[Any]]
 Floats = npt.NDArray[np.float64]
-Errors = Literal["raise", "nan"]
+Errors = Literal['raise', 'nan']
 
 def set_num_threads(threads: Optional[int] = ...) -> None: ...
 def get_num_threads() -> int: ...
@@ -67,12 +72,12 @@ def maugis_dugdale_curve(
 ) -> Tuple[Floats, Floats]: ...
 @overload
 def force_displacement(
-    model: Literal["jkr", "dmt", "maugis-dugdale"], contact_radius: float, *, radius: float, elastic_modulus: float,
+    model: Literal['jkr', 'dmt', 'maugis-dugdale'], contact_radius: float, *, radius: float, elastic_modulus: float,
     work_of_adhesion: float, cohesive_stress: Optional[float] = ..., errors: Errors = ..., threads: Optional[int] = ...
 ) -> Tuple[float, float]: ...
 @overload
 def force_displacement(
-    model: Literal["jkr", "dmt", "maugis-dugdale"], contact_radius: ArrayLike, *, radius: ArrayLike,
+    model: Literal['jkr', 'dmt', 'maugis-dugdale'], contact_radius: ArrayLike, *, radius: ArrayLike,
     elastic_modulus: ArrayLike, work_of_adhesion: ArrayLike, cohesive_stress: Optional[ArrayLike] = ...,
     errors: Errors = ..., threads: Optional[int] = ...
 ) -> Tuple[Floats, Floats]: ...
@@ -119,7 +124,7 @@ class Scene:
     def sticking_velocity(self) -> Optional[float]: ...
     def sweep(
         self,
-        parameter: Literal["speed", "sphere_radius", "work_of_adhesion", "tabor_parameter", "yield_stress"],
+        parameter: Literal['speed', 'sphere_radius', 'work_of_adhesion', 'tabor_parameter', 'yield_stress', 'angle'],
         values: ArrayLike,
         *,
         errors: Errors = ...,

@@ -28,12 +28,17 @@ def check_str(name: str, value: Any) -> str:
     raise TypeError(f"{name} must be a str, not {type(value).__name__}")
 
 
+#: The default of every ``errors=`` (``"raise"``; the values: ``_tabor.ERRORS``).
+DEFAULT_ERRORS: str = _tabor.ERRORS[0]
+
+
 def check_errors(errors: Any) -> str:
     check_str("errors", errors)
-    if errors not in ("raise", "nan"):
+    if errors not in _tabor.ERRORS:
         from ._errors import InputError
 
-        raise InputError(f'invalid errors = "{errors}": expected "raise" or "nan"')
+        expected = " or ".join(f'"{e}"' for e in _tabor.ERRORS)
+        raise InputError(f'invalid errors = "{errors}": expected {expected}')
     return errors
 
 
@@ -190,8 +195,8 @@ def keyword_doc(spec: Sequence[Tuple[str, str, Any, Any, str]]) -> str:
     for name, kind, default, choices, help_ in spec:
         flag = "--" + name.replace("_", "-")
         if kind == "choice":
-            opts = ", ".join(f'"{c}"' for c in choices)
-            tail = f" One of {opts}" + (f'; default "{default}".' if default else ".")
+            opts = "".join(f'\n      "{c}": {about}' for c, about in choices)
+            tail = (f' Default "{default}".' if default else " Required.") + " One of:" + opts
         elif kind == "number" and default is not None:
             tail = f" Default {default!r}."
         elif kind == "optional":
@@ -205,7 +210,7 @@ def keyword_doc(spec: Sequence[Tuple[str, str, Any, Any, str]]) -> str:
 
 
 COMMON = [
-    inspect.Parameter("errors", inspect.Parameter.KEYWORD_ONLY, default="raise"),
+    inspect.Parameter("errors", inspect.Parameter.KEYWORD_ONLY, default=DEFAULT_ERRORS),
     inspect.Parameter("threads", inspect.Parameter.KEYWORD_ONLY, default=None),
 ]
 

@@ -71,8 +71,8 @@ class TaborWarning(UserWarning):
 
 
 class QuasiStaticWarning(TaborWarning):
-    """The impact speed is not small against the elastic wave speed (seed 000
-    (5.4)): energy radiated as elastic waves is neglected."""
+    """The impact speed is not small against the elastic wave speed (Willert
+    2020, eq. (5.4)): energy radiated as elastic waves is neglected."""
 
 
 class CoupledModelWarning(TaborWarning):
@@ -81,7 +81,7 @@ class CoupledModelWarning(TaborWarning):
 
 
 class ElasticLimitWarning(TaborWarning):
-    """The contact yields at this speed (seed 000 (5.13)): an elastic model
+    """The contact yields at this speed (Willert 2020, eq. (5.13)): an elastic model
     overestimates the restitution."""
 
 

@@ -44,10 +44,15 @@ LAMBDA_PER_MAUGIS_PARAMETER: float
 MAUGIS_PER_TABOR_MU: float
 FAST_TIER_RELATIVE_ERROR: float
 MIN_MAUGIS_PARAMETER: float
+DEFAULT_TOLERANCE: float
+ACCURACY: float
+COSTLY_TOLERANCE: float
+FORCE_DISPLACEMENT_MODELS: Tuple[str, ...]
+SWEEP_PARAMETERS: Tuple[str, ...]
 
 ArrayLike = Union[float, Sequence[float], Sequence[Sequence[float]], npt.NDArray[Any]]
 Floats = npt.NDArray[np.float64]
-Errors = Literal["raise", "nan"]
+Errors = ERRORS_LITERAL
 
 def set_num_threads(threads: Optional[int] = ...) -> None: ...
 def get_num_threads() -> int: ...
@@ -78,12 +83,12 @@ def maugis_dugdale_curve(
 ) -> Tuple[Floats, Floats]: ...
 @overload
 def force_displacement(
-    model: Literal["jkr", "dmt", "maugis-dugdale"], contact_radius: float, *, radius: float, elastic_modulus: float,
+    model: CURVE_LITERAL, contact_radius: float, *, radius: float, elastic_modulus: float,
     work_of_adhesion: float, cohesive_stress: Optional[float] = ..., errors: Errors = ..., threads: Optional[int] = ...
 ) -> Tuple[float, float]: ...
 @overload
 def force_displacement(
-    model: Literal["jkr", "dmt", "maugis-dugdale"], contact_radius: ArrayLike, *, radius: ArrayLike,
+    model: CURVE_LITERAL, contact_radius: ArrayLike, *, radius: ArrayLike,
     elastic_modulus: ArrayLike, work_of_adhesion: ArrayLike, cohesive_stress: Optional[ArrayLike] = ...,
     errors: Errors = ..., threads: Optional[int] = ...
 ) -> Tuple[Floats, Floats]: ...
@@ -130,7 +135,7 @@ class Scene:
     def sticking_velocity(self) -> Optional[float]: ...
     def sweep(
         self,
-        parameter: Literal["speed", "sphere_radius", "work_of_adhesion", "tabor_parameter", "yield_stress"],
+        parameter: SWEEP_LITERAL,
         values: ArrayLike,
         *,
         errors: Errors = ...,
@@ -175,7 +180,7 @@ def parameter(name: str, kind: str, choices, scalar: bool) -> str:
         return f"{name}: Optional[{number}]"
     if kind == "flag":
         return f"{name}: bool"
-    return f"{name}: Literal[{', '.join(repr(c) for c in choices)}]"
+    return f"{name}: Literal[{', '.join(repr(c) for c, _about in choices)}]"
 
 
 def model_stub(function: str) -> List[str]:
@@ -197,14 +202,21 @@ def model_stub(function: str) -> List[str]:
     return lines
 
 
+def literal(names) -> str:
+    return f"Literal[{', '.join(repr(n) for n in names)}]"
+
+
 def stub() -> str:
-    out = [HEAD.rstrip("\n")]
+    head = HEAD.replace("ERRORS_LITERAL", literal(_tabor.ERRORS))
+    fixed = FIXED.replace("CURVE_LITERAL", literal(n for n, _ in _tabor.FORCE_DISPLACEMENT_MODELS))
+    fixed = fixed.replace("SWEEP_LITERAL", literal(_tabor.SWEEP_PARAMETERS))
+    out = [head.rstrip("\n")]
     for name, arg in UNARY:
         out.append("@overload")
         out.append(f"def {name}({arg}: float, *, errors: Errors = ..., threads: Optional[int] = ...) -> float: ...")
         out.append("@overload")
         out.append(f"def {name}({arg}: ArrayLike, *, errors: Errors = ..., threads: Optional[int] = ...) -> Floats: ...")
-    out.append(FIXED.strip("\n"))
+    out.append(fixed.strip("\n"))
     for function in RESULTS:
         out.append("")
         out += model_stub(function)

@@ -4,6 +4,7 @@ type stubs."""
 import ast
 import threading
 import time
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -223,3 +224,41 @@ def test_version_is_single_sourced():
     # the wheel's version (maturin, dynamic = ["version"] from python/Cargo.toml),
     # the module's and the Rust workspace's are one
     assert tabor.__version__ == version("tabor") == _tabor.LIBRARY_VERSION
+
+
+def test_menus_and_defaults_come_from_the_library():
+    # every choice keyword offers its Rust menu (ALL/as_str) and its default is the
+    # library's; the tolerance defaults are tabor_numerics::tolerance's constants
+    import inspect
+
+    sig = inspect.signature(tabor.jkr).parameters
+    assert sig["tolerance"].default == tabor.DEFAULT_TOLERANCE == 1e-12
+    assert inspect.signature(tabor.visco).parameters["tolerance"].default == tabor.ACCURACY == 1e-10
+    assert inspect.signature(tabor.Scene.trajectory).parameters["tolerance"].default == tabor.COSTLY_TOLERANCE
+    assert inspect.signature(tabor.maugis_dugdale_loss).parameters["tolerance"].default == tabor.DEFAULT_TOLERANCE
+    assert sig["separation"].default == "fixed-grip"
+    specs = tabor._tabor.SPECS
+    for function, spec in specs.items():
+        for name, kind, default, choices, _help in spec:
+            if kind != "choice":
+                continue
+            names = [c for c, _about in choices]
+            assert default is None or default in names
+            numbers = {n: 1.0 for n, k, d, *_ in spec if k == "number" and d is None}
+            others = {n: ch[0][0] for n, k, d, ch, _ in spec if k == "choice" and n != name and d is None}
+            # each name is accepted (the call may then fail on the other inputs, never
+            # on the name)
+            for c in names:
+                try:
+                    with warnings.catch_warnings():
+                        warnings.simplefilter("ignore")
+                        getattr(tabor, function)(**numbers, **others, **{name: c})
+                except tabor.TaborError as e:
+                    assert f"invalid {name} =" not in str(e), e
+            with pytest.raises(tabor.InputError, match=f'invalid {name} = "nope": expected one of "{names[0]}"'):
+                getattr(tabor, function)(**numbers, **others, **{name: "nope"})
+    assert tabor.FORCE_DISPLACEMENT_MODELS == ("jkr", "dmt", "maugis-dugdale")
+    with pytest.raises(tabor.InputError, match='expected "jkr", "dmt" or "maugis-dugdale"'):
+        tabor.force_displacement("hertz", 1e-7, radius=1e-6, elastic_modulus=1e9, work_of_adhesion=0.05)
+    with pytest.raises(tabor.InputError, match='expected "raise" or "nan"'):
+        tabor.jkr_normalized_loss() and tabor.maugis_dugdale_loss(1.0, errors="ignore")

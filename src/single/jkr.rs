@@ -149,7 +149,16 @@ impl JkrPrepared {
     /// energy balance (5.35) and the restitution (5.37) of the speed-independent
     /// loss (5.36), as [`impact`](crate::restitution::impact) gives it.
     pub fn at_speed(&self, v0: f64) -> Result<JkrAtSpeed, Error> {
-        let max = self.model.max_contact_radius(v0)?;
+        self.at_speed_near(v0, None)
+    }
+
+    /// [`JkrPrepared::at_speed`] with the maximum contact radius started from
+    /// `near`'s (the fields of a nearby speed: a batch over sorted speeds); equal to
+    /// the cold start's to the rounding of the last step.
+    pub fn at_speed_near(&self, v0: f64, near: Option<&JkrAtSpeed>) -> Result<JkrAtSpeed, Error> {
+        let max = self
+            .model
+            .max_contact_radius_near(v0, near.map(|n| n.max_contact_radius))?;
         let restitution =
             restitution_from_loss(self.record.energy_loss, self.model.effective_mass(), v0)?;
         Ok(JkrAtSpeed {

@@ -279,11 +279,7 @@ impl ContactLaw {
         out.inv_table_length = 1.0 / length;
         out.jump_in = jump_in / s.depth;
         out.snap_off = pull_off / s.depth;
-        out.pull_off_force = branch_minimum(&|x| {
-            let d = pull_off + x * x * step;
-            law.force(d, 0.0)
-                .or_else(|_| law.force(d - 1e-12 * step, 0.0))
-        })? / s.force;
+        out.pull_off_force = -law.pull_off_force()? / s.force;
         out.table = Some(Arc::new(table));
         out.exact = Exact::Maugis(Box::new(law));
         Ok(out)
@@ -536,14 +532,4 @@ impl ContactLaw {
             event,
         })
     }
-}
-
-/// The minimum over 0 ≤ x ≤ S_FINE of `f(x)` (the branch force at s = x): a grid of
-/// 4096 cells of the fine segment, refined by golden section
-/// (`tabor_numerics::minimize`).
-fn branch_minimum(f: &dyn Fn(f64) -> Result<f64>) -> Result<f64> {
-    Ok(
-        tabor_numerics::minimize::grid_then_golden(f, 0.0, crate::table::S_FINE, 4096, 1e-14)?
-            .value,
-    )
 }

@@ -42,6 +42,19 @@ pub trait AdhesiveContact: sealed::Sealed {
     /// (J, > 0), from the energy balance to the relative `tolerance`.
     /// Seed 000, eqs. (5.35), (5.49).
     fn max_contact_radius(&self, kinetic_energy: f64, tolerance: f64) -> Result<MaxContactRadius>;
+
+    /// [`AdhesiveContact::max_contact_radius`] started from `near` (m), the
+    /// maximum contact radius of a nearby kinetic energy, where the contact's
+    /// solver can use it (the sphere's does; the others ignore it).
+    fn max_contact_radius_near(
+        &self,
+        kinetic_energy: f64,
+        tolerance: f64,
+        near: Option<f64>,
+    ) -> Result<MaxContactRadius> {
+        let _ = near;
+        self.max_contact_radius(kinetic_energy, tolerance)
+    }
 }
 
 /// A JKR-adhesive impact: an [`AdhesiveContact`], the effective mass and the
@@ -109,6 +122,18 @@ impl<C: AdhesiveContact> JkrImpact<C> {
     ///
     /// Seed 000, eqs. (5.35), (5.49).
     pub fn max_contact_radius(&self, impact_speed: f64) -> Result<MaxContactRadius> {
+        self.max_contact_radius_near(impact_speed, None)
+    }
+
+    /// [`JkrImpact::max_contact_radius`] started from `near` (m), the maximum
+    /// contact radius at a nearby speed (a batch over sorted speeds).
+    ///
+    /// Seed 000, eq. (5.35).
+    pub fn max_contact_radius_near(
+        &self,
+        impact_speed: f64,
+        near: Option<f64>,
+    ) -> Result<MaxContactRadius> {
         let v = validate::positive("impact_speed", impact_speed)?;
         let kinetic = finite_output(MODEL, "kinetic energy m v0^2/2", 0.5 * self.mass * v * v)?;
         if kinetic <= 0.0 {
@@ -118,7 +143,8 @@ impl<C: AdhesiveContact> JkrImpact<C> {
                 "gives a kinetic energy m v0^2/2 that underflows to zero",
             ));
         }
-        self.contact.max_contact_radius(kinetic, self.tolerance)
+        self.contact
+            .max_contact_radius_near(kinetic, self.tolerance, near)
     }
 }
 

@@ -188,9 +188,20 @@ impl AdhesiveContact for JkrSphere {
 
     /// Seed 000, eq. (5.35); [`normalized::max_contact_radius`] in physical units.
     fn max_contact_radius(&self, kinetic_energy: f64, tolerance: f64) -> Result<MaxContactRadius> {
+        self.max_contact_radius_near(kinetic_energy, tolerance, None)
+    }
+
+    /// [`normalized::max_contact_radius_near`] in physical units.
+    fn max_contact_radius_near(
+        &self,
+        kinetic_energy: f64,
+        tolerance: f64,
+        near: Option<f64>,
+    ) -> Result<MaxContactRadius> {
         let k = validate::positive("kinetic_energy", kinetic_energy)?;
         let k_hat = positive_output(MODEL, "normalized kinetic energy", k / self.scales.energy)?;
-        let mut m = normalized::max_contact_radius(k_hat, tolerance)?;
+        let near = near.map(|a| a / self.scales.contact_radius);
+        let mut m = normalized::max_contact_radius_near(k_hat, tolerance, near)?;
         m.contact_radius = finite_output(
             MODEL,
             "maximum contact radius",

@@ -487,7 +487,7 @@ pub(crate) fn calibrate_damping(
         .target
         .viscosity
         .or(s.scene.sphere.viscosity)
-        .map(|eta| format!("; for comparison, the Kuwabara-Kono value of a Kelvin-Voigt half-space of viscosity eta = {eta:e} Pa s on a rigid partner would be 8 eta/m* = {:.6e} (seed 000 (5.66))", 8.0 * eta / m))
+        .map(|eta| format!("; for comparison, the Kuwabara-Kono value of a Kelvin-Voigt half-space of viscosity eta = {eta:e} Pa s on a rigid partner would be 8 eta/m* = {:.6e} (Willert 2020, eq. (5.66))", 8.0 * eta / m))
         .unwrap_or_default();
     let parameter = Parameter {
         name: "eta_n0".into(),

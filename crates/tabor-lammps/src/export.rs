@@ -7,9 +7,7 @@ use crate::calibrate::{
     calibrate_adhesion, calibrate_damping, lammps_sticking_velocity, setup, undamped_model, Setup,
 };
 use crate::fragment::{commands, keywords};
-use crate::friction::{
-    friction_keywords, friction_limits, null_stiffness_fits, scene_friction, FRICTIONLESS,
-};
+use crate::friction::{friction_limits, null_stiffness_fits, scene_friction, FRICTIONLESS};
 use crate::impact::STICKING_TOLERANCE;
 use crate::law::GranularModel;
 use crate::report::{
@@ -75,8 +73,7 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
     limits.extend(verification.limits);
     let friction = scene_friction(scene)?;
     let friction_kw = friction.as_ref().map(|f| {
-        friction_keywords(
-            f,
+        f.lammps_keywords(
             s.geometry == crate::report::Geometry::Pair
                 && null_stiffness_fits(scene, f, s.e_lammps, s.nu),
         )

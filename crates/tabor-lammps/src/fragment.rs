@@ -16,7 +16,7 @@ pub fn model_keywords(m: &GranularModel) -> String {
 }
 
 /// The model keywords with the tangential, rolling and twisting keywords `sub`
-/// (`crate::friction::friction_keywords`, or [`FRICTIONLESS`]).
+/// (`tabor_tangential::Friction::lammps_keywords`, or [`FRICTIONLESS`]).
 pub(crate) fn keywords(m: &GranularModel, sub: &str) -> String {
     let normal = match m.normal {
         NormalModel::Hooke { stiffness } => {

@@ -1,65 +1,15 @@
 //! The scene's `[friction]` as LAMMPS keywords: `pair granular`'s tangential,
 //! rolling and twisting sub-models (`tangential mindlin NULL x_γ,t μ rolling sds k γ
-//! μ twisting marshall`), the same keywords for `pair_style tabor` (which reads
-//! them with `pair granular`'s syntax), and what the export leaves out of them.
+//! μ twisting marshall`, written by `tabor_tangential::Friction::lammps_keywords`),
+//! the same keywords for `pair_style tabor` (which reads them with `pair
+//! granular`'s syntax), and what the export leaves out of them.
 
 use crate::report::{model_err, ExportError, Limit};
 use tabor_scene::Scene;
-use tabor_tangential::{Friction, TangentialModel, Twisting};
+use tabor_tangential::{Friction, TangentialModel};
 
 /// The sub-model keywords of a frictionless central impact.
 pub const FRICTIONLESS: &str = "tangential linear_nohistory 0.0 0.0";
-
-fn num(x: f64) -> String {
-    format!("{x:.10e}")
-}
-
-/// `tangential MODEL k_t|NULL x_γ,t μ [rolling sds k γ μ] [twisting marshall|sds k γ
-/// μ]` (LAMMPS `pair granular`); `null` writes the Mindlin stiffness as `NULL`
-/// (LAMMPS then computes 8G* itself).
-pub fn friction_keywords(f: &Friction, null: bool) -> String {
-    let t = &f.tangential;
-    let model = match t.model {
-        TangentialModel::Mindlin => "mindlin",
-        TangentialModel::MindlinRescale => "mindlin_rescale",
-        TangentialModel::LinearHistory => "linear_history",
-    };
-    let mut s = format!(
-        "tangential {model} {} {} {}",
-        if null {
-            "NULL".into()
-        } else {
-            num(t.stiffness)
-        },
-        t.damping_ratio,
-        t.coefficient
-    );
-    if let Some(r) = &f.rolling {
-        s += &format!(
-            " rolling sds {} {} {}",
-            num(r.stiffness),
-            num(r.damping),
-            r.coefficient
-        );
-    }
-    match &f.twisting {
-        Some(Twisting::Marshall) => s += " twisting marshall",
-        Some(Twisting::Sds {
-            stiffness,
-            damping,
-            coefficient,
-        }) => {
-            s += &format!(
-                " twisting sds {} {} {}",
-                num(*stiffness),
-                num(*damping),
-                num(*coefficient)
-            )
-        }
-        None => {}
-    }
-    s
-}
 
 /// Whether LAMMPS's `mindlin NULL` gives the scene's Mindlin stiffness 8G*, when
 /// it computes G* from the modulus `e` and Poisson ratio `nu` of one material:

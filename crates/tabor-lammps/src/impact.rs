@@ -8,14 +8,30 @@ use tabor_numerics::quadrature::integrate_smooth;
 use tabor_numerics::QuadTolerance;
 use tabor_restitution::{sticking_velocity, EnergyLoss, ImpactModel, Result, StickingMethod};
 
-/// The relative tolerance of the sticking velocities of LAMMPS models.
-pub const STICKING_TOLERANCE: f64 = 1e-10;
+/// The relative tolerance of the sticking velocities of LAMMPS models: the
+/// workspace's default for sticking-velocity searches
+/// (`tabor_numerics::tolerance::ACCURACY`, 1e-10).
+pub const STICKING_TOLERANCE: f64 = tabor_numerics::tolerance::ACCURACY;
 
 /// The excess, as a fraction of m v²/2, that a sticking impact reports beyond its
 /// escape energy, so that g(v) = 1 − 2W/(m v²) is negative wherever the bodies
 /// stick (the search needs a sign change); far below the resolution of g near the
 /// root, where g ∝ (v − v_c)/v_c.
 const STICK_EXCESS: f64 = 1e-14;
+
+impl GranularModel {
+    /// Simulates a central impact at relative normal speed `speed` (m/s) with this
+    /// model: the restitution LAMMPS produces in the limit of a small time step
+    /// ([`LammpsImpact::simulate`]).
+    pub fn impact(
+        &self,
+        effective_radius: f64,
+        effective_mass: f64,
+        speed: f64,
+    ) -> Result<ImpactSimulation> {
+        LammpsImpact::new(*self, effective_radius, effective_mass)?.simulate(speed)
+    }
+}
 
 /// A [`GranularModel`] between bodies of effective radius R and reduced mass m.
 #[derive(Clone, Debug)]
@@ -29,7 +45,8 @@ pub struct LammpsImpact {
 impl LammpsImpact {
     /// The impacts of `model` for effective radius `effective_radius` (m) and
     /// reduced mass `effective_mass` (kg), integrated by tabor's simulator at its
-    /// default tolerance (relative 1e-11): what LAMMPS produces in the limit of a
+    /// default tolerance (`tabor_numerics::tolerance::ODE_TOLERANCE`, relative
+    /// 1e-11): what LAMMPS produces in the limit of a
     /// small time step. The sticking-velocity search starts at 1 m/s (see
     /// [`LammpsImpact::with_speed_scale`]).
     pub fn new(model: GranularModel, effective_radius: f64, effective_mass: f64) -> Result<Self> {

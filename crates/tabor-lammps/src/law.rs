@@ -11,7 +11,7 @@
 
 use serde::Serialize;
 use std::f64::consts::PI;
-use tabor_dynamics::{BranchChange, ForceLaw, ImpactSimulation};
+use tabor_dynamics::{BranchChange, ForceLaw};
 use tabor_jkr::{normalized, JkrScales};
 use tabor_restitution::validate::{self, non_negative, positive};
 use tabor_restitution::{Error, Result};
@@ -302,18 +302,6 @@ impl GranularModel {
             length_scale: 1.0,
             force_scale: 1.0,
         })
-    }
-
-    /// Simulates a central impact at relative normal speed `speed` (m/s) with this
-    /// model: the restitution LAMMPS produces in the limit of a small time step
-    /// ([`crate::LammpsImpact::simulate`]).
-    pub fn impact(
-        &self,
-        effective_radius: f64,
-        effective_mass: f64,
-        speed: f64,
-    ) -> Result<ImpactSimulation> {
-        crate::impact::LammpsImpact::new(*self, effective_radius, effective_mass)?.simulate(speed)
     }
 }
 

@@ -40,7 +40,7 @@ pub use calibrate::{effective_work_of_adhesion, load_controlled_loss, small_stra
 pub use check::{check, Check, CheckPoint};
 pub use export::export;
 pub use fragment::model_keywords;
-pub use friction::{friction_keywords, FRICTIONLESS};
+pub use friction::FRICTIONLESS;
 pub use impact::{LammpsImpact, STICKING_TOLERANCE};
 pub use law::{
     coeff_restitution_alpha, jkr_pulloff_distance, tsuji_alpha, DampingModel, GranularModel,

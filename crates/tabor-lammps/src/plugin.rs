@@ -2,7 +2,7 @@
 //! `integrations/lammps/plugin`, which evaluates tabor's force laws themselves
 //! (through `tabor-ffi`) instead of LAMMPS's `jkr` with an effective γ.
 
-use crate::friction::{friction_keywords, null_stiffness_fits, scene_friction};
+use crate::friction::{null_stiffness_fits, scene_friction};
 use crate::report::{ExportError, Geometry};
 use serde::Serialize;
 use std::fmt::Display;
@@ -291,7 +291,7 @@ pub fn export_plugin(
             } else {
                 String::new()
             },
-            friction_keywords(f, null)
+            f.lammps_keywords(null)
         )
     });
     if let Some(k) = &friction_kw {

@@ -177,6 +177,44 @@ fn sin_cos(theta: f64) -> (f64, f64) {
     }
 }
 
+/// `(dd̂/dθ, d²d̂/dθ²)` on the contact branch: the slope of [`contact_state`] and
+/// its derivative, for Newton's method on the pull-off condition dd̂/dθ = 0.
+///
+/// Differentiating `α b̂² + β b̂ = 1` twice (α = 3ΛP/π, β = 32Λ²Q/π², P' = 4θ sin θ
+/// cos θ, P'' = 4 sin θ cos θ + 4θ cos 2θ, Q' = θ cos θ, Q'' = cos θ − θ sin θ)
+/// gives b̂'' from b̂'; then `d̂'' = 6(b̂'² + b̂b̂'')cos²θ − 24 b̂b̂' sin θ cos θ
+/// − 6b̂² cos 2θ − (16Λ/π)(b̂'' sin θ + 2b̂' cos θ − b̂ sin θ)`.
+pub(crate) fn depth_slope_and_curvature(lambda: f64, theta: f64) -> (f64, f64) {
+    let (s, c) = sin_cos(theta);
+    let p = p_of_theta_with(theta, s, c);
+    let q = q_of_theta_with(theta, s, c);
+    let k_alpha = 3.0 * lambda / PI;
+    let k_beta = 32.0 * lambda * lambda / (PI * PI);
+    let (alpha, beta) = (k_alpha * p, k_beta * q);
+    let b = 2.0 / (beta + (beta * beta + 4.0 * alpha).sqrt());
+    let cos2 = c * c - s * s;
+    let (dalpha, dbeta) = (k_alpha * 4.0 * theta * s * c, k_beta * theta * c);
+    let (ddalpha, ddbeta) = (
+        k_alpha * 4.0 * (s * c + theta * cos2),
+        k_beta * (c - theta * s),
+    );
+    let denominator = 2.0 * alpha * b + beta;
+    let db = -(dalpha * b * b + dbeta * b) / denominator;
+    let ddb = -(ddalpha * b * b
+        + 4.0 * dalpha * b * db
+        + 2.0 * alpha * db * db
+        + ddbeta * b
+        + 2.0 * dbeta * db)
+        / denominator;
+    let k = 16.0 * lambda / PI;
+    let slope = 6.0 * b * db * c * c - 6.0 * b * b * c * s - k * (db * s + b * c);
+    let curvature = 6.0 * (db * db + b * ddb) * c * c
+        - 24.0 * b * db * c * s
+        - 6.0 * b * b * cos2
+        - k * (ddb * s + 2.0 * db * c - b * s);
+    (slope, curvature)
+}
+
 /// An equilibrium state on the contact branch (â > 0), all quantities normalized; the
 /// branch parameter θ and the slope dd̂/dθ along it included (the states on the other
 /// branch are [`NoContactState`]; the JKR contacts' state is `tabor_jkr::JkrContactState`).
@@ -317,6 +355,30 @@ mod tests {
                         "Λ = {lambda}, θ = {theta}: {exact} vs {numeric}"
                     );
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn curvature_is_the_derivative_of_the_slope() {
+        // fourth-order central differences of the slope of `contact_state` (step
+        // 2e-4 θ, truncation and rounding both near 1e-12): agreement to 1e-9 of
+        // the curvature's scale; the slope itself is the same
+        for lambda in [0.7, 2.0, 1e3] {
+            for theta in [0.0005, 0.01, 0.3, 0.7, 1.2, 1.5] {
+                let h = 2e-4 * theta;
+                let slope_at = |t: f64| contact_state(lambda, t).depth_slope;
+                let numeric = (8.0 * (slope_at(theta + h) - slope_at(theta - h))
+                    - (slope_at(theta + 2.0 * h) - slope_at(theta - 2.0 * h)))
+                    / (12.0 * h);
+                let (slope, curvature) = depth_slope_and_curvature(lambda, theta);
+                let state = contact_state(lambda, theta);
+                assert!((slope - state.depth_slope).abs() <= 1e-14 * slope.abs().max(1.0));
+                let scale = curvature.abs().max(state.depth_slope.abs() / theta);
+                assert!(
+                    (curvature - numeric).abs() <= 1e-9 * scale,
+                    "Λ = {lambda}, θ = {theta}: {curvature} vs {numeric}"
+                );
             }
         }
     }

@@ -106,6 +106,31 @@ impl MaugisDugdaleForceLaw {
         )
     }
 
+    /// The pull-off force of the impact (N, a magnitude): the most tensile force
+    /// on the equilibrium branch the impact unloads along, from the snap-off depth
+    /// inwards (Maugis 1992, J. Colloid Interface Sci. 150, 243: `(3/2)π w R` as
+    /// Λ → ∞ (JKR), `2π w R` as Λ → 0 (DMT)). The branch is searched over
+    /// `d̂ = d̂_off + L x²`, `0 ≤ x ≤ 8` (`L = max(1/Λ, 1)`, the depth the adhesive
+    /// features span), on a grid of 4096 cells refined by golden-section search
+    /// to 10⁻¹⁴ in x (`tabor_numerics::minimize::grid_then_golden`; the branch
+    /// has a kink where the no-contact branch meets the contact branch). Used as
+    /// `F_pulloff` of the friction models' Coulomb limit by the scene's oblique
+    /// impact and by the LAMMPS plugin alike.
+    pub fn pull_off_force(&self) -> Result<f64> {
+        let (_, pull_off) = self.jump_in_and_pull_off_depths();
+        let step = (1.0 / self.path.lambda).max(1.0) * self.scales.depth;
+        let force = |x: f64| -> Result<f64> {
+            let d = pull_off + x * x * step;
+            // exactly at the junction, rounding can leave the contact-branch root
+            // unbracketed: the state a hair shallower is the same
+            self.state(d)
+                .or_else(|_| self.state(d - 1e-12 * step))
+                .map(|s| s.force * self.scales.force)
+        };
+        let min = tabor_numerics::minimize::grid_then_golden(force, 0.0, 8.0, 4096, 1e-14)?;
+        Ok(-min.value)
+    }
+
     fn state(&self, overlap: f64) -> Result<crate::impact::PathState> {
         // clamp trial points beyond the snap-off to the snap-off state
         let d = (overlap / self.scales.depth).max(self.path.pull_off.depth);

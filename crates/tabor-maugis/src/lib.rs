@@ -74,9 +74,14 @@
 //! - [`units`]: scales and conversions into Λ from σ0, h, Maugis' λ, Tabor's μ;
 //! - [`MaugisDugdaleImpact`]: the SI front, an `ImpactModel` (restitution and
 //!   sticking velocity through `tabor-restitution`);
-//! - [`trace_impact`], [`equilibrium_state`]: the curve F̂(d̂) along the impact.
+//! - [`trace_impact`], [`equilibrium_state`]: the curve F̂(d̂) along the impact;
+//! - [`maugis_curve_point`], [`contact_state_at_radius`]: the equilibrium curve at a
+//!   given contact radius (in Maugis' units, as `Adhesion` evaluates it);
+//!   [`MaugisDugdaleSphere`] and [`dmt_curve_point`]: the curve and its DMT limit
+//!   in SI units ([`CurveModel`]: the menu of these curves and JKR's).
 
 pub mod branch;
+mod curve;
 mod dynamics;
 mod fast;
 mod impact;
@@ -84,6 +89,10 @@ mod model;
 mod trace;
 pub mod units;
 
+pub use curve::{
+    contact_state_at_radius, dmt_curve_point, maugis_curve_point, CurveModel, MaugisCurvePoint,
+    MaugisDugdaleSphere, SphereCurvePoint, MIN_MAUGIS_PARAMETER,
+};
 pub use dynamics::MaugisDugdaleForceLaw;
 pub use fast::{fast_tier_pieces, loss_over_jkr_fast, prepare_fast_tier, FAST_TIER_RELATIVE_ERROR};
 pub use impact::{

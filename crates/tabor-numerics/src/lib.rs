@@ -46,7 +46,7 @@ pub use ode::rosenbrock;
 
 pub use cost::Cost;
 pub use error::NumericsError;
-pub use quadrature::{GaussLegendre, Integral, QuadTolerance};
+pub use quadrature::{GaussLegendre, GaussLegendrePair, Integral, QuadTolerance};
 pub use root_finding::{BracketExpansion, Root, RootTolerance};
 
 /// Result type of this crate.

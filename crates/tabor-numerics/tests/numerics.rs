@@ -5,7 +5,7 @@ use approx::assert_relative_eq;
 use proptest::prelude::*;
 use std::f64::consts::{FRAC_PI_2, PI};
 use tabor_numerics::quadrature::{
-    integrate_singular, integrate_singular_by_distance, integrate_smooth,
+    integrate_singular, integrate_singular_by_distance, integrate_smooth, GaussLegendrePair,
 };
 use tabor_numerics::root_finding::{brent, brent_expanding, expand_bracket, newton_safeguarded};
 use tabor_numerics::special::{
@@ -123,6 +123,47 @@ fn gauss_legendre_known_rules() {
         let v = g.integrate(|x| x.powi(p), 0.0, 1.0);
         assert_relative_eq!(v, 1.0 / (p as f64 + 1.0), max_relative = 1e-13);
     }
+}
+
+#[test]
+fn gauss_legendre_pair_value_and_estimate() {
+    let pair = GaussLegendrePair::new(12, 16).unwrap();
+    // both rules exact to degree 23: estimate 0; degree 24..31 only the higher one
+    for p in 0..=31 {
+        let i = pair.integrate(|x| x.powi(p), 0.0, 1.0).unwrap();
+        let exact = 1.0 / (f64::from(p) + 1.0);
+        assert_relative_eq!(i.value, exact, max_relative = 2e-15);
+        assert_eq!(i.evaluations, 28);
+        if p <= 23 {
+            assert!(i.error_estimate <= 1e-15 * exact, "p = {p}: {i:?}");
+        } else {
+            assert!(i.error_estimate > 1e-13 * exact, "p = {p}: {i:?}");
+        }
+    }
+    // ∫_{-1}^{2} e^x dx = e² − e⁻¹: the estimate is the lower rule's error, which
+    // covers the higher rule's many times over
+    let exact = 2f64.exp() - (-1f64).exp();
+    let i = GaussLegendrePair::new(3, 5)
+        .unwrap()
+        .integrate(f64::exp, -1.0, 2.0)
+        .unwrap();
+    let low = GaussLegendre::new(3)
+        .unwrap()
+        .integrate(f64::exp, -1.0, 2.0);
+    assert_relative_eq!(i.error_estimate, (low - exact).abs(), max_relative = 1e-2);
+    assert!((i.value - exact).abs() < 1e-2 * i.error_estimate, "{i:?}");
+    // a pole at a node (the centre of the odd-point rule) is an error naming where
+    let e = GaussLegendrePair::new(2, 3)
+        .unwrap()
+        .integrate(|x| 1.0 / x, -1.0, 1.0)
+        .unwrap_err();
+    assert!(
+        matches!(e, NumericsError::NonFinite { at, .. } if at == 0.0),
+        "{e:?}"
+    );
+    assert!(pair.integrate(f64::exp, 0.0, f64::NAN).is_err());
+    assert!(GaussLegendrePair::new(16, 12).is_err());
+    assert!(GaussLegendrePair::new(0, 12).is_err());
 }
 
 proptest! {

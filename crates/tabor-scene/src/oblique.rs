@@ -1,143 +1,18 @@
-//! The oblique impact of a scene: the `[friction]` section, `[impact] angle` and
-//! the initial spins, and [`Scene::oblique`], the impact simulated with translation
-//! and rotation through the normal force law of the model the scene selects
-//! (`tabor_tangential::oblique`).
+//! The oblique impact of a scene: [`Scene::oblique`], the impact simulated with
+//! translation and rotation through the normal force law of the model the scene
+//! selects (`tabor_tangential::oblique`), with the friction, angle and spins that
+//! `friction.rs` validates.
 
 use crate::combination::{EffectKind, Rule};
 use crate::error::{impact_speed, SceneError};
-use crate::file::{FrictionFile, SceneFile, TwistingFile};
+use crate::friction::{check_angle, friction_of};
 use crate::models::AdhesiveModel;
 use crate::scene::Scene;
 use tabor_dynamics::{ForceLaw, SimulationSettings};
 use tabor_maugis::MaugisDugdaleForceLaw;
-use tabor_restitution::{validate, Error};
+use tabor_restitution::Error;
 use tabor_tangential::oblique::{Body, NormalContact, ObliqueImpact, ObliqueOutcome};
-use tabor_tangential::{
-    EffectiveShear, Friction, Rolling, Tangential, TangentialModel, Twisting, TwistingModel,
-};
-
-fn field_error(field: &str) -> impl Fn(Error) -> SceneError + '_ {
-    move |e| SceneError::field_model(field.to_string(), e)
-}
-
-/// The validated friction of scene data (`None` without a `[friction]` section),
-/// with the Mindlin stiffness `8 G*` from the bodies' materials unless
-/// `tangential_stiffness` is given.
-pub(crate) fn friction_of(data: &SceneFile) -> Result<Option<Friction>, SceneError> {
-    let Some(f) = &data.friction else {
-        return Ok(None);
-    };
-    let model = match &f.tangential {
-        None => TangentialModel::Mindlin,
-        Some(name) => name
-            .parse::<TangentialModel>()
-            .map_err(|e| SceneError::field("friction.tangential", e.to_string()))?,
-    };
-    let stiffness = match (model, f.tangential_stiffness) {
-        (_, Some(k)) => k,
-        (TangentialModel::LinearHistory, None) => {
-            return Err(SceneError::field(
-                "friction.tangential_stiffness",
-                "is required for linear_history (N/m)",
-            ))
-        }
-        (_, None) => 8.0 * shear_of(data)?.modulus(),
-    };
-    let tangential = Tangential::new(
-        model,
-        stiffness,
-        f.tangential_damping.unwrap_or(0.0),
-        f.coefficient,
-    )
-    .map_err(|e| friction_field(f, e))?;
-    let mut friction = Friction::sliding(tangential);
-    if let Some(r) = &f.rolling {
-        friction = friction.with_rolling(
-            Rolling::sds(r.stiffness, r.damping.unwrap_or(0.0), r.coefficient)
-                .map_err(field_error("friction.rolling"))?,
-        );
-    }
-    friction.twisting = match &f.twisting {
-        None => None,
-        Some(TwistingFile::Name(name)) => {
-            match name
-                .parse::<TwistingModel>()
-                .map_err(|e| SceneError::field("friction.twisting", e.to_string()))?
-            {
-                TwistingModel::Marshall => Some(Twisting::Marshall),
-                TwistingModel::Sds => {
-                    return Err(SceneError::field(
-                        "friction.twisting",
-                        "sds needs { stiffness, damping, coefficient }",
-                    ))
-                }
-            }
-        }
-        Some(TwistingFile::Sds(t)) => Some(
-            Twisting::sds(t.stiffness, t.damping.unwrap_or(0.0), t.coefficient)
-                .map_err(field_error("friction.twisting"))?,
-        ),
-    };
-    Ok(Some(friction))
-}
-
-fn friction_field(f: &FrictionFile, e: Error) -> SceneError {
-    let field = match &e {
-        Error::InvalidParameter { parameter, .. } if *parameter == "coefficient" => {
-            "friction.coefficient"
-        }
-        Error::InvalidParameter { parameter, .. } if *parameter == "tangential_damping" => {
-            "friction.tangential_damping"
-        }
-        _ if f.tangential_stiffness.is_some() => "friction.tangential_stiffness",
-        _ => "friction",
-    };
-    SceneError::field_model(field, e)
-}
-
-/// G* of the two bodies (Mindlin), the flat of its own material.
-fn shear_of(data: &SceneFile) -> Result<EffectiveShear, SceneError> {
-    EffectiveShear::of_pair(
-        data.sphere.youngs_modulus,
-        data.sphere.poisson_ratio,
-        data.target.youngs_modulus,
-        data.target.poisson_ratio,
-    )
-    .map_err(field_error("friction"))
-}
-
-/// Checks the oblique keys of scene data (for the load-time validation).
-pub(crate) fn validate_data(data: &SceneFile) -> Result<(), SceneError> {
-    friction_of(data)?;
-    if let Some(i) = &data.impact {
-        if let Some(a) = i.angle {
-            check_angle(a).map_err(|e| SceneError::field("impact.angle", e.to_string()))?;
-        }
-        for (name, spin) in [
-            ("impact.sphere_spin", i.sphere_spin),
-            ("impact.target_spin", i.target_spin),
-        ] {
-            if let Some(s) = spin {
-                for v in s {
-                    validate::finite("spin", v).map_err(field_error(name))?;
-                }
-            }
-        }
-    }
-    Ok(())
-}
-
-fn check_angle(angle: f64) -> Result<f64, Error> {
-    if angle.is_finite() && (0.0..90.0).contains(&angle) {
-        Ok(angle)
-    } else {
-        Err(Error::invalid(
-            "angle",
-            angle,
-            "must be in [0, 90) degrees between the relative velocity and the line of centres",
-        ))
-    }
-}
+use tabor_tangential::Friction;
 
 impl Scene {
     /// The scene's friction (`[friction]`), validated; `None` without the section.
@@ -326,19 +201,8 @@ impl Scene {
     }
 }
 
-/// The most tensile force on the Maugis-Dugdale impact branch (N, as a magnitude):
-/// the minimum of F over the contact branch from snap-off to zero overlap, on 2000
-/// equal steps (a smooth minimum: relative error below 10⁻⁶).
+/// The Maugis-Dugdale pull-off force of the impact branch (N, a magnitude),
+/// `MaugisDugdaleForceLaw::pull_off_force`, the plugin's too.
 fn maugis_pull_off(md: &tabor_maugis::MaugisDugdaleImpact) -> Result<f64, Error> {
-    let mut law = MaugisDugdaleForceLaw::new(md)?;
-    law.begin_impact(1.0, 1.0)?;
-    let (jump_in, pull_off) = law.jump_in_and_pull_off_depths();
-    law.on_branch_end(jump_in, 0.0)?;
-    let mut most = 0.0f64;
-    let steps = 2000;
-    for i in 0..=steps {
-        let d = pull_off + (0.0 - pull_off) * i as f64 / steps as f64;
-        most = most.min(law.force(d, 0.0)?);
-    }
-    Ok(-most)
+    MaugisDugdaleForceLaw::new(md)?.pull_off_force()
 }

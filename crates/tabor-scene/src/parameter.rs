@@ -21,6 +21,16 @@ pub enum SweepParameter {
 }
 
 impl SweepParameter {
+    /// Every parameter, in the order of the help texts.
+    pub const ALL: [SweepParameter; 6] = [
+        SweepParameter::Speed,
+        SweepParameter::SphereRadius,
+        SweepParameter::WorkOfAdhesion,
+        SweepParameter::TaborParameter,
+        SweepParameter::YieldStress,
+        SweepParameter::Angle,
+    ];
+
     /// The parameter named as on the command line (`speed`, `sphere-radius`,
     /// `work-of-adhesion`, `tabor-parameter`, `yield-stress`, `angle`).
     pub fn from_name(name: &str) -> Option<Self> {

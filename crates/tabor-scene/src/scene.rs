@@ -53,7 +53,7 @@ impl Scene {
     /// Validates scene data (from a file or the [`SceneBuilder`](crate::SceneBuilder)).
     pub fn from_data(data: SceneFile) -> Result<Scene, SceneError> {
         let inputs = Inputs::validate(&data)?;
-        crate::oblique::validate_data(&data)?;
+        crate::friction::validate_data(&data)?;
         let speed = match data.impact.as_ref().and_then(|i| i.speed) {
             None => None,
             Some(v) => Some(validate::positive("speed", v).map_err(in_field("impact", "speed"))?),

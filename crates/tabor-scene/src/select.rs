@@ -31,6 +31,10 @@ impl Selection {
     }
 }
 
+/// Sweeps shorter than this simulate every point (a speed table costs about 150
+/// simulations).
+pub(crate) const SPEED_TABLE_MIN_POINTS: usize = 500;
+
 /// A scene's models, built once from its inputs, and its sticking velocity,
 /// computed on first use and kept.
 pub(crate) struct Built {
@@ -113,6 +117,48 @@ impl<'a> Prepared<'a> {
             source,
             built: cache.get(inputs).map_err(|e| located(source, e))?,
         })
+    }
+
+    /// For a sweep over `speeds`: this scene with its coupled viscous-adhesive
+    /// model answering from a speed table certified against its simulation
+    /// (`tabor_viscoadhesive::table`) over the sweep's range (sticking below the
+    /// sticking velocity, the tabulated loss above), and its sticking velocity
+    /// the one found without the table. Unchanged
+    /// when the scene has no such model, the sweep is too short for a table to pay
+    /// ([`SPEED_TABLE_MIN_POINTS`]) or the table cannot be built or certified.
+    pub(crate) fn with_speed_table(self, speeds: &[f64]) -> Self {
+        let Some(model) = self.models().viscous_adhesive.as_ref() else {
+            return self;
+        };
+        let valid = speeds.iter().copied().filter(|v| v.is_finite() && *v > 0.0);
+        let upper = valid.clone().fold(0.0, f64::max);
+        let lower = valid.fold(f64::INFINITY, f64::min);
+        let sticking = match self.sticking() {
+            Ok(s) if speeds.len() >= SPEED_TABLE_MIN_POINTS && upper > lower => s,
+            _ => return self,
+        };
+        let velocity = match sticking.0 {
+            Sticking::Below { velocity } => Some(velocity),
+            Sticking::Never => None,
+            Sticking::UpToLimit { .. } => return self,
+        };
+        let upper = upper.min(model.small_strain_limit());
+        let (Ok(tabled), Ok(mut models)) = (
+            model.clone().with_speed_table(lower, upper, velocity),
+            Models::build(self.inputs()),
+        ) else {
+            return self;
+        };
+        models.viscous_adhesive = Some(tabled);
+        let built = Built {
+            inputs: self.inputs().clone(),
+            models,
+            sticking: OnceLock::from(Ok(sticking)),
+        };
+        Prepared {
+            built: Arc::new(built),
+            ..self
+        }
     }
 
     /// The validated inputs the models were built from.

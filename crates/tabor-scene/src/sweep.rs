@@ -21,7 +21,9 @@ where
     if parameter == SweepParameter::Speed {
         // one scene: its models and its sticking velocity are built once
         let prepared = match scene.prepared() {
-            Ok(p) => p,
+            // a long sweep of a coupled viscous-adhesive scene answers from a
+            // certified speed table (tabor_viscoadhesive::table)
+            Ok(p) => p.with_speed_table(values),
             Err(e) => return values.iter().map(|_| Err(e.clone())).collect(),
         };
         return values

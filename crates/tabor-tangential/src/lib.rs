@@ -23,7 +23,7 @@ pub mod oblique;
 pub mod step;
 
 pub use model::{
-    critical_force, EffectiveShear, Friction, Rolling, RollingModel, Tangential, TangentialModel,
-    Twisting, TwistingModel, UnknownModel,
+    critical_force, lammps_number, EffectiveShear, Friction, Rolling, RollingModel, Tangential,
+    TangentialModel, Twisting, TwistingModel,
 };
 pub use step::{ContactForces, ContactHistory, ContactKinematics, NormalResponse};

@@ -2,57 +2,7 @@
 //! with the names and coefficients of LAMMPS's `pair_style granular`.
 
 use serde::Serialize;
-use tabor_restitution::{validate, Error, Result};
-
-/// A name that is not on a menu.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("unknown {menu} model '{given}' (expected one of: {expected})")]
-pub struct UnknownModel {
-    /// Which menu (`tangential`, `rolling`, `twisting`).
-    pub menu: &'static str,
-    /// What was given.
-    pub given: String,
-    /// The names on the menu, comma separated.
-    pub expected: String,
-}
-
-macro_rules! menu {
-    ($ty:ident, $menu:literal, [$($variant:ident => $name:literal),+ $(,)?]) => {
-        impl $ty {
-            /// Every model of this menu, in the order of the LAMMPS documentation.
-            pub const ALL: [$ty; menu!(@count $($variant)+)] = [$($ty::$variant),+];
-
-            /// The model's name as LAMMPS's `pair_style granular` (and a scene file)
-            /// spells it.
-            pub fn as_str(self) -> &'static str {
-                match self {
-                    $($ty::$variant => $name),+
-                }
-            }
-        }
-
-        impl std::fmt::Display for $ty {
-            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str(self.as_str())
-            }
-        }
-
-        impl std::str::FromStr for $ty {
-            type Err = UnknownModel;
-            fn from_str(s: &str) -> std::result::Result<Self, UnknownModel> {
-                $ty::ALL
-                    .into_iter()
-                    .find(|m| m.as_str() == s.trim())
-                    .ok_or_else(|| UnknownModel {
-                        menu: $menu,
-                        given: s.to_string(),
-                        expected: $ty::ALL.map(|m| m.as_str()).join(", "),
-                    })
-            }
-        }
-    };
-    (@count $($v:ident)+) => { 0 $(+ { let _ = stringify!($v); 1 })+ };
-}
+use tabor_restitution::{validate, Result};
 
 /// The tangential (sliding friction) model, LAMMPS `pair granular` keyword
 /// `tangential`. Every one is a spring in the tangent plane with a Coulomb limit
@@ -75,11 +25,12 @@ pub enum TangentialModel {
     LinearHistory,
 }
 
-menu!(TangentialModel, "tangential", [
-    LinearHistory => "linear_history",
-    Mindlin => "mindlin",
-    MindlinRescale => "mindlin_rescale",
-]);
+tabor_restitution::menu! {
+    TangentialModel, "tangential model";
+    LinearHistory => "linear_history", "a constant spring k_t (N/m) on the accumulated tangential displacement (Cundall & Strack 1979)";
+    Mindlin => "mindlin", "the spring k_t a, k_t = 8 G*, on the accumulated tangential displacement (Mindlin 1949)";
+    MindlinRescale => "mindlin_rescale", "mindlin, the stored displacement scaled by a/a_old as the contact shrinks";
+}
 
 /// The rolling resistance model, LAMMPS keyword `rolling`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize)]
@@ -91,7 +42,10 @@ pub enum RollingModel {
     Sds,
 }
 
-menu!(RollingModel, "rolling", [Sds => "sds"]);
+tabor_restitution::menu! {
+    RollingModel, "rolling model";
+    Sds => "sds", "spring-dashpot-slider on the rolling displacement (Luding 2008)";
+}
 
 /// The twisting resistance model, LAMMPS keyword `twisting`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize)]
@@ -107,7 +61,11 @@ pub enum TwistingModel {
     Sds,
 }
 
-menu!(TwistingModel, "twisting", [Marshall => "marshall", Sds => "sds"]);
+tabor_restitution::menu! {
+    TwistingModel, "twisting model";
+    Marshall => "marshall", "stiffness k_t a²/2, damping η_t a²/2, limit (2/3) μ a F_n0 (Marshall 2009, eq. 32)";
+    Sds => "sds", "spring-dashpot-slider with its own stiffness, damping and coefficient";
+}
 
 /// The tangential contact: model, stiffness, damping ratio and friction
 /// coefficient (LAMMPS `tangential <model> k_t x_γ,t μ_s`).
@@ -317,19 +275,34 @@ impl Friction {
         Ok(())
     }
 
-    /// The LAMMPS `pair_coeff` sub-model keywords of this friction, e.g.
-    /// `tangential mindlin 1.2e10 0 0.3 rolling sds 50 0 0.1 twisting marshall`
-    /// (the stiffness written out, so that it holds for any normal model).
-    pub fn lammps_keywords(&self) -> String {
+    /// The LAMMPS `pair_coeff` sub-model keywords of this friction (`pair
+    /// granular`'s syntax, which `pair_style tabor` reads too), e.g.
+    /// `tangential mindlin 1.8e10 0 0.3 rolling sds 50 0 0.1 twisting marshall`.
+    /// `null_stiffness` writes the Mindlin stiffness as `NULL` (LAMMPS then
+    /// computes `8 G*` from the materials itself; only for `mindlin` and
+    /// `mindlin_rescale`), else the stiffness is written out, so that it holds for
+    /// any normal model. Every number is written so that it reads back exactly
+    /// ([`lammps_number`]).
+    pub fn lammps_keywords(&self, null_stiffness: bool) -> String {
         let t = &self.tangential;
+        let stiffness = if null_stiffness && t.model != TangentialModel::LinearHistory {
+            "NULL".to_string()
+        } else {
+            lammps_number(t.stiffness)
+        };
         let mut s = format!(
-            "tangential {} {:e} {} {}",
-            t.model, t.stiffness, t.damping_ratio, t.coefficient
+            "tangential {} {stiffness} {} {}",
+            t.model,
+            lammps_number(t.damping_ratio),
+            lammps_number(t.coefficient)
         );
         if let Some(r) = &self.rolling {
             s += &format!(
                 " rolling {} {} {} {}",
-                r.model, r.stiffness, r.damping, r.coefficient
+                r.model,
+                lammps_number(r.stiffness),
+                lammps_number(r.damping),
+                lammps_number(r.coefficient)
             );
         }
         match self.twisting {
@@ -338,10 +311,28 @@ impl Friction {
                 stiffness,
                 damping,
                 coefficient,
-            }) => s += &format!(" twisting sds {stiffness} {damping} {coefficient}"),
+            }) => {
+                s += &format!(
+                    " twisting sds {} {} {}",
+                    lammps_number(stiffness),
+                    lammps_number(damping),
+                    lammps_number(coefficient)
+                )
+            }
             None => {}
         }
         s
+    }
+}
+
+/// A number for a LAMMPS input line that reads back to the same `f64`: the
+/// shortest round-trip form, plain (`50`, `0.3`, `0`) between 10⁻³ and 10⁷, else
+/// with an exponent (`1.8461538461538462e10`, `1e-9`).
+pub fn lammps_number(x: f64) -> String {
+    if x == 0.0 || (1e-3..1e7).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
     }
 }
 
@@ -360,13 +351,5 @@ pub fn critical_force(elastic_force: f64, total_force: f64, pull_off_force: f64)
         (elastic_force + 2.0 * pull_off_force).abs()
     } else {
         total_force.abs()
-    }
-}
-
-#[allow(dead_code)]
-pub(crate) fn invalid_friction(message: String) -> Error {
-    Error::Model {
-        model: "friction",
-        message,
     }
 }

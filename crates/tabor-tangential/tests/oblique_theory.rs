@@ -177,3 +177,72 @@ fn pure_twist_decays_by_marshalls_limit() {
     assert_relative_eq!(out.losses.twisting, out.energy_loss, max_relative = 1e-7);
     assert!(out.energy_error < 1e-8, "{}", out.energy_error);
 }
+
+/// The stick limit against an independent integration. With a friction
+/// coefficient so large that the contact never slides (μ = 10⁸: it could slide
+/// only where `F_n < k_t a |ξ|/μ`, below 10⁻⁸ of the maximum overlap), a sphere
+/// on a flat with LAMMPS's `mindlin` obeys, with `c` the sliding velocity of the
+/// contact point and `ξ` the stored displacement,
+///
+/// `δ̈ = −(4/3) E* √R δ^{3/2}/m`, `ξ̇ = c`, `ċ = −8 G* √(R δ) ξ (1/m + R²/I)`
+///
+/// (the torque arm of a wall is R, so the normal motion is Hertz's, and the
+/// contact lasts `t_c = 2 (δ_m/v_n) (2/5) B(2/5, 1/2)`). Integrated here by
+/// classical Runge-Kutta on N = 4000 and 8000 equal steps over `t_c`; the library
+/// (Dormand-Prince with located events) must agree with the finer one within
+/// twice their difference plus 10⁻⁸ (its own tolerance, 10⁻⁹). Twice the
+/// difference bounds the fine run's error for any convergence order p ≥ 1 (it is
+/// diff/(2^p − 1)); `a ∝ √δ` at the ends makes p = 3/2 here, and Richardson's
+/// extrapolation at that order lands on the library's β (−1.0407103) to 10⁻⁹.
+/// The answer is linear in `c`, so β is the same at every angle: the stick limit
+/// MBF's curve tends to as Ψ → 0 (for LAMMPS's `mindlin` on this sphere: the
+/// contact point leaves in the direction it came, 4 % faster).
+#[test]
+fn stick_limit_matches_an_independent_integration() {
+    let (imp, mut law) = on_flat(1e8);
+    let shear = EffectiveShear::of_pair(E_Y, NU, E_Y, NU).unwrap().modulus();
+    let e_star = effective_modulus_flat();
+    let (m, inertia) = (imp.sphere.mass, imp.sphere.moment_of_inertia);
+    let v = 0.5;
+    let beta_rk4 = |alpha: f64, steps: usize| {
+        let (vn, c0) = (v * alpha.to_radians().cos(), v * alpha.to_radians().sin());
+        let delta_m = (15.0 * m * vn * vn / (16.0 * e_star * R.sqrt())).powf(0.4);
+        let b = tabor_numerics::special::beta(0.4, 0.5).unwrap();
+        let t_c = 2.0 * delta_m / vn * 0.4 * b;
+        let h = t_c / steps as f64;
+        // y = [δ, δ̇, ξ, c]
+        let rate = |y: [f64; 4]| {
+            let d = y[0].max(0.0);
+            [
+                y[1],
+                -4.0 / 3.0 * e_star * R.sqrt() * d.powf(1.5) / m,
+                y[3],
+                -8.0 * shear * (R * d).sqrt() * y[2] * (1.0 / m + R * R / inertia),
+            ]
+        };
+        let add = |y: [f64; 4], k: [f64; 4], s: f64| std::array::from_fn(|i| y[i] + s * k[i]);
+        let mut y = [0.0, vn, 0.0, c0];
+        for _ in 0..steps {
+            let k1 = rate(y);
+            let k2 = rate(add(y, k1, 0.5 * h));
+            let k3 = rate(add(y, k2, 0.5 * h));
+            let k4 = rate(add(y, k3, h));
+            y = std::array::from_fn(|i| {
+                y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i])
+            });
+        }
+        -y[3] / c0
+    };
+    for alpha in [5.0, 30.0] {
+        let (coarse, fine) = (beta_rk4(alpha, 4000), beta_rk4(alpha, 8000));
+        let out = imp.simulate(&mut law, v, alpha, &settings()).unwrap();
+        let ours = out.tangential_restitution.unwrap();
+        let tol = 2.0 * (coarse - fine).abs() + 1e-8;
+        assert!(
+            (ours - fine).abs() <= tol,
+            "α = {alpha}: library β = {ours}, RK4 {fine} (N = 8000), {coarse} (N = 4000), tol {tol:e}"
+        );
+        assert_eq!(out.slip_switches, 0, "α = {alpha}: the contact sticks");
+        assert!(out.energy_error < 1e-8, "{}", out.energy_error);
+    }
+}

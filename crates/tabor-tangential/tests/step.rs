@@ -7,8 +7,8 @@ use approx::assert_relative_eq;
 use nalgebra::Vector3;
 use tabor_tangential::step::rotate_into_plane;
 use tabor_tangential::{
-    critical_force, ContactHistory, ContactKinematics, EffectiveShear, Friction, NormalResponse,
-    Rolling, RollingModel, Tangential, TangentialModel, Twisting, TwistingModel,
+    critical_force, lammps_number, ContactHistory, ContactKinematics, EffectiveShear, Friction,
+    NormalResponse, Rolling, RollingModel, Tangential, TangentialModel, Twisting, TwistingModel,
 };
 
 const R: f64 = 1e-6;
@@ -294,7 +294,7 @@ fn menus_parse_their_own_names() {
     let err = "coulomb".parse::<TangentialModel>().unwrap_err();
     assert_eq!(
         err.to_string(),
-        "unknown tangential model 'coulomb' (expected one of: linear_history, mindlin, mindlin_rescale)"
+        "unknown tangential model \"coulomb\": expected \"linear_history\", \"mindlin\" or \"mindlin_rescale\""
     );
 }
 
@@ -304,9 +304,26 @@ fn lammps_keywords_spell_the_sub_models() {
         .with_rolling(Rolling::sds(50.0, 0.0, 0.1).unwrap())
         .with_twisting(Twisting::Marshall);
     assert_eq!(
-        f.lammps_keywords(),
+        f.lammps_keywords(false),
         "tangential mindlin 5e10 0 0.3 rolling sds 50 0 0.1 twisting marshall"
     );
+    assert_eq!(
+        f.lammps_keywords(true),
+        "tangential mindlin NULL 0 0.3 rolling sds 50 0 0.1 twisting marshall"
+    );
+    // linear_history has no NULL; an sds twist; every number reads back exactly
+    let k = 1.0 / 3.0 * 1e4;
+    let f =
+        Friction::sliding(Tangential::new(TangentialModel::LinearHistory, k, 0.5, 0.25).unwrap())
+            .with_twisting(Twisting::sds(1e-9, 0.0, 0.2).unwrap());
+    let line = f.lammps_keywords(true);
+    assert_eq!(
+        line,
+        format!("tangential linear_history {k} 0.5 0.25 twisting sds 1e-9 0 0.2")
+    );
+    for x in [k, 1.8461538461538462e10, 1e-15, 0.1, 123456.789, -2.5e-7] {
+        assert_eq!(lammps_number(x).parse::<f64>().unwrap(), x);
+    }
 }
 
 #[test]

@@ -15,7 +15,10 @@
 //! - [`ViscoadhesiveImpact`]: the model (E*, R, m, Δγ, [`Adhesion`], η_c, tolerance)
 //!   as a `tabor_restitution::ImpactModel` (loss `(1 − ε²) m v0²/2` from
 //!   `simulate_impact`), with the trajectory record and the comparison with the
-//!   superposition of the adhesive and the Kuwabara-Kono losses ([`Superposition`]).
+//!   superposition of the adhesive and the Kuwabara-Kono losses ([`Superposition`]);
+//! - [`SpeedTable`] (module [`table`]): the model's loss over a range of speeds,
+//!   interpolated from simulations and certified against them, for sweeps
+//!   ([`ViscoadhesiveImpact::with_speed_table`]).
 //!
 //! The derivation, the conventions (contact, separation, sticking) and the limits
 //! Δγ → 0 and η_c → 0 are in the crate's README.
@@ -23,9 +26,11 @@
 mod adhesive;
 mod law;
 mod model;
+pub mod table;
 
 pub use adhesive::AdhesiveForceLaw;
 pub use law::{SeparationPotential, ViscousDamping};
 pub use model::{Adhesion, AdhesiveImpact, Superposition, ViscoadhesiveImpact};
+pub use table::SpeedTable;
 pub use tabor_jkr::SeparationRule;
 pub use tabor_restitution::{Error, Result};

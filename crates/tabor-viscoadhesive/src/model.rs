@@ -4,7 +4,9 @@
 use crate::adhesive::{AdhesiveForceLaw, LawSpec};
 use crate::law::SeparationPotential;
 use crate::law::ViscousDamping;
+use crate::table::{SharedTable, SpeedTable};
 use serde::Serialize;
+use std::sync::Arc;
 use tabor_dynamics::{simulate_impact, ImpactSimulation, SimulationSettings};
 use tabor_jkr::{JkrImpact, JkrSphere, SeparationRule};
 use tabor_maugis::{MaugisContact, MaugisDugdaleForceLaw, MaugisDugdaleImpact};
@@ -83,6 +85,8 @@ pub struct ViscoadhesiveImpact {
     settings: SimulationSettings,
     adhesive: AdhesiveImpact,
     law: LawSpec,
+    /// The speed table answering inside its range (`with_speed_table`), if any.
+    table: SharedTable,
 }
 
 impl ViscoadhesiveImpact {
@@ -175,7 +179,31 @@ impl ViscoadhesiveImpact {
             settings,
             adhesive,
             law,
+            table: None,
         })
+    }
+
+    /// This model answering from a [`SpeedTable`] over `[lower, upper]` (m/s)
+    /// inside the table's range, by simulation outside it: for sweeps over many
+    /// speeds (`tabor_scene::sweep`). `sticking_velocity`, when known, starts the
+    /// rebound table and makes the speeds below it answer "sticks" after
+    /// certifying simulations. Fails when the table cannot be built or certified
+    /// (see [`SpeedTable::build`]).
+    pub fn with_speed_table(
+        mut self,
+        lower: f64,
+        upper: f64,
+        sticking_velocity: Option<f64>,
+    ) -> Result<Self> {
+        self.table = None;
+        let table = SpeedTable::build(&self, lower, upper, sticking_velocity)?;
+        self.table = Some(Arc::new(table));
+        Ok(self)
+    }
+
+    /// The speed table, if [`ViscoadhesiveImpact::with_speed_table`] built one.
+    pub fn speed_table(&self) -> Option<&SpeedTable> {
+        self.table.as_deref()
     }
 
     /// The JKR model of `sphere` (E*, R, Δγ) with separation rule `rule`, viscous
@@ -302,7 +330,14 @@ impl ViscoadhesiveImpact {
         let kinetic = 0.5 * self.effective_mass * v * v;
         let coupled = self.energy_loss(v)?.joules.min(kinetic);
         let adhesive = self.adhesive_energy_loss()?.joules;
-        let viscous = self.kuwabara_kono()?.energy_loss(v)?.joules;
+        let tabulated = self
+            .table
+            .as_ref()
+            .and_then(|t| t.viscous_loss(self.effective_mass, v));
+        let viscous = match tabulated {
+            Some(joules) => joules,
+            None => self.kuwabara_kono()?.energy_loss(v)?.joules,
+        };
         let sum = (adhesive + viscous).min(kinetic);
         let eps = |loss: f64| (1.0 - loss / kinetic).max(0.0).sqrt();
         Ok(Superposition {
@@ -368,6 +403,13 @@ impl ImpactModel for ViscoadhesiveImpact {
     /// that a sticking impact reports a loss above m v0²/2. Error estimate: the simulator's energy bookkeeping error plus
     /// `2 ε · tolerance` (both times m v0²/2). Seed 000 eq. (5.37) read backwards.
     fn energy_loss(&self, impact_speed: f64) -> Result<EnergyLoss> {
+        let tabulated = self
+            .table
+            .as_ref()
+            .and_then(|t| t.energy_loss(self.effective_mass, impact_speed));
+        if let Some(loss) = tabulated {
+            return Ok(loss);
+        }
         let sim = self.simulate(impact_speed, &self.settings)?;
         let kinetic = sim.kinetic_energy;
         let loss = if sim.sticks {

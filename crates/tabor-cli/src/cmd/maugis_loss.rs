@@ -25,7 +25,7 @@ Examples:\n  tabor maugis-loss --lambda 0.3 --lambda 4\n  tabor maugis-loss --ma
 tabor maugis-loss --from 0.01 --to 100 --points 50 --log"
 )]
 pub struct Args {
-    /// A Tabor parameter Λ = d_n/h, the seed's (repeatable)
+    /// Willert's (2020) Tabor parameter Λ = d_n/h (repeatable)
     #[arg(long = "lambda", allow_negative_numbers = true)]
     lambdas: Vec<f64>,
     /// Maugis' parameter λ (repeatable); converted to Λ = 0.6861 λ
@@ -161,6 +161,10 @@ fn lambdas(args: &Args) -> Result<(Vec<(f64, Origin)>, usize), String> {
     Ok((out, explicit))
 }
 
+/// The method of a fast-tier row: the bound of
+/// `tabor::maugis::FAST_TIER_RELATIVE_ERROR` (a test keeps the two equal).
+const FAST_METHOD: &str = "fast tier (Chebyshev interpolant, relative error < 1e-10)";
+
 fn row(args: &Args, (lambda, origin): (f64, Origin)) -> Result<Row, String> {
     Ok(if args.fast {
         let r = loss_over_jkr_fast(lambda).map_err(|e| origin.message(e))?;
@@ -170,7 +174,7 @@ fn row(args: &Args, (lambda, origin): (f64, Origin)) -> Result<Row, String> {
             loss: r * jkr_normalized_loss(),
             loss_over_jkr: r,
             error_estimate: None,
-            method: "fast tier (Chebyshev interpolant, relative error < 1e-10)",
+            method: FAST_METHOD,
         }
     } else {
         let w = normalized_loss(lambda, args.tolerance.0).map_err(|e| origin.message(e))?;
@@ -222,4 +226,15 @@ pub fn run(args: &Args) -> Outcome {
     }
     table.flush()?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::FAST_METHOD;
+
+    #[test]
+    fn the_fast_method_states_the_library_bound() {
+        let bound = format!("< {:e})", tabor::maugis::FAST_TIER_RELATIVE_ERROR);
+        assert!(FAST_METHOD.ends_with(&bound), "{FAST_METHOD} vs {bound}");
+    }
 }

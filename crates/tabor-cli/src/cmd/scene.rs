@@ -73,10 +73,10 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
             .speed
             .or(scene.speed)
             .ok_or_else(|| format!("{}: give --speed or [impact] speed", args.scene.display()))?;
+        if args.json {
+            return oblique_json(&scene, &args.scene, speed, angle);
+        }
         if let Some((central, o)) = oblique_at(&scene, &args.scene, speed, angle)? {
-            if args.json {
-                return oblique_json(&scene, &args.scene, speed, angle);
-            }
             let mut out = stdout();
             writeln!(out, "scene                  {}", central.scene)?;
             writeln!(
