@@ -229,6 +229,12 @@ fn trajectory_and_impact_agree_for_every_rule() {
             5.0,
         ), // superposition bound
         (bundled("silica_maugis_plastic.toml"), 4.0), // excess or its bound
+        (
+            scene(&format!(
+                "{steel}[adhesion]\nwork_of_adhesion = 0.5\nseparation = \"load-controlled\"\n"
+            )),
+            0.5,
+        ), // adhesive plastic excess
         (bundled("polymer_grains_viscoadhesive.toml"), 1.5), // viscous adhesive
         (
             scene(&format!(
@@ -240,14 +246,8 @@ fn trajectory_and_impact_agree_for_every_rule() {
     for (s, v) in &cases {
         seen.push(trajectory_agrees(s, *v, 1e-5));
     }
-    for rule in [
-        Rule::Elastic,
-        Rule::Single,
-        Rule::AdhesiveInterpolation,
-        Rule::SuperpositionBound,
-        Rule::ViscousAdhesive,
-        Rule::Superposition,
-    ] {
+    // every rule of the menu, so that a new rule cannot go without this check
+    for rule in Rule::ALL {
         assert!(seen.contains(&rule), "{rule:?} not covered: {seen:?}");
     }
 }
