@@ -126,9 +126,9 @@ impl EffectSet {
     }
 }
 
-/// How a set of effects is combined into one energy loss.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
+/// How a set of effects is combined into one energy loss. Serialized as its
+/// [`Rule::as_str`] name (the name `FromStr` reads and the text output prints).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Rule {
     /// No dissipative effect: the elastic impact, ε = 1 (5.5)-(5.12).
     Elastic,
@@ -173,6 +173,12 @@ tabor_restitution::menu! {
     Superposition => "superposition", "the sum of the effects' losses (5.109)";
     SuperpositionBound => "superposition-bound",
         "adhesion + plasticity where the adhesive interpolation model dissipates less: the superposition (5.109) as its lower bound";
+}
+
+impl Serialize for Rule {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(self.as_str())
+    }
 }
 
 impl Rule {
@@ -291,5 +297,26 @@ impl Combination {
             effects,
             source: rule.source(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+
+    #[test]
+    fn rules_serialize_as_the_names_they_are_read_by() {
+        // JSON gave "single" (serde's kebab-case) where the text output and FromStr
+        // say "single-effect".
+        for rule in Rule::ALL {
+            let json = serde_json::to_string(&rule).unwrap();
+            assert_eq!(json, format!("\"{}\"", rule.as_str()));
+            assert_eq!(rule.as_str().parse::<Rule>().unwrap(), rule);
+        }
+        assert_eq!(
+            serde_json::to_string(&Rule::Single).unwrap(),
+            "\"single-effect\""
+        );
     }
 }

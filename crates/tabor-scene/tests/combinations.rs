@@ -13,7 +13,7 @@ use tabor_plastic::{
 use tabor_restitution::{impact, restitution_from_loss, ImpactModel};
 use tabor_scene::{
     rule, AdhesionKind, EffectKind, EffectSet, Format, Outcome, PlasticityKind, Rule, Scene,
-    ViscoKind,
+    SweepParameter, ViscoKind,
 };
 use tabor_visco::contact::StandardMediumSphere;
 use tabor_visco::models::KelvinVoigtSphere;
@@ -805,4 +805,40 @@ fn coupled_viscous_adhesion_can_rebound_more_with_a_shorter_range() {
     let rise = short.0 - long.0;
     assert!(rise > 1e-5 && rise < 1e-3, "{rise}");
     assert!(rise > 1e3 * (long.1 + short.1));
+}
+
+#[test]
+fn the_viscous_adhesive_loss_is_continuous_at_lambda_1() {
+    // The reported "jump" at Λ1 (1.8e-7 in 1 − ε²) was the slope of the loss over
+    // the window Λ1(1 ± h) in which it was measured, not a discontinuity: the loss
+    // grows as Λ⁵ in case 1 ((5.44)), so 1 − ε² changes by ≈ 10 h (1 − ε²)_adh
+    // across the window. The one-sided limits, extrapolated linearly from
+    // Λ1(1 ± h) and Λ1(1 ± 2h), agree to the simulations' own error estimates.
+    // Two polymer grains (E = 2 MPa, ν = 0.49, R = 5 µm, Δγ = 0.04, h = 1 nm,
+    // η = 2e-4 Pa s on both: the viscous-adhesive rule with Maugis-Dugdale).
+    let body = "radius = 5e-6\ndensity = 970\nyoungs_modulus = 2e6\npoisson_ratio = 0.49\nviscosity = 2e-4";
+    let s = scene(&format!(
+        "accuracy = 1e-10\n[sphere]\n{body}\n[target]\n{body}\n[adhesion]\nwork_of_adhesion = 0.04\nrange = 1e-9\n"
+    ));
+    let l1 = tabor_maugis::LAMBDA_1;
+    let h = 1e-7;
+    let at = |f: f64| {
+        let o = s
+            .with_parameter(SweepParameter::TaborParameter, l1 * (1.0 + f))
+            .unwrap()
+            .restitution_with_error(0.5)
+            .unwrap();
+        (1.0 - o.0 * o.0, o.1)
+    };
+    let (lo1, e1) = at(-h);
+    let (lo2, e2) = at(-2.0 * h);
+    let (hi1, e3) = at(h);
+    let (hi2, e4) = at(2.0 * h);
+    let naive = (hi1 - lo1).abs();
+    let below = 2.0 * lo1 - lo2;
+    let above = 2.0 * hi1 - hi2;
+    let bound = 3.0 * (e1 + e2 + e3 + e4);
+    println!("naive {naive:.3e}, one-sided limits {below:.12} | {above:.12} (bound {bound:.1e})");
+    assert!(naive > 1e-7, "the window's slope: {naive}");
+    assert!((above - below).abs() <= bound, "{above} vs {below}");
 }
