@@ -7,7 +7,9 @@
 //! well the sphere falls through on its way in and climbs out of on its way back:
 //! the simulated restitution is then a small difference of two large energies and
 //! needs an integrator tolerance of about 1e-6 × (loss / well depth) to reach 1e-6.
-//! `small_lambda_needs_a_tighter_tolerance` shows that explicitly.
+//! `small_lambda_needs_a_tighter_tolerance` shows that explicitly; the property
+//! test therefore asks the integrator for 1e-13 below Λ = 0.5 (at the default 1e-11
+//! a draw at Λ = 0.217 near sticking was 1.8e-6 off).
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use proptest::prelude::*;
@@ -33,10 +35,26 @@ fn compare<L: tabor::dynamics::ForceLaw, M: ImpactModel>(
     model: &M,
     factor: f64,
 ) -> (f64, f64) {
+    compare_at(law, model, factor, None)
+}
+
+/// [`compare`] with the integrator's relative tolerance `tolerance` (absolute a
+/// hundredth of it) instead of the default.
+fn compare_at<L: tabor::dynamics::ForceLaw, M: ImpactModel>(
+    law: &mut L,
+    model: &M,
+    factor: f64,
+    tolerance: Option<f64>,
+) -> (f64, f64) {
     let vc = sticking_velocity(model, 1e-12).unwrap().speed;
     let v0 = factor * vc;
     let analytic = impact(model, v0).unwrap().restitution;
-    let sim = simulate_impact(law, model.effective_mass(), v0, &settings()).unwrap();
+    let mut s = settings();
+    if let Some(t) = tolerance {
+        s.tolerance.relative = t;
+        s.tolerance.absolute = t / 100.0;
+    }
+    let sim = simulate_impact(law, model.effective_mass(), v0, &s).unwrap();
     assert!(!sim.sticks);
     (sim.restitution, analytic)
 }
@@ -66,7 +84,13 @@ proptest! {
         let (e, r, w, l) = (10f64.powf(log_e), 10f64.powf(log_r), 10f64.powf(log_w), 10f64.powf(log_lambda));
         let model = MaugisDugdaleImpact::new(MaugisContact::new(JkrSphere::new(e, r, w).unwrap(), l).unwrap(), sphere_mass(r, density)).unwrap();
         let mut law = MaugisDugdaleForceLaw::new(&model).unwrap();
-        let (sim, analytic) = compare(&mut law, &model, factor);
+        // below Λ = 0.5 the loss is a small difference of the well's energies (see
+        // the module docs): the integrator is asked for 1e-13 there, as
+        // `small_lambda_needs_a_tighter_tolerance` shows it must be; at the default
+        // 1e-11, Λ = 0.2172, E = 1e6 Pa, R = 1 cm, w = 1 J/m², 1.13 v_c is 1.8e-6 off
+        // (`the_default_tolerance_misses_at_small_lambda_near_sticking`)
+        let tolerance = if l < 0.5 { Some(1e-13) } else { None };
+        let (sim, analytic) = compare_at(&mut law, &model, factor, tolerance);
         prop_assert!((sim / analytic - 1.0).abs() <= 1e-6, "Λ={l}: sim {sim} analytic {analytic}");
     }
 }
@@ -202,4 +226,29 @@ fn penalty_bridge_reproduces_plastic_and_viscoelastic_restitution() {
     )
     .unwrap();
     check(&visco, 1.0, e, r);
+}
+
+#[test]
+fn the_default_tolerance_misses_at_small_lambda_near_sticking() {
+    // the case the property test drew (CI, 2026-11-24): at the default integrator
+    // tolerance the simulated restitution is 1.8e-6 off the analytic one, at 1e-13
+    // it agrees to 1e-9
+    let (e, r, w) = (1e6, 1e-2, 1.0);
+    let model = MaugisDugdaleImpact::new(
+        MaugisContact::new(JkrSphere::new(e, r, w).unwrap(), 0.2171940525330137).unwrap(),
+        sphere_mass(r, 500.0),
+    )
+    .unwrap();
+    let mut law = MaugisDugdaleForceLaw::new(&model).unwrap();
+    let (sim, analytic) = compare(&mut law, &model, 1.1322904158807994);
+    assert!(
+        (sim / analytic - 1.0).abs() > 1e-6,
+        "sim {sim} analytic {analytic}"
+    );
+    let mut law = MaugisDugdaleForceLaw::new(&model).unwrap();
+    let (sim, analytic) = compare_at(&mut law, &model, 1.1322904158807994, Some(1e-13));
+    assert!(
+        (sim / analytic - 1.0).abs() < 1e-9,
+        "sim {sim} analytic {analytic}"
+    );
 }
