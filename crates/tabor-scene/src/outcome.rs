@@ -248,6 +248,18 @@ impl Prepared<'_> {
                         ),
                     });
                 }
+                if let Sticking::Below {
+                    velocity,
+                    rebounds_from: Some([lower, again]),
+                } = s
+                {
+                    warnings.push(Warning {
+                        code: "restitution-not-monotone",
+                        message: format!(
+                            "e(v) is not monotone: the bodies stick below {lower:.6e} m/s, rebound just above it, stick again at {again:.6e} m/s and rebound above the sticking velocity {velocity:.6e} m/s (the upper edge of the sticking set)"
+                        ),
+                    });
+                }
                 (s.velocity(), cost)
             }
             Err(e) => {

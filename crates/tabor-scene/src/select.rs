@@ -138,7 +138,7 @@ impl<'a> Prepared<'a> {
             _ => return self,
         };
         let velocity = match sticking.0 {
-            Sticking::Below { velocity } => Some(velocity),
+            Sticking::Below { velocity, .. } => Some(velocity),
             Sticking::Never => None,
             Sticking::UpToLimit { .. } => return self,
         };
@@ -254,8 +254,12 @@ impl<'a> Prepared<'a> {
                         limit: vc.speed,
                         reason: whole.speed_limit().map_or("validity limit", |l| l.reason),
                     },
-                    StickingMethod::ClosedForm | StickingMethod::Root => {
-                        Sticking::Below { velocity: vc.speed }
+                    StickingMethod::ClosedForm => Sticking::Below {
+                        velocity: vc.speed,
+                        rebounds_from: None,
+                    },
+                    StickingMethod::Root => {
+                        return upper_edge(&whole, self.inputs().accuracy, vc.speed, vc.cost)
                     }
                 };
                 Ok((sticking, vc.cost))
@@ -269,10 +273,17 @@ impl<'a> Prepared<'a> {
 #[serde(rename_all = "kebab-case", tag = "kind")]
 pub enum Sticking {
     /// The bodies stick below the sticking velocity `velocity` (m/s) and rebound
-    /// above it (the root of ε(v) = 0, (5.38) for a speed-independent loss).
+    /// above it (the root of ε(v) = 0, (5.38) for a speed-independent loss; the
+    /// upper edge of the sticking set where ε(v) is not monotone).
     Below {
-        /// The sticking velocity (m/s).
+        /// The sticking velocity (m/s): above it the bodies rebound (checked on a
+        /// geometric grid up to [`STICKING_CHECK_SPAN`] times it, within validity).
         velocity: f64,
+        /// Where ε(v) is not monotone: `[lower, again]`, the bodies rebound just
+        /// above the lower root `lower` of ε(v) = 0 (m/s) and stick again at
+        /// `again` (m/s), below `velocity`.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        rebounds_from: Option<[f64; 2]>,
     },
     /// The bodies never stick (no adhesion, or ε > 0 down to 1e-12 of the speed
     /// scale).
@@ -291,7 +302,7 @@ impl Sticking {
     /// The sticking velocity, when one exists within the model's validity.
     pub fn velocity(&self) -> Option<f64> {
         match self {
-            Sticking::Below { velocity } => Some(*velocity),
+            Sticking::Below { velocity, .. } => Some(*velocity),
             Sticking::Never | Sticking::UpToLimit { .. } => None,
         }
     }
@@ -300,6 +311,127 @@ impl Sticking {
     pub fn sticks_ever(&self) -> bool {
         !matches!(self, Sticking::Never)
     }
+}
+
+/// How far above a root of ε(v) = 0 the sticking search checks that the bodies
+/// rebound (a factor on the root; grid step [`STICKING_CHECK_STEP`]), within the
+/// model's validity: the sticking velocity is the upper edge of the sticking set.
+pub const STICKING_CHECK_SPAN: f64 = 1024.0;
+
+/// The ratio of neighbouring speeds of the check above a root of ε(v) = 0.
+pub const STICKING_CHECK_STEP: f64 = 2.0;
+
+/// The upper edge of the sticking set from the root `root` of ε(v) = 0 that the
+/// search of tabor-restitution found (the root nearest the speed scale): speeds
+/// `root·2^k` up to [`STICKING_CHECK_SPAN`]·root (and the validity limit) are
+/// checked; where one sticks, the search continues from the highest sticking
+/// speed and the sticking velocity is the root of ε(v) = 0 above it (Brent). A
+/// speed the model cannot answer ends the check (the end of its validity).
+/// In the usual monotone case this costs log2(span) = 10 loss evaluations.
+fn upper_edge<M: ImpactModel + ?Sized>(
+    model: &M,
+    accuracy: f64,
+    root: f64,
+    cost: Cost,
+) -> Result<(Sticking, Cost), SceneError> {
+    let mass = model.effective_mass();
+    let mut cost = cost;
+    let evaluations = std::cell::Cell::new(0u64);
+    let g = |v: f64, cost: &mut Cost| -> Option<f64> {
+        evaluations.set(evaluations.get() + 1);
+        let loss = model.energy_loss(v).ok()?;
+        *cost += loss.cost;
+        Some(1.0 - 2.0 * loss.joules / (mass * v * v))
+    };
+    let limit = model.speed_limit();
+    let mut velocity = root;
+    let mut rebounds_from: Option<[f64; 2]> = None;
+    // a sticking speed above `velocity` and the rebounding speed above it
+    let mut start = root;
+    // `start` is a sticking speed of the grid (the search continues above it)
+    let mut start_sticks = false;
+    let mut steps = 0u32;
+    loop {
+        let top = limit.map_or(start * STICKING_CHECK_SPAN, |l| {
+            (start * STICKING_CHECK_SPAN).min(l.speed)
+        });
+        let mut v = start;
+        let mut highest_stick: Option<f64> = start_sticks.then_some(start);
+        let mut rebound_above: Option<f64> = None;
+        let mut at_end_sticks = false;
+        let mut answered = true;
+        while v < top && steps < 90 {
+            v = (v * STICKING_CHECK_STEP).min(top);
+            steps += 1;
+            let Some(gv) = g(v, &mut cost) else {
+                answered = false;
+                break;
+            };
+            if gv <= 0.0 {
+                highest_stick = Some(v);
+                rebound_above = None;
+                at_end_sticks = true;
+            } else {
+                if highest_stick.is_some() && rebound_above.is_none() {
+                    rebound_above = Some(v);
+                }
+                at_end_sticks = false;
+            }
+        }
+        let Some(stick) = highest_stick else {
+            break;
+        };
+        if rebounds_from.is_none() {
+            rebounds_from = Some([root, stick]);
+        }
+        match rebound_above {
+            Some(hi) => {
+                let r = tabor_numerics::root_finding::brent(
+                    |x| g(x, &mut cost).unwrap_or(f64::NAN),
+                    stick,
+                    hi,
+                    tabor_numerics::root_finding::RootTolerance {
+                        absolute: 0.0,
+                        relative: accuracy.max(1e-14),
+                        max_iterations: 200,
+                    },
+                )
+                .map_err(|e| SceneError::model(tabor_restitution::Error::from(e)))?;
+                cost += Cost::new(0, r.iterations as u64);
+                velocity = r.value;
+                start = velocity;
+                start_sticks = false;
+            }
+            None if !answered || limit.is_some_and(|l| stick >= l.speed) => {
+                // sticks up to the validity limit, or up to the last speed the
+                // model answers
+                let (limit, reason) = match limit {
+                    Some(l) if answered => (l.speed, l.reason),
+                    _ => (stick, "highest speed the model answers"),
+                };
+                return Ok((
+                    Sticking::UpToLimit { limit, reason },
+                    cost + Cost::new(evaluations.get(), 0),
+                ));
+            }
+            None => {
+                // sticks at the end of the span: continue from there
+                debug_assert!(at_end_sticks);
+                start = stick;
+                start_sticks = true;
+                if steps >= 90 {
+                    break;
+                }
+            }
+        }
+    }
+    Ok((
+        Sticking::Below {
+            velocity,
+            rebounds_from,
+        },
+        cost + Cost::new(evaluations.get(), 0),
+    ))
 }
 
 /// The scene as one [`ImpactModel`]: at each speed, the loss of the effects that
@@ -356,4 +488,52 @@ impl ImpactModel for SceneModel<'_, '_> {
 /// Whether a rule's result is a superposition that deserves a warning.
 pub(crate) fn is_superposed(rule: Rule) -> bool {
     matches!(rule, Rule::Superposition | Rule::SuperpositionBound)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// ε(v) of the property run's scene (#22): sticks below 0.0403 m/s, rebounds
+    /// up to 0.045, sticks again up to 0.2 and rebounds above; here the loss
+    /// (1 − ε²)·m v²/2 with that ε(v) written out.
+    struct NonMonotone;
+    const WINDOW: (f64, f64, f64) = (0.0403, 0.045, 0.2);
+    impl ImpactModel for NonMonotone {
+        fn name(&self) -> String {
+            "non-monotone".into()
+        }
+        fn effective_mass(&self) -> f64 {
+            2.0
+        }
+        fn energy_loss(&self, v: f64) -> tabor_restitution::Result<EnergyLoss> {
+            let (a, b, c) = WINDOW;
+            // g = 1 − 2ΔU/(m v²) (ε² where > 0): roots at a and c, a bump of
+            // ε² ≤ 3e-3 in (a, b), sticking (g < 0) below a and in [b, c)
+            let g = if v <= a {
+                (v - a) / v
+            } else if v < b {
+                3e-3 * (v - a).min(b - v) / (b - a)
+            } else {
+                (v - c) / v
+            };
+            Ok(EnergyLoss::closed_form((1.0 - g) * v * v, "test"))
+        }
+    }
+
+    #[test]
+    fn the_sticking_velocity_is_the_upper_edge_of_the_sticking_set() {
+        let (a, _, c) = WINDOW;
+        let (s, _) = upper_edge(&NonMonotone, 1e-12, a, Cost::ZERO).unwrap();
+        let Sticking::Below {
+            velocity,
+            rebounds_from: Some([lower, again]),
+        } = s
+        else {
+            panic!("{s:?}");
+        };
+        assert!((velocity / c - 1.0).abs() < 1e-9, "{velocity}");
+        assert_eq!(lower, a);
+        assert!(again > 0.045 && again <= c, "{again}");
+    }
 }

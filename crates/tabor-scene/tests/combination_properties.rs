@@ -3,7 +3,8 @@
 //! model, viscosity on the sphere, the target or both). For every scene:
 //!
 //! - ε ∈ [0, 1] and the loss is at most the kinetic energy;
-//! - `sticks` ⇔ v < v_stick;
+//! - `sticks` ⇔ v < v_stick (v_stick the upper edge of the sticking set; below it
+//!   a non-monotone ε(v) may rebound, with a warning);
 //! - continuity at every threshold where the model that answers changes: found by
 //!   bisection on the combination between two speeds (yield onset, negligible
 //!   effects), and at Λ1, Λ2 and the JKR stand-in switch in Λ;
@@ -211,7 +212,13 @@ fn outcome_is_consistent(o: &Outcome, speed: f64) -> Result<(), TestCaseError> {
         None if up_to_limit => prop_assert!(o.sticks, "sticks at every speed, yet rebounds"),
         None => prop_assert!(!o.sticks),
         Some(vc) => {
-            if (speed / vc - 1.0).abs() > 1e-6 {
+            // where ε(v) is not monotone (a warning says so), the bodies may rebound in
+            // a window below v_c; above v_c they never stick
+            let not_monotone = o
+                .warnings
+                .iter()
+                .any(|w| w.code == "restitution-not-monotone");
+            if (speed / vc - 1.0).abs() > 1e-6 && !(not_monotone && speed < vc) {
                 prop_assert_eq!(o.sticks, speed < vc, "v = {}, v_c = {}", speed, vc);
             }
         }
