@@ -91,7 +91,7 @@ impl NormalModel {
                 youngs_modulus,
                 poisson_ratio,
                 ..
-            } => Some(youngs_modulus / (2.0 * (1.0 - poisson_ratio * poisson_ratio))),
+            } => Some(mixed_modulus(youngs_modulus, poisson_ratio)),
             _ => None,
         }
     }
@@ -291,10 +291,14 @@ impl GranularModel {
             mass: m,
             alpha: self.damping_coefficient(),
             jkr: match self.normal {
-                NormalModel::Jkr { surface_energy, .. } => jkr_scales(
+                NormalModel::Jkr {
+                    surface_energy,
+                    youngs_modulus,
+                    poisson_ratio,
+                } => jkr_scales(
                     surface_energy,
                     r,
-                    self.normal.mixed_modulus().unwrap_or(f64::NAN),
+                    mixed_modulus(youngs_modulus, poisson_ratio),
                 )?,
                 _ => None,
             },
@@ -321,6 +325,12 @@ fn jkr_scales(gamma: f64, r: f64, e: f64) -> Result<Option<JkrScales>> {
         return Ok(None);
     }
     JkrScales::new(e, r, 2.0 * gamma).map(Some)
+}
+
+/// LAMMPS's `E_mix` of two equal materials, `E / (2 (1 − ν²))` (its
+/// `mix_stiffnessE`): the effective modulus E* of two bodies of `E`, `ν`.
+fn mixed_modulus(youngs_modulus: f64, poisson_ratio: f64) -> f64 {
+    youngs_modulus / (2.0 * (1.0 - poisson_ratio * poisson_ratio))
 }
 
 /// The contact radius of LAMMPS's `jkr` at overlap δ: on the stable branch
@@ -370,15 +380,24 @@ impl LammpsLaw {
         match self.model.normal {
             NormalModel::Hooke { stiffness } => stiffness * d,
             NormalModel::Hertz { stiffness } => stiffness * a * d,
-            NormalModel::HertzMaterial { .. } => {
-                4.0 / 3.0 * self.model.normal.mixed_modulus().unwrap_or(f64::NAN) * a * d
-            }
-            NormalModel::Dmt { surface_energy, .. } => {
-                4.0 / 3.0 * self.model.normal.mixed_modulus().unwrap_or(f64::NAN) * a * d
+            NormalModel::HertzMaterial {
+                youngs_modulus,
+                poisson_ratio,
+            } => 4.0 / 3.0 * mixed_modulus(youngs_modulus, poisson_ratio) * a * d,
+            NormalModel::Dmt {
+                youngs_modulus,
+                poisson_ratio,
+                surface_energy,
+            } => {
+                4.0 / 3.0 * mixed_modulus(youngs_modulus, poisson_ratio) * a * d
                     - 4.0 * PI * surface_energy * self.radius
             }
-            NormalModel::Jkr { surface_energy, .. } => {
-                let e = self.model.normal.mixed_modulus().unwrap_or(f64::NAN);
+            NormalModel::Jkr {
+                youngs_modulus,
+                poisson_ratio,
+                surface_energy,
+            } => {
+                let e = mixed_modulus(youngs_modulus, poisson_ratio);
                 4.0 / 3.0 * e * a * a * a / self.radius
                     - (16.0 * PI * surface_energy * e * a * a * a).sqrt()
             }
@@ -417,10 +436,14 @@ impl LammpsLaw {
     /// The overlap at which LAMMPS drops the contact (m): 0, or −δ_pull-off for `jkr`.
     pub fn separation_overlap(&self) -> f64 {
         match self.model.normal {
-            NormalModel::Jkr { surface_energy, .. } => -jkr_pulloff_distance(
+            NormalModel::Jkr {
+                surface_energy,
+                youngs_modulus,
+                poisson_ratio,
+            } => -jkr_pulloff_distance(
                 surface_energy,
                 self.radius,
-                self.model.normal.mixed_modulus().unwrap_or(f64::NAN),
+                mixed_modulus(youngs_modulus, poisson_ratio),
             ),
             _ => 0.0,
         }

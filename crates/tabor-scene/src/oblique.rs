@@ -14,6 +14,30 @@ use tabor_restitution::Error;
 use tabor_tangential::oblique::{Body, NormalContact, ObliqueImpact, ObliqueOutcome};
 use tabor_tangential::Friction;
 
+/// The oblique fields added to the central-impact ones.
+#[derive(serde::Serialize)]
+struct ObliqueFields<'a> {
+    angle: f64,
+    normal_restitution: f64,
+    tangential_restitution: Option<f64>,
+    rebound_angle: Option<f64>,
+    energy_lost_by_mechanism: &'a tabor_tangential::oblique::EnergyLosses,
+    after: &'a tabor_tangential::oblique::AfterImpact,
+    oblique: ObliqueSummary<'a>,
+}
+
+#[derive(serde::Serialize)]
+struct ObliqueSummary<'a> {
+    law: &'a str,
+    speed: f64,
+    sticks: bool,
+    energy_loss: f64,
+    kinetic_energy: f64,
+    energy_error: f64,
+    contact_time: f64,
+    slip_switches: usize,
+}
+
 impl Scene {
     /// The scene's friction (`[friction]`), validated; `None` without the section.
     pub fn friction(&self) -> Result<Option<Friction>, SceneError> {
@@ -128,33 +152,7 @@ impl Scene {
             .simulate(law.as_mut(), v, alpha, &settings)
             .map_err(err)
     }
-}
 
-/// The oblique fields added to the central-impact ones.
-#[derive(serde::Serialize)]
-struct ObliqueFields<'a> {
-    angle: f64,
-    normal_restitution: f64,
-    tangential_restitution: Option<f64>,
-    rebound_angle: Option<f64>,
-    energy_lost_by_mechanism: &'a tabor_tangential::oblique::EnergyLosses,
-    after: &'a tabor_tangential::oblique::AfterImpact,
-    oblique: ObliqueSummary<'a>,
-}
-
-#[derive(serde::Serialize)]
-struct ObliqueSummary<'a> {
-    law: &'a str,
-    speed: f64,
-    sticks: bool,
-    energy_loss: f64,
-    kinetic_energy: f64,
-    energy_error: f64,
-    contact_time: f64,
-    slip_switches: usize,
-}
-
-impl Scene {
     /// The report of `tabor impact --json` (and Python's `Scene.outcome`) at
     /// relative speed `speed` (m/s) and angle `angle` (degrees): `None` for a
     /// central impact without friction or spin (angle 0, not

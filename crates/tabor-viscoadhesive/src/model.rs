@@ -4,7 +4,7 @@
 use crate::adhesive::{AdhesiveForceLaw, LawSpec};
 use crate::law::SeparationPotential;
 use crate::law::ViscousDamping;
-use crate::table::{SharedTable, SpeedTable};
+use crate::table::{SharedTable, SpeedTable, Tabulated};
 use serde::Serialize;
 use std::sync::Arc;
 use tabor_dynamics::{simulate_impact, ImpactSimulation, SimulationSettings};
@@ -450,6 +450,28 @@ impl ImpactModel for ViscoadhesiveImpact {
             }
             Err(_) => 1.0,
         }
+    }
+}
+
+impl Tabulated for ViscoadhesiveImpact {
+    fn small_strain_limit(&self) -> f64 {
+        ViscoadhesiveImpact::small_strain_limit(self)
+    }
+    fn tolerance(&self) -> f64 {
+        ViscoadhesiveImpact::tolerance(self)
+    }
+    fn settings(&self) -> SimulationSettings {
+        ViscoadhesiveImpact::settings(self)
+    }
+    fn simulate(
+        &self,
+        impact_speed: f64,
+        settings: &SimulationSettings,
+    ) -> Result<ImpactSimulation> {
+        ViscoadhesiveImpact::simulate(self, impact_speed, settings)
+    }
+    fn kuwabara_kono(&self) -> Result<KelvinVoigtSphere> {
+        ViscoadhesiveImpact::kuwabara_kono(self)
     }
 }
 

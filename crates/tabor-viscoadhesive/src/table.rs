@@ -29,12 +29,32 @@
 //! about 1e-10 (`tabor_visco`'s accuracy), which leaves its small loss fraction
 //! 2ε·δε (a few 1e-3 in the bundled scene) only about 1e-7 relative accuracy.
 
-use crate::model::ViscoadhesiveImpact;
 use std::sync::Arc;
-use tabor_dynamics::SimulationSettings;
+use tabor_dynamics::{ImpactSimulation, SimulationSettings};
 use tabor_numerics::chebyshev::PiecewiseChebyshev;
 use tabor_numerics::Cost;
 use tabor_restitution::{validate, EnergyLoss, Error, ImpactModel, Result};
+use tabor_visco::models::KelvinVoigtSphere;
+
+/// What a [`SpeedTable`] needs of the model it tabulates (implemented by
+/// [`crate::ViscoadhesiveImpact`]; a trait so that this module does not import the
+/// model's, which holds the table).
+pub trait Tabulated: ImpactModel {
+    /// The small-strain limit (m/s) the table may not pass.
+    fn small_strain_limit(&self) -> f64;
+    /// The requested relative accuracy of the simulated outcome.
+    fn tolerance(&self) -> f64;
+    /// The simulation settings of the model's own answers (no trajectory).
+    fn settings(&self) -> SimulationSettings;
+    /// One simulated impact at `impact_speed` (m/s) with `settings`.
+    fn simulate(
+        &self,
+        impact_speed: f64,
+        settings: &SimulationSettings,
+    ) -> Result<ImpactSimulation>;
+    /// The Kuwabara-Kono sphere without adhesion with the same E*, R, m, η_c.
+    fn kuwabara_kono(&self) -> Result<KelvinVoigtSphere>;
+}
 
 /// The table starts at the lowest speed of the range where the restitution is at
 /// least this (so the error of ε is at most 5× that of the loss fraction there).
@@ -48,8 +68,9 @@ const POINTS: usize = 12;
 /// Pieces at most (each takes [`POINTS`] simulations).
 const MAX_PIECES: usize = 48;
 
-/// The loss of a [`ViscoadhesiveImpact`] over `[lower, upper]` (m/s), tabulated
-/// (module docs). Built by [`ViscoadhesiveImpact::with_speed_table`], which
+/// The loss of a [`ViscoadhesiveImpact`](crate::ViscoadhesiveImpact) over
+/// `[lower, upper]` (m/s), tabulated (module docs). Built by
+/// [`ViscoadhesiveImpact::with_speed_table`](crate::ViscoadhesiveImpact::with_speed_table), which
 /// answers from it inside its range.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SpeedTable {
@@ -96,8 +117,8 @@ impl SpeedTable {
     /// speed near the start rebounds well enough, when a sample sticks or fails,
     /// when the pieces do not resolve the loss, or when a certifying simulation
     /// disagrees.
-    pub fn build(
-        model: &ViscoadhesiveImpact,
+    pub fn build<M: Tabulated>(
+        model: &M,
         lower: f64,
         upper: f64,
         sticking_velocity: Option<f64>,
@@ -297,7 +318,7 @@ impl SpeedTable {
 /// Certifies that the bodies stick at [`STICKING_CHECKS`] log-spaced speeds of
 /// `[lower, upper]` and returns the range with the well depth the model reports
 /// (its loss minus m v²/2, the same at every check).
-fn sticking_range(model: &ViscoadhesiveImpact, lower: f64, upper: f64) -> Result<StickingRange> {
+fn sticking_range<M: Tabulated>(model: &M, lower: f64, upper: f64) -> Result<StickingRange> {
     let mut well_depth = None;
     let mut energy_error: f64 = 0.0;
     for i in 0..STICKING_CHECKS {

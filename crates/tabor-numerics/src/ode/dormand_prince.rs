@@ -139,47 +139,10 @@ impl<const N: usize> DormandPrince<N> {
     where
         F: FnMut(f64, &[f64; N]) -> [f64; N],
     {
-        let span = self.core.restart(t, y, t_hint)?;
+        self.dy = self.core.restart_at(f, t, y, t_hint, Some(5))?;
         self.cont = [y, [0.0; N], [0.0; N], [0.0; N], [0.0; N]];
         self.err_old = 1e-4;
-        self.dy = self.core.eval_current(f)?;
-        let h_max = self.core.first_step_limit(span);
-        self.core.h = match self.core.tol.initial_step {
-            Some(h) => h.min(h_max),
-            None => self.initial_step(f, h_max),
-        };
         Ok(())
-    }
-
-    /// Hairer's `HINIT`: a first step from the sizes of y, f and an estimate of y''.
-    fn initial_step<F>(&mut self, f: &mut F, h_max: f64) -> f64
-    where
-        F: FnMut(f64, &[f64; N]) -> [f64; N],
-    {
-        let n = N.max(1) as f64;
-        let (h, dnf) = self.core.first_guess(&self.dy);
-        let h = h.min(h_max);
-        let (t, y) = (self.core.t, self.core.y);
-        let y1 = axpy(&y, h, &[(1.0, &self.dy)]);
-        let f1 = self.core.eval(f, t + h, &y1);
-        let mut der2 = 0.0;
-        for i in 0..N {
-            let sk = self.core.scale(y[i], y[i]);
-            der2 += ((f1[i] - self.dy[i]) / sk).powi(2);
-        }
-        let der2 = (der2 / n).sqrt() / h;
-        let der12 = der2.max((dnf / n).sqrt());
-        let h1 = if der12 <= 1e-15 || !der12.is_finite() {
-            (h * 1e-3).max(1e-6)
-        } else {
-            (0.01 / der12).powf(0.2)
-        };
-        let h = (100.0 * h).min(h1).min(h_max);
-        if h.is_finite() && h > 0.0 {
-            h
-        } else {
-            h_max.min(1e-6)
-        }
     }
 
     /// Takes one accepted step, not beyond `t_limit` (> current time). Rejected trial

@@ -778,6 +778,76 @@ impl<const N: usize> StepperCore<N> {
         (h, dnf)
     }
 
+    /// The restart every stepper shares: checks and moves to `(t, y)` (forgetting the
+    /// last step), evaluates `f(t, y)` (returned) and sets the first step `h`: the
+    /// tolerance's `initial_step` if given (at most the span to `t_hint` and
+    /// `max_step`), else Hairer's `HINIT` for a method of order `order`, or only its
+    /// first guess (`order = None`, for the Rosenbrock methods).
+    pub(crate) fn restart_at<F>(
+        &mut self,
+        f: &mut F,
+        t: f64,
+        y: [f64; N],
+        t_hint: f64,
+        order: Option<u32>,
+    ) -> Result<[f64; N]>
+    where
+        F: FnMut(f64, &[f64; N]) -> [f64; N],
+    {
+        let span = self.restart(t, y, t_hint)?;
+        let dy = self.eval_current(f)?;
+        let h_max = self.first_step_limit(span);
+        self.h = match (self.tol.initial_step, order) {
+            (Some(h), _) => h.min(h_max),
+            (None, Some(order)) => self.hinit(f, &dy, h_max, order),
+            (None, None) => {
+                let (h, _) = self.first_guess(&dy);
+                if h.is_finite() && h > 0.0 {
+                    h.min(h_max)
+                } else {
+                    h_max.min(1e-6)
+                }
+            }
+        };
+        Ok(dy)
+    }
+
+    /// Hairer's `HINIT` for a method of order `order`: a first step from the sizes
+    /// of y, `dy = f(t, y)` and an estimate of y'' (one more evaluation), at most
+    /// `h_max`; 1e-6 (or `h_max`) when that is not informative.
+    fn hinit<F>(&mut self, f: &mut F, dy: &[f64; N], h_max: f64, order: u32) -> f64
+    where
+        F: FnMut(f64, &[f64; N]) -> [f64; N],
+    {
+        let n = N.max(1) as f64;
+        let (h, dnf) = self.first_guess(dy);
+        let h = h.min(h_max);
+        let (t, y) = (self.t, self.y);
+        let mut y1 = y;
+        for i in 0..N {
+            y1[i] += h * dy[i];
+        }
+        let f1 = self.eval(f, t + h, &y1);
+        let mut der2 = 0.0;
+        for i in 0..N {
+            let sk = self.scale(y[i], y[i]);
+            der2 += ((f1[i] - dy[i]) / sk).powi(2);
+        }
+        let der2 = (der2 / n).sqrt() / h;
+        let der12 = der2.max((dnf / n).sqrt());
+        let h1 = if der12 <= 1e-15 || !der12.is_finite() {
+            (h * 1e-3).max(1e-6)
+        } else {
+            (0.01 / der12).powf(1.0 / f64::from(order))
+        };
+        let h = (100.0 * h).min(h1).min(h_max);
+        if h.is_finite() && h > 0.0 {
+            h
+        } else {
+            h_max.min(1e-6)
+        }
+    }
+
     /// Checks the target of a step.
     pub(crate) fn check_limit(&self, t_limit: f64) -> Result<()> {
         if t_limit.is_finite() && t_limit > self.t {

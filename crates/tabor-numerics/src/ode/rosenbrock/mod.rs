@@ -227,30 +227,12 @@ impl<const N: usize> Rosenbrock<N> {
     where
         F: FnMut(f64, &[f64; N]) -> [f64; N],
     {
-        let span = self.core.restart(t, y, t_hint)?;
+        self.dy = Some(self.core.restart_at(f, t, y, t_hint, None)?);
         self.y_old = y;
         self.cont = [[0.0; N]; 3];
         self.h_accepted = 0.0;
         self.err_accepted = 1e-2;
-        let dy = self.core.eval_current(f)?;
-        self.dy = Some(dy);
-        let h_max = self.core.first_step_limit(span);
-        self.core.h = match self.core.tol.initial_step {
-            Some(h) => h.min(h_max),
-            None => self.initial_step(&dy, h_max),
-        };
         Ok(())
-    }
-
-    /// A first step from the sizes of y and f (the first guess of Hairer's `HINIT`),
-    /// at most `h_max`; 1e-6 (or `h_max`) when that is not informative.
-    fn initial_step(&self, dy: &[f64; N], h_max: f64) -> f64 {
-        let (h, _) = self.core.first_guess(dy);
-        if h.is_finite() && h > 0.0 {
-            h.min(h_max)
-        } else {
-            h_max.min(1e-6)
-        }
     }
 
     /// The method.
