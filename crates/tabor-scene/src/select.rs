@@ -277,7 +277,7 @@ pub enum Sticking {
     /// upper edge of the sticking set where ε(v) is not monotone).
     Below {
         /// The sticking velocity (m/s): above it the bodies rebound (checked on a
-        /// geometric grid up to [`STICKING_CHECK_SPAN`] times it, within validity).
+        /// geometric grid up to `STICKING_CHECK_SPAN` (1024) times it, within validity).
         velocity: f64,
         /// Where ε(v) is not monotone: `[lower, again]`, the bodies rebound just
         /// above the lower root `lower` of ε(v) = 0 (m/s) and stick again at
