@@ -338,14 +338,7 @@ fn adhesion(a: &AdhesionFile, e: f64, r: f64) -> Result<Adhesion, SceneError> {
     } else {
         AdhesionRange::Jkr
     };
-    let separation = match a.separation.as_deref() {
-        None => SeparationRule::default(),
-        Some(name) => name
-            .parse()
-            .map_err(|e: tabor_restitution::UnknownChoice| {
-                SceneError::field("adhesion.separation", e.to_string())
-            })?,
-    };
+    let separation = choice(a.separation.as_deref(), "adhesion.separation")?;
     Ok(Adhesion {
         work_of_adhesion: w,
         range,
@@ -375,13 +368,24 @@ fn plasticity(
             }
         },
     };
-    let adhesive = match p.and_then(|p| p.adhesive_model.as_deref()) {
-        None => AdhesivePlasticity::default(),
+    let adhesive: AdhesivePlasticity = choice(
+        p.and_then(|p| p.adhesive_model.as_deref()),
+        "plasticity.adhesive_model",
+    )?;
+    Ok((model, adhesive))
+}
+
+/// The menu choice named at scene field `field` (`None`: the menu's default),
+/// parsed by its menu's `FromStr`; an unknown name is an input error naming the
+/// field and listing the menu.
+fn choice<T>(name: Option<&str>, field: &str) -> Result<T, SceneError>
+where
+    T: Default + std::str::FromStr<Err = tabor_restitution::UnknownChoice>,
+{
+    match name {
+        None => Ok(T::default()),
         Some(name) => name
             .parse()
-            .map_err(|e: tabor_restitution::UnknownChoice| {
-                SceneError::field("plasticity.adhesive_model", e.to_string())
-            })?,
-    };
-    Ok((model, adhesive))
+            .map_err(|e: tabor_restitution::UnknownChoice| SceneError::field(field, e.to_string())),
+    }
 }
