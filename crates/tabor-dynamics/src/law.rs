@@ -16,6 +16,46 @@ pub enum BranchChange {
     Stick,
 }
 
+/// A state of a branch at a point of its own coordinate (see [`BranchCurve`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CurvePoint {
+    /// Overlap d(q) (m).
+    pub overlap: f64,
+    /// dd/dq (m per unit of q): nonzero inside the branch, of one sign along it; it
+    /// may fall to 0 at the branch's end (a fold of d(q), the fixed-grip snap-off).
+    pub overlap_slope: f64,
+    /// Normal force F(q, ḋ) (N, repulsive > 0).
+    pub force: f64,
+    /// Contact radius (m), for the trajectory record.
+    pub contact_radius: f64,
+}
+
+/// A branch of a [`ForceLaw`] in a coordinate `q` of its own in which the overlap
+/// d(q) and the force F(q, ḋ) are smooth, explicit functions: the root of the JKR
+/// quartic `x = √(a/a_c)`, the angle θ of the Maugis-Dugdale contact branch.
+///
+/// Given one ([`ForceLaw::curve`]), the simulator integrates the branch in `q`
+/// with the regularized time σ, `dt = |dd/dq| dσ` (a Sundman transformation):
+/// `dq/dσ = ±ḋ`, `dḋ/dσ = −(F/m)|dd/dq|`. This needs no solve for q at a force
+/// evaluation, and the motion stays smooth in σ where d(q) has a fold at the
+/// branch end (dd/dq = 0), where F(d), and with it d(t), has a square-root
+/// singularity that an integrator in t can only approach with ever shorter steps.
+pub trait BranchCurve {
+    /// The coordinate q of the state with overlap `overlap` (m) on the current
+    /// branch (one solve, at the start of a segment).
+    fn coordinate(&self, overlap: f64) -> Result<f64>;
+
+    /// The state at coordinate `coordinate` with overlap rate `overlap_rate` (m/s).
+    /// Pure and smooth in `q`; it must stay finite a little beyond the branch end
+    /// (trial points of the integrator), continuing the same formulas there.
+    fn point(&self, coordinate: f64, overlap_rate: f64) -> Result<CurvePoint>;
+
+    /// The signed distance to the end of the branch in q: positive while the branch
+    /// holds; it must cross 0 with a nonzero slope (where d(q) has a fold, measure
+    /// it in q, not in d). The simulator then calls [`ForceLaw::on_branch_end`].
+    fn end(&self, coordinate: f64) -> f64;
+}
+
 /// A contact force law for the equation of motion `m d̈ = −F(d, ḋ, history)`
 /// (seed 000 eq. (5.5) and its generalizations), with `d` the overlap
 /// (indentation, positive in contact) and `F` the normal force, positive when
@@ -119,6 +159,15 @@ pub trait ForceLaw {
     fn on_min_compression(&mut self, _overlap: f64) -> Result<BranchChange> {
         Ok(BranchChange::Stick)
     }
+
+    /// The current branch in a coordinate of its own ([`BranchCurve`]), if the law
+    /// has one there: the simulator then integrates the branch in that coordinate
+    /// (its [`BranchCurve::end`] replaces [`ForceLaw::branch_end`], and
+    /// [`BranchCurve::point`] replaces [`ForceLaw::force`] on that branch). Default:
+    /// `None`, integration in time with [`ForceLaw::force`].
+    fn curve(&self) -> Option<&dyn BranchCurve> {
+        None
+    }
 }
 
 impl<L: ForceLaw + ?Sized> ForceLaw for &mut L {
@@ -154,5 +203,8 @@ impl<L: ForceLaw + ?Sized> ForceLaw for &mut L {
     }
     fn on_min_compression(&mut self, d: f64) -> Result<BranchChange> {
         (**self).on_min_compression(d)
+    }
+    fn curve(&self) -> Option<&dyn BranchCurve> {
+        (**self).curve()
     }
 }

@@ -6,7 +6,8 @@
 
 use std::f64::consts::PI;
 use tabor_dynamics::{
-    simulate_impact, BranchChange, EventKind, ForceLaw, SimulatedImpact, SimulationSettings,
+    simulate_impact, BranchChange, BranchCurve, CurvePoint, EventKind, ForceLaw, SimulatedImpact,
+    SimulationSettings,
 };
 use tabor_restitution::{impact, Error, Result};
 
@@ -296,5 +297,115 @@ fn misbehaving_laws_give_errors() {
             }
         ),
         "{err:?}"
+    );
+}
+
+/// A branch with a fold at its end: `d = d_c + q²` (q ≥ 0), `F = k q`, so that
+/// `F(d) = k √(d − d_c)` has a square-root singularity where the bodies separate
+/// (q = 0, d = d_c < 0), as JKR's fixed-grip snap-off has. With `curve` the law
+/// offers its coordinate q ([`BranchCurve`]); without, it is integrated in time
+/// with the same `F(d)`. Exact (conservative): the speed at the fold from
+/// `v² = v0² + (4k/3m) q0³` with `q0 = √(−d_c)`, the turning point from
+/// `(2k/3)(q_max³ − q0³) = m v0²/2`.
+#[derive(Clone, Debug)]
+struct Folded {
+    fold_depth: f64,
+    stiffness: f64,
+    curve: bool,
+}
+
+impl ForceLaw for Folded {
+    fn name(&self) -> String {
+        "toy fold".into()
+    }
+    fn overlap_scale(&self, _m: f64, _v0: f64) -> Result<f64> {
+        Ok(-self.fold_depth)
+    }
+    fn force(&self, d: f64, _r: f64) -> Result<f64> {
+        Ok(self.stiffness * (d - self.fold_depth).max(0.0).sqrt())
+    }
+    fn contact_radius(&self, d: f64, _r: f64) -> Result<f64> {
+        Ok((d - self.fold_depth).max(0.0).sqrt())
+    }
+    fn branch_end(&self, d: f64, _r: f64) -> Result<f64> {
+        Ok(d - self.fold_depth)
+    }
+    fn curve(&self) -> Option<&dyn BranchCurve> {
+        self.curve.then_some(self as _)
+    }
+}
+
+impl BranchCurve for Folded {
+    fn coordinate(&self, overlap: f64) -> Result<f64> {
+        Ok((overlap - self.fold_depth).max(0.0).sqrt())
+    }
+    fn point(&self, q: f64, _rate: f64) -> Result<CurvePoint> {
+        Ok(CurvePoint {
+            overlap: self.fold_depth + q * q,
+            overlap_slope: 2.0 * q,
+            force: self.stiffness * q,
+            contact_radius: q,
+        })
+    }
+    fn end(&self, q: f64) -> f64 {
+        q
+    }
+}
+
+#[test]
+fn a_fold_at_the_branch_end_is_integrated_in_the_branch_coordinate() {
+    let (m, v0, k, d_c): (f64, f64, f64, f64) = (2.0, 1.5, 3.0, -0.5);
+    let q0 = (-d_c).sqrt();
+    let exact_restitution = (v0 * v0 + 4.0 * k / (3.0 * m) * q0 * q0 * q0).sqrt() / v0;
+    let q_max = (q0 * q0 * q0 + 0.75 * m * v0 * v0 / k).cbrt();
+    let exact_max_overlap = d_c + q_max * q_max;
+    let settings = SimulationSettings::default();
+    let mut sims = Vec::new();
+    for curve in [true, false] {
+        let mut law = Folded {
+            fold_depth: d_c,
+            stiffness: k,
+            curve,
+        };
+        let sim = simulate_impact(&mut law, m, v0, &settings).unwrap();
+        assert!(!sim.sticks);
+        assert_eq!(
+            sim.events.len(),
+            2,
+            "turning point and fold: {:?}",
+            sim.events
+        );
+        assert!(
+            rel(sim.restitution, exact_restitution) < 1e-10,
+            "curve {curve}: {} vs {exact_restitution}",
+            sim.restitution
+        );
+        assert!(
+            rel(sim.max_overlap, exact_max_overlap) < 1e-10,
+            "curve {curve}: {} vs {exact_max_overlap}",
+            sim.max_overlap
+        );
+        assert!(
+            sim.energy_error < 1e-10,
+            "curve {curve}: {}",
+            sim.energy_error
+        );
+        assert!((sim.events[1].overlap - d_c).abs() < 1e-12);
+        sims.push(sim);
+    }
+    // the two integrations (in q, in time) agree on the contact time
+    let (on_curve, in_time) = (&sims[0], &sims[1]);
+    let (t1, t2) = (
+        on_curve.contact_time.unwrap(),
+        in_time.contact_time.unwrap(),
+    );
+    assert!(rel(t1, t2) < 1e-9, "{t1} vs {t2}");
+    // the point of the coordinate: the square-root singularity costs the time
+    // integration its short steps near the fold
+    assert!(
+        on_curve.cost.evaluations < in_time.cost.evaluations,
+        "{:?} vs {:?}",
+        on_curve.cost,
+        in_time.cost
     );
 }

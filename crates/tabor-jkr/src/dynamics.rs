@@ -4,7 +4,7 @@ use crate::common::SeparationRule;
 use crate::normalized;
 use crate::sphere::JkrSphere;
 use std::sync::atomic::{AtomicU64, Ordering};
-use tabor_dynamics::{BranchChange, ForceLaw};
+use tabor_dynamics::{BranchChange, BranchCurve, CurvePoint, ForceLaw};
 use tabor_restitution::{validate, Result};
 
 /// The JKR sphere (seed 000 eqs. (5.33)-(5.34)) as a force law `F(d)` for the
@@ -24,6 +24,8 @@ pub struct JkrForceLaw {
     sphere: JkrSphere,
     rule: SeparationRule,
     separation_depth: f64,
+    /// `x = √â` where the bodies separate.
+    separation_root: f64,
     /// The last (d̂, x) solved, as bits of `f64`s (NaN: none).
     hint: [AtomicU64; 2],
 }
@@ -55,6 +57,7 @@ impl JkrForceLaw {
             sphere,
             rule,
             separation_depth: s.depth * sphere.scales().depth,
+            separation_root: s.contact_radius.sqrt(),
             hint: [AtomicU64::new(nan), AtomicU64::new(nan)],
         }
     }
@@ -117,5 +120,38 @@ impl ForceLaw for JkrForceLaw {
 
     fn on_branch_end(&mut self, _overlap: f64, _overlap_rate: f64) -> Result<BranchChange> {
         Ok(BranchChange::Separate)
+    }
+
+    fn curve(&self) -> Option<&dyn BranchCurve> {
+        Some(self)
+    }
+}
+
+impl BranchCurve for JkrForceLaw {
+    /// `x = √â` at the overlap (the warm-started quartic inversion).
+    fn coordinate(&self, overlap: f64) -> Result<f64> {
+        self.root(overlap)
+    }
+
+    /// Seed 000 eqs. (5.33)-(5.34) in `x = √â`: `d̂ = 3x⁴ − 4x`,
+    /// `dd̂/dx = 12x³ − 4`, `F̂ = x⁶ − 2x³`, `â = x²` (polynomials, so they continue
+    /// smoothly beyond the snap-off).
+    fn point(&self, coordinate: f64, _overlap_rate: f64) -> Result<CurvePoint> {
+        let x = coordinate;
+        let x3 = x * x * x;
+        let scales = self.sphere.scales();
+        Ok(CurvePoint {
+            overlap: (3.0 * x3 - 4.0) * x * scales.depth,
+            overlap_slope: (12.0 * x3 - 4.0) * scales.depth,
+            force: (x3 - 2.0) * x3 * scales.force,
+            contact_radius: x * x * scales.contact_radius,
+        })
+    }
+
+    /// `x − x_sep`: falls to 0 at the separation state of the rule (for fixed
+    /// grip the fold `x = 3^(−1/3)`, where `d − d_sep` would touch 0 without a
+    /// sign change).
+    fn end(&self, coordinate: f64) -> f64 {
+        coordinate - self.separation_root
     }
 }

@@ -383,3 +383,68 @@ proptest! {
         prop_assert!(rel(s.scales().depth, a_c * a_c / (3.0 * r)) < 1e-14);
     }
 }
+
+/// The law's branch in `x = √(a/a_c)` (what the simulator integrates) against its
+/// force law in d (the quartic inverted) and the seed's (5.33)-(5.34) written out:
+/// the same overlap, force and contact radius at the coordinate of a depth, the
+/// slope equal to a central difference of the overlap, and the branch end at the
+/// separation state of each rule.
+#[test]
+fn force_law_curve_matches_the_contact_relations() {
+    use tabor_dynamics::ForceLaw;
+    let (e, r, dg) = (2.780_352_177_942_539e10, 0.5e-6, 0.05);
+    let sphere = JkrSphere::new(e, r, dg).unwrap();
+    for rule in [SeparationRule::FixedGrip, SeparationRule::LoadControlled] {
+        let law = tabor_jkr::JkrForceLaw::new(sphere, rule);
+        let curve = law.curve().unwrap();
+        let d_n = sphere.scales().depth;
+        for d in [
+            -0.9 * d_n,
+            -0.2 * d_n,
+            0.0,
+            0.7 * d_n,
+            5.0 * d_n,
+            300.0 * d_n,
+        ] {
+            let x = curve.coordinate(d).unwrap();
+            let p = curve.point(x, 0.0).unwrap();
+            assert!(
+                (p.overlap - d).abs() <= 1e-14 * d_n.max(d.abs()),
+                "{d}: {}",
+                p.overlap
+            );
+            let f = law.force(d, 0.0).unwrap();
+            assert!((p.force - f).abs() <= 1e-13 * sphere.scales().force.max(f.abs()));
+            // (5.33)-(5.34) in SI units at a = x² a_c
+            let a = x * x * sphere.scales().contact_radius;
+            let depth = a * a / r - (2.0 * PI * a * dg / e).sqrt();
+            let force = 4.0 * e * a.powi(3) / (3.0 * r) - (8.0 * PI * a.powi(3) * e * dg).sqrt();
+            assert!((p.overlap - depth).abs() <= 1e-12 * d_n.max(d.abs()));
+            assert!((p.force - force).abs() <= 1e-12 * sphere.scales().force.max(force.abs()));
+            assert!((p.contact_radius - a).abs() <= 1e-15 * a);
+            let h = 1e-6 * x;
+            let slope = (curve.point(x + h, 0.0).unwrap().overlap
+                - curve.point(x - h, 0.0).unwrap().overlap)
+                / (2.0 * h);
+            assert!(
+                (p.overlap_slope - slope).abs() <= 1e-8 * slope.abs(),
+                "{slope}"
+            );
+            assert!(curve.end(x) > 0.0);
+        }
+        // the branch ends at the rule's separation state: fixed grip at the fold
+        let x_end = curve.end(0.0).abs();
+        let end = curve.point(x_end, 0.0).unwrap();
+        assert!((end.overlap - law.separation_depth()).abs() <= 1e-14 * d_n);
+        match rule {
+            SeparationRule::FixedGrip => {
+                assert!((x_end - 3f64.powf(-1.0 / 3.0)).abs() < 1e-15);
+                assert!(end.overlap_slope.abs() < 1e-14 * d_n);
+            }
+            SeparationRule::LoadControlled => {
+                assert!((x_end - 1.0).abs() < 1e-15);
+                assert!((end.force + 1.5 * PI * dg * r).abs() < 1e-12 * 1.5 * PI * dg * r);
+            }
+        }
+    }
+}

@@ -1,11 +1,13 @@
 //! The Maugis-Dugdale impact as a time-domain force law for `tabor-dynamics`.
 
+use crate::branch::contact_state;
+use crate::impact::TaborCase;
 use crate::impact::{impact_path, ImpactPath};
 use crate::model::MaugisDugdaleImpact;
 use crate::trace::{equilibrium_state_near, BranchPoint};
 use crate::units::JkrScales;
 use std::sync::atomic::{AtomicU64, Ordering};
-use tabor_dynamics::{BranchChange, ForceLaw};
+use tabor_dynamics::{BranchChange, BranchCurve, CurvePoint, ForceLaw};
 use tabor_numerics::Cost;
 use tabor_restitution::{validate, Result};
 
@@ -21,6 +23,13 @@ use tabor_restitution::{validate, Result};
 /// branch from its tangent, module `trace`), which the law keeps as a hint; the
 /// hint changes the start of the solve, not its result (to the solve's tolerance,
 /// 1e-15 in θ), and the law stays `Sync`.
+///
+/// In case 3 (Λ > Λ2, contact from jump-in to snap-off) the simulator integrates
+/// the contact branch in θ itself ([`BranchCurve`]): depth and force are explicit
+/// there (`branch::contact_state`), so no θ is solved per force evaluation, and the
+/// snap-off, the fold dd̂/dθ = 0 where F(d) has a square-root singularity, is a
+/// regular point. In cases 1 and 2 the path joins the no-contact branch with a kink
+/// and the law is integrated in time.
 #[derive(Clone, Debug)]
 pub struct MaugisDugdaleForceLaw {
     scales: JkrScales,
@@ -206,5 +215,45 @@ impl ForceLaw for MaugisDugdaleForceLaw {
         } else {
             Ok(BranchChange::Separate)
         }
+    }
+
+    fn curve(&self) -> Option<&dyn BranchCurve> {
+        (!self.approaching && self.path.case == TaborCase::Contact).then_some(self as _)
+    }
+}
+
+impl BranchCurve for MaugisDugdaleForceLaw {
+    /// θ of the contact-branch state at the overlap (the warm-started solve).
+    fn coordinate(&self, overlap: f64) -> Result<f64> {
+        let state = self.state(overlap)?;
+        state.theta.ok_or_else(|| {
+            tabor_restitution::Error::invalid(
+                "overlap",
+                overlap,
+                "is not on the contact branch of the Maugis-Dugdale impact path",
+            )
+        })
+    }
+
+    /// The contact-branch state at θ (seed 000 section 5.3.2; `branch::contact_state`,
+    /// depth, force and dd̂/dθ in closed form), in SI units.
+    fn point(&self, coordinate: f64, _overlap_rate: f64) -> Result<CurvePoint> {
+        let s = contact_state(self.path.lambda, coordinate);
+        Ok(CurvePoint {
+            overlap: s.depth * self.scales.depth,
+            overlap_slope: s.depth_slope * self.scales.depth,
+            force: s.force * self.scales.force,
+            contact_radius: s.contact_radius * self.scales.contact_radius,
+        })
+    }
+
+    /// `θ_c − θ`: θ grows as the depth falls, to the snap-off θ_c (the fold of
+    /// d̂(θ), where `d − d_off` would touch 0 without a sign change).
+    fn end(&self, coordinate: f64) -> f64 {
+        self.path
+            .pull_off
+            .theta
+            .unwrap_or(std::f64::consts::FRAC_PI_2)
+            - coordinate
     }
 }

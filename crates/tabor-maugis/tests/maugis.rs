@@ -401,3 +401,71 @@ proptest! {
         prop_assert!((joules / (energy * normalized) - 1.0).abs() <= 1e-13);
     }
 }
+
+/// The force law's contact branch in θ (what the simulator integrates, case 3)
+/// against the force law in d (θ solved at a depth): the same overlap and force at
+/// the coordinate of a depth, the slope equal to a central difference of the
+/// overlap, the branch end at the snap-off (the fold of d(θ)); no curve while the
+/// sphere approaches, nor in cases 1 and 2 (the path has a kink there).
+#[test]
+fn force_law_curve_matches_the_traced_branch() {
+    use tabor_dynamics::ForceLaw;
+    let (e, r, dg) = (2.780_352_177_942_539e10, 0.5e-6, 0.05);
+    for lambda in [0.3, 0.55, 0.7, 1.0, 4.0, 100.0] {
+        let model = MaugisDugdaleImpact::new(
+            MaugisContact::new(JkrSphere::new(e, r, dg).unwrap(), lambda).unwrap(),
+            5.55e-15,
+        )
+        .unwrap();
+        let mut law = MaugisDugdaleForceLaw::new(&model).unwrap();
+        law.begin_impact(5.55e-15, 1.0).unwrap();
+        assert!(law.curve().is_none(), "approaching at Lambda = {lambda}");
+        let (jump_in, pull_off) = law.jump_in_and_pull_off_depths();
+        law.on_branch_end(jump_in, 1.0).unwrap();
+        let Some(curve) = law.curve() else {
+            assert!(lambda <= LAMBDA_2, "no curve at Lambda = {lambda}");
+            continue;
+        };
+        assert!(lambda > LAMBDA_2);
+        let d_n = model.scales().depth;
+        for d in [
+            jump_in,
+            0.5 * (jump_in + pull_off),
+            0.0,
+            2.0 * d_n,
+            50.0 * d_n,
+        ] {
+            let theta = curve.coordinate(d).unwrap();
+            let p = curve.point(theta, 0.0).unwrap();
+            assert!(
+                (p.overlap - d).abs() <= 1e-13 * d_n.max(d.abs()),
+                "{d}: {}",
+                p.overlap
+            );
+            let f = law.force(d, 0.0).unwrap();
+            let f_n = model.scales().force;
+            assert!(
+                (p.force - f).abs() <= 1e-12 * f_n.max(f.abs()),
+                "{f} vs {}",
+                p.force
+            );
+            let h = 1e-6 * theta;
+            let slope = (curve.point(theta + h, 0.0).unwrap().overlap
+                - curve.point(theta - h, 0.0).unwrap().overlap)
+                / (2.0 * h);
+            assert!(
+                (p.overlap_slope - slope).abs() <= 1e-7 * slope.abs(),
+                "{slope}"
+            );
+            assert!(curve.end(theta) > 0.0);
+        }
+        let theta_c = curve.end(0.0);
+        let end = curve.point(theta_c, 0.0).unwrap();
+        assert!((end.overlap - pull_off).abs() <= 1e-13 * d_n.max(pull_off.abs()));
+        assert!(
+            end.overlap_slope.abs() <= 1e-9 * d_n,
+            "{}",
+            end.overlap_slope
+        );
+    }
+}
