@@ -9,7 +9,9 @@
 //! needs an integrator tolerance of about 1e-6 × (loss / well depth) to reach 1e-6.
 //! `small_lambda_needs_a_tighter_tolerance` shows that explicitly; the property
 //! test therefore asks the integrator for 1e-13 below Λ = 0.5 (at the default 1e-11
-//! a draw at Λ = 0.217 near sticking was 1.8e-6 off).
+//! a draw at Λ = 0.217 near sticking was 1.8e-6 off while the kink of F(d) at the
+//! junction of the contact and no-contact branches was stepped over; located as an
+//! event since, it is 1.6e-9 off).
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use proptest::prelude::*;
@@ -229,10 +231,13 @@ fn penalty_bridge_reproduces_plastic_and_viscoelastic_restitution() {
 }
 
 #[test]
-fn the_default_tolerance_misses_at_small_lambda_near_sticking() {
+fn the_junction_of_the_branches_is_located_at_small_lambda_near_sticking() {
     // the case the property test drew (CI, 2026-11-24): at the default integrator
-    // tolerance the simulated restitution is 1.8e-6 off the analytic one, at 1e-13
-    // it agrees to 1e-9
+    // tolerance the simulated restitution was 1.8e-6 off the analytic one while the
+    // kink of F(d) at the junction of the contact and no-contact branches was
+    // stepped over; located as an event (tabor-maugis, the law's parts), it agrees
+    // to 1.6e-9 at the default tolerance (ε = 0.47 at 1.13 v_c: the loss is
+    // 0.78 of the kinetic energy), and at 1e-13 to 1e-9
     let (e, r, w) = (1e6, 1e-2, 1.0);
     let model = MaugisDugdaleImpact::new(
         MaugisContact::new(JkrSphere::new(e, r, w).unwrap(), 0.2171940525330137).unwrap(),
@@ -242,7 +247,7 @@ fn the_default_tolerance_misses_at_small_lambda_near_sticking() {
     let mut law = MaugisDugdaleForceLaw::new(&model).unwrap();
     let (sim, analytic) = compare(&mut law, &model, 1.1322904158807994);
     assert!(
-        (sim / analytic - 1.0).abs() > 1e-6,
+        (sim / analytic - 1.0).abs() < 1e-8,
         "sim {sim} analytic {analytic}"
     );
     let mut law = MaugisDugdaleForceLaw::new(&model).unwrap();

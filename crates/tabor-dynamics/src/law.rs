@@ -50,10 +50,17 @@ pub trait BranchCurve {
     /// (trial points of the integrator), continuing the same formulas there.
     fn point(&self, coordinate: f64, overlap_rate: f64) -> Result<CurvePoint>;
 
-    /// The signed distance to the end of the branch in q: positive while the branch
-    /// holds; it must cross 0 with a nonzero slope (where d(q) has a fold, measure
-    /// it in q, not in d). The simulator then calls [`ForceLaw::on_branch_end`].
-    fn end(&self, coordinate: f64) -> f64;
+    /// The signed distance to the end of the branch at coordinate `coordinate` and
+    /// overlap rate `overlap_rate` (m/s): positive while the branch holds; it must
+    /// cross 0 with a nonzero slope (where d(q) has a fold, measure it in q, not in
+    /// d). The simulator then calls [`ForceLaw::on_branch_end`].
+    fn end(&self, coordinate: f64, overlap_rate: f64) -> Result<f64>;
+
+    /// A typical |dd/dq| of the branch (m per unit of q, > 0), such as its value
+    /// where the motion enters the branch: the scale below which the simulator's
+    /// regularized time turns into the Sundman time, also on a segment that starts
+    /// at a fold.
+    fn slope_scale(&self) -> f64;
 }
 
 /// A contact force law for the equation of motion `m d̈ = −F(d, ḋ, history)`
@@ -160,6 +167,19 @@ pub trait ForceLaw {
         Ok(BranchChange::Stick)
     }
 
+    /// Called where [`BranchCurve::end`] of the law's curve reaches 0, at
+    /// coordinate `coordinate` (overlap `overlap`, rate `overlap_rate`): the
+    /// coordinate tells a law with several ends which one was met. Default:
+    /// [`ForceLaw::on_branch_end`].
+    fn on_curve_end(
+        &mut self,
+        _coordinate: f64,
+        overlap: f64,
+        overlap_rate: f64,
+    ) -> Result<BranchChange> {
+        self.on_branch_end(overlap, overlap_rate)
+    }
+
     /// The current branch in a coordinate of its own ([`BranchCurve`]), if the law
     /// has one there: the simulator then integrates the branch in that coordinate
     /// (its [`BranchCurve::end`] replaces [`ForceLaw::branch_end`], and
@@ -203,6 +223,9 @@ impl<L: ForceLaw + ?Sized> ForceLaw for &mut L {
     }
     fn on_min_compression(&mut self, d: f64) -> Result<BranchChange> {
         (**self).on_min_compression(d)
+    }
+    fn on_curve_end(&mut self, q: f64, d: f64, r: f64) -> Result<BranchChange> {
+        (**self).on_curve_end(q, d, r)
     }
     fn curve(&self) -> Option<&dyn BranchCurve> {
         (**self).curve()

@@ -175,8 +175,8 @@ pub fn simulate_impact<L: ForceLaw + ?Sized>(
     let start = validate::finite("start_overlap", law.start_overlap())?;
     let mut run = Run::new(law, Units::new(m, v0, scale), start, settings)?;
     let decision = loop {
-        let (kind, hit) = run.integrate_to_event(law)?;
-        if let Some(decision) = run.handle_event(law, kind, hit)? {
+        let (kind, hit, coordinate) = run.integrate_to_event(law)?;
+        if let Some(decision) = run.handle_event(law, kind, hit, coordinate)? {
             break decision;
         }
     };
@@ -290,9 +290,10 @@ impl<'s> Run<'s> {
     fn integrate_to_event<L: ForceLaw + ?Sized>(
         &mut self,
         law: &L,
-    ) -> Result<(EventKind, EventPoint<3>)> {
+    ) -> Result<(EventKind, EventPoint<3>, Option<f64>)> {
         if let Some(curve) = law.curve() {
-            return self.integrate_on_curve(law, curve);
+            let (kind, hit, q) = self.integrate_on_curve(law, curve)?;
+            return Ok((kind, hit, Some(q)));
         }
         let units = self.units;
         let settings = self.settings;
@@ -371,9 +372,9 @@ impl<'s> Run<'s> {
             y: run.solution.y,
         };
         match run.event {
-            Some(0) => Ok((EventKind::BranchEnd, hit)),
-            Some(_) if u_prev > 0.0 => Ok((EventKind::MaxCompression, hit)),
-            Some(_) => Ok((EventKind::MinCompression, hit)),
+            Some(0) => Ok((EventKind::BranchEnd, hit, None)),
+            Some(_) if u_prev > 0.0 => Ok((EventKind::MaxCompression, hit, None)),
+            Some(_) => Ok((EventKind::MinCompression, hit, None)),
             None => Err(time_limit_error(law, settings, units)),
         }
     }
@@ -382,7 +383,7 @@ impl<'s> Run<'s> {
     /// own ([`BranchCurve`]): one run of [`drive_events`] with DOP853 on the state
     /// `(q, u, w, s)` over a regularized time σ. With `S = ±dx/dq` (x = d/L, the
     /// sign fixed at the segment's start so that S > 0 inside the branch) and
-    /// `c = CURVE_BLEND · S(q_start)`:
+    /// `c = CURVE_BLEND · max(S(q_start), S_scale)` ([`BranchCurve::slope_scale`]):
     ///
     /// `ds/dσ = S/(S + c)`, `dq/dσ = ±u/(S + c)`, `du/dσ = a ds/dσ`,
     /// `dw/dσ = a u ds/dσ`, with `a = −F/(m v0²/L)`.
@@ -394,18 +395,18 @@ impl<'s> Run<'s> {
     /// limit. No largest step (σ is not the time; the error control keeps the
     /// steps far below a half oscillation); the per-step tolerance is the settings'
     /// times `CURVE_TOLERANCE_FACTOR`. Returns the event point in the units of the
-    /// time-domain state `(x, u, w)` at time s.
+    /// time-domain state `(x, u, w)` at time s, and the coordinate there.
     fn integrate_on_curve<L: ForceLaw + ?Sized>(
         &mut self,
         law: &L,
         curve: &dyn BranchCurve,
-    ) -> Result<(EventKind, EventPoint<3>)> {
+    ) -> Result<(EventKind, EventPoint<3>, f64)> {
         let units = self.units;
         let settings = self.settings;
         let q0 = curve.coordinate(units.overlap(&self.y))?;
         let start = curve.point(q0, units.rate(&self.y))?;
         let slope0 = start.overlap_slope / units.length;
-        let g_start = curve.end(q0);
+        let g_start = curve.end(q0, units.rate(&self.y))?;
         if !(slope0.is_finite() && slope0 != 0.0 && g_start.is_finite() && g_start >= 0.0) {
             return Err(simulation_error(format!(
                 "{}: at the start of a branch (d = {:e} m, q = {q0:e}) its curve has \
@@ -416,7 +417,7 @@ impl<'s> Run<'s> {
             )));
         }
         let sign = slope0.signum();
-        let blend = CURVE_BLEND * slope0.abs();
+        let blend = CURVE_BLEND * slope0.abs().max(curve.slope_scale() / units.length);
         let failure: Cell<Option<Error>> = Cell::new(None);
         let mut rhs = |_sigma: f64, st: &[f64; 4]| -> [f64; 4] {
             match curve.point(st[0], st[1] * units.speed) {
@@ -432,9 +433,14 @@ impl<'s> Run<'s> {
                 }
             }
         };
+        let event_failure: Cell<Option<Error>> = Cell::new(None);
         // [branch end, ḋ, time left]
         let mut events = |_sigma: f64, st: &[f64; 4]| -> [f64; 3] {
-            [curve.end(st[0]), st[1], settings.max_duration - st[3]]
+            let end = curve.end(st[0], st[1] * units.speed).unwrap_or_else(|e| {
+                keep_first(&event_failure, e);
+                f64::NAN
+            });
+            [end, st[1], settings.max_duration - st[3]]
         };
         let tolerance = OdeTolerance {
             relative: settings.tolerance.relative * CURVE_TOLERANCE_FACTOR,
@@ -447,7 +453,6 @@ impl<'s> Run<'s> {
         let mut stepper = DormandPrince853::new(&mut rhs, 0.0, y0, sigma_end, tolerance)
             .map_err(|e| failure.take().unwrap_or(Error::Numerics(e)))?;
         let mut u_prev = self.y[1];
-        let event_failure: Cell<Option<Error>> = Cell::new(None);
         let (trajectory, max_overlap, max_force) = (
             &mut self.trajectory,
             &mut self.max_overlap,
@@ -497,9 +502,9 @@ impl<'s> Run<'s> {
             y: [end.overlap / units.length, st[1], st[2]],
         };
         match run.event {
-            Some(0) => Ok((EventKind::BranchEnd, hit)),
-            Some(1) if u_prev > 0.0 => Ok((EventKind::MaxCompression, hit)),
-            Some(1) => Ok((EventKind::MinCompression, hit)),
+            Some(0) => Ok((EventKind::BranchEnd, hit, st[0])),
+            Some(1) if u_prev > 0.0 => Ok((EventKind::MaxCompression, hit, st[0])),
+            Some(1) => Ok((EventKind::MinCompression, hit, st[0])),
             _ => Err(time_limit_error(law, settings, units)),
         }
     }
@@ -512,6 +517,7 @@ impl<'s> Run<'s> {
         law: &mut L,
         kind: EventKind,
         hit: EventPoint<3>,
+        coordinate: Option<f64>,
     ) -> Result<Option<BranchChange>> {
         let units = self.units;
         self.s = hit.t;
@@ -526,7 +532,10 @@ impl<'s> Run<'s> {
         let decision = match kind {
             EventKind::MaxCompression => law.on_max_compression(d)?,
             EventKind::MinCompression => law.on_min_compression(d)?,
-            EventKind::BranchEnd => law.on_branch_end(d, units.rate(&y))?,
+            EventKind::BranchEnd => match coordinate {
+                Some(q) => law.on_curve_end(q, d, units.rate(&y))?,
+                None => law.on_branch_end(d, units.rate(&y))?,
+            },
         };
         self.events.push(ContactEvent {
             time: s * units.time,

@@ -347,8 +347,11 @@ impl BranchCurve for Folded {
             contact_radius: q,
         })
     }
-    fn end(&self, q: f64) -> f64 {
-        q
+    fn end(&self, q: f64, _rate: f64) -> Result<f64> {
+        Ok(q)
+    }
+    fn slope_scale(&self) -> f64 {
+        2.0 * (-self.fold_depth).sqrt()
     }
 }
 

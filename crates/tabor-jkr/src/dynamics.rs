@@ -151,7 +151,12 @@ impl BranchCurve for JkrForceLaw {
     /// `x − x_sep`: falls to 0 at the separation state of the rule (for fixed
     /// grip the fold `x = 3^(−1/3)`, where `d − d_sep` would touch 0 without a
     /// sign change).
-    fn end(&self, coordinate: f64) -> f64 {
-        coordinate - self.separation_root
+    fn end(&self, coordinate: f64, _overlap_rate: f64) -> Result<f64> {
+        Ok(coordinate - self.separation_root)
+    }
+
+    /// dd/dx at first touch, `x³ = 4/3`: `(12x³ − 4) d_n = 12 d_n`.
+    fn slope_scale(&self) -> f64 {
+        12.0 * self.sphere.scales().depth
     }
 }

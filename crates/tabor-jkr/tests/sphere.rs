@@ -430,10 +430,10 @@ fn force_law_curve_matches_the_contact_relations() {
                 (p.overlap_slope - slope).abs() <= 1e-8 * slope.abs(),
                 "{slope}"
             );
-            assert!(curve.end(x) > 0.0);
+            assert!(curve.end(x, 0.0).unwrap() > 0.0);
         }
         // the branch ends at the rule's separation state: fixed grip at the fold
-        let x_end = curve.end(0.0).abs();
+        let x_end = curve.end(0.0, 0.0).unwrap().abs();
         let end = curve.point(x_end, 0.0).unwrap();
         assert!((end.overlap - law.separation_depth()).abs() <= 1e-14 * d_n);
         match rule {

@@ -10,7 +10,7 @@
 //! target/release/examples/simcount md steps        # the accepted steps, one a line
 //! ```
 //!
-//! `LAW` is `jkr` (fixed grip) or `md` (Maugis-Dugdale at Λ = 1); the impact speed is
+//! `LAW` is `jkr` (fixed grip), `md` (Maugis-Dugdale at Λ = 1) or `md=Λ`; the impact speed is
 //! `FACTOR` (default 2) times the JKR sticking velocity. With a count, the
 //! program simulates that many impacts (the cost of one is the difference of two
 //! counts over the difference of their counts); with `steps`, it simulates one
@@ -22,7 +22,7 @@ use std::process::ExitCode;
 use tabor_dynamics::{simulate_impact, ForceLaw, ImpactSimulation, SimulationSettings};
 use tabor_jkr::{JkrForceLaw, JkrImpact, JkrSphere, SeparationRule};
 use tabor_maugis::{MaugisContact, MaugisDugdaleForceLaw, MaugisDugdaleImpact};
-use tabor_restitution::sticking_velocity;
+use tabor_restitution::{impact, sticking_velocity};
 
 const E_STAR: f64 = 2.780_352_177_942_539e10;
 const RADIUS: f64 = 0.5e-6;
@@ -37,9 +37,13 @@ fn simulate(
     let sphere = JkrSphere::new(E_STAR, RADIUS, WORK_OF_ADHESION).map_err(|e| e.to_string())?;
     let mut law: Box<dyn ForceLaw> = match law {
         "jkr" => Box::new(JkrForceLaw::new(sphere, SeparationRule::FixedGrip)),
-        "md" => {
+        md if md.starts_with("md") => {
+            let lambda = match md.strip_prefix("md=") {
+                Some(l) => l.parse::<f64>().map_err(|_| format!("{md}: md=LAMBDA"))?,
+                None => 1.0,
+            };
             let md = MaugisDugdaleImpact::new(
-                MaugisContact::new(sphere, 1.0).map_err(|e| e.to_string())?,
+                MaugisContact::new(sphere, lambda).map_err(|e| e.to_string())?,
                 MASS,
             )
             .map_err(|e| e.to_string())?;
@@ -48,6 +52,36 @@ fn simulate(
         other => return Err(format!("unknown law {other:?} (jkr or md)")),
     };
     simulate_impact(law.as_mut(), MASS, speed, settings).map_err(|e| e.to_string())
+}
+
+/// The closed-form (or quadrature) restitution of the same impact, seed 000
+/// eq. (5.37): the JKR fixed-grip loss (5.36), the Maugis-Dugdale loss (5.43)-(5.46).
+fn reference(law: &str, speed: f64) -> Result<f64, String> {
+    let sphere = JkrSphere::new(E_STAR, RADIUS, WORK_OF_ADHESION).map_err(|e| e.to_string())?;
+    let outcome = match law.strip_prefix("md=") {
+        Some(l) => {
+            let lambda = l.parse::<f64>().map_err(|e| e.to_string())?;
+            let md = MaugisDugdaleImpact::new(
+                MaugisContact::new(sphere, lambda).map_err(|e| e.to_string())?,
+                MASS,
+            )
+            .map_err(|e| e.to_string())?;
+            impact(&md, speed)
+        }
+        None if law == "md" => {
+            let md = MaugisDugdaleImpact::new(
+                MaugisContact::new(sphere, 1.0).map_err(|e| e.to_string())?,
+                MASS,
+            )
+            .map_err(|e| e.to_string())?;
+            impact(&md, speed)
+        }
+        None => impact(
+            &JkrImpact::new(sphere, MASS).map_err(|e| e.to_string())?,
+            speed,
+        ),
+    };
+    outcome.map(|o| o.restitution).map_err(|e| e.to_string())
 }
 
 fn run(args: &[String]) -> Result<(), String> {
@@ -84,10 +118,11 @@ fn run(args: &[String]) -> Result<(), String> {
             last = Some(p.time);
         }
         println!(
-            "steps {} evaluations {} restitution {:.15} energy error {:.2e} events {}",
+            "steps {} evaluations {} restitution {:.15} (closed form {:.15}) energy error {:.2e} events {}",
             sim.cost.iterations,
             sim.cost.evaluations,
             sim.restitution,
+            reference(law, v0)?,
             sim.energy_error,
             sim.events.len()
         );

@@ -1,6 +1,6 @@
 //! The Maugis-Dugdale impact as a time-domain force law for `tabor-dynamics`.
 
-use crate::branch::contact_state;
+use crate::branch::{contact_state, junction_factor, no_contact_pull_off_radius, no_contact_state};
 use crate::impact::TaborCase;
 use crate::impact::{impact_path, ImpactPath};
 use crate::model::MaugisDugdaleImpact;
@@ -24,26 +24,54 @@ use tabor_restitution::{validate, Result};
 /// hint changes the start of the solve, not its result (to the solve's tolerance,
 /// 1e-15 in θ), and the law stays `Sync`.
 ///
-/// In case 3 (Λ > Λ2, contact from jump-in to snap-off) the simulator integrates
-/// the contact branch in θ itself ([`BranchCurve`]): depth and force are explicit
-/// there (`branch::contact_state`), so no θ is solved per force evaluation, and the
-/// snap-off, the fold dd̂/dθ = 0 where F(d) has a square-root singularity, is a
-/// regular point. In cases 1 and 2 the path joins the no-contact branch with a kink
-/// and the law is integrated in time.
+/// The path has two parts in cases 1 and 2: the contact branch and the branch
+/// without contact (â = 0), which meet at the junction â = 0, b̂ = K b̂_c (5.46),
+/// where F(d) has a kink. The junction is a branch end, located as an event, where
+/// the law switches part and goes on ([`BranchChange::Continue`]).
+///
+/// Where the path ends in a snap-off, the simulator integrates it in a coordinate
+/// of its own ([`BranchCurve`]): the contact branch of case 3 in θ
+/// (`branch::contact_state`), the no-contact part of cases 1 and 2 in b̂
+/// (`branch::no_contact_state`: d̂ = (3/2)b̂² − (32Λ/π²)b̂ − 1/Λ, F̂ = −2Λb̂²).
+/// Depth and force are explicit there, so nothing is solved per force
+/// evaluation, and the snap-off, the fold of d̂ where F(d) has a square-root
+/// singularity (θ_c, b̂_c), is a regular point; so is the junction seen from the
+/// contact part, where d̂ − d̂_j ∝ (π/2 − θ)² (and the contact radius, which the
+/// viscous force of `tabor-viscoadhesive` grows with, ∝ √(d̂ − d̂_j)).
 #[derive(Clone, Debug)]
 pub struct MaugisDugdaleForceLaw {
     scales: JkrScales,
     path: ImpactPath,
-    approaching: bool,
+    part: Part,
+    /// Cases 1 and 2: the depth of the junction of the parts (normalized), where
+    /// b̂ = K b̂_c on the no-contact branch.
+    junction: Option<f64>,
     hint: Hint,
+}
+
+/// Depths within this many ε (relative) above the junction are the junction
+/// (`MaugisDugdaleForceLaw::state`).
+const JUNCTION_ROUNDING: f64 = 64.0 * f64::EPSILON;
+
+/// The shortest no-contact part, `K − 1`, that the path follows after the
+/// junction (as Λ → Λ2, K → 1); below it the bodies separate at the junction.
+const NO_CONTACT_SHORTEST: f64 = 1e-6;
+
+/// Where on the impact path the law is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Part {
+    /// Before jump-in: F = 0.
+    Approaching,
+    /// On the branch without direct contact (â = 0), cases 1 and 2.
+    NoContact,
+    /// On the contact branch (â > 0).
+    Contact,
 }
 
 impl PartialEq for MaugisDugdaleForceLaw {
     /// Equal laws: the same scales, path and branch (the hint does not count).
     fn eq(&self, other: &Self) -> bool {
-        self.scales == other.scales
-            && self.path == other.path
-            && self.approaching == other.approaching
+        self.scales == other.scales && self.path == other.path && self.part == other.part
     }
 }
 
@@ -94,12 +122,30 @@ impl Clone for Hint {
 impl MaugisDugdaleForceLaw {
     /// The force law of a Maugis-Dugdale impact.
     pub fn new(model: &MaugisDugdaleImpact) -> Result<Self> {
+        let path = impact_path(model.tabor_parameter())?;
         Ok(MaugisDugdaleForceLaw {
             scales: model.scales(),
-            path: impact_path(model.tabor_parameter())?,
-            approaching: true,
+            junction: (path.case != TaborCase::Contact).then(|| {
+                let lambda = path.lambda;
+                let b = junction_factor(lambda) * no_contact_pull_off_radius(lambda);
+                no_contact_state(lambda, b).depth
+            }),
+            path,
+            part: Part::Approaching,
             hint: Hint::empty(),
         })
+    }
+
+    /// Whether the no-contact part (b̂ from b̂_c to K b̂_c) is longer than
+    /// [`NO_CONTACT_SHORTEST`] relative to b̂_c.
+    fn no_contact_part_is_long(&self) -> bool {
+        junction_factor(self.path.lambda) - 1.0 > NO_CONTACT_SHORTEST
+    }
+
+    /// b̂_c and K b̂_c: the no-contact branch's snap-off and junction radii.
+    fn no_contact_radii(&self) -> (f64, f64) {
+        let bc = no_contact_pull_off_radius(self.path.lambda);
+        (bc, junction_factor(self.path.lambda) * bc)
     }
 
     /// The range of adhesion h = d_n/Λ (m).
@@ -142,7 +188,15 @@ impl MaugisDugdaleForceLaw {
 
     fn state(&self, overlap: f64) -> Result<crate::impact::PathState> {
         // clamp trial points beyond the snap-off to the snap-off state
-        let d = (overlap / self.scales.depth).max(self.path.pull_off.depth);
+        let mut d = (overlap / self.scales.depth).max(self.path.pull_off.depth);
+        if let Some(j) = self.junction {
+            // a hair above the junction (rounding, at its events) the contact
+            // branch's d̂(θ = π/2) may lie on either side of the target, so that
+            // θ is not bracketed: the junction state is the same to O(ε)
+            if d > j && d <= j + JUNCTION_ROUNDING * j.abs().max(1.0) {
+                d = j;
+            }
+        }
         let mut cost = Cost::ZERO;
         let (state, next) = equilibrium_state_near(&self.path, d, self.hint.get(), &mut cost)?;
         if let Some(p) = next {
@@ -173,7 +227,7 @@ impl ForceLaw for MaugisDugdaleForceLaw {
     }
 
     fn begin_impact(&mut self, _effective_mass: f64, _impact_speed: f64) -> Result<()> {
-        self.approaching = true;
+        self.part = Part::Approaching;
         Ok(())
     }
 
@@ -182,78 +236,166 @@ impl ForceLaw for MaugisDugdaleForceLaw {
     }
 
     fn in_contact(&self) -> bool {
-        !self.approaching
+        self.part != Part::Approaching
     }
 
+    /// 0 before jump-in; then the equilibrium state's force on the path at the
+    /// depth, whichever part holds there (so that the potential along the path is
+    /// its integral: `tabor-viscoadhesive` tabulates it).
     fn force(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
-        if self.approaching {
+        if self.part == Part::Approaching {
             return Ok(0.0);
         }
         Ok(self.state(overlap)?.force * self.scales.force)
     }
 
     fn contact_radius(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
-        if self.approaching {
+        if self.part == Part::Approaching {
             return Ok(0.0);
         }
         Ok(self.state(overlap)?.contact_radius * self.scales.contact_radius)
     }
 
-    fn branch_end(&self, overlap: f64, _overlap_rate: f64) -> Result<f64> {
+    /// Before jump-in `−h − d`; on the contact part `d − d_off` (case 3) or, while
+    /// unloading (ḋ ≤ 0), `d − d_j` (the junction, cases 1 and 2); on the
+    /// no-contact part `d − d_off`, or while loading (ḋ > 0) the nearer of that
+    /// and `d_j − d`. The junction the motion moves away from is no end (the
+    /// largest double instead: the law has just switched there, at distance 0);
+    /// the jump where ḋ changes sign stays above 0, so it is no event.
+    fn branch_end(&self, overlap: f64, overlap_rate: f64) -> Result<f64> {
         let (jump_in, pull_off) = self.jump_in_and_pull_off_depths();
-        Ok(if self.approaching {
-            jump_in - overlap
-        } else {
-            overlap - pull_off
+        let junction = self.junction.map(|j| j * self.scales.depth);
+        let loading = overlap_rate > 0.0;
+        Ok(match (self.part, junction) {
+            (Part::Approaching, _) => jump_in - overlap,
+            (Part::Contact, Some(_)) if loading => f64::MAX,
+            (Part::Contact, Some(junction)) => overlap - junction,
+            (Part::NoContact, Some(junction)) if loading => {
+                (overlap - pull_off).min(junction - overlap)
+            }
+            _ => overlap - pull_off,
         })
     }
 
-    fn on_branch_end(&mut self, _overlap: f64, _overlap_rate: f64) -> Result<BranchChange> {
-        if self.approaching {
-            self.approaching = false;
-            Ok(BranchChange::Continue)
-        } else {
-            Ok(BranchChange::Separate)
-        }
+    /// Jump-in at the end of the approach (onto the contact part, or in case 1 onto
+    /// the no-contact part); at the junction the other part; at a snap-off,
+    /// separation.
+    fn on_branch_end(&mut self, overlap: f64, _overlap_rate: f64) -> Result<BranchChange> {
+        let (jump_in, pull_off) = self.jump_in_and_pull_off_depths();
+        let junction = self.junction.map(|j| j * self.scales.depth);
+        let (next, decision) = match (self.part, junction) {
+            (Part::Approaching, _) => {
+                let onto_contact =
+                    self.path.jump_in.theta.is_some() || junction.is_some_and(|j| jump_in >= j);
+                let part = if onto_contact {
+                    Part::Contact
+                } else {
+                    Part::NoContact
+                };
+                (part, BranchChange::Continue)
+            }
+            // the no-contact part shrinks to nothing as Λ → Λ2 (K → 1): where it is
+            // shorter than NO_CONTACT_SHORTEST in b̂, the bodies separate at the
+            // junction (the work along it, ∝ (K − 1)², is below 1e-12 F_n d_n)
+            (Part::Contact, Some(_)) if self.no_contact_part_is_long() && overlap > pull_off => {
+                (Part::NoContact, BranchChange::Continue)
+            }
+            (Part::NoContact, Some(j)) if overlap - pull_off > j - overlap => {
+                (Part::Contact, BranchChange::Continue)
+            }
+            (part, _) => (part, BranchChange::Separate),
+        };
+        self.part = next;
+        Ok(decision)
     }
 
+    /// The contact part in θ, the no-contact part in b̂.
     fn curve(&self) -> Option<&dyn BranchCurve> {
-        (!self.approaching && self.path.case == TaborCase::Contact).then_some(self as _)
+        (self.part != Part::Approaching).then_some(self as _)
     }
 }
 
+/// The part of the path the law is on, in its coordinate: θ on the contact branch,
+/// b̂ on the no-contact branch.
 impl BranchCurve for MaugisDugdaleForceLaw {
-    /// θ of the contact-branch state at the overlap (the warm-started solve).
+    /// θ (contact branch; π/2 at the junction and below it) or b̂ (no-contact
+    /// branch, the larger root of d̂(b̂) = d̂, closed form) of the state at the
+    /// overlap.
     fn coordinate(&self, overlap: f64) -> Result<f64> {
-        let state = self.state(overlap)?;
-        state.theta.ok_or_else(|| {
-            tabor_restitution::Error::invalid(
-                "overlap",
-                overlap,
-                "is not on the contact branch of the Maugis-Dugdale impact path",
-            )
-        })
+        let lambda = self.path.lambda;
+        let depth = overlap / self.scales.depth;
+        if self.part == Part::NoContact {
+            // (3/2)b² − 3 b_c b − (1/Λ + d) = 0, larger root
+            let (bc, _) = self.no_contact_radii();
+            let c = 1.0 / lambda + depth;
+            let disc = (9.0 * bc * bc + 6.0 * c).max(0.0);
+            // on the part: [b̂_c, K b̂_c] (rounding at its ends)
+            let (_, b_junction) = self.no_contact_radii();
+            return Ok(((3.0 * bc + disc.sqrt()) / 3.0).clamp(bc, b_junction));
+        }
+        if let Some(j) = self.junction {
+            // at the junction (â = 0, θ = π/2) to rounding: d̂ − d̂_j ∝ (π/2 − θ)²
+            // there, so the depth tells θ to the square root of its rounding only
+            if depth <= j + JUNCTION_ROUNDING * j.abs().max(1.0) {
+                return Ok(std::f64::consts::FRAC_PI_2);
+            }
+        }
+        match self.state(overlap)?.theta {
+            Some(theta) => Ok(theta),
+            None => Ok(std::f64::consts::FRAC_PI_2),
+        }
     }
 
-    /// The contact-branch state at θ (seed 000 section 5.3.2; `branch::contact_state`,
-    /// depth, force and dd̂/dθ in closed form), in SI units.
+    /// The state at θ ([`contact_state`], seed 000 section 5.3.2) or at b̂
+    /// ([`no_contact_state`], (5.41), (5.44); dd̂/db̂ = 3b̂ − 32Λ/π², â = 0), in SI
+    /// units.
     fn point(&self, coordinate: f64, _overlap_rate: f64) -> Result<CurvePoint> {
-        let s = contact_state(self.path.lambda, coordinate);
+        let (depth, slope, force, contact_radius) = if self.part == Part::NoContact {
+            let lambda = self.path.lambda;
+            let b = coordinate;
+            let s = no_contact_state(lambda, b);
+            let (bc, _) = self.no_contact_radii();
+            (s.depth, 3.0 * (b - bc), s.force, 0.0)
+        } else {
+            let s = contact_state(self.path.lambda, coordinate);
+            (s.depth, s.depth_slope, s.force, s.contact_radius)
+        };
         Ok(CurvePoint {
-            overlap: s.depth * self.scales.depth,
-            overlap_slope: s.depth_slope * self.scales.depth,
-            force: s.force * self.scales.force,
-            contact_radius: s.contact_radius * self.scales.contact_radius,
+            overlap: depth * self.scales.depth,
+            overlap_slope: slope * self.scales.depth,
+            force: force * self.scales.force,
+            contact_radius: contact_radius * self.scales.contact_radius,
         })
     }
 
-    /// `θ_c − θ`: θ grows as the depth falls, to the snap-off θ_c (the fold of
-    /// d̂(θ), where `d − d_off` would touch 0 without a sign change).
-    fn end(&self, coordinate: f64) -> f64 {
-        self.path
-            .pull_off
-            .theta
-            .unwrap_or(std::f64::consts::FRAC_PI_2)
-            - coordinate
+    /// Contact branch: `θ_top − θ` (θ grows as the depth falls), θ_top the snap-off
+    /// θ_c in case 3, the junction π/2 in cases 1 and 2. No-contact branch: the
+    /// nearer of the snap-off `b̂ − b̂_c` and the junction `K b̂_c − b̂`. At a fold
+    /// (the snap-offs), `d − d_off` would touch 0 without a sign change.
+    fn end(&self, coordinate: f64, overlap_rate: f64) -> Result<f64> {
+        let loading = overlap_rate > 0.0;
+        Ok(match (self.part, self.path.pull_off.theta) {
+            (Part::NoContact, _) => {
+                let (bc, b_junction) = self.no_contact_radii();
+                if loading {
+                    (coordinate - bc).min(b_junction - coordinate)
+                } else {
+                    coordinate - bc
+                }
+            }
+            (_, Some(theta_c)) => theta_c - coordinate,
+            (_, None) if loading => f64::MAX,
+            (_, None) => std::f64::consts::FRAC_PI_2 - coordinate,
+        })
+    }
+
+    /// dd/dq where the motion enters the path, at jump-in: `dd̂/dθ` there (cases
+    /// 2 and 3) or `dd̂/db̂ = 3(2b̂_c − b̂_c)` (case 1), times d_n.
+    fn slope_scale(&self) -> f64 {
+        let slope = match self.path.jump_in.theta {
+            Some(theta) => contact_state(self.path.lambda, theta).depth_slope.abs(),
+            None => 3.0 * no_contact_pull_off_radius(self.path.lambda),
+        };
+        slope * self.scales.depth
     }
 }

@@ -402,16 +402,18 @@ proptest! {
     }
 }
 
-/// The force law's contact branch in θ (what the simulator integrates, case 3)
-/// against the force law in d (θ solved at a depth): the same overlap and force at
-/// the coordinate of a depth, the slope equal to a central difference of the
-/// overlap, the branch end at the snap-off (the fold of d(θ)); no curve while the
-/// sphere approaches, nor in cases 1 and 2 (the path has a kink there).
+/// The force law's path in its coordinates (what the simulator integrates: the
+/// contact branch in θ, the no-contact branch in b̂) against the force law in d
+/// (θ solved at a depth): the same overlap and force at the coordinate of a depth,
+/// the slope equal to a central difference of the overlap, and the ends of the
+/// part the motion unloads along: the snap-off (a fold of d(q): slope 0) in case 3
+/// (θ_c) and case 1 (b̂_c), the junction with the no-contact branch in case 2
+/// (θ = π/2, where d̂ − d̂_j ∝ (π/2 − θ)²: slope 0 too). No curve while approaching.
 #[test]
 fn force_law_curve_matches_the_traced_branch() {
     use tabor_dynamics::ForceLaw;
     let (e, r, dg) = (2.780_352_177_942_539e10, 0.5e-6, 0.05);
-    for lambda in [0.3, 0.55, 0.7, 1.0, 4.0, 100.0] {
+    for lambda in [0.3, 0.4, 0.55, 0.6, 0.7, 1.0, 4.0, 100.0] {
         let model = MaugisDugdaleImpact::new(
             MaugisContact::new(JkrSphere::new(e, r, dg).unwrap(), lambda).unwrap(),
             5.55e-15,
@@ -422,50 +424,62 @@ fn force_law_curve_matches_the_traced_branch() {
         assert!(law.curve().is_none(), "approaching at Lambda = {lambda}");
         let (jump_in, pull_off) = law.jump_in_and_pull_off_depths();
         law.on_branch_end(jump_in, 1.0).unwrap();
-        let Some(curve) = law.curve() else {
-            assert!(lambda <= LAMBDA_2, "no curve at Lambda = {lambda}");
-            continue;
-        };
-        assert!(lambda > LAMBDA_2);
+        let curve = law.curve().unwrap();
         let d_n = model.scales().depth;
-        for d in [
-            jump_in,
-            0.5 * (jump_in + pull_off),
-            0.0,
-            2.0 * d_n,
-            50.0 * d_n,
-        ] {
-            let theta = curve.coordinate(d).unwrap();
-            let p = curve.point(theta, 0.0).unwrap();
+        let f_n = model.scales().force;
+        // depths on the part the motion enters at jump-in
+        let depths: Vec<f64> = if lambda <= LAMBDA_1 {
+            (1..=4)
+                .map(|k| pull_off + 0.25 * k as f64 * (jump_in - pull_off))
+                .collect()
+        } else {
+            vec![jump_in, 0.0, 2.0 * d_n, 50.0 * d_n]
+        };
+        for d in depths {
+            let q = curve.coordinate(d).unwrap();
+            let p = curve.point(q, 0.0).unwrap();
+            let tolerance = 1e-13 * d_n.max(d.abs());
             assert!(
-                (p.overlap - d).abs() <= 1e-13 * d_n.max(d.abs()),
-                "{d}: {}",
+                (p.overlap - d).abs() <= tolerance,
+                "{lambda} {d}: {}",
                 p.overlap
             );
             let f = law.force(d, 0.0).unwrap();
-            let f_n = model.scales().force;
             assert!(
                 (p.force - f).abs() <= 1e-12 * f_n.max(f.abs()),
                 "{f} vs {}",
                 p.force
             );
-            let h = 1e-6 * theta;
-            let slope = (curve.point(theta + h, 0.0).unwrap().overlap
-                - curve.point(theta - h, 0.0).unwrap().overlap)
+            let h = 1e-6 * q;
+            let slope = (curve.point(q + h, 0.0).unwrap().overlap
+                - curve.point(q - h, 0.0).unwrap().overlap)
                 / (2.0 * h);
             assert!(
                 (p.overlap_slope - slope).abs() <= 1e-7 * slope.abs(),
                 "{slope}"
             );
-            assert!(curve.end(theta) > 0.0);
+            assert!(curve.end(q, -1.0).unwrap() > 0.0);
         }
-        let theta_c = curve.end(0.0);
-        let end = curve.point(theta_c, 0.0).unwrap();
-        assert!((end.overlap - pull_off).abs() <= 1e-13 * d_n.max(pull_off.abs()));
+        // the end the unloading meets: 0 at q_end = q + end(q)·(dq/d(end))
+        let q = curve.coordinate(jump_in).unwrap();
+        let end = curve.end(q, -1.0).unwrap();
+        let q_end = if lambda <= LAMBDA_1 { q - end } else { q + end };
+        assert!(curve.end(q_end, -1.0).unwrap().abs() < 1e-15);
+        let at_end = curve.point(q_end, -1.0).unwrap();
         assert!(
-            end.overlap_slope.abs() <= 1e-9 * d_n,
+            at_end.overlap_slope.abs() <= 1e-9 * d_n,
             "{}",
-            end.overlap_slope
+            at_end.overlap_slope
         );
+        if lambda <= LAMBDA_1 || lambda > LAMBDA_2 {
+            let tolerance = 1e-13 * d_n.max(pull_off.abs());
+            assert!((at_end.overlap - pull_off).abs() <= tolerance);
+        } else {
+            // case 2: the junction, where the no-contact part takes over (â = 0)
+            assert!(at_end.overlap > pull_off);
+            assert!(at_end.contact_radius.abs() <= 1e-15 * model.scales().contact_radius);
+            let f = law.force(at_end.overlap, 0.0).unwrap();
+            assert!((at_end.force - f).abs() <= 1e-12 * f_n.max(f.abs()));
+        }
     }
 }

@@ -7,7 +7,7 @@
 use crate::law::SeparationPotential;
 use std::cell::Cell;
 use std::sync::Arc;
-use tabor_dynamics::{BranchChange, ForceLaw};
+use tabor_dynamics::{BranchChange, BranchCurve, ForceLaw};
 use tabor_jkr::{JkrForceLaw, JkrSphere, SeparationRule};
 use tabor_maugis::MaugisDugdaleForceLaw;
 use tabor_numerics::root_finding::{brent, RootTolerance};
@@ -298,6 +298,19 @@ impl ForceLaw for AdhesiveForceLaw {
     }
     fn on_min_compression(&mut self, overlap: f64) -> Result<BranchChange> {
         delegate_mut!(self, l => l.on_min_compression(overlap))
+    }
+    fn on_curve_end(
+        &mut self,
+        coordinate: f64,
+        overlap: f64,
+        overlap_rate: f64,
+    ) -> Result<BranchChange> {
+        delegate_mut!(self, l => l.on_curve_end(coordinate, overlap, overlap_rate))
+    }
+    /// The inner law's: JKR in `x = √â`, Maugis-Dugdale in θ (contact) and b̂
+    /// (no contact).
+    fn curve(&self) -> Option<&dyn BranchCurve> {
+        delegate!(self, l => l.curve())
     }
 }
 

@@ -1,7 +1,7 @@
 //! The viscous wrapper: any [`ForceLaw`] plus the Kuwabara-Kono viscous force of
 //! its own contact radius, and the energy criterion for sticking.
 
-use tabor_dynamics::{BranchChange, ForceLaw};
+use tabor_dynamics::{BranchChange, BranchCurve, CurvePoint, ForceLaw};
 use tabor_jkr::JkrForceLaw;
 use tabor_maugis::MaugisDugdaleForceLaw;
 use tabor_restitution::{validate, Error, Result};
@@ -233,6 +233,87 @@ impl<L: SeparationPotential> ViscousDamping<L> {
     fn length_scale(&self) -> f64 {
         self.length_per_energy * self.kinetic_energy
     }
+
+    /// `decision`, but a stick when it continues onto a branch (Maugis-Dugdale
+    /// jump-in, or the junction of its parts) without the energy to separate.
+    fn stick_if_doomed(
+        &self,
+        decision: BranchChange,
+        overlap: f64,
+        overlap_rate: f64,
+    ) -> Result<BranchChange> {
+        if decision == BranchChange::Continue {
+            if let Some(e) = self.energy_branch_end(overlap, overlap_rate)? {
+                if e <= 0.0 {
+                    return Ok(BranchChange::Stick);
+                }
+            }
+        }
+        Ok(decision)
+    }
+
+    /// At coordinate `coordinate` of the inner curve: its end, and the energy
+    /// criterion as a fraction of the impact's kinetic energy (if known).
+    fn curve_ends(&self, coordinate: f64, overlap_rate: f64) -> Result<(f64, Option<f64>)> {
+        let curve = self.inner_curve()?;
+        let g = curve.end(coordinate, overlap_rate)?;
+        let overlap = curve.point(coordinate, overlap_rate)?.overlap;
+        let e = self.energy_branch_end(overlap, overlap_rate)?;
+        Ok((g, e.map(|e| e / self.length_scale())))
+    }
+
+    /// The inner law's curve (present whenever [`ForceLaw::curve`] of the wrapper
+    /// is).
+    fn inner_curve(&self) -> Result<&dyn BranchCurve> {
+        self.inner.curve().ok_or_else(|| Error::Model {
+            model: "viscous damping",
+            message: "the inner law has no branch curve here".into(),
+        })
+    }
+}
+
+/// `force` (N) when finite, else an error naming the state.
+fn representable(force: f64, overlap: f64, overlap_rate: f64) -> Result<f64> {
+    if force.is_finite() {
+        Ok(force)
+    } else {
+        Err(Error::Model {
+            model: "viscous damping",
+            message: format!(
+                "the force is not representable ({force}) at d = {overlap:e} m, d' = \
+                 {overlap_rate:e} m/s"
+            ),
+        })
+    }
+}
+
+/// The wrapper on the inner law's branch curve (JKR in `x = √â`, Maugis-Dugdale
+/// case 3 in θ): the same point with the viscous force of its contact radius added
+/// (README eq. (V1)), and the branch ending at the inner curve's end or where the
+/// energy criterion (V4) falls to 0, whichever comes first.
+impl<L: SeparationPotential> BranchCurve for ViscousDamping<L> {
+    fn coordinate(&self, overlap: f64) -> Result<f64> {
+        self.inner_curve()?.coordinate(overlap)
+    }
+
+    fn point(&self, coordinate: f64, overlap_rate: f64) -> Result<CurvePoint> {
+        let mut p = self.inner_curve()?.point(coordinate, overlap_rate)?;
+        let total = p.force + self.viscous_force_at(p.contact_radius, overlap_rate);
+        p.force = representable(total, p.overlap, overlap_rate)?;
+        Ok(p)
+    }
+
+    /// The smaller of the inner curve's end and the energy criterion as a fraction
+    /// of the impact's kinetic energy (both of order 1 away from their ends; only
+    /// where they cross 0 counts).
+    fn end(&self, coordinate: f64, overlap_rate: f64) -> Result<f64> {
+        let (g, e) = self.curve_ends(coordinate, overlap_rate)?;
+        Ok(e.map_or(g, |e| g.min(e)))
+    }
+
+    fn slope_scale(&self) -> f64 {
+        self.inner.curve().map_or(f64::NAN, |c| c.slope_scale())
+    }
 }
 
 impl<L: SeparationPotential> ForceLaw for ViscousDamping<L> {
@@ -283,18 +364,11 @@ impl<L: SeparationPotential> ForceLaw for ViscousDamping<L> {
             return Ok(elastic);
         }
         let a = self.inner.contact_radius(overlap, overlap_rate)?;
-        let f = elastic + self.viscous_force_at(a, overlap_rate);
-        if f.is_finite() {
-            Ok(f)
-        } else {
-            Err(Error::Model {
-                model: "viscous damping",
-                message: format!(
-                    "the force is not representable ({f}) at d = {overlap:e} m, d' = \
-                     {overlap_rate:e} m/s"
-                ),
-            })
-        }
+        representable(
+            elastic + self.viscous_force_at(a, overlap_rate),
+            overlap,
+            overlap_rate,
+        )
     }
 
     fn contact_radius(&self, overlap: f64, overlap_rate: f64) -> Result<f64> {
@@ -322,14 +396,26 @@ impl<L: SeparationPotential> ForceLaw for ViscousDamping<L> {
             }
         }
         let decision = self.inner.on_branch_end(overlap, overlap_rate)?;
-        if decision == BranchChange::Continue {
-            if let Some(e) = self.energy_branch_end(overlap, overlap_rate)? {
-                if e <= 0.0 {
-                    return Ok(BranchChange::Stick);
-                }
+        self.stick_if_doomed(decision, overlap, overlap_rate)
+    }
+
+    /// [`ForceLaw::on_branch_end`] on the inner curve: stick when the energy
+    /// criterion, not the inner curve's end, ended the branch (compared as in
+    /// [`BranchCurve::end`]); otherwise the inner law's decision at the coordinate
+    /// (which of its ends it met), turned into a stick as there.
+    fn on_curve_end(
+        &mut self,
+        coordinate: f64,
+        overlap: f64,
+        overlap_rate: f64,
+    ) -> Result<BranchChange> {
+        if let (g, Some(e)) = self.curve_ends(coordinate, overlap_rate)? {
+            if e <= g {
+                return Ok(BranchChange::Stick);
             }
         }
-        Ok(decision)
+        let decision = self.inner.on_curve_end(coordinate, overlap, overlap_rate)?;
+        self.stick_if_doomed(decision, overlap, overlap_rate)
     }
 
     /// The inner law's decision; [`BranchChange::Stick`] when the impact started in
@@ -346,5 +432,11 @@ impl<L: SeparationPotential> ForceLaw for ViscousDamping<L> {
 
     fn on_min_compression(&mut self, overlap: f64) -> Result<BranchChange> {
         self.inner.on_min_compression(overlap)
+    }
+
+    /// On the inner law's branch curve while in contact (the viscous force needs
+    /// the contact radius, which the curve gives).
+    fn curve(&self) -> Option<&dyn BranchCurve> {
+        (self.inner.in_contact() && self.inner.curve().is_some()).then_some(self as _)
     }
 }
