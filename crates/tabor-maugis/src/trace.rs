@@ -142,7 +142,21 @@ pub(crate) fn equilibrium_state_near(
     }
     let s = match near.and_then(|p| theta_near(lambda, depth, theta_top, p, cost)) {
         Some(s) => s,
-        None => contact_state(lambda, theta_at_depth(lambda, depth, theta_top, cost)?),
+        None => match theta_at_depth(lambda, depth, theta_top, cost) {
+            Ok(theta) => contact_state(lambda, theta),
+            // cases 1 and 2: a depth between the junction's depth as the no-contact
+            // branch gives it (taken as no contact above) and as the contact branch
+            // gives it at θ = π/2 (they differ by rounding, up to ~1e-14, as the
+            // contact branch's depth cancels there) has no θ below π/2: it is the
+            // junction (â = 0)
+            Err(_)
+                if path.case != TaborCase::Contact
+                    && contact_state(lambda, FRAC_PI_2).depth >= depth =>
+            {
+                contact_state(lambda, FRAC_PI_2)
+            }
+            Err(e) => return Err(e),
+        },
     };
     let state = PathState {
         contact_radius: s.contact_radius,

@@ -585,3 +585,65 @@ fn restitution_never_rises_with_adhesion_viscosity_or_cohesive_stress() {
         },
     );
 }
+
+/// Two scenes the 10⁵-case run of the properties above drew (both viscous-adhesive
+/// with a Maugis-Dugdale range; the simulator had stepped over the kink of F(d) at
+/// the junction of the contact and no-contact branches): the restitution jumped by
+/// 2.1e-7 in 1 − ε² across Λ1 at accuracy 1e-8; and a depth a hair above the
+/// junction (between its two formulas' roundings) had no θ, so the scene erred.
+#[test]
+fn regressions_of_the_large_run_at_the_branch_junction() {
+    let across_lambda_1 = Spec {
+        radius: 7.22375356290814e-5,
+        density: 3233.3929795284107,
+        modulus: 59905978.14744807,
+        poisson: 0.014353026411759121,
+        target_sphere: true,
+        target_modulus: 52078452566.35248,
+        target_poisson: 0.1333114673475124,
+        work_of_adhesion: Some(0.01750662635956151),
+        range: None,
+        load_controlled: false,
+        yield_stress: None,
+        plastic_model: "auto",
+        superposition: false,
+        sphere_viscosity: Some(6.033105208892428),
+        target_viscosity: Some(5338.595241121118),
+        accuracy: 1e-8,
+    };
+    let scene = across_lambda_1.scene().unwrap();
+    let speed = 0.02263378821607054;
+    let eps_at = |l: f64| {
+        scene
+            .with_parameter(SweepParameter::TaborParameter, l)
+            .and_then(|s| s.restitution_with_error(speed))
+            .ok()
+    };
+    let j = jump(LAMBDA_1, &eps_at).unwrap();
+    assert!(j <= 3.0 * across_lambda_1.accuracy + 1e-8, "jump {j}");
+    let at_the_junction = Spec {
+        radius: 1.2591593048519706e-6,
+        density: 899.9999999999998,
+        modulus: 159653413622.7527,
+        poisson: 0.0,
+        target_sphere: false,
+        target_modulus: 137638487902.3963,
+        target_poisson: 0.19358995422374248,
+        work_of_adhesion: Some(0.0037716384588271095),
+        range: Some(2.3170040751989438e-9),
+        load_controlled: false,
+        yield_stress: None,
+        plastic_model: "auto",
+        superposition: false,
+        sphere_viscosity: Some(3991335.340568817),
+        target_viscosity: Some(3574940.4940465568),
+        accuracy: 1e-10,
+    };
+    let o = at_the_junction.scene().unwrap().outcome_at(1.0).unwrap();
+    outcome_is_consistent(&o, 1.0).unwrap();
+    assert!(
+        o.warnings.iter().all(|w| w.code != "sticking-velocity-unknown"),
+        "{:?}",
+        o.warnings
+    );
+}
