@@ -9,7 +9,7 @@
 //! stored once per distinct value (as JSON, turned into Python objects at the
 //! end). New record fields reach Python without a change here.
 
-use numpy::PyArray1;
+use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 use serde::ser::{self, Impossible, Serialize};
@@ -520,84 +520,188 @@ pub trait OwnFields {
     fn write(&self, out: &mut [f64]);
 }
 
-impl Merged {
-    /// The columns of a batch of split records: the shared records' fields
-    /// (`shared`, one row per record) gathered by `codes` (`NO_RECORD`: missing),
-    /// each replaced by the own field of the same name, then the other own
-    /// fields; `valid` adds the bool column `valid`. A single shared record is
-    /// filled rather than gathered.
-    pub fn from_split(
-        shared: Columns,
-        codes: &[u32],
-        own: Vec<(&'static str, Data)>,
-        valid: Option<Vec<bool>>,
-    ) -> Result<Merged, Error> {
-        if !shared.warnings.entries.is_empty() {
-            return Err(Error("a shared record carries warnings".into()));
-        }
-        let complete = !codes.contains(&NO_RECORD);
-        let gather = |d: &Data| -> Data {
-            fn take<T: Copy + Send + Sync>(
-                v: &[T],
-                codes: &[u32],
-                missing: T,
-                complete: bool,
-            ) -> Vec<T> {
-                if complete && v.len() == 1 {
-                    return vec![v[0]; codes.len()];
+/// An output column of `n` elements allocated by numpy (zeroed): numpy's
+/// allocator asks the kernel for huge pages for large arrays, so that filling a
+/// fresh column costs far fewer page faults than a `Vec` of the same size.
+pub fn numpy_zeros<T: numpy::Element>(py: Python<'_>, n: usize) -> Bound<'_, PyArray1<T>> {
+    PyArray1::<T>::zeros(py, n, false)
+}
+
+/// `out[i] = values[codes[i]]` (`missing` for a code without a value) in
+/// parallel on the batch's pool, or `out` filled with `values[0]` when
+/// `constant`.
+fn gather_into<T: Copy + Send + Sync>(
+    out: &mut [T],
+    values: &[T],
+    codes: &[u32],
+    missing: T,
+    constant: bool,
+) {
+    use rayon::prelude::*;
+    let pieces = out.par_chunks_mut(crate::batch::CHUNK);
+    if constant {
+        let v = values.first().copied().unwrap_or(missing);
+        pieces.for_each(|o| o.fill(v));
+    } else {
+        pieces
+            .zip(codes.par_chunks(crate::batch::CHUNK))
+            .for_each(|(o, c)| {
+                for (x, &k) in o.iter_mut().zip(c) {
+                    *x = values.get(k as usize).copied().unwrap_or(missing);
                 }
-                codes
-                    .iter()
-                    .map(|&c| v.get(c as usize).copied().unwrap_or(missing))
-                    .collect()
-            }
-            match d {
-                Data::Null(_) => Data::Null(codes.len()),
-                Data::F64(v) => Data::F64(take(v, codes, f64::NAN, complete)),
-                Data::Bool(v) => Data::Bool(take(v, codes, false, complete)),
-                Data::I64(v) => Data::I64(take(v, codes, -1, complete)),
-                Data::Str(v) => Data::Str(take(v, codes, 0, complete)),
-                Data::Json(v) => Data::Json(take(v, codes, 0, complete)),
+            });
+    }
+}
+
+/// Whether every value of a shared column is the same (floats by their bits).
+fn constant(d: &Data) -> bool {
+    fn all_equal<T: PartialEq>(v: &[T]) -> bool {
+        v.windows(2).all(|w| w[0] == w[1])
+    }
+    match d {
+        Data::Null(_) => true,
+        Data::F64(v) => v.windows(2).all(|w| w[0].to_bits() == w[1].to_bits()),
+        Data::Bool(v) => all_equal(v),
+        Data::I64(v) => all_equal(v),
+        Data::Str(v) | Data::Json(v) => all_equal(v),
+    }
+}
+
+/// The columns of a batch of split records as the dict [`Merged::into_py`]
+/// returns: the shared records' fields (`shared`, one row per record) gathered
+/// by `codes` (`NO_RECORD`: missing) into fresh numpy arrays, in parallel on the
+/// pool of `threads` with the GIL released, each replaced by the own column of
+/// the same name (`own`, numpy arrays already filled), then the other own
+/// columns and `valid` (when given). A shared field with the same value in
+/// every record is filled rather than gathered; a string or object field with
+/// the same value everywhere comes as `("fill", value, n)` (numpy fills an object
+/// array with one reference faster than it takes codes).
+pub fn split_into_py<'py>(
+    py: Python<'py>,
+    shared: Columns,
+    codes: &[u32],
+    own: Vec<(&'static str, Bound<'py, PyAny>)>,
+    valid: Option<Bound<'py, PyAny>>,
+    threads: Option<usize>,
+) -> PyResult<Bound<'py, PyDict>> {
+    if !shared.warnings.entries.is_empty() {
+        return Err(pyo3::exceptions::PyRuntimeError::new_err(
+            "a shared record carries warnings",
+        ));
+    }
+    let n = codes.len();
+    let complete = !codes.contains(&NO_RECORD);
+    let parallel = |f: &mut (dyn FnMut() + Send)| -> PyResult<()> {
+        py.detach(|| crate::batch::install(threads, &mut *f))
+            .map_err(pyo3::exceptions::PyRuntimeError::new_err)
+    };
+    fn gathered<'py, T: numpy::Element + Copy + Send + Sync>(
+        py: Python<'py>,
+        values: &[T],
+        codes: &[u32],
+        missing: T,
+        constant: bool,
+        parallel: &dyn Fn(&mut (dyn FnMut() + Send)) -> PyResult<()>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let array = numpy_zeros::<T>(py, codes.len());
+        {
+            let mut guard = array.readwrite();
+            let out = guard
+                .as_slice_mut()
+                .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
+            parallel(&mut || gather_into(out, values, codes, missing, constant))?;
+        }
+        Ok(array.into_any())
+    }
+    let dict = PyDict::new(py);
+    let mut strings: Option<Bound<'py, PyList>> = None;
+    let mut json: Option<Bound<'py, PyList>> = None;
+    let mut own: Vec<Option<(&'static str, Bound<'py, PyAny>)>> =
+        own.into_iter().map(Some).collect();
+    for c in &shared.columns {
+        let mine = own
+            .iter_mut()
+            .find(|o| o.as_ref().is_some_and(|(name, _)| same_name(name, &c.name)))
+            .and_then(Option::take);
+        if let Some((_, array)) = mine {
+            dict.set_item(c.name.as_ref(), array)?;
+            continue;
+        }
+        let fill = complete && constant(&c.data);
+        let value: Bound<'py, PyAny> = match &c.data {
+            Data::Null(_) => PyTuple::new(
+                py,
+                [
+                    "null".into_pyobject(py)?.into_any(),
+                    n.into_pyobject(py)?.into_any(),
+                ],
+            )?
+            .into_any(),
+            Data::F64(v) => gathered(py, v, codes, f64::NAN, fill, &parallel)?,
+            Data::Bool(v) => gathered(py, v, codes, false, fill, &parallel)?,
+            Data::I64(v) => gathered(py, v, codes, -1, fill, &parallel)?,
+            Data::Str(v) | Data::Json(v) => {
+                let is_str = matches!(c.data, Data::Str(_));
+                let list = if is_str { &mut strings } else { &mut json };
+                if list.is_none() {
+                    let l = PyList::new(py, [py.None()])?;
+                    if is_str {
+                        for s in &shared.strings.values {
+                            l.append(s)?;
+                        }
+                    } else {
+                        for s in &shared.json.values {
+                            let value: Value = serde_json::from_str(s).unwrap_or(Value::Null);
+                            l.append(crate::convert::json_to_py(py, &value)?)?;
+                        }
+                    }
+                    *list = Some(l);
+                }
+                let table = list
+                    .as_ref()
+                    .map(|l| l.clone().into_any())
+                    .into_pyobject(py)?
+                    .into_any();
+                if fill {
+                    let code = v.first().copied().unwrap_or(0) as usize;
+                    let item = table.get_item(code)?;
+                    PyTuple::new(
+                        py,
+                        [
+                            "fill".into_pyobject(py)?.into_any(),
+                            item,
+                            n.into_pyobject(py)?.into_any(),
+                        ],
+                    )?
+                    .into_any()
+                } else {
+                    let entries = if is_str {
+                        shared.strings.values.len()
+                    } else {
+                        shared.json.values.len()
+                    } + 1;
+                    let full: Vec<u32> = codes
+                        .iter()
+                        .map(|&k| v.get(k as usize).copied().unwrap_or(0))
+                        .collect();
+                    PyTuple::new(py, [table, small_codes(py, full, entries)])?.into_any()
+                }
             }
         };
-        let mut own: Vec<Option<(&'static str, Data)>> = own.into_iter().map(Some).collect();
-        let mut columns: Vec<(Cow<'static, str>, Data)> = Vec::new();
-        for c in &shared.columns {
-            let mine = own
-                .iter_mut()
-                .find(|o| o.as_ref().is_some_and(|(name, _)| same_name(name, &c.name)))
-                .and_then(Option::take);
-            let data = match mine {
-                Some((_, d)) => d,
-                None => gather(&c.data),
-            };
-            columns.push((c.name.clone(), data));
-        }
-        for (name, data) in own.into_iter().flatten() {
-            columns.push((Cow::Borrowed(name), data));
-        }
-        if let Some(v) = valid {
-            columns.push((Cow::Borrowed("valid"), Data::Bool(v)));
-        }
-        Ok(Merged {
-            columns,
-            strings: shared.strings.values,
-            json: shared.json.values,
-        })
+        dict.set_item(c.name.as_ref(), value)?;
     }
+    for (name, array) in own.into_iter().flatten() {
+        dict.set_item(name, array)?;
+    }
+    if let Some(v) = valid {
+        dict.set_item("valid", v)?;
+    }
+    Ok(dict)
 }
 
 /// The rows of `columns`.
 pub fn shared_rows(columns: &Columns) -> u32 {
     columns.rows as u32
-}
-
-/// An own column of `OwnFields` as its typed data.
-pub fn own_column(kind: OwnKind, values: Vec<f64>) -> Data {
-    match kind {
-        OwnKind::Float => Data::F64(values),
-        OwnKind::Bool => Data::Bool(values.into_iter().map(|x| x == 1.0).collect()),
-    }
 }
 
 /// The names of a record's fields as the serializer writes them (for the check

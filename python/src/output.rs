@@ -4,10 +4,10 @@
 
 use crate::batch::{chunks_of, run, Chunk, Options, Report, Stop, CHUNK};
 use crate::columns::{
-    own_column, shared_rows, Columns, Data, Merged, OwnFields, Sink, Warnings, NO_RECORD,
+    numpy_zeros, shared_rows, split_into_py, Columns, OwnFields, OwnKind, Sink, Warnings, NO_RECORD,
 };
 use crate::failure::Failure;
-use numpy::{PyArray1, PyReadonlyArray1};
+use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use serde::Serialize;
@@ -333,23 +333,51 @@ impl Call<'_> {
         };
         let k = V::FIELDS.len();
         let n = self.n;
-        // zeroed (fresh pages, no fill pass); the rows that did not run are set
-        // missing at the end
+        // the output columns are numpy's from the start (huge pages, no copy at
+        // the end); every row is written, NaN/false where the element failed
         let mut codes = vec![0u32; n];
-        let mut valid = vec![false; n];
-        let mut own_cols: Vec<Vec<f64>> = (0..k).map(|_| vec![0.0; n]).collect();
+        let valid_array = numpy_zeros::<bool>(py, n);
+        let own_arrays: Vec<OwnArray<'py>> = V::FIELDS
+            .iter()
+            .map(|(_, kind)| match kind {
+                OwnKind::Float => OwnArray::Float(numpy_zeros::<f64>(py, n)),
+                OwnKind::Bool => OwnArray::Bool(numpy_zeros::<bool>(py, n)),
+            })
+            .collect();
+        let mut valid_guard = valid_array.readwrite();
+        let mut own_guards: Vec<OwnGuard<'py>> = own_arrays
+            .iter()
+            .map(|a| match a {
+                OwnArray::Float(a) => OwnGuard::Float(a.readwrite()),
+                OwnArray::Bool(a) => OwnGuard::Bool(a.readwrite()),
+            })
+            .collect();
+        let not_contiguous =
+            |e: numpy::AsSliceError| pyo3::exceptions::PyRuntimeError::new_err(e.to_string());
         let outs: Vec<SplitChunk<'_, P>> = {
             let mut codes_it = codes.chunks_mut(CHUNK);
-            let mut valid_it = valid.chunks_mut(CHUNK);
-            let mut own_its: Vec<_> = own_cols.iter_mut().map(|c| c.chunks_mut(CHUNK)).collect();
+            let mut valid_it = valid_guard
+                .as_slice_mut()
+                .map_err(not_contiguous)?
+                .chunks_mut(CHUNK);
+            let mut own_its: Vec<OwnChunks<'_>> = own_guards
+                .iter_mut()
+                .map(|g| {
+                    Ok(match g {
+                        OwnGuard::Float(g) => OwnChunks::Float(
+                            g.as_slice_mut().map_err(not_contiguous)?.chunks_mut(CHUNK),
+                        ),
+                        OwnGuard::Bool(g) => OwnChunks::Bool(
+                            g.as_slice_mut().map_err(not_contiguous)?.chunks_mut(CHUNK),
+                        ),
+                    })
+                })
+                .collect::<PyResult<_>>()?;
             (0..chunks_of(n, CHUNK))
                 .map(|_| SplitChunk {
                     codes: codes_it.next().unwrap_or_default(),
                     valid: valid_it.next().unwrap_or_default(),
-                    own: own_its
-                        .iter_mut()
-                        .map(|it| it.next().unwrap_or_default())
-                        .collect(),
+                    own: own_its.iter_mut().map(OwnChunks::next).collect(),
                     prepared: Vec::new(),
                 })
                 .collect()
@@ -367,6 +395,7 @@ impl Call<'_> {
                 }
                 let prepared = &mut chunk.out.prepared;
                 let code = match &last {
+                    Some((j, Ok(c))) if same(i, *j) => Ok(*c),
                     Some((j, r)) if same(i, *j) => r.clone(),
                     _ => by_key
                         .entry(key(i))
@@ -377,16 +406,19 @@ impl Call<'_> {
                         })
                         .clone(),
                 };
-                let values = code.clone().and_then(|c| {
-                    let p = &chunk.out.prepared[c as usize];
-                    let previous = near.as_ref().filter(|(pc, _)| *pc == c).map(|(_, v)| v);
-                    crate::batch::guarded(|| own(p, i, previous)).map(|v| (c, v))
-                });
+                let values = match code {
+                    Ok(c) => {
+                        let p = &chunk.out.prepared[c as usize];
+                        let previous = near.as_ref().filter(|(pc, _)| *pc == c).map(|(_, v)| v);
+                        crate::batch::guarded(|| own(p, i, previous)).map(|v| (c, v))
+                    }
+                    Err(ref f) => Err(f.clone()),
+                };
                 last = Some((i, code));
+                let j = i - start;
+                let out = &mut chunk.out;
                 match values {
                     Ok((c, v)) => {
-                        let j = i - start;
-                        let out = &mut chunk.out;
                         out.codes[j] = c;
                         out.valid[j] = true;
                         if let Some(v) = v {
@@ -396,10 +428,15 @@ impl Call<'_> {
                             row.fill(f64::NAN);
                         }
                         for (col, x) in out.own.iter_mut().zip(&row) {
-                            col[j] = *x;
+                            col.set(j, *x);
                         }
                     }
-                    Err(f) => chunk.fail(i, f),
+                    Err(f) => {
+                        for col in out.own.iter_mut() {
+                            col.set(j, f64::NAN);
+                        }
+                        chunk.fail(i, f)
+                    }
                 }
             }
         });
@@ -420,25 +457,78 @@ impl Call<'_> {
                 *c = if *ok { *c + base } else { NO_RECORD };
             }
         }
-        for (j, _) in valid.iter().enumerate().filter(|(_, ok)| !**ok) {
-            for col in &mut own_cols {
-                col[j] = f64::NAN;
-            }
-        }
+        // the columns are written: their borrows end before Python sees them
+        drop(own_guards);
+        drop(valid_guard);
         let with_valid = self.options.errors == crate::batch::Errors::Nan;
-        let merged = py
-            .detach(|| {
-                let own: Vec<(&'static str, Data)> = V::FIELDS
-                    .iter()
-                    .zip(own_cols)
-                    .map(|(&(name, kind), values)| (name, own_column(kind, values)))
-                    .collect();
-                Merged::from_split(shared, &codes, own, with_valid.then_some(valid))
-            })
-            .map_err(|e| internal(e).into_pyerr(py, None))?;
+        let own: Vec<(&'static str, Bound<'py, PyAny>)> = V::FIELDS
+            .iter()
+            .zip(own_arrays)
+            .map(|(&(name, _), a)| (name, a.into_any()))
+            .collect();
+        let dict = split_into_py(
+            py,
+            shared,
+            &codes,
+            own,
+            with_valid.then(|| valid_array.into_any()),
+            self.options.threads,
+        )?;
+        drop(codes);
         let report = self.report(py, report, &Warnings::default())?;
-        let dict: Bound<'py, PyDict> = merged.into_py(py)?;
         PyTuple::new(py, [dict.into_any(), report.into_any()])
+    }
+}
+
+/// An own output column of [`Call::split_columns`].
+enum OwnArray<'py> {
+    Float(Bound<'py, PyArray1<f64>>),
+    Bool(Bound<'py, PyArray1<bool>>),
+}
+
+impl<'py> OwnArray<'py> {
+    fn into_any(self) -> Bound<'py, PyAny> {
+        match self {
+            OwnArray::Float(a) => a.into_any(),
+            OwnArray::Bool(a) => a.into_any(),
+        }
+    }
+}
+
+/// The write borrow of an own output column while the batch fills it.
+enum OwnGuard<'py> {
+    Float(numpy::PyReadwriteArray1<'py, f64>),
+    Bool(numpy::PyReadwriteArray1<'py, bool>),
+}
+
+/// The chunks of an own output column.
+enum OwnChunks<'a> {
+    Float(std::slice::ChunksMut<'a, f64>),
+    Bool(std::slice::ChunksMut<'a, bool>),
+}
+
+impl<'a> OwnChunks<'a> {
+    fn next(&mut self) -> OwnSlice<'a> {
+        match self {
+            OwnChunks::Float(it) => OwnSlice::Float(it.next().unwrap_or_default()),
+            OwnChunks::Bool(it) => OwnSlice::Bool(it.next().unwrap_or_default()),
+        }
+    }
+}
+
+/// One chunk of an own output column (a bool column takes 1.0 as true).
+enum OwnSlice<'a> {
+    Float(&'a mut [f64]),
+    Bool(&'a mut [bool]),
+}
+
+impl OwnSlice<'_> {
+    #[inline]
+    fn set(&mut self, j: usize, x: f64) {
+        match self {
+            OwnSlice::Float(s) => s[j] = x,
+            OwnSlice::Bool(s) => s[j] = x == 1.0,
+        }
     }
 }
 
@@ -447,7 +537,7 @@ impl Call<'_> {
 struct SplitChunk<'a, P> {
     codes: &'a mut [u32],
     valid: &'a mut [bool],
-    own: Vec<&'a mut [f64]>,
+    own: Vec<OwnSlice<'a>>,
     prepared: Vec<P>,
 }
 
