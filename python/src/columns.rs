@@ -553,6 +553,23 @@ fn gather_into<T: Copy + Send + Sync>(
     }
 }
 
+/// An object array of `n` references to `item` (numpy's memory): what
+/// `numpy.full(n, item, dtype=object)` gives, without numpy's None fill and
+/// casting loop.
+fn filled_objects<'py>(py: Python<'py>, item: &Bound<'py, PyAny>, n: usize) -> Bound<'py, PyAny> {
+    // SAFETY: a fresh contiguous array of `n` object slots, which numpy
+    // allocates zeroed (NULL, no reference held); each slot is written once
+    // with a reference of its own, before Python sees the array.
+    unsafe {
+        let array = PyArray1::<Py<PyAny>>::new(py, n, false);
+        let data = array.data();
+        for i in 0..n {
+            std::ptr::write(data.add(i), item.clone().unbind());
+        }
+        array.into_any()
+    }
+}
+
 /// Whether every value of a shared column is the same (floats by their bits).
 fn constant(d: &Data) -> bool {
     fn all_equal<T: PartialEq>(v: &[T]) -> bool {
@@ -574,8 +591,8 @@ fn constant(d: &Data) -> bool {
 /// the same name (`own`, numpy arrays already filled), then the other own
 /// columns and `valid` (when given). A shared field with the same value in
 /// every record is filled rather than gathered; a string or object field with
-/// the same value everywhere comes as `("fill", value, n)` (numpy fills an object
-/// array with one reference faster than it takes codes).
+/// the same value everywhere comes as the object array itself (rather than
+/// `(table, codes)` for numpy to take from).
 pub fn split_into_py<'py>(
     py: Python<'py>,
     shared: Columns,
@@ -601,10 +618,15 @@ pub fn split_into_py<'py>(
         codes: &[u32],
         missing: T,
         constant: bool,
+        is_zero: fn(&T) -> bool,
         parallel: &dyn Fn(&mut (dyn FnMut() + Send)) -> PyResult<()>,
     ) -> PyResult<Bound<'py, PyAny>> {
         let array = numpy_zeros::<T>(py, codes.len());
-        {
+        // a zeroed array holds a constant of zero bits already (an exact-form
+        // loss's error estimate, its evaluation count): its pages stay untouched
+        // (a read maps the kernel's zero page)
+        let zero = constant && values.first().is_some_and(is_zero);
+        if !zero {
             let mut guard = array.readwrite();
             let out = guard
                 .as_slice_mut()
@@ -637,9 +659,17 @@ pub fn split_into_py<'py>(
                 ],
             )?
             .into_any(),
-            Data::F64(v) => gathered(py, v, codes, f64::NAN, fill, &parallel)?,
-            Data::Bool(v) => gathered(py, v, codes, false, fill, &parallel)?,
-            Data::I64(v) => gathered(py, v, codes, -1, fill, &parallel)?,
+            Data::F64(v) => gathered(
+                py,
+                v,
+                codes,
+                f64::NAN,
+                fill,
+                |x| x.to_bits() == 0,
+                &parallel,
+            )?,
+            Data::Bool(v) => gathered(py, v, codes, false, fill, |x| !*x, &parallel)?,
+            Data::I64(v) => gathered(py, v, codes, -1, fill, |x| *x == 0, &parallel)?,
             Data::Str(v) | Data::Json(v) => {
                 let is_str = matches!(c.data, Data::Str(_));
                 let list = if is_str { &mut strings } else { &mut json };
@@ -664,16 +694,7 @@ pub fn split_into_py<'py>(
                     .into_any();
                 if fill {
                     let code = v.first().copied().unwrap_or(0) as usize;
-                    let item = table.get_item(code)?;
-                    PyTuple::new(
-                        py,
-                        [
-                            "fill".into_pyobject(py)?.into_any(),
-                            item,
-                            n.into_pyobject(py)?.into_any(),
-                        ],
-                    )?
-                    .into_any()
+                    filled_objects(py, &table.get_item(code)?, n)
                 } else {
                     let entries = if is_str {
                         shared.strings.values.len()

@@ -166,7 +166,7 @@ impl Call<'_> {
         py: Python<'py>,
         f: impl Fn(usize, &mut Columns) -> Result<(), Failure> + Sync,
     ) -> PyResult<Bound<'py, PyTuple>> {
-        self.record_chunks(py, |chunk| {
+        self.record_chunks(py, CHUNK, |chunk| {
             let range = chunk.range.clone();
             for i in range {
                 if !chunk.go(i) {
@@ -233,7 +233,7 @@ impl Call<'_> {
         chunk: impl Fn(std::ops::Range<usize>) -> Vec<Result<T, Failure>> + Sync,
         put: impl Fn(&mut Columns, T) -> Result<(), Failure> + Sync,
     ) -> PyResult<Bound<'py, PyTuple>> {
-        self.record_chunks(py, |c| {
+        self.record_chunks(py, RECORD_CHUNK, |c| {
             let whole = c.range.clone();
             for start in whole.clone().step_by(RECORDS_PER_CALL) {
                 let range = start..(start + RECORDS_PER_CALL).min(whole.end);
@@ -266,28 +266,37 @@ impl Call<'_> {
 
 /// Elements per call of [`Call::chunked_records`]'s `chunk`: enough to share its
 /// set-up (a scene's models), few enough that the records held at once (a
-/// scene's outcome is about 2 kB) stay small.
-pub const RECORDS_PER_CALL: usize = 256;
+/// scene's outcome is about 2 kB, so 128 kB per thread) stay small.
+pub const RECORDS_PER_CALL: usize = 64;
+
+/// Rows per chunk of [`Call::chunked_records`]: each chunk's rows wait in a
+/// chunk of columns until the chunk is done, so this bounds the memory held
+/// besides the outputs (a scene's outcome has about 30 columns, 245 bytes a row:
+/// 63 kB per chunk in work), which at [`CHUNK`] rows was 1 MB per thread, the
+/// fixed cost that dominated a sweep of 10⁴ points.
+pub const RECORD_CHUNK: usize = 256;
 
 impl Call<'_> {
-    /// Runs `work` on every chunk of rows (each chunk's `out` starts empty), each
-    /// finished chunk copied into the batch's columns at once ([`Sink`]); returns
-    /// `(columns, (failed, first message))`, the warnings emitted.
+    /// Runs `work` on every chunk of `rows` rows (each chunk's `out` starts
+    /// empty), each finished chunk copied into the batch's columns at once
+    /// ([`Sink`]); returns `(columns, (failed, first message))`, the warnings
+    /// emitted.
     fn record_chunks<'py>(
         &self,
         py: Python<'py>,
+        rows: usize,
         work: impl Fn(&mut Chunk<'_, Columns>) + Sync,
     ) -> PyResult<Bound<'py, PyTuple>> {
-        let k_chunks = chunks_of(self.n, CHUNK);
+        let k_chunks = chunks_of(self.n, rows);
         let outs: Vec<Columns> = (0..k_chunks)
             .map(|c| {
-                let mut cols = Columns::at(c * CHUNK);
-                cols.reserve(CHUNK.min(self.n.saturating_sub(c * CHUNK)));
+                let mut cols = Columns::at(c * rows);
+                cols.reserve(rows.min(self.n.saturating_sub(c * rows)));
                 cols
             })
             .collect();
         let sink = Sink::new(self.n);
-        let result = run(py, self.n, CHUNK, outs, self.options, |chunk| {
+        let result = run(py, self.n, rows, outs, self.options, |chunk| {
             work(chunk);
             sink.absorb(std::mem::take(&mut chunk.out));
         });
@@ -308,9 +317,9 @@ impl Call<'_> {
     /// `prepare(i)` runs once per distinct key (`same(i, j)` recognises an element
     /// that shares the previous one's key without building it) and each element
     /// stores the code of its prepared part and, from `own(&prepared, i, near)`
-    /// (`None`: no fields of its own, NaN; `near`: the previous element's own
-    /// fields when it shares the prepared part, a warm start), its [`OwnFields`]
-    /// by position. The shared
+    /// (`None`: no fields of its own, NaN; `near`: a warm start, the own fields
+    /// of the last element a multiple of [`WARM_STRIDE`] back that had them, when
+    /// it shares the prepared part), its [`OwnFields`] by position. The shared
     /// records are serialized once each, at the end, and gathered by code.
     #[allow(clippy::too_many_arguments)]
     pub fn split_columns<'py, P, R, V>(
@@ -388,7 +397,7 @@ impl Call<'_> {
             let mut last: Option<(usize, Result<u32, Failure>)> = None;
             let mut row = vec![f64::NAN; k];
             // the previous element's prepared code and own fields (a warm start)
-            let mut near: Option<(u32, V)> = None;
+            let mut near: [Option<(u32, V)>; WARM_STRIDE] = [None; WARM_STRIDE];
             for i in chunk.range.clone() {
                 if !chunk.go(i) {
                     break;
@@ -409,7 +418,10 @@ impl Call<'_> {
                 let values = match code {
                     Ok(c) => {
                         let p = &chunk.out.prepared[c as usize];
-                        let previous = near.as_ref().filter(|(pc, _)| *pc == c).map(|(_, v)| v);
+                        let previous = near[i % WARM_STRIDE]
+                            .as_ref()
+                            .filter(|(pc, _)| *pc == c)
+                            .map(|(_, v)| v);
                         crate::batch::guarded(|| own(p, i, previous)).map(|v| (c, v))
                     }
                     Err(ref f) => Err(f.clone()),
@@ -423,7 +435,7 @@ impl Call<'_> {
                         out.valid[j] = true;
                         if let Some(v) = v {
                             v.write(&mut row);
-                            near = Some((c, v));
+                            near[i % WARM_STRIDE] = Some((c, v));
                         } else {
                             row.fill(f64::NAN);
                         }
@@ -479,6 +491,13 @@ impl Call<'_> {
         PyTuple::new(py, [dict.into_any(), report.into_any()])
     }
 }
+
+/// The distance of an element's warm start in [`Call::split_columns`]: each
+/// element starts from the own fields of the element this far back, so that
+/// the elements form this many independent chains (a root search that starts
+/// from its neighbour's root waits for it; independent chains let the processor
+/// overlap one element's search with the next ones').
+const WARM_STRIDE: usize = 8;
 
 /// An own output column of [`Call::split_columns`].
 enum OwnArray<'py> {

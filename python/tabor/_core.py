@@ -122,10 +122,6 @@ class Batch:
         if isinstance(value, tuple):
             if isinstance(value[0], str) and value[0] == "null":
                 flat = np.full(value[1], None, dtype=object)
-            elif isinstance(value[0], str) and value[0] == "fill":
-                # one value everywhere: an object array filled with one reference
-                flat = np.empty(value[2], dtype=object)
-                flat.fill(value[1])
             else:
                 table, codes = value
                 objects = np.empty(len(table), dtype=object)
