@@ -11,7 +11,7 @@
 
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyTuple};
+use pyo3::types::{PyDict, PyTuple};
 use serde::ser::{self, Impossible, Serialize};
 use serde_json::Value;
 use std::borrow::Cow;
@@ -553,23 +553,6 @@ fn gather_into<T: Copy + Send + Sync>(
     }
 }
 
-/// An object array of `n` references to `item` (numpy's memory): what
-/// `numpy.full(n, item, dtype=object)` gives, without numpy's None fill and
-/// casting loop.
-fn filled_objects<'py>(py: Python<'py>, item: &Bound<'py, PyAny>, n: usize) -> Bound<'py, PyAny> {
-    // SAFETY: a fresh contiguous array of `n` object slots, which numpy
-    // allocates zeroed (NULL, no reference held); each slot is written once
-    // with a reference of its own, before Python sees the array.
-    unsafe {
-        let array = PyArray1::<Py<PyAny>>::new(py, n, false);
-        let data = array.data();
-        for i in 0..n {
-            std::ptr::write(data.add(i), item.clone().unbind());
-        }
-        array.into_any()
-    }
-}
-
 /// Whether every value of a shared column is the same (floats by their bits).
 fn constant(d: &Data) -> bool {
     fn all_equal<T: PartialEq>(v: &[T]) -> bool {
@@ -590,9 +573,8 @@ fn constant(d: &Data) -> bool {
 /// pool of `threads` with the GIL released, each replaced by the own column of
 /// the same name (`own`, numpy arrays already filled), then the other own
 /// columns and `valid` (when given). A shared field with the same value in
-/// every record is filled rather than gathered; a string or object field with
-/// the same value everywhere comes as the object array itself (rather than
-/// `(table, codes)` for numpy to take from).
+/// every record is filled rather than gathered; string and object fields come
+/// as object arrays, as from [`Merged::into_py`].
 pub fn split_into_py<'py>(
     py: Python<'py>,
     shared: Columns,
@@ -636,8 +618,8 @@ pub fn split_into_py<'py>(
         Ok(array.into_any())
     }
     let dict = PyDict::new(py);
-    let mut strings: Option<Bound<'py, PyList>> = None;
-    let mut json: Option<Bound<'py, PyList>> = None;
+    let mut strings: Option<Vec<Bound<'py, PyAny>>> = None;
+    let mut json: Option<Vec<Bound<'py, PyAny>>> = None;
     let mut own: Vec<Option<(&'static str, Bound<'py, PyAny>)>> =
         own.into_iter().map(Some).collect();
     for c in &shared.columns {
@@ -672,40 +654,22 @@ pub fn split_into_py<'py>(
             Data::I64(v) => gathered(py, v, codes, -1, fill, |x| *x == 0, &parallel)?,
             Data::Str(v) | Data::Json(v) => {
                 let is_str = matches!(c.data, Data::Str(_));
-                let list = if is_str { &mut strings } else { &mut json };
-                if list.is_none() {
-                    let l = PyList::new(py, [py.None()])?;
-                    if is_str {
-                        for s in &shared.strings.values {
-                            l.append(s)?;
-                        }
+                let table = if is_str { &mut strings } else { &mut json };
+                if table.is_none() {
+                    *table = Some(if is_str {
+                        object_table(py, &shared.strings.values, false)?
                     } else {
-                        for s in &shared.json.values {
-                            let value: Value = serde_json::from_str(s).unwrap_or(Value::Null);
-                            l.append(crate::convert::json_to_py(py, &value)?)?;
-                        }
-                    }
-                    *list = Some(l);
+                        object_table(py, &shared.json.values, true)?
+                    });
                 }
-                let table = list
-                    .as_ref()
-                    .map(|l| l.clone().into_any())
-                    .into_pyobject(py)?
-                    .into_any();
+                let table = table.as_deref().unwrap_or_default();
                 if fill {
-                    let code = v.first().copied().unwrap_or(0) as usize;
-                    filled_objects(py, &table.get_item(code)?, n)
+                    let only = v.first().copied().unwrap_or(0);
+                    objects(py, table, n, |_| only)
                 } else {
-                    let entries = if is_str {
-                        shared.strings.values.len()
-                    } else {
-                        shared.json.values.len()
-                    } + 1;
-                    let full: Vec<u32> = codes
-                        .iter()
-                        .map(|&k| v.get(k as usize).copied().unwrap_or(0))
-                        .collect();
-                    PyTuple::new(py, [table, small_codes(py, full, entries)])?.into_any()
+                    objects(py, table, n, |i| {
+                        v.get(codes[i] as usize).copied().unwrap_or(0)
+                    })
                 }
             }
         };
@@ -889,13 +853,13 @@ pub struct Merged {
 
 impl Merged {
     /// The columns as a dict: float64, bool and int64 arrays; string and object
-    /// columns as `(table, codes)` tuples (`table[0]` is None) for the Python
-    /// layer to expand with `numpy.take`; an all-None column as `("null", n)`.
+    /// columns as object arrays (None where missing); an all-None column as
+    /// `("null", n)`. Each column's codes are freed as soon as its array is
+    /// made.
     pub fn into_py(self, py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
         let dict = PyDict::new(py);
-        let mut strings: Option<Bound<'_, PyList>> = None;
-        let mut json: Option<Bound<'_, PyList>> = None;
-        let (n_strings, n_json) = (self.strings.len() + 1, self.json.len() + 1);
+        let mut strings = None;
+        let mut json = None;
         for (name, data) in self.columns {
             match data {
                 Data::Null(n) => dict.set_item(name.as_ref(), ("null", n))?,
@@ -904,44 +868,17 @@ impl Merged {
                 Data::I64(v) => dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?,
                 Data::Str(v) => {
                     if strings.is_none() {
-                        let list = PyList::new(py, [py.None()])?;
-                        for s in &self.strings {
-                            list.append(s)?;
-                        }
-                        strings = Some(list);
+                        strings = Some(object_table(py, &self.strings, false)?);
                     }
-                    let table = strings.as_ref().map(|l| l.clone().into_any());
-                    dict.set_item(
-                        name.as_ref(),
-                        PyTuple::new(
-                            py,
-                            [
-                                table.into_pyobject(py)?.into_any(),
-                                small_codes(py, v, n_strings),
-                            ],
-                        )?,
-                    )?;
+                    let table = strings.as_deref().unwrap_or_default();
+                    dict.set_item(name.as_ref(), objects(py, table, v.len(), |i| v[i]))?;
                 }
                 Data::Json(v) => {
                     if json.is_none() {
-                        let list = PyList::new(py, [py.None()])?;
-                        for s in &self.json {
-                            let value: Value = serde_json::from_str(s).unwrap_or(Value::Null);
-                            list.append(crate::convert::json_to_py(py, &value)?)?;
-                        }
-                        json = Some(list);
+                        json = Some(object_table(py, &self.json, true)?);
                     }
-                    let table = json.as_ref().map(|l| l.clone().into_any());
-                    dict.set_item(
-                        name.as_ref(),
-                        PyTuple::new(
-                            py,
-                            [
-                                table.into_pyobject(py)?.into_any(),
-                                small_codes(py, v, n_json),
-                            ],
-                        )?,
-                    )?;
+                    let table = json.as_deref().unwrap_or_default();
+                    dict.set_item(name.as_ref(), objects(py, table, v.len(), |i| v[i]))?;
                 }
             }
         }
@@ -949,15 +886,47 @@ impl Merged {
     }
 }
 
-/// Codes into a table of `table` entries as the smallest unsigned array that
-/// holds them (1 byte per element for up to 256 distinct values).
-fn small_codes(py: Python<'_>, codes: Vec<u32>, table: usize) -> Bound<'_, PyAny> {
-    if table <= 1 << 8 {
-        PyArray1::from_vec(py, codes.into_iter().map(|c| c as u8).collect()).into_any()
-    } else if table <= 1 << 16 {
-        PyArray1::from_vec(py, codes.into_iter().map(|c| c as u16).collect()).into_any()
-    } else {
-        PyArray1::from_vec(py, codes).into_any()
+/// The Python objects of a string table (`json`: of a JSON table), led by None
+/// (code 0).
+fn object_table<'py>(
+    py: Python<'py>,
+    values: &[String],
+    json: bool,
+) -> PyResult<Vec<Bound<'py, PyAny>>> {
+    let mut table = Vec::with_capacity(values.len() + 1);
+    table.push(py.None().into_bound(py));
+    for s in values {
+        table.push(if json {
+            let value: Value = serde_json::from_str(s).unwrap_or(Value::Null);
+            crate::convert::json_to_py(py, &value)?
+        } else {
+            s.into_pyobject(py)?.into_any()
+        });
+    }
+    Ok(table)
+}
+
+/// An object array of `n` references, element `i` to `table[code(i)]` (None
+/// for a code outside the table), in numpy's memory: what `numpy.take` of the
+/// table gives, without the codes' cast to intp or numpy's None fill.
+fn objects<'py>(
+    py: Python<'py>,
+    table: &[Bound<'py, PyAny>],
+    n: usize,
+    code: impl Fn(usize) -> u32,
+) -> Bound<'py, PyAny> {
+    let none = py.None().into_bound(py);
+    // SAFETY: a fresh contiguous array of `n` object slots, which numpy
+    // allocates zeroed (NULL, no reference held); each slot is written once
+    // with a reference of its own, before Python sees the array.
+    unsafe {
+        let array = PyArray1::<Py<PyAny>>::new(py, n, false);
+        let data = array.data();
+        for i in 0..n {
+            let item = table.get(code(i) as usize).unwrap_or(&none);
+            std::ptr::write(data.add(i), item.clone().unbind());
+        }
+        array.into_any()
     }
 }
 

@@ -234,10 +234,10 @@ pub fn max_contact_radius(kinetic_energy: f64, tolerance: f64) -> Result<MaxCont
 /// [`max_contact_radius`] started from `near`, the maximum contact radius of a
 /// nearby kinetic energy (a batch over sorted speeds: neighbours differ by parts
 /// per million). From there one Halley step lands when the error it leaves (its
-/// cubic term, bounded from the derivatives at the start) is below the width, a
+/// cubic term, bounded from the derivatives at the start) is below rounding, a
 /// second one follows otherwise (3 to 5 from a cold start). A `near` that is not
 /// beyond the radius where the work vanishes is ignored. The answer agrees with the
-/// cold start's to the width of the stopping test (0.025 `tolerance` in `√â`).
+/// cold start's to rounding.
 ///
 /// Seed 000, eq. (5.35).
 pub fn max_contact_radius_near(
@@ -281,16 +281,17 @@ pub fn max_contact_radius_near(
         }
         // the error Halley's step leaves, |f''²/(4f'²) − f'''/(6f')| |step|³ to
         // leading order (its asymptotic constant; f''' = 12s(72c² − 70c + 4),
-        // c = s³), taken 4 times, below the width: the step lands on the root
-        // without another evaluation (from a neighbour's radius in a batch over
-        // sorted speeds, the usual case). Only for steps below 1e-3 s, where the
-        // leading order is all there is.
+        // c = s³), taken twice, below ε/4 of s: the step lands on the root to
+        // rounding without another evaluation (from a neighbour's radius in a
+        // dense batch over sorted speeds). Only for steps below 1e-3 s, where
+        // the leading order is all there is.
         let lands = halley_used && step.abs() <= 1e-3 * s && {
             let c = s * s * s;
             let third = 12.0 * s * ((72.0 * c - 70.0) * c + 4.0);
             // |f''²/4 − f''' f'/6| against f'², without a division
             let constant_times_slope2 = (0.25 * curvature * curvature - third * slope / 6.0).abs();
-            4.0 * constant_times_slope2 * step.abs().powi(3) <= width * s * slope * slope
+            2.0 * constant_times_slope2 * step.abs().powi(3)
+                <= 0.25 * f64::EPSILON * s * slope * slope
         };
         // every root lies beyond the zero-work radius, where W is convex: a
         // step from a start above the root stays there
@@ -492,9 +493,9 @@ mod tests {
                 assert_eq!(m.contact_radius, cold.contact_radius);
             }
         }
-        // from a neighbour up to 1e-5 away in energy, one Halley step lands (its
-        // error bound is below the width); farther away a second step is taken;
-        // either way the root of the cold start to the width 0.025·tol (in √â)
+        // from a neighbour up to 1e-7 away in energy, one Halley step lands (its
+        // error bound is below rounding); farther away a second step is taken;
+        // either way the root of the cold start to rounding
         for k in 0..=96 {
             let kinetic = 10f64.powf(-10.0 + 0.25 * f64::from(k));
             let cold = max_contact_radius(kinetic, 1e-12).unwrap();
@@ -503,11 +504,11 @@ mod tests {
                 let warm =
                     max_contact_radius_near(kinetic, 1e-12, Some(near.contact_radius)).unwrap();
                 assert!(
-                    (warm.contact_radius / cold.contact_radius - 1.0).abs() <= 0.05e-12,
+                    (warm.contact_radius / cold.contact_radius - 1.0).abs() < 4.0 * f64::EPSILON,
                     "K {kinetic:e}, offset {offset:e}: {warm:?} vs {cold:?}"
                 );
                 assert!(warm.energy_residual <= 1e-12, "K {kinetic:e}: {warm:?}");
-                if offset.abs() <= 1e-5 {
+                if offset.abs() <= 1e-7 {
                     assert_eq!(
                         warm.cost.iterations, 1,
                         "K {kinetic:e}, {offset:e}: {warm:?}"
