@@ -289,7 +289,8 @@ pub fn max_contact_radius_near(
             let c = s * s * s;
             let third = 12.0 * s * ((72.0 * c - 70.0) * c + 4.0);
             // |f''²/4 − f''' f'/6| against f'², without a division
-            let constant_times_slope2 = (0.25 * curvature * curvature - third * slope / 6.0).abs();
+            let constant_times_slope2 =
+                (0.25 * curvature * curvature - third * slope * (1.0 / 6.0)).abs();
             2.0 * constant_times_slope2 * step.abs().powi(3)
                 <= 0.25 * f64::EPSILON * s * slope * slope
         };
