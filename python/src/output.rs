@@ -320,8 +320,9 @@ impl Call<'_> {
     /// that shares the previous one's key without building it) and each element
     /// stores the code of its prepared part and, from `own(&prepared, i, near)`
     /// (`None`: no fields of its own, NaN; `near`: a warm start, the own fields
-    /// of the last element that had them, when it shares the prepared part), its
-    /// [`OwnFields`] by position. The shared
+    /// of the last element before it in its run of the chunk (a chunk is
+    /// [`LANES`] contiguous runs, visited in turn) that had them, when it shares
+    /// the prepared part), its [`OwnFields`] by position. The shared
     /// records are serialized once each, at the end, and gathered by code.
     #[allow(clippy::too_many_arguments)]
     pub fn split_columns<'py, P, R, V>(
@@ -394,59 +395,72 @@ impl Call<'_> {
                 .collect()
         };
         let result = run(py, n, CHUNK, outs, self.options, |chunk| {
-            let start = chunk.range.start;
+            let range = chunk.range.clone();
             let mut by_key: HashMap<Vec<u64>, Result<u32, Failure>> = HashMap::new();
-            let mut last: Option<(usize, Result<u32, Failure>)> = None;
             let mut row = vec![f64::NAN; k];
-            // the previous element's prepared code and own fields (a warm start)
-            let mut near: Option<(u32, V)> = None;
-            for i in chunk.range.clone() {
-                if !chunk.go(i) {
-                    break;
-                }
-                let prepared = &mut chunk.out.prepared;
-                let code = match &last {
-                    Some((j, Ok(c))) if same(i, *j) => Ok(*c),
-                    Some((j, r)) if same(i, *j) => r.clone(),
-                    _ => by_key
-                        .entry(key(i))
-                        .or_insert_with(|| {
-                            let p = crate::batch::guarded(|| prepare(i))?;
-                            prepared.push(p);
-                            Ok(prepared.len() as u32 - 1)
-                        })
-                        .clone(),
-                };
-                let values = match code {
-                    Ok(c) => {
-                        let p = &chunk.out.prepared[c as usize];
-                        let previous = near.as_ref().filter(|(pc, _)| *pc == c).map(|(_, v)| v);
-                        crate::batch::guarded(|| own(p, i, previous)).map(|v| (c, v))
+            // the chunk in LANES contiguous runs, visited in turn (element k of
+            // each run, then element k + 1): each run warm-starts from its own
+            // previous element, its neighbour, and the runs do not wait on one
+            // another, so the processor overlaps their root searches
+            let run_len = range.len().div_ceil(LANES);
+            let mut lanes: [Lane<V>; LANES] = std::array::from_fn(|_| Lane {
+                last: None,
+                near: None,
+            });
+            for step in 0..run_len {
+                for (l, lane) in lanes.iter_mut().enumerate() {
+                    let i = range.start + l * run_len + step;
+                    if i >= range.end || !chunk.go(i) {
+                        continue;
                     }
-                    Err(ref f) => Err(f.clone()),
-                };
-                last = Some((i, code));
-                let j = i - start;
-                let out = &mut chunk.out;
-                match values {
-                    Ok((c, v)) => {
-                        out.codes[j] = c;
-                        out.valid[j] = true;
-                        if let Some(v) = v {
-                            v.write(&mut row);
-                            near = Some((c, v));
-                        } else {
-                            row.fill(f64::NAN);
+                    let prepared = &mut chunk.out.prepared;
+                    let code = match &lane.last {
+                        Some((j, Ok(c))) if same(i, *j) => Ok(*c),
+                        Some((j, r)) if same(i, *j) => r.clone(),
+                        _ => by_key
+                            .entry(key(i))
+                            .or_insert_with(|| {
+                                let p = crate::batch::guarded(|| prepare(i))?;
+                                prepared.push(p);
+                                Ok(prepared.len() as u32 - 1)
+                            })
+                            .clone(),
+                    };
+                    let values = match code {
+                        Ok(c) => {
+                            let p = &chunk.out.prepared[c as usize];
+                            let previous = lane
+                                .near
+                                .as_ref()
+                                .filter(|(pc, _)| *pc == c)
+                                .map(|(_, v)| v);
+                            crate::batch::guarded(|| own(p, i, previous)).map(|v| (c, v))
                         }
-                        for (col, x) in out.own.iter_mut().zip(&row) {
-                            col.set(j, *x);
+                        Err(ref f) => Err(f.clone()),
+                    };
+                    lane.last = Some((i, code));
+                    let j = i - range.start;
+                    let out = &mut chunk.out;
+                    match values {
+                        Ok((c, v)) => {
+                            out.codes[j] = c;
+                            out.valid[j] = true;
+                            if let Some(v) = v {
+                                v.write(&mut row);
+                                lane.near = Some((c, v));
+                            } else {
+                                row.fill(f64::NAN);
+                            }
+                            for (col, x) in out.own.iter_mut().zip(&row) {
+                                col.set(j, *x);
+                            }
                         }
-                    }
-                    Err(f) => {
-                        for col in out.own.iter_mut() {
-                            col.set(j, f64::NAN);
+                        Err(f) => {
+                            for col in out.own.iter_mut() {
+                                col.set(j, f64::NAN);
+                            }
+                            chunk.fail(i, f)
                         }
-                        chunk.fail(i, f)
                     }
                 }
             }
@@ -489,6 +503,17 @@ impl Call<'_> {
         let report = self.report(py, report, &Warnings::default())?;
         PyTuple::new(py, [dict.into_any(), report.into_any()])
     }
+}
+
+/// Runs of a chunk of [`Call::split_columns`] visited in turn (see there).
+const LANES: usize = 4;
+
+/// The state of one run of a chunk of [`Call::split_columns`]: its previous
+/// element and that element's prepared code, and its last own fields with their
+/// code (the warm start).
+struct Lane<V> {
+    last: Option<(usize, Result<u32, Failure>)>,
+    near: Option<(u32, V)>,
 }
 
 /// An own output column of [`Call::split_columns`].
