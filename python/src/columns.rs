@@ -707,7 +707,7 @@ pub struct Sink {
 
 struct SinkColumn {
     name: Cow<'static, str>,
-    data: Data,
+    data: Merge,
     /// Where the column first appeared (chunk offset, position): the order of
     /// the merged columns.
     first: (usize, usize),
@@ -722,6 +722,96 @@ struct SinkState {
     warnings: Warnings,
 }
 
+/// A column of a whole batch: string and JSON columns keep their codes in the
+/// narrowest unsigned type that holds them ([`Codes`]).
+pub enum Merge {
+    /// Floats, bools, integers or only missing values.
+    Plain(Data),
+    /// Codes into the string table (0 is None).
+    Str(Codes),
+    /// Codes into the JSON table (0 is None).
+    Json(Codes),
+}
+
+/// The codes of a merged string or JSON column, one byte each while the table
+/// has at most 255 entries, two up to 65 535, else four, widened as the table
+/// grows: the codes are held until the column's object array is made, and a
+/// sweep has 15 string columns (60 bytes per point at four bytes a code).
+pub enum Codes {
+    /// Tables of up to 255 entries.
+    U8(Vec<u8>),
+    /// Tables of up to 65 535 entries.
+    U16(Vec<u16>),
+    /// Larger tables.
+    U32(Vec<u32>),
+}
+
+impl Codes {
+    /// `n` missing values (code 0).
+    fn missing(n: usize) -> Self {
+        Codes::U8(vec![0; n])
+    }
+
+    fn len(&self) -> usize {
+        match self {
+            Codes::U8(v) => v.len(),
+            Codes::U16(v) => v.len(),
+            Codes::U32(v) => v.len(),
+        }
+    }
+
+    /// The code of row `i`.
+    #[inline]
+    fn get(&self, i: usize) -> u32 {
+        match self {
+            Codes::U8(v) => u32::from(v[i]),
+            Codes::U16(v) => u32::from(v[i]),
+            Codes::U32(v) => v[i],
+        }
+    }
+
+    /// Widened, if needed, to hold codes up to `max`.
+    fn fit(&mut self, max: usize) {
+        let wide: Option<Codes> = match self {
+            Codes::U8(v) if max > usize::from(u8::MAX) => Some(if max <= usize::from(u16::MAX) {
+                Codes::U16(v.iter().map(|&c| u16::from(c)).collect())
+            } else {
+                Codes::U32(v.iter().map(|&c| u32::from(c)).collect())
+            }),
+            Codes::U16(v) if max > usize::from(u16::MAX) => {
+                Some(Codes::U32(v.iter().map(|&c| u32::from(c)).collect()))
+            }
+            _ => None,
+        };
+        if let Some(w) = wide {
+            *self = w;
+        }
+    }
+
+    /// Writes a chunk's codes, mapped by `map` (chunk code → merged code, all
+    /// within the width: [`Codes::fit`] first), from row `at`.
+    fn put(&mut self, at: usize, codes: &[u32], map: &[u32]) {
+        let mapped = codes.iter().map(|&c| map[c as usize]);
+        match self {
+            Codes::U8(v) => {
+                for (x, c) in v[at..at + codes.len()].iter_mut().zip(mapped) {
+                    *x = c as u8;
+                }
+            }
+            Codes::U16(v) => {
+                for (x, c) in v[at..at + codes.len()].iter_mut().zip(mapped) {
+                    *x = c as u16;
+                }
+            }
+            Codes::U32(v) => {
+                for (x, c) in v[at..at + codes.len()].iter_mut().zip(mapped) {
+                    *x = c;
+                }
+            }
+        }
+    }
+}
+
 /// A typed column of `n` missing values, like `like`.
 fn missing_like(like: &Data, n: usize) -> Data {
     let mut d = like.empty_like(n);
@@ -729,9 +819,9 @@ fn missing_like(like: &Data, n: usize) -> Data {
     d
 }
 
-/// Writes `data` (a chunk's column) into `d` from row `at`, string and JSON codes
-/// remapped; a type that differs between chunks (a bug) stays missing.
-fn write_at(d: &mut Data, at: usize, data: Data, smap: &[u32], jmap: &[u32]) {
+/// Writes `data` (a chunk's float, bool or integer column) into `d` from row
+/// `at`; a type that differs between chunks (a bug) stays missing.
+fn write_at(d: &mut Data, at: usize, data: Data) {
     fn put<T: Copy>(a: &mut [T], at: usize, b: impl ExactSizeIterator<Item = T>) {
         for (x, y) in a[at..at + b.len()].iter_mut().zip(b) {
             *x = y;
@@ -743,8 +833,6 @@ fn write_at(d: &mut Data, at: usize, data: Data, smap: &[u32], jmap: &[u32]) {
         (Data::Bool(a), Data::Bool(b)) => a[at..at + b.len()].copy_from_slice(&b),
         (Data::I64(a), Data::I64(b)) => a[at..at + b.len()].copy_from_slice(&b),
         (Data::F64(a), Data::I64(b)) => put(a, at, b.iter().map(|&x| x as f64)),
-        (Data::Str(a), Data::Str(b)) => put(a, at, b.iter().map(|&c| smap[c as usize])),
-        (Data::Json(a), Data::Json(b)) => put(a, at, b.iter().map(|&c| jmap[c as usize])),
         _ => {}
     }
 }
@@ -781,6 +869,7 @@ impl Sink {
         let jmap: Vec<u32> = std::iter::once(0)
             .chain(chunk.json.values.iter().map(|v| state.json.code(v)))
             .collect();
+        let (max_string, max_json) = (state.strings.values.len(), state.json.values.len());
         state.valid[at..at + chunk.valid.len()].copy_from_slice(&chunk.valid);
         state.warnings.merge(chunk.warnings);
         for (pos, c) in chunk.columns.into_iter().enumerate() {
@@ -794,7 +883,7 @@ impl Sink {
                 None => {
                     state.columns.push(SinkColumn {
                         name: c.name,
-                        data: Data::Null(n),
+                        data: Merge::Plain(Data::Null(n)),
                         first: (at, pos),
                     });
                     state.columns.len() - 1
@@ -802,20 +891,35 @@ impl Sink {
             };
             let column = &mut state.columns[i];
             column.first = column.first.min((at, pos));
-            if let Data::Null(_) = column.data {
-                if !matches!(c.data, Data::Null(_)) {
-                    column.data = missing_like(&c.data, n);
-                }
+            if let Merge::Plain(Data::Null(_)) = column.data {
+                column.data = match &c.data {
+                    Data::Null(_) => Merge::Plain(Data::Null(n)),
+                    Data::Str(_) => Merge::Str(Codes::missing(n)),
+                    Data::Json(_) => Merge::Json(Codes::missing(n)),
+                    other => Merge::Plain(missing_like(other, n)),
+                };
             }
-            if let (Data::I64(v), Data::F64(_)) = (&column.data, &c.data) {
+            if let (Merge::Plain(Data::I64(v)), Data::F64(_)) = (&column.data, &c.data) {
                 // integers so far, a float now: the column becomes float
-                column.data = Data::F64(
+                column.data = Merge::Plain(Data::F64(
                     v.iter()
                         .map(|&x| if x == -1 { f64::NAN } else { x as f64 })
                         .collect(),
-                );
+                ));
             }
-            write_at(&mut column.data, at, c.data, &smap, &jmap);
+            match (&mut column.data, c.data) {
+                (Merge::Plain(d), data) => write_at(d, at, data),
+                (Merge::Str(codes), Data::Str(b)) => {
+                    codes.fit(max_string);
+                    codes.put(at, &b, &smap);
+                }
+                (Merge::Json(codes), Data::Json(b)) => {
+                    codes.fit(max_json);
+                    codes.put(at, &b, &jmap);
+                }
+                // a type that differs between chunks (a bug) stays missing
+                _ => {}
+            }
         }
     }
 
@@ -828,10 +932,13 @@ impl Sink {
         };
         let mut columns = state.columns;
         columns.sort_by_key(|c| c.first);
-        let mut out: Vec<(Cow<'static, str>, Data)> =
+        let mut out: Vec<(Cow<'static, str>, Merge)> =
             columns.into_iter().map(|c| (c.name, c.data)).collect();
         if valid {
-            out.push((Cow::Borrowed("valid"), Data::Bool(state.valid)));
+            out.push((
+                Cow::Borrowed("valid"),
+                Merge::Plain(Data::Bool(state.valid)),
+            ));
         }
         (
             Merged {
@@ -846,7 +953,7 @@ impl Sink {
 
 /// The columns of a whole batch.
 pub struct Merged {
-    columns: Vec<(Cow<'static, str>, Data)>,
+    columns: Vec<(Cow<'static, str>, Merge)>,
     strings: Vec<String>,
     json: Vec<String>,
 }
@@ -862,23 +969,37 @@ impl Merged {
         let mut json = None;
         for (name, data) in self.columns {
             match data {
-                Data::Null(n) => dict.set_item(name.as_ref(), ("null", n))?,
-                Data::F64(v) => dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?,
-                Data::Bool(v) => dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?,
-                Data::I64(v) => dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?,
-                Data::Str(v) => {
+                Merge::Plain(Data::Null(n)) => dict.set_item(name.as_ref(), ("null", n))?,
+                Merge::Plain(Data::F64(v)) => {
+                    dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?
+                }
+                Merge::Plain(Data::Bool(v)) => {
+                    dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?
+                }
+                Merge::Plain(Data::I64(v)) => {
+                    dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?
+                }
+                Merge::Str(codes) => {
                     if strings.is_none() {
                         strings = Some(object_table(py, &self.strings, false)?);
                     }
                     let table = strings.as_deref().unwrap_or_default();
-                    dict.set_item(name.as_ref(), objects(py, table, v.len(), |i| v[i]))?;
+                    let array = objects(py, table, codes.len(), |i| codes.get(i));
+                    dict.set_item(name.as_ref(), array)?;
                 }
-                Data::Json(v) => {
+                Merge::Json(codes) => {
                     if json.is_none() {
                         json = Some(object_table(py, &self.json, true)?);
                     }
                     let table = json.as_deref().unwrap_or_default();
-                    dict.set_item(name.as_ref(), objects(py, table, v.len(), |i| v[i]))?;
+                    let array = objects(py, table, codes.len(), |i| codes.get(i));
+                    dict.set_item(name.as_ref(), array)?;
+                }
+                // the sink keeps string and JSON columns as codes: never here
+                Merge::Plain(Data::Str(_) | Data::Json(_)) => {
+                    return Err(pyo3::exceptions::PyRuntimeError::new_err(format!(
+                        "column {name}: string codes outside a merged column"
+                    )))
                 }
             }
         }
@@ -1218,7 +1339,24 @@ impl<'a> ser::Serializer for Field<'a> {
 
 #[cfg(test)]
 mod tests {
-    use super::split_numbers;
+    use super::{split_numbers, Codes};
+
+    #[test]
+    fn codes_widen_as_the_table_grows() {
+        let map: Vec<u32> = (0..70_000).collect();
+        let mut c = Codes::missing(5);
+        c.fit(3);
+        c.put(0, &[1, 2], &map);
+        assert!(matches!(c, Codes::U8(_)));
+        c.fit(300);
+        c.put(2, &[299], &map);
+        assert!(matches!(c, Codes::U16(_)));
+        c.fit(70_000);
+        c.put(3, &[69_999], &map);
+        assert!(matches!(c, Codes::U32(_)));
+        let all: Vec<u32> = (0..c.len()).map(|i| c.get(i)).collect();
+        assert_eq!(all, [1, 2, 299, 69_999, 0]);
+    }
 
     #[test]
     fn reasons_split_into_a_template_and_numbers() {
