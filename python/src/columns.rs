@@ -527,11 +527,48 @@ pub fn numpy_zeros<T: numpy::Element>(py: Python<'_>, n: usize) -> Bound<'_, PyA
     PyArray1::<T>::zeros(py, n, false)
 }
 
+/// A fresh numpy array of `n` elements (numpy's allocator, huge pages for large
+/// arrays) whose memory is not initialized: no zeroing pass (the kernel's or
+/// `calloc`'s) for an output that is written in full anyway. Its elements are
+/// written through [`Fresh::slots`]; every one must be before
+/// [`Fresh::into_array`] hands the array to Python.
+pub struct Fresh<'py, T: numpy::Element> {
+    array: Bound<'py, PyArray1<T>>,
+    n: usize,
+}
+
+impl<'py, T: numpy::Element> Fresh<'py, T> {
+    /// An array of `n` uninitialized elements.
+    pub fn new(py: Python<'py>, n: usize) -> Self {
+        // SAFETY: the elements are only written (as `MaybeUninit`) until
+        // `into_array`, whose callers have written every one.
+        let array = unsafe { PyArray1::<T>::new(py, n, false) };
+        Fresh { array, n }
+    }
+
+    /// The elements, to be written.
+    pub fn slots(&mut self) -> &mut [std::mem::MaybeUninit<T>] {
+        // SAFETY: a fresh, contiguous array of `n` elements, not yet seen by
+        // Python; the exclusive borrow of `self` is the only access.
+        unsafe {
+            std::slice::from_raw_parts_mut(
+                self.array.data().cast::<std::mem::MaybeUninit<T>>(),
+                self.n,
+            )
+        }
+    }
+
+    /// The array, once every element is written.
+    pub fn into_array(self) -> Bound<'py, PyArray1<T>> {
+        self.array
+    }
+}
+
 /// `out[i] = values[codes[i]]` (`missing` for a code without a value) in
 /// parallel on the batch's pool, or `out` filled with `values[0]` when
 /// `constant`.
 fn gather_into<T: Copy + Send + Sync>(
-    out: &mut [T],
+    out: &mut [std::mem::MaybeUninit<T>],
     values: &[T],
     codes: &[u32],
     missing: T,
@@ -541,13 +578,17 @@ fn gather_into<T: Copy + Send + Sync>(
     let pieces = out.par_chunks_mut(crate::batch::CHUNK);
     if constant {
         let v = values.first().copied().unwrap_or(missing);
-        pieces.for_each(|o| o.fill(v));
+        pieces.for_each(|o| {
+            for x in o {
+                x.write(v);
+            }
+        });
     } else {
         pieces
             .zip(codes.par_chunks(crate::batch::CHUNK))
             .for_each(|(o, c)| {
                 for (x, &k) in o.iter_mut().zip(c) {
-                    *x = values.get(k as usize).copied().unwrap_or(missing);
+                    x.write(values.get(k as usize).copied().unwrap_or(missing));
                 }
             });
     }
@@ -603,19 +644,17 @@ pub fn split_into_py<'py>(
         is_zero: fn(&T) -> bool,
         parallel: &dyn Fn(&mut (dyn FnMut() + Send)) -> PyResult<()>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let array = numpy_zeros::<T>(py, codes.len());
         // a zeroed array holds a constant of zero bits already (an exact-form
         // loss's error estimate, its evaluation count): its pages stay untouched
         // (a read maps the kernel's zero page)
-        let zero = constant && values.first().is_some_and(is_zero);
-        if !zero {
-            let mut guard = array.readwrite();
-            let out = guard
-                .as_slice_mut()
-                .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
-            parallel(&mut || gather_into(out, values, codes, missing, constant))?;
+        if constant && values.first().is_some_and(is_zero) {
+            return Ok(numpy_zeros::<T>(py, codes.len()).into_any());
         }
-        Ok(array.into_any())
+        // every element is written (filled or gathered)
+        let mut array = Fresh::<T>::new(py, codes.len());
+        let out = array.slots();
+        parallel(&mut || gather_into(out, values, codes, missing, constant))?;
+        Ok(array.into_array().into_any())
     }
     let dict = PyDict::new(py);
     let mut strings: Option<Vec<Bound<'py, PyAny>>> = None;

@@ -4,7 +4,8 @@
 
 use crate::batch::{chunks_of, run, Chunk, Options, Report, Stop, CHUNK};
 use crate::columns::{
-    numpy_zeros, shared_rows, split_into_py, Columns, OwnFields, OwnKind, Sink, Warnings, NO_RECORD,
+    numpy_zeros, shared_rows, split_into_py, Columns, Fresh, OwnFields, OwnKind, Sink, Warnings,
+    NO_RECORD,
 };
 use crate::failure::Failure;
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
@@ -12,6 +13,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use serde::Serialize;
 use std::collections::HashMap;
+use std::mem::MaybeUninit;
 
 /// A flat input column: length 1 (a broadcast scalar) or the batch length.
 #[derive(Clone, Copy)]
@@ -349,21 +351,16 @@ impl Call<'_> {
         // the end); every row is written, NaN/false where the element failed
         let mut codes = vec![0u32; n];
         let valid_array = numpy_zeros::<bool>(py, n);
-        let own_arrays: Vec<OwnArray<'py>> = V::FIELDS
+        // written in full: every element that runs, and those that do not
+        // after the batch (NaN, false)
+        let mut own_arrays: Vec<OwnArray<'py>> = V::FIELDS
             .iter()
             .map(|(_, kind)| match kind {
-                OwnKind::Float => OwnArray::Float(numpy_zeros::<f64>(py, n)),
-                OwnKind::Bool => OwnArray::Bool(numpy_zeros::<bool>(py, n)),
+                OwnKind::Float => OwnArray::Float(Fresh::new(py, n)),
+                OwnKind::Bool => OwnArray::Bool(Fresh::new(py, n)),
             })
             .collect();
         let mut valid_guard = valid_array.readwrite();
-        let mut own_guards: Vec<OwnGuard<'py>> = own_arrays
-            .iter()
-            .map(|a| match a {
-                OwnArray::Float(a) => OwnGuard::Float(a.readwrite()),
-                OwnArray::Bool(a) => OwnGuard::Bool(a.readwrite()),
-            })
-            .collect();
         let not_contiguous =
             |e: numpy::AsSliceError| pyo3::exceptions::PyRuntimeError::new_err(e.to_string());
         let outs: Vec<SplitChunk<'_, P>> = {
@@ -372,19 +369,13 @@ impl Call<'_> {
                 .as_slice_mut()
                 .map_err(not_contiguous)?
                 .chunks_mut(CHUNK);
-            let mut own_its: Vec<OwnChunks<'_>> = own_guards
+            let mut own_its: Vec<OwnChunks<'_>> = own_arrays
                 .iter_mut()
-                .map(|g| {
-                    Ok(match g {
-                        OwnGuard::Float(g) => OwnChunks::Float(
-                            g.as_slice_mut().map_err(not_contiguous)?.chunks_mut(CHUNK),
-                        ),
-                        OwnGuard::Bool(g) => OwnChunks::Bool(
-                            g.as_slice_mut().map_err(not_contiguous)?.chunks_mut(CHUNK),
-                        ),
-                    })
+                .map(|a| match a {
+                    OwnArray::Float(a) => OwnChunks::Float(a.slots().chunks_mut(CHUNK)),
+                    OwnArray::Bool(a) => OwnChunks::Bool(a.slots().chunks_mut(CHUNK)),
                 })
-                .collect::<PyResult<_>>()?;
+                .collect();
             (0..chunks_of(n, CHUNK))
                 .map(|_| SplitChunk {
                     codes: codes_it.next().unwrap_or_default(),
@@ -471,19 +462,26 @@ impl Call<'_> {
         };
         // the shared records, serialized once each; chunk codes made global
         let mut shared = Columns::default();
-        for out in outs {
+        for mut out in outs {
             let base = shared_rows(&shared);
             for p in &out.prepared {
                 shared
                     .push(record(p))
                     .map_err(|e| internal(e).into_pyerr(py, None))?;
             }
-            for (c, ok) in out.codes.iter_mut().zip(out.valid.iter()) {
-                *c = if *ok { *c + base } else { NO_RECORD };
+            for (j, (c, ok)) in out.codes.iter_mut().zip(out.valid.iter()).enumerate() {
+                if *ok {
+                    *c += base;
+                } else {
+                    // failed, or did not run (after a panic elsewhere in nan mode)
+                    *c = NO_RECORD;
+                    for col in out.own.iter_mut() {
+                        col.set(j, f64::NAN);
+                    }
+                }
             }
         }
         // the columns are written: their borrows end before Python sees them
-        drop(own_guards);
         drop(valid_guard);
         let with_valid = self.options.errors == crate::batch::Errors::Nan;
         let own: Vec<(&'static str, Bound<'py, PyAny>)> = V::FIELDS
@@ -518,29 +516,24 @@ struct Lane<V> {
 
 /// An own output column of [`Call::split_columns`].
 enum OwnArray<'py> {
-    Float(Bound<'py, PyArray1<f64>>),
-    Bool(Bound<'py, PyArray1<bool>>),
+    Float(Fresh<'py, f64>),
+    Bool(Fresh<'py, bool>),
 }
 
 impl<'py> OwnArray<'py> {
+    /// The array, once every element is written.
     fn into_any(self) -> Bound<'py, PyAny> {
         match self {
-            OwnArray::Float(a) => a.into_any(),
-            OwnArray::Bool(a) => a.into_any(),
+            OwnArray::Float(a) => a.into_array().into_any(),
+            OwnArray::Bool(a) => a.into_array().into_any(),
         }
     }
 }
 
-/// The write borrow of an own output column while the batch fills it.
-enum OwnGuard<'py> {
-    Float(numpy::PyReadwriteArray1<'py, f64>),
-    Bool(numpy::PyReadwriteArray1<'py, bool>),
-}
-
 /// The chunks of an own output column.
 enum OwnChunks<'a> {
-    Float(std::slice::ChunksMut<'a, f64>),
-    Bool(std::slice::ChunksMut<'a, bool>),
+    Float(std::slice::ChunksMut<'a, MaybeUninit<f64>>),
+    Bool(std::slice::ChunksMut<'a, MaybeUninit<bool>>),
 }
 
 impl<'a> OwnChunks<'a> {
@@ -554,16 +547,20 @@ impl<'a> OwnChunks<'a> {
 
 /// One chunk of an own output column (a bool column takes 1.0 as true).
 enum OwnSlice<'a> {
-    Float(&'a mut [f64]),
-    Bool(&'a mut [bool]),
+    Float(&'a mut [MaybeUninit<f64>]),
+    Bool(&'a mut [MaybeUninit<bool>]),
 }
 
 impl OwnSlice<'_> {
     #[inline]
     fn set(&mut self, j: usize, x: f64) {
         match self {
-            OwnSlice::Float(s) => s[j] = x,
-            OwnSlice::Bool(s) => s[j] = x == 1.0,
+            OwnSlice::Float(s) => {
+                s[j].write(x);
+            }
+            OwnSlice::Bool(s) => {
+                s[j].write(x == 1.0);
+            }
         }
     }
 }
