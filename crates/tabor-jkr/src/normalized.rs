@@ -240,6 +240,7 @@ pub fn max_contact_radius(kinetic_energy: f64, tolerance: f64) -> Result<MaxCont
 /// cold start's to rounding.
 ///
 /// Seed 000, eq. (5.35).
+#[inline]
 pub fn max_contact_radius_near(
     kinetic_energy: f64,
     tolerance: f64,
