@@ -378,6 +378,15 @@ where
     }
 }
 
+/// Runs `f` on the pool of `threads` (`None`: the default pool), for the
+/// parallel passes that follow a batch (filling its output columns).
+pub fn install<R: Send>(threads: Option<usize>, f: impl FnOnce() -> R + Send) -> Result<R, String> {
+    Ok(match pool(threads)? {
+        Some(p) => p.install(f),
+        None => f(),
+    })
+}
+
 /// The number of chunks of `n` elements.
 pub fn chunks_of(n: usize, chunk: usize) -> usize {
     n.div_ceil(chunk).max(1)

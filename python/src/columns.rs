@@ -9,9 +9,9 @@
 //! stored once per distinct value (as JSON, turned into Python objects at the
 //! end). New record fields reach Python without a change here.
 
-use numpy::PyArray1;
+use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyTuple};
+use pyo3::types::{PyDict, PyTuple};
 use serde::ser::{self, Impossible, Serialize};
 use serde_json::Value;
 use std::borrow::Cow;
@@ -520,84 +520,212 @@ pub trait OwnFields {
     fn write(&self, out: &mut [f64]);
 }
 
-impl Merged {
-    /// The columns of a batch of split records: the shared records' fields
-    /// (`shared`, one row per record) gathered by `codes` (`NO_RECORD`: missing),
-    /// each replaced by the own field of the same name, then the other own
-    /// fields; `valid` adds the bool column `valid`. A single shared record is
-    /// filled rather than gathered.
-    pub fn from_split(
-        shared: Columns,
-        codes: &[u32],
-        own: Vec<(&'static str, Data)>,
-        valid: Option<Vec<bool>>,
-    ) -> Result<Merged, Error> {
-        if !shared.warnings.entries.is_empty() {
-            return Err(Error("a shared record carries warnings".into()));
+/// An output column of `n` elements allocated by numpy (zeroed): numpy's
+/// allocator asks the kernel for huge pages for large arrays, so that filling a
+/// fresh column costs far fewer page faults than a `Vec` of the same size.
+pub fn numpy_zeros<T: numpy::Element>(py: Python<'_>, n: usize) -> Bound<'_, PyArray1<T>> {
+    PyArray1::<T>::zeros(py, n, false)
+}
+
+/// A fresh numpy array of `n` elements (numpy's allocator, huge pages for large
+/// arrays) whose memory is not initialized: no zeroing pass (the kernel's or
+/// `calloc`'s) for an output that is written in full anyway. Its elements are
+/// written through [`Fresh::slots`]; every one must be before
+/// [`Fresh::into_array`] hands the array to Python.
+pub struct Fresh<'py, T: numpy::Element> {
+    array: Bound<'py, PyArray1<T>>,
+    n: usize,
+}
+
+impl<'py, T: numpy::Element> Fresh<'py, T> {
+    /// An array of `n` uninitialized elements.
+    pub fn new(py: Python<'py>, n: usize) -> Self {
+        // SAFETY: the elements are only written (as `MaybeUninit`) until
+        // `into_array`, whose callers have written every one.
+        let array = unsafe { PyArray1::<T>::new(py, n, false) };
+        Fresh { array, n }
+    }
+
+    /// The elements, to be written.
+    pub fn slots(&mut self) -> &mut [std::mem::MaybeUninit<T>] {
+        // SAFETY: a fresh, contiguous array of `n` elements, not yet seen by
+        // Python; the exclusive borrow of `self` is the only access.
+        unsafe {
+            std::slice::from_raw_parts_mut(
+                self.array.data().cast::<std::mem::MaybeUninit<T>>(),
+                self.n,
+            )
         }
-        let complete = !codes.contains(&NO_RECORD);
-        let gather = |d: &Data| -> Data {
-            fn take<T: Copy + Send + Sync>(
-                v: &[T],
-                codes: &[u32],
-                missing: T,
-                complete: bool,
-            ) -> Vec<T> {
-                if complete && v.len() == 1 {
-                    return vec![v[0]; codes.len()];
-                }
-                codes
-                    .iter()
-                    .map(|&c| v.get(c as usize).copied().unwrap_or(missing))
-                    .collect()
+    }
+
+    /// The array, once every element is written.
+    pub fn into_array(self) -> Bound<'py, PyArray1<T>> {
+        self.array
+    }
+}
+
+/// `out[i] = values[codes[i]]` (`missing` for a code without a value) in
+/// parallel on the batch's pool, or `out` filled with `values[0]` when
+/// `constant`.
+fn gather_into<T: Copy + Send + Sync>(
+    out: &mut [std::mem::MaybeUninit<T>],
+    values: &[T],
+    codes: &[u32],
+    missing: T,
+    constant: bool,
+) {
+    use rayon::prelude::*;
+    let pieces = out.par_chunks_mut(crate::batch::CHUNK);
+    if constant {
+        let v = values.first().copied().unwrap_or(missing);
+        pieces.for_each(|o| {
+            for x in o {
+                x.write(v);
             }
-            match d {
-                Data::Null(_) => Data::Null(codes.len()),
-                Data::F64(v) => Data::F64(take(v, codes, f64::NAN, complete)),
-                Data::Bool(v) => Data::Bool(take(v, codes, false, complete)),
-                Data::I64(v) => Data::I64(take(v, codes, -1, complete)),
-                Data::Str(v) => Data::Str(take(v, codes, 0, complete)),
-                Data::Json(v) => Data::Json(take(v, codes, 0, complete)),
+        });
+    } else {
+        pieces
+            .zip(codes.par_chunks(crate::batch::CHUNK))
+            .for_each(|(o, c)| {
+                for (x, &k) in o.iter_mut().zip(c) {
+                    x.write(values.get(k as usize).copied().unwrap_or(missing));
+                }
+            });
+    }
+}
+
+/// Whether every value of a shared column is the same (floats by their bits).
+fn constant(d: &Data) -> bool {
+    fn all_equal<T: PartialEq>(v: &[T]) -> bool {
+        v.windows(2).all(|w| w[0] == w[1])
+    }
+    match d {
+        Data::Null(_) => true,
+        Data::F64(v) => v.windows(2).all(|w| w[0].to_bits() == w[1].to_bits()),
+        Data::Bool(v) => all_equal(v),
+        Data::I64(v) => all_equal(v),
+        Data::Str(v) | Data::Json(v) => all_equal(v),
+    }
+}
+
+/// The columns of a batch of split records as the dict [`Merged::into_py`]
+/// returns: the shared records' fields (`shared`, one row per record) gathered
+/// by `codes` (`NO_RECORD`: missing) into fresh numpy arrays, in parallel on the
+/// pool of `threads` with the GIL released, each replaced by the own column of
+/// the same name (`own`, numpy arrays already filled), then the other own
+/// columns and `valid` (when given). A shared field with the same value in
+/// every record is filled rather than gathered; string and object fields come
+/// as object arrays, as from [`Merged::into_py`].
+pub fn split_into_py<'py>(
+    py: Python<'py>,
+    shared: Columns,
+    codes: &[u32],
+    own: Vec<(&'static str, Bound<'py, PyAny>)>,
+    valid: Option<Bound<'py, PyAny>>,
+    threads: Option<usize>,
+) -> PyResult<Bound<'py, PyDict>> {
+    if !shared.warnings.entries.is_empty() {
+        return Err(pyo3::exceptions::PyRuntimeError::new_err(
+            "a shared record carries warnings",
+        ));
+    }
+    let n = codes.len();
+    let complete = !codes.contains(&NO_RECORD);
+    let parallel = |f: &mut (dyn FnMut() + Send)| -> PyResult<()> {
+        py.detach(|| crate::batch::install(threads, &mut *f))
+            .map_err(pyo3::exceptions::PyRuntimeError::new_err)
+    };
+    fn gathered<'py, T: numpy::Element + Copy + Send + Sync>(
+        py: Python<'py>,
+        values: &[T],
+        codes: &[u32],
+        missing: T,
+        constant: bool,
+        is_zero: fn(&T) -> bool,
+        parallel: &dyn Fn(&mut (dyn FnMut() + Send)) -> PyResult<()>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        // a zeroed array holds a constant of zero bits already (an exact-form
+        // loss's error estimate, its evaluation count): its pages stay untouched
+        // (a read maps the kernel's zero page)
+        if constant && values.first().is_some_and(is_zero) {
+            return Ok(numpy_zeros::<T>(py, codes.len()).into_any());
+        }
+        // every element is written (filled or gathered)
+        let mut array = Fresh::<T>::new(py, codes.len());
+        let out = array.slots();
+        parallel(&mut || gather_into(out, values, codes, missing, constant))?;
+        Ok(array.into_array().into_any())
+    }
+    let dict = PyDict::new(py);
+    let mut strings: Option<Vec<Bound<'py, PyAny>>> = None;
+    let mut json: Option<Vec<Bound<'py, PyAny>>> = None;
+    let mut own: Vec<Option<(&'static str, Bound<'py, PyAny>)>> =
+        own.into_iter().map(Some).collect();
+    for c in &shared.columns {
+        let mine = own
+            .iter_mut()
+            .find(|o| o.as_ref().is_some_and(|(name, _)| same_name(name, &c.name)))
+            .and_then(Option::take);
+        if let Some((_, array)) = mine {
+            dict.set_item(c.name.as_ref(), array)?;
+            continue;
+        }
+        let fill = complete && constant(&c.data);
+        let value: Bound<'py, PyAny> = match &c.data {
+            Data::Null(_) => PyTuple::new(
+                py,
+                [
+                    "null".into_pyobject(py)?.into_any(),
+                    n.into_pyobject(py)?.into_any(),
+                ],
+            )?
+            .into_any(),
+            Data::F64(v) => gathered(
+                py,
+                v,
+                codes,
+                f64::NAN,
+                fill,
+                |x| x.to_bits() == 0,
+                &parallel,
+            )?,
+            Data::Bool(v) => gathered(py, v, codes, false, fill, |x| !*x, &parallel)?,
+            Data::I64(v) => gathered(py, v, codes, -1, fill, |x| *x == 0, &parallel)?,
+            Data::Str(v) | Data::Json(v) => {
+                let is_str = matches!(c.data, Data::Str(_));
+                let table = if is_str { &mut strings } else { &mut json };
+                if table.is_none() {
+                    *table = Some(if is_str {
+                        object_table(py, &shared.strings.values, false)?
+                    } else {
+                        object_table(py, &shared.json.values, true)?
+                    });
+                }
+                let table = table.as_deref().unwrap_or_default();
+                if fill {
+                    let only = v.first().copied().unwrap_or(0);
+                    objects(py, table, n, |_| only)
+                } else {
+                    objects(py, table, n, |i| {
+                        v.get(codes[i] as usize).copied().unwrap_or(0)
+                    })
+                }
             }
         };
-        let mut own: Vec<Option<(&'static str, Data)>> = own.into_iter().map(Some).collect();
-        let mut columns: Vec<(Cow<'static, str>, Data)> = Vec::new();
-        for c in &shared.columns {
-            let mine = own
-                .iter_mut()
-                .find(|o| o.as_ref().is_some_and(|(name, _)| same_name(name, &c.name)))
-                .and_then(Option::take);
-            let data = match mine {
-                Some((_, d)) => d,
-                None => gather(&c.data),
-            };
-            columns.push((c.name.clone(), data));
-        }
-        for (name, data) in own.into_iter().flatten() {
-            columns.push((Cow::Borrowed(name), data));
-        }
-        if let Some(v) = valid {
-            columns.push((Cow::Borrowed("valid"), Data::Bool(v)));
-        }
-        Ok(Merged {
-            columns,
-            strings: shared.strings.values,
-            json: shared.json.values,
-        })
+        dict.set_item(c.name.as_ref(), value)?;
     }
+    for (name, array) in own.into_iter().flatten() {
+        dict.set_item(name, array)?;
+    }
+    if let Some(v) = valid {
+        dict.set_item("valid", v)?;
+    }
+    Ok(dict)
 }
 
 /// The rows of `columns`.
 pub fn shared_rows(columns: &Columns) -> u32 {
     columns.rows as u32
-}
-
-/// An own column of `OwnFields` as its typed data.
-pub fn own_column(kind: OwnKind, values: Vec<f64>) -> Data {
-    match kind {
-        OwnKind::Float => Data::F64(values),
-        OwnKind::Bool => Data::Bool(values.into_iter().map(|x| x == 1.0).collect()),
-    }
 }
 
 /// The names of a record's fields as the serializer writes them (for the check
@@ -618,7 +746,7 @@ pub struct Sink {
 
 struct SinkColumn {
     name: Cow<'static, str>,
-    data: Data,
+    data: Merge,
     /// Where the column first appeared (chunk offset, position): the order of
     /// the merged columns.
     first: (usize, usize),
@@ -633,6 +761,96 @@ struct SinkState {
     warnings: Warnings,
 }
 
+/// A column of a whole batch: string and JSON columns keep their codes in the
+/// narrowest unsigned type that holds them ([`Codes`]).
+pub enum Merge {
+    /// Floats, bools, integers or only missing values.
+    Plain(Data),
+    /// Codes into the string table (0 is None).
+    Str(Codes),
+    /// Codes into the JSON table (0 is None).
+    Json(Codes),
+}
+
+/// The codes of a merged string or JSON column, one byte each while the table
+/// has at most 255 entries, two up to 65 535, else four, widened as the table
+/// grows: the codes are held until the column's object array is made, and a
+/// sweep has 15 string columns (60 bytes per point at four bytes a code).
+pub enum Codes {
+    /// Tables of up to 255 entries.
+    U8(Vec<u8>),
+    /// Tables of up to 65 535 entries.
+    U16(Vec<u16>),
+    /// Larger tables.
+    U32(Vec<u32>),
+}
+
+impl Codes {
+    /// `n` missing values (code 0).
+    fn missing(n: usize) -> Self {
+        Codes::U8(vec![0; n])
+    }
+
+    fn len(&self) -> usize {
+        match self {
+            Codes::U8(v) => v.len(),
+            Codes::U16(v) => v.len(),
+            Codes::U32(v) => v.len(),
+        }
+    }
+
+    /// The code of row `i`.
+    #[inline]
+    fn get(&self, i: usize) -> u32 {
+        match self {
+            Codes::U8(v) => u32::from(v[i]),
+            Codes::U16(v) => u32::from(v[i]),
+            Codes::U32(v) => v[i],
+        }
+    }
+
+    /// Widened, if needed, to hold codes up to `max`.
+    fn fit(&mut self, max: usize) {
+        let wide: Option<Codes> = match self {
+            Codes::U8(v) if max > usize::from(u8::MAX) => Some(if max <= usize::from(u16::MAX) {
+                Codes::U16(v.iter().map(|&c| u16::from(c)).collect())
+            } else {
+                Codes::U32(v.iter().map(|&c| u32::from(c)).collect())
+            }),
+            Codes::U16(v) if max > usize::from(u16::MAX) => {
+                Some(Codes::U32(v.iter().map(|&c| u32::from(c)).collect()))
+            }
+            _ => None,
+        };
+        if let Some(w) = wide {
+            *self = w;
+        }
+    }
+
+    /// Writes a chunk's codes, mapped by `map` (chunk code → merged code, all
+    /// within the width: [`Codes::fit`] first), from row `at`.
+    fn put(&mut self, at: usize, codes: &[u32], map: &[u32]) {
+        let mapped = codes.iter().map(|&c| map[c as usize]);
+        match self {
+            Codes::U8(v) => {
+                for (x, c) in v[at..at + codes.len()].iter_mut().zip(mapped) {
+                    *x = c as u8;
+                }
+            }
+            Codes::U16(v) => {
+                for (x, c) in v[at..at + codes.len()].iter_mut().zip(mapped) {
+                    *x = c as u16;
+                }
+            }
+            Codes::U32(v) => {
+                for (x, c) in v[at..at + codes.len()].iter_mut().zip(mapped) {
+                    *x = c;
+                }
+            }
+        }
+    }
+}
+
 /// A typed column of `n` missing values, like `like`.
 fn missing_like(like: &Data, n: usize) -> Data {
     let mut d = like.empty_like(n);
@@ -640,9 +858,9 @@ fn missing_like(like: &Data, n: usize) -> Data {
     d
 }
 
-/// Writes `data` (a chunk's column) into `d` from row `at`, string and JSON codes
-/// remapped; a type that differs between chunks (a bug) stays missing.
-fn write_at(d: &mut Data, at: usize, data: Data, smap: &[u32], jmap: &[u32]) {
+/// Writes `data` (a chunk's float, bool or integer column) into `d` from row
+/// `at`; a type that differs between chunks (a bug) stays missing.
+fn write_at(d: &mut Data, at: usize, data: Data) {
     fn put<T: Copy>(a: &mut [T], at: usize, b: impl ExactSizeIterator<Item = T>) {
         for (x, y) in a[at..at + b.len()].iter_mut().zip(b) {
             *x = y;
@@ -654,8 +872,6 @@ fn write_at(d: &mut Data, at: usize, data: Data, smap: &[u32], jmap: &[u32]) {
         (Data::Bool(a), Data::Bool(b)) => a[at..at + b.len()].copy_from_slice(&b),
         (Data::I64(a), Data::I64(b)) => a[at..at + b.len()].copy_from_slice(&b),
         (Data::F64(a), Data::I64(b)) => put(a, at, b.iter().map(|&x| x as f64)),
-        (Data::Str(a), Data::Str(b)) => put(a, at, b.iter().map(|&c| smap[c as usize])),
-        (Data::Json(a), Data::Json(b)) => put(a, at, b.iter().map(|&c| jmap[c as usize])),
         _ => {}
     }
 }
@@ -692,6 +908,7 @@ impl Sink {
         let jmap: Vec<u32> = std::iter::once(0)
             .chain(chunk.json.values.iter().map(|v| state.json.code(v)))
             .collect();
+        let (max_string, max_json) = (state.strings.values.len(), state.json.values.len());
         state.valid[at..at + chunk.valid.len()].copy_from_slice(&chunk.valid);
         state.warnings.merge(chunk.warnings);
         for (pos, c) in chunk.columns.into_iter().enumerate() {
@@ -705,7 +922,7 @@ impl Sink {
                 None => {
                     state.columns.push(SinkColumn {
                         name: c.name,
-                        data: Data::Null(n),
+                        data: Merge::Plain(Data::Null(n)),
                         first: (at, pos),
                     });
                     state.columns.len() - 1
@@ -713,20 +930,35 @@ impl Sink {
             };
             let column = &mut state.columns[i];
             column.first = column.first.min((at, pos));
-            if let Data::Null(_) = column.data {
-                if !matches!(c.data, Data::Null(_)) {
-                    column.data = missing_like(&c.data, n);
-                }
+            if let Merge::Plain(Data::Null(_)) = column.data {
+                column.data = match &c.data {
+                    Data::Null(_) => Merge::Plain(Data::Null(n)),
+                    Data::Str(_) => Merge::Str(Codes::missing(n)),
+                    Data::Json(_) => Merge::Json(Codes::missing(n)),
+                    other => Merge::Plain(missing_like(other, n)),
+                };
             }
-            if let (Data::I64(v), Data::F64(_)) = (&column.data, &c.data) {
+            if let (Merge::Plain(Data::I64(v)), Data::F64(_)) = (&column.data, &c.data) {
                 // integers so far, a float now: the column becomes float
-                column.data = Data::F64(
+                column.data = Merge::Plain(Data::F64(
                     v.iter()
                         .map(|&x| if x == -1 { f64::NAN } else { x as f64 })
                         .collect(),
-                );
+                ));
             }
-            write_at(&mut column.data, at, c.data, &smap, &jmap);
+            match (&mut column.data, c.data) {
+                (Merge::Plain(d), data) => write_at(d, at, data),
+                (Merge::Str(codes), Data::Str(b)) => {
+                    codes.fit(max_string);
+                    codes.put(at, &b, &smap);
+                }
+                (Merge::Json(codes), Data::Json(b)) => {
+                    codes.fit(max_json);
+                    codes.put(at, &b, &jmap);
+                }
+                // a type that differs between chunks (a bug) stays missing
+                _ => {}
+            }
         }
     }
 
@@ -739,10 +971,13 @@ impl Sink {
         };
         let mut columns = state.columns;
         columns.sort_by_key(|c| c.first);
-        let mut out: Vec<(Cow<'static, str>, Data)> =
+        let mut out: Vec<(Cow<'static, str>, Merge)> =
             columns.into_iter().map(|c| (c.name, c.data)).collect();
         if valid {
-            out.push((Cow::Borrowed("valid"), Data::Bool(state.valid)));
+            out.push((
+                Cow::Borrowed("valid"),
+                Merge::Plain(Data::Bool(state.valid)),
+            ));
         }
         (
             Merged {
@@ -757,66 +992,53 @@ impl Sink {
 
 /// The columns of a whole batch.
 pub struct Merged {
-    columns: Vec<(Cow<'static, str>, Data)>,
+    columns: Vec<(Cow<'static, str>, Merge)>,
     strings: Vec<String>,
     json: Vec<String>,
 }
 
 impl Merged {
     /// The columns as a dict: float64, bool and int64 arrays; string and object
-    /// columns as `(table, codes)` tuples (`table[0]` is None) for the Python
-    /// layer to expand with `numpy.take`; an all-None column as `("null", n)`.
+    /// columns as object arrays (None where missing); an all-None column as
+    /// `("null", n)`. Each column's codes are freed as soon as its array is
+    /// made.
     pub fn into_py(self, py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
         let dict = PyDict::new(py);
-        let mut strings: Option<Bound<'_, PyList>> = None;
-        let mut json: Option<Bound<'_, PyList>> = None;
-        let (n_strings, n_json) = (self.strings.len() + 1, self.json.len() + 1);
+        let mut strings = None;
+        let mut json = None;
         for (name, data) in self.columns {
             match data {
-                Data::Null(n) => dict.set_item(name.as_ref(), ("null", n))?,
-                Data::F64(v) => dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?,
-                Data::Bool(v) => dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?,
-                Data::I64(v) => dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?,
-                Data::Str(v) => {
-                    if strings.is_none() {
-                        let list = PyList::new(py, [py.None()])?;
-                        for s in &self.strings {
-                            list.append(s)?;
-                        }
-                        strings = Some(list);
-                    }
-                    let table = strings.as_ref().map(|l| l.clone().into_any());
-                    dict.set_item(
-                        name.as_ref(),
-                        PyTuple::new(
-                            py,
-                            [
-                                table.into_pyobject(py)?.into_any(),
-                                small_codes(py, v, n_strings),
-                            ],
-                        )?,
-                    )?;
+                Merge::Plain(Data::Null(n)) => dict.set_item(name.as_ref(), ("null", n))?,
+                Merge::Plain(Data::F64(v)) => {
+                    dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?
                 }
-                Data::Json(v) => {
-                    if json.is_none() {
-                        let list = PyList::new(py, [py.None()])?;
-                        for s in &self.json {
-                            let value: Value = serde_json::from_str(s).unwrap_or(Value::Null);
-                            list.append(crate::convert::json_to_py(py, &value)?)?;
-                        }
-                        json = Some(list);
+                Merge::Plain(Data::Bool(v)) => {
+                    dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?
+                }
+                Merge::Plain(Data::I64(v)) => {
+                    dict.set_item(name.as_ref(), PyArray1::from_vec(py, v))?
+                }
+                Merge::Str(codes) => {
+                    if strings.is_none() {
+                        strings = Some(object_table(py, &self.strings, false)?);
                     }
-                    let table = json.as_ref().map(|l| l.clone().into_any());
-                    dict.set_item(
-                        name.as_ref(),
-                        PyTuple::new(
-                            py,
-                            [
-                                table.into_pyobject(py)?.into_any(),
-                                small_codes(py, v, n_json),
-                            ],
-                        )?,
-                    )?;
+                    let table = strings.as_deref().unwrap_or_default();
+                    let array = objects(py, table, codes.len(), |i| codes.get(i));
+                    dict.set_item(name.as_ref(), array)?;
+                }
+                Merge::Json(codes) => {
+                    if json.is_none() {
+                        json = Some(object_table(py, &self.json, true)?);
+                    }
+                    let table = json.as_deref().unwrap_or_default();
+                    let array = objects(py, table, codes.len(), |i| codes.get(i));
+                    dict.set_item(name.as_ref(), array)?;
+                }
+                // the sink keeps string and JSON columns as codes: never here
+                Merge::Plain(Data::Str(_) | Data::Json(_)) => {
+                    return Err(pyo3::exceptions::PyRuntimeError::new_err(format!(
+                        "column {name}: string codes outside a merged column"
+                    )))
                 }
             }
         }
@@ -824,15 +1046,47 @@ impl Merged {
     }
 }
 
-/// Codes into a table of `table` entries as the smallest unsigned array that
-/// holds them (1 byte per element for up to 256 distinct values).
-fn small_codes(py: Python<'_>, codes: Vec<u32>, table: usize) -> Bound<'_, PyAny> {
-    if table <= 1 << 8 {
-        PyArray1::from_vec(py, codes.into_iter().map(|c| c as u8).collect()).into_any()
-    } else if table <= 1 << 16 {
-        PyArray1::from_vec(py, codes.into_iter().map(|c| c as u16).collect()).into_any()
-    } else {
-        PyArray1::from_vec(py, codes).into_any()
+/// The Python objects of a string table (`json`: of a JSON table), led by None
+/// (code 0).
+fn object_table<'py>(
+    py: Python<'py>,
+    values: &[String],
+    json: bool,
+) -> PyResult<Vec<Bound<'py, PyAny>>> {
+    let mut table = Vec::with_capacity(values.len() + 1);
+    table.push(py.None().into_bound(py));
+    for s in values {
+        table.push(if json {
+            let value: Value = serde_json::from_str(s).unwrap_or(Value::Null);
+            crate::convert::json_to_py(py, &value)?
+        } else {
+            s.into_pyobject(py)?.into_any()
+        });
+    }
+    Ok(table)
+}
+
+/// An object array of `n` references, element `i` to `table[code(i)]` (None
+/// for a code outside the table), in numpy's memory: what `numpy.take` of the
+/// table gives, without the codes' cast to intp or numpy's None fill.
+fn objects<'py>(
+    py: Python<'py>,
+    table: &[Bound<'py, PyAny>],
+    n: usize,
+    code: impl Fn(usize) -> u32,
+) -> Bound<'py, PyAny> {
+    let none = py.None().into_bound(py);
+    // SAFETY: a fresh contiguous array of `n` object slots, which numpy
+    // allocates zeroed (NULL, no reference held); each slot is written once
+    // with a reference of its own, before Python sees the array.
+    unsafe {
+        let array = PyArray1::<Py<PyAny>>::new(py, n, false);
+        let data = array.data();
+        for i in 0..n {
+            let item = table.get(code(i) as usize).unwrap_or(&none);
+            std::ptr::write(data.add(i), item.clone().unbind());
+        }
+        array.into_any()
     }
 }
 
@@ -1124,7 +1378,24 @@ impl<'a> ser::Serializer for Field<'a> {
 
 #[cfg(test)]
 mod tests {
-    use super::split_numbers;
+    use super::{split_numbers, Codes};
+
+    #[test]
+    fn codes_widen_as_the_table_grows() {
+        let map: Vec<u32> = (0..70_000).collect();
+        let mut c = Codes::missing(5);
+        c.fit(3);
+        c.put(0, &[1, 2], &map);
+        assert!(matches!(c, Codes::U8(_)));
+        c.fit(300);
+        c.put(2, &[299], &map);
+        assert!(matches!(c, Codes::U16(_)));
+        c.fit(70_000);
+        c.put(3, &[69_999], &map);
+        assert!(matches!(c, Codes::U32(_)));
+        let all: Vec<u32> = (0..c.len()).map(|i| c.get(i)).collect();
+        assert_eq!(all, [1, 2, 299, 69_999, 0]);
+    }
 
     #[test]
     fn reasons_split_into_a_template_and_numbers() {

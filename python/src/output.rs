@@ -4,14 +4,16 @@
 
 use crate::batch::{chunks_of, run, Chunk, Options, Report, Stop, CHUNK};
 use crate::columns::{
-    own_column, shared_rows, Columns, Data, Merged, OwnFields, Sink, Warnings, NO_RECORD,
+    numpy_zeros, shared_rows, split_into_py, Columns, Fresh, OwnFields, OwnKind, Sink, Warnings,
+    NO_RECORD,
 };
 use crate::failure::Failure;
-use numpy::{PyArray1, PyReadonlyArray1};
+use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use serde::Serialize;
 use std::collections::HashMap;
+use std::mem::MaybeUninit;
 
 /// A flat input column: length 1 (a broadcast scalar) or the batch length.
 #[derive(Clone, Copy)]
@@ -166,7 +168,7 @@ impl Call<'_> {
         py: Python<'py>,
         f: impl Fn(usize, &mut Columns) -> Result<(), Failure> + Sync,
     ) -> PyResult<Bound<'py, PyTuple>> {
-        self.record_chunks(py, |chunk| {
+        self.record_chunks(py, CHUNK, |chunk| {
             let range = chunk.range.clone();
             for i in range {
                 if !chunk.go(i) {
@@ -233,7 +235,7 @@ impl Call<'_> {
         chunk: impl Fn(std::ops::Range<usize>) -> Vec<Result<T, Failure>> + Sync,
         put: impl Fn(&mut Columns, T) -> Result<(), Failure> + Sync,
     ) -> PyResult<Bound<'py, PyTuple>> {
-        self.record_chunks(py, |c| {
+        self.record_chunks(py, RECORD_CHUNK, |c| {
             let whole = c.range.clone();
             for start in whole.clone().step_by(RECORDS_PER_CALL) {
                 let range = start..(start + RECORDS_PER_CALL).min(whole.end);
@@ -266,28 +268,39 @@ impl Call<'_> {
 
 /// Elements per call of [`Call::chunked_records`]'s `chunk`: enough to share its
 /// set-up (a scene's models), few enough that the records held at once (a
-/// scene's outcome is about 2 kB) stay small.
-pub const RECORDS_PER_CALL: usize = 256;
+/// scene's outcome is about 2 kB, so 32 kB per thread) stay small: a sweep of
+/// 10⁴ speeds held about 480 kB more per worker thread at 256 per call, 230 kB
+/// at 64, with the same time at 16 (the scene's models are built once, cached).
+pub const RECORDS_PER_CALL: usize = 16;
+
+/// Rows per chunk of [`Call::chunked_records`]: each chunk's rows wait in a
+/// chunk of columns until the chunk is done, so this bounds the memory held
+/// besides the outputs (a scene's outcome has about 30 columns, 245 bytes a row:
+/// 63 kB per chunk in work), which at [`CHUNK`] rows was 1 MB per thread, the
+/// fixed cost that dominated a sweep of 10⁴ points.
+pub const RECORD_CHUNK: usize = 256;
 
 impl Call<'_> {
-    /// Runs `work` on every chunk of rows (each chunk's `out` starts empty), each
-    /// finished chunk copied into the batch's columns at once ([`Sink`]); returns
-    /// `(columns, (failed, first message))`, the warnings emitted.
+    /// Runs `work` on every chunk of `rows` rows (each chunk's `out` starts
+    /// empty), each finished chunk copied into the batch's columns at once
+    /// ([`Sink`]); returns `(columns, (failed, first message))`, the warnings
+    /// emitted.
     fn record_chunks<'py>(
         &self,
         py: Python<'py>,
+        rows: usize,
         work: impl Fn(&mut Chunk<'_, Columns>) + Sync,
     ) -> PyResult<Bound<'py, PyTuple>> {
-        let k_chunks = chunks_of(self.n, CHUNK);
+        let k_chunks = chunks_of(self.n, rows);
         let outs: Vec<Columns> = (0..k_chunks)
             .map(|c| {
-                let mut cols = Columns::at(c * CHUNK);
-                cols.reserve(CHUNK.min(self.n.saturating_sub(c * CHUNK)));
+                let mut cols = Columns::at(c * rows);
+                cols.reserve(rows.min(self.n.saturating_sub(c * rows)));
                 cols
             })
             .collect();
         let sink = Sink::new(self.n);
-        let result = run(py, self.n, CHUNK, outs, self.options, |chunk| {
+        let result = run(py, self.n, rows, outs, self.options, |chunk| {
             work(chunk);
             sink.absorb(std::mem::take(&mut chunk.out));
         });
@@ -308,9 +321,10 @@ impl Call<'_> {
     /// `prepare(i)` runs once per distinct key (`same(i, j)` recognises an element
     /// that shares the previous one's key without building it) and each element
     /// stores the code of its prepared part and, from `own(&prepared, i, near)`
-    /// (`None`: no fields of its own, NaN; `near`: the previous element's own
-    /// fields when it shares the prepared part, a warm start), its [`OwnFields`]
-    /// by position. The shared
+    /// (`None`: no fields of its own, NaN; `near`: a warm start, the own fields
+    /// of the last element before it in its run of the chunk (a chunk is
+    /// [`LANES`] contiguous runs, visited in turn) that had them, when it shares
+    /// the prepared part), its [`OwnFields`] by position. The shared
     /// records are serialized once each, at the end, and gathered by code.
     #[allow(clippy::too_many_arguments)]
     pub fn split_columns<'py, P, R, V>(
@@ -333,73 +347,112 @@ impl Call<'_> {
         };
         let k = V::FIELDS.len();
         let n = self.n;
-        // zeroed (fresh pages, no fill pass); the rows that did not run are set
-        // missing at the end
+        // the output columns are numpy's from the start (huge pages, no copy at
+        // the end); every row is written, NaN/false where the element failed
         let mut codes = vec![0u32; n];
-        let mut valid = vec![false; n];
-        let mut own_cols: Vec<Vec<f64>> = (0..k).map(|_| vec![0.0; n]).collect();
+        let valid_array = numpy_zeros::<bool>(py, n);
+        // written in full: every element that runs, and those that do not
+        // after the batch (NaN, false)
+        let mut own_arrays: Vec<OwnArray<'py>> = V::FIELDS
+            .iter()
+            .map(|(_, kind)| match kind {
+                OwnKind::Float => OwnArray::Float(Fresh::new(py, n)),
+                OwnKind::Bool => OwnArray::Bool(Fresh::new(py, n)),
+            })
+            .collect();
+        let mut valid_guard = valid_array.readwrite();
+        let not_contiguous =
+            |e: numpy::AsSliceError| pyo3::exceptions::PyRuntimeError::new_err(e.to_string());
         let outs: Vec<SplitChunk<'_, P>> = {
             let mut codes_it = codes.chunks_mut(CHUNK);
-            let mut valid_it = valid.chunks_mut(CHUNK);
-            let mut own_its: Vec<_> = own_cols.iter_mut().map(|c| c.chunks_mut(CHUNK)).collect();
+            let mut valid_it = valid_guard
+                .as_slice_mut()
+                .map_err(not_contiguous)?
+                .chunks_mut(CHUNK);
+            let mut own_its: Vec<OwnChunks<'_>> = own_arrays
+                .iter_mut()
+                .map(|a| match a {
+                    OwnArray::Float(a) => OwnChunks::Float(a.slots().chunks_mut(CHUNK)),
+                    OwnArray::Bool(a) => OwnChunks::Bool(a.slots().chunks_mut(CHUNK)),
+                })
+                .collect();
             (0..chunks_of(n, CHUNK))
                 .map(|_| SplitChunk {
                     codes: codes_it.next().unwrap_or_default(),
                     valid: valid_it.next().unwrap_or_default(),
-                    own: own_its
-                        .iter_mut()
-                        .map(|it| it.next().unwrap_or_default())
-                        .collect(),
+                    own: own_its.iter_mut().map(OwnChunks::next).collect(),
                     prepared: Vec::new(),
                 })
                 .collect()
         };
         let result = run(py, n, CHUNK, outs, self.options, |chunk| {
-            let start = chunk.range.start;
+            let range = chunk.range.clone();
             let mut by_key: HashMap<Vec<u64>, Result<u32, Failure>> = HashMap::new();
-            let mut last: Option<(usize, Result<u32, Failure>)> = None;
             let mut row = vec![f64::NAN; k];
-            // the previous element's prepared code and own fields (a warm start)
-            let mut near: Option<(u32, V)> = None;
-            for i in chunk.range.clone() {
-                if !chunk.go(i) {
-                    break;
-                }
-                let prepared = &mut chunk.out.prepared;
-                let code = match &last {
-                    Some((j, r)) if same(i, *j) => r.clone(),
-                    _ => by_key
-                        .entry(key(i))
-                        .or_insert_with(|| {
-                            let p = crate::batch::guarded(|| prepare(i))?;
-                            prepared.push(p);
-                            Ok(prepared.len() as u32 - 1)
-                        })
-                        .clone(),
-                };
-                let values = code.clone().and_then(|c| {
-                    let p = &chunk.out.prepared[c as usize];
-                    let previous = near.as_ref().filter(|(pc, _)| *pc == c).map(|(_, v)| v);
-                    crate::batch::guarded(|| own(p, i, previous)).map(|v| (c, v))
-                });
-                last = Some((i, code));
-                match values {
-                    Ok((c, v)) => {
-                        let j = i - start;
-                        let out = &mut chunk.out;
-                        out.codes[j] = c;
-                        out.valid[j] = true;
-                        if let Some(v) = v {
-                            v.write(&mut row);
-                            near = Some((c, v));
-                        } else {
-                            row.fill(f64::NAN);
+            // the chunk in LANES contiguous runs, visited in turn (element k of
+            // each run, then element k + 1): each run warm-starts from its own
+            // previous element, its neighbour, and the runs do not wait on one
+            // another, so the processor overlaps their root searches
+            let run_len = range.len().div_ceil(LANES);
+            let mut lanes: [Lane<V>; LANES] = std::array::from_fn(|_| Lane {
+                last: None,
+                near: None,
+            });
+            for step in 0..run_len {
+                for (l, lane) in lanes.iter_mut().enumerate() {
+                    let i = range.start + l * run_len + step;
+                    if i >= range.end || !chunk.go(i) {
+                        continue;
+                    }
+                    let prepared = &mut chunk.out.prepared;
+                    let code = match &lane.last {
+                        Some((j, Ok(c))) if same(i, *j) => Ok(*c),
+                        Some((j, r)) if same(i, *j) => r.clone(),
+                        _ => by_key
+                            .entry(key(i))
+                            .or_insert_with(|| {
+                                let p = crate::batch::guarded(|| prepare(i))?;
+                                prepared.push(p);
+                                Ok(prepared.len() as u32 - 1)
+                            })
+                            .clone(),
+                    };
+                    let values = match code {
+                        Ok(c) => {
+                            let p = &chunk.out.prepared[c as usize];
+                            let previous = lane
+                                .near
+                                .as_ref()
+                                .filter(|(pc, _)| *pc == c)
+                                .map(|(_, v)| v);
+                            crate::batch::guarded(|| own(p, i, previous)).map(|v| (c, v))
                         }
-                        for (col, x) in out.own.iter_mut().zip(&row) {
-                            col[j] = *x;
+                        Err(ref f) => Err(f.clone()),
+                    };
+                    lane.last = Some((i, code));
+                    let j = i - range.start;
+                    let out = &mut chunk.out;
+                    match values {
+                        Ok((c, v)) => {
+                            out.codes[j] = c;
+                            out.valid[j] = true;
+                            if let Some(v) = v {
+                                v.write(&mut row);
+                                lane.near = Some((c, v));
+                            } else {
+                                row.fill(f64::NAN);
+                            }
+                            for (col, x) in out.own.iter_mut().zip(&row) {
+                                col.set(j, *x);
+                            }
+                        }
+                        Err(f) => {
+                            for col in out.own.iter_mut() {
+                                col.set(j, f64::NAN);
+                            }
+                            chunk.fail(i, f)
                         }
                     }
-                    Err(f) => chunk.fail(i, f),
                 }
             }
         });
@@ -409,36 +462,106 @@ impl Call<'_> {
         };
         // the shared records, serialized once each; chunk codes made global
         let mut shared = Columns::default();
-        for out in outs {
+        for mut out in outs {
             let base = shared_rows(&shared);
             for p in &out.prepared {
                 shared
                     .push(record(p))
                     .map_err(|e| internal(e).into_pyerr(py, None))?;
             }
-            for (c, ok) in out.codes.iter_mut().zip(out.valid.iter()) {
-                *c = if *ok { *c + base } else { NO_RECORD };
+            for (j, (c, ok)) in out.codes.iter_mut().zip(out.valid.iter()).enumerate() {
+                if *ok {
+                    *c += base;
+                } else {
+                    // failed, or did not run (after a panic elsewhere in nan mode)
+                    *c = NO_RECORD;
+                    for col in out.own.iter_mut() {
+                        col.set(j, f64::NAN);
+                    }
+                }
             }
         }
-        for (j, _) in valid.iter().enumerate().filter(|(_, ok)| !**ok) {
-            for col in &mut own_cols {
-                col[j] = f64::NAN;
-            }
-        }
+        // the columns are written: their borrows end before Python sees them
+        drop(valid_guard);
         let with_valid = self.options.errors == crate::batch::Errors::Nan;
-        let merged = py
-            .detach(|| {
-                let own: Vec<(&'static str, Data)> = V::FIELDS
-                    .iter()
-                    .zip(own_cols)
-                    .map(|(&(name, kind), values)| (name, own_column(kind, values)))
-                    .collect();
-                Merged::from_split(shared, &codes, own, with_valid.then_some(valid))
-            })
-            .map_err(|e| internal(e).into_pyerr(py, None))?;
+        let own: Vec<(&'static str, Bound<'py, PyAny>)> = V::FIELDS
+            .iter()
+            .zip(own_arrays)
+            .map(|(&(name, _), a)| (name, a.into_any()))
+            .collect();
+        let dict = split_into_py(
+            py,
+            shared,
+            &codes,
+            own,
+            with_valid.then(|| valid_array.into_any()),
+            self.options.threads,
+        )?;
+        drop(codes);
         let report = self.report(py, report, &Warnings::default())?;
-        let dict: Bound<'py, PyDict> = merged.into_py(py)?;
         PyTuple::new(py, [dict.into_any(), report.into_any()])
+    }
+}
+
+/// Runs of a chunk of [`Call::split_columns`] visited in turn (see there).
+const LANES: usize = 4;
+
+/// The state of one run of a chunk of [`Call::split_columns`]: its previous
+/// element and that element's prepared code, and its last own fields with their
+/// code (the warm start).
+struct Lane<V> {
+    last: Option<(usize, Result<u32, Failure>)>,
+    near: Option<(u32, V)>,
+}
+
+/// An own output column of [`Call::split_columns`].
+enum OwnArray<'py> {
+    Float(Fresh<'py, f64>),
+    Bool(Fresh<'py, bool>),
+}
+
+impl<'py> OwnArray<'py> {
+    /// The array, once every element is written.
+    fn into_any(self) -> Bound<'py, PyAny> {
+        match self {
+            OwnArray::Float(a) => a.into_array().into_any(),
+            OwnArray::Bool(a) => a.into_array().into_any(),
+        }
+    }
+}
+
+/// The chunks of an own output column.
+enum OwnChunks<'a> {
+    Float(std::slice::ChunksMut<'a, MaybeUninit<f64>>),
+    Bool(std::slice::ChunksMut<'a, MaybeUninit<bool>>),
+}
+
+impl<'a> OwnChunks<'a> {
+    fn next(&mut self) -> OwnSlice<'a> {
+        match self {
+            OwnChunks::Float(it) => OwnSlice::Float(it.next().unwrap_or_default()),
+            OwnChunks::Bool(it) => OwnSlice::Bool(it.next().unwrap_or_default()),
+        }
+    }
+}
+
+/// One chunk of an own output column (a bool column takes 1.0 as true).
+enum OwnSlice<'a> {
+    Float(&'a mut [MaybeUninit<f64>]),
+    Bool(&'a mut [MaybeUninit<bool>]),
+}
+
+impl OwnSlice<'_> {
+    #[inline]
+    fn set(&mut self, j: usize, x: f64) {
+        match self {
+            OwnSlice::Float(s) => {
+                s[j].write(x);
+            }
+            OwnSlice::Bool(s) => {
+                s[j].write(x == 1.0);
+            }
+        }
     }
 }
 
@@ -447,7 +570,7 @@ impl Call<'_> {
 struct SplitChunk<'a, P> {
     codes: &'a mut [u32],
     valid: &'a mut [bool],
-    own: Vec<&'a mut [f64]>,
+    own: Vec<OwnSlice<'a>>,
     prepared: Vec<P>,
 }
 

@@ -119,14 +119,8 @@ class Batch:
     def column(self, value: Any) -> Any:
         """One column from the native core as an array of the broadcast shape (or
         a Python scalar for a scalar call)."""
-        if isinstance(value, tuple):
-            if value[0] == "null":
-                flat = np.full(value[1], None, dtype=object)
-            else:
-                table, codes = value
-                objects = np.empty(len(table), dtype=object)
-                objects[:] = table
-                flat = objects.take(codes)
+        if isinstance(value, tuple):  # ("null", n): no element has a value
+            flat = np.full(value[1], None, dtype=object)
         else:
             flat = value
         if self.scalar:

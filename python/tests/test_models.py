@@ -66,6 +66,37 @@ def test_jkr_over_a_grid_of_speeds_and_masses():
     assert (out["model"] == out["model"][0, 0]).all() and (out["evaluations"] == 0).all()
 
 
+def test_jkr_over_many_sorted_speeds():
+    """Many chunks of one prepared model: the shared columns filled (object
+    columns of one value, zero columns left zeroed), each speed's maximum contact
+    radius warm-started from its neighbour's equal to the cold start of a scalar
+    call to rounding, and every element against (5.35)-(5.38) written out."""
+    e, r, w, m = 1e9, 1e-6, 0.05, 1e-14
+    v = np.geomspace(0.01, 30.0, 20_000)
+    out = tabor.jkr(modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v)
+    loss = (1 + 864 ** (1 / 3)) / 10 * (r**4 * (math.pi * w) ** 5 / e**2) ** (1 / 3)  # (5.36)
+    v_c = math.sqrt(2 * loss / m)  # (5.38)
+    ref = np.sqrt(np.clip(1 - (v_c / v) ** 2, 0, None))  # (5.37)
+    np.testing.assert_allclose(out["restitution"], ref, rtol=1e-10, atol=1e-12)
+    a_c = (9 * math.pi * w * r**2 / (8 * e)) ** (1 / 3)
+    energy = 1.5 * math.pi * w * r * a_c**2 / (3 * r)
+    a = out["max_contact_radius"] / a_c
+    offset = 1.2 * (4 / 3) ** (4 / 3)
+    kinetic = 0.5 * m * v**2 / energy
+    work = 1.2 * a**5 - 4 * a**3.5 + 2 * a**2 + offset
+    assert np.all(np.abs(work - kinetic) / (kinetic + offset) < 1e-11)
+    for i in (0, 1, 4095, 4096, 4097, 12_345, 19_999):  # cold starts, one element each
+        cold = tabor.jkr(modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v[i])
+        assert out["max_contact_radius"][i] == pytest.approx(cold["max_contact_radius"], rel=4 * np.finfo(float).eps)
+        assert out["model"][i] == cold["model"] and out["branch"][i] == cold["branch"]
+    assert out["model"].dtype == object and all(type(x) is str for x in out["model"][::997])
+    assert (out["model"] == out["model"][0]).all() and (out["separation"] == "fixed-grip").all()
+    assert (out["evaluations"] == 0).all() and (out["energy_loss_error"] == 0.0).all()
+    assert (out["energy_loss"] == out["energy_loss"][0]).all()
+    assert out["energy_loss"][0] == pytest.approx(loss, rel=1e-13)
+    assert out["energy_loss"].flags.writeable and out["model"].flags.writeable
+
+
 def test_jkr_over_speeds_with_invalid_points():
     e, r, w = 1e9, 1e-6, 0.05
     m = np.array([1e-14, -1.0, 1e-14])[:, None]

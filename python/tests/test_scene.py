@@ -129,6 +129,22 @@ def test_sweep_columns():
     assert w["energy_loss"][1] / w["energy_loss"][0] == pytest.approx(2 ** (5 / 3), rel=1e-10)
 
 
+def test_sweep_with_more_distinct_strings_than_one_byte_codes_hold():
+    # every Tabor parameter names its model: 300 distinct strings in one column,
+    # merged from chunks with two-byte codes; each point against a sweep of its
+    # own value (one-byte codes)
+    scene = tabor.Scene.from_path(SCENES / "silica.toml")
+    lam = np.geomspace(0.1, 10.0, 300)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        s = scene.sweep("tabor_parameter", lam)
+        assert len(set(s["model"])) == 300
+        for i in (0, 1, 254, 255, 256, 299):
+            one = scene.sweep("tabor_parameter", [lam[i]])
+            assert s["model"][i] == one["model"][0] and s["branch"][i] == one["branch"][0]
+            assert s["restitution"][i] == one["restitution"][0]
+
+
 def test_sweep_reasons_are_templates_with_their_numbers():
     # the plastic reason quotes the speed and the yield onset: one template for
     # every point below the onset, its numbers in reason_values

@@ -129,6 +129,7 @@ impl<C: AdhesiveContact> JkrImpact<C> {
     /// contact radius at a nearby speed (a batch over sorted speeds).
     ///
     /// Seed 000, eq. (5.35).
+    #[inline]
     pub fn max_contact_radius_near(
         &self,
         impact_speed: f64,

@@ -233,11 +233,14 @@ pub fn max_contact_radius(kinetic_energy: f64, tolerance: f64) -> Result<MaxCont
 
 /// [`max_contact_radius`] started from `near`, the maximum contact radius of a
 /// nearby kinetic energy (a batch over sorted speeds: neighbours differ by parts
-/// per million, and 2 iterations remain instead of 3 to 5). A `near` that is not
+/// per million). From there one Halley step lands when the error it leaves (its
+/// cubic term, bounded from the derivatives at the start) is below rounding, a
+/// second one follows otherwise (3 to 5 from a cold start). A `near` that is not
 /// beyond the radius where the work vanishes is ignored. The answer agrees with the
-/// cold start's to the rounding of the last step.
+/// cold start's to rounding.
 ///
 /// Seed 000, eq. (5.35).
+#[inline]
 pub fn max_contact_radius_near(
     kinetic_energy: f64,
     tolerance: f64,
@@ -259,12 +262,13 @@ pub fn max_contact_radius_near(
         let (work, slope, curvature) = balance_work_in_sqrt(s);
         let excess = work - kinetic;
         if excess == 0.0 {
-            return max_radius(s * s, kinetic, iteration, iteration);
+            return max_radius(s, kinetic, iteration, iteration);
         }
         // Halley's step (cubic convergence), Newton's where its denominator
         // overflows (energies beyond ~1e250)
         let halley = 2.0 * slope * slope - excess * curvature;
-        let step = if halley.is_finite() && halley > 0.0 {
+        let halley_used = halley.is_finite() && halley > 0.0;
+        let step = if halley_used {
             2.0 * excess * slope / halley
         } else {
             excess / slope
@@ -274,13 +278,28 @@ pub fn max_contact_radius_near(
         }
         // a step that does not shrink is rounding: the root is reached
         if step.abs() >= previous {
-            return max_radius(s * s, kinetic, iteration, iteration);
+            return max_radius(s, kinetic, iteration, iteration);
         }
+        // the error Halley's step leaves, |f''²/(4f'²) − f'''/(6f')| |step|³ to
+        // leading order (its asymptotic constant; f''' = 12s(72c² − 70c + 4),
+        // c = s³), taken twice, below ε/4 of s: the step lands on the root to
+        // rounding without another evaluation (from a neighbour's radius in a
+        // dense batch over sorted speeds). Only for steps below 1e-3 s, where
+        // the leading order is all there is.
+        let lands = halley_used && step.abs() <= 1e-3 * s && {
+            let c = s * s * s;
+            let third = 12.0 * s * ((72.0 * c - 70.0) * c + 4.0);
+            // |f''²/4 − f''' f'/6| against f'², without a division
+            let constant_times_slope2 =
+                (0.25 * curvature * curvature - third * slope * (1.0 / 6.0)).abs();
+            2.0 * constant_times_slope2 * step.abs().powi(3)
+                <= 0.25 * f64::EPSILON * s * slope * slope
+        };
         // every root lies beyond the zero-work radius, where W is convex: a
         // step from a start above the root stays there
         s = (s - step).max(SQRT_ZERO_WORK_RADIUS);
-        if step.abs() <= width * s {
-            return max_radius(s * s, kinetic, iteration + 1, iteration);
+        if lands || step.abs() <= width * s {
+            return max_radius(s, kinetic, iteration + 1, iteration);
         }
         previous = step.abs();
     }
@@ -347,9 +366,10 @@ fn fifth_root(x: f64) -> f64 {
     g
 }
 
-fn max_radius(a: f64, kinetic: f64, evaluations: u64, iterations: u64) -> Result<MaxContactRadius> {
-    let w = finite_output(MODEL, "kinetic energy", balance_work(a))?;
-    let a = finite_output(MODEL, "maximum contact radius", a)?;
+/// The result at `s = √â_max`, the residual from the work in `s` (no square root).
+fn max_radius(s: f64, kinetic: f64, evaluations: u64, iterations: u64) -> Result<MaxContactRadius> {
+    let w = finite_output(MODEL, "kinetic energy", balance_work_in_sqrt(s).0)?;
+    let a = finite_output(MODEL, "maximum contact radius", s * s)?;
     Ok(MaxContactRadius {
         contact_radius: a,
         energy_residual: (w - kinetic).abs() / (kinetic + LOADING_OFFSET),
@@ -458,7 +478,7 @@ mod tests {
                 assert!(m.cost.evaluations <= 10, "K {kinetic:e}: {m:?}");
             }
         }
-        // from a neighbour's radius: the same root to rounding, in 2 evaluations;
+        // from a neighbour's radius: the same root to rounding, in 1 or 2 steps;
         // a start outside the convex region is ignored
         for k in 0..=96 {
             let kinetic = 10f64.powf(-10.0 + 0.25 * f64::from(k));
@@ -473,6 +493,29 @@ mod tests {
             for bad in [0.0, 1.0, f64::NAN, f64::INFINITY] {
                 let m = max_contact_radius_near(kinetic, 1e-12, Some(bad)).unwrap();
                 assert_eq!(m.contact_radius, cold.contact_radius);
+            }
+        }
+        // from a neighbour up to 1e-7 away in energy, one Halley step lands (its
+        // error bound is below rounding); farther away a second step is taken;
+        // either way the root of the cold start to rounding
+        for k in 0..=96 {
+            let kinetic = 10f64.powf(-10.0 + 0.25 * f64::from(k));
+            let cold = max_contact_radius(kinetic, 1e-12).unwrap();
+            for offset in [-1e-3, -1e-5, -1e-7, -1e-9, 1e-9, 1e-7, 1e-5, 1e-3, 1e-1] {
+                let near = max_contact_radius(kinetic * (1.0 + offset), 1e-12).unwrap();
+                let warm =
+                    max_contact_radius_near(kinetic, 1e-12, Some(near.contact_radius)).unwrap();
+                assert!(
+                    (warm.contact_radius / cold.contact_radius - 1.0).abs() < 4.0 * f64::EPSILON,
+                    "K {kinetic:e}, offset {offset:e}: {warm:?} vs {cold:?}"
+                );
+                assert!(warm.energy_residual <= 1e-12, "K {kinetic:e}: {warm:?}");
+                if offset.abs() <= 1e-7 {
+                    assert_eq!(
+                        warm.cost.iterations, 1,
+                        "K {kinetic:e}, {offset:e}: {warm:?}"
+                    );
+                }
             }
         }
         // no overflow at the largest energies, a clear error beyond

@@ -192,6 +192,7 @@ impl AdhesiveContact for JkrSphere {
     }
 
     /// [`normalized::max_contact_radius_near`] in physical units.
+    #[inline]
     fn max_contact_radius_near(
         &self,
         kinetic_energy: f64,
