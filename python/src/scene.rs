@@ -94,6 +94,24 @@ fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, Failure> + Se
     py.detach(|| guarded(f)).map_err(|e| e.into_pyerr(py, None))
 }
 
+/// `scene` prepared for the `count` impact speeds `speeds` (m/s) without the GIL
+/// (`tabor::scene::Scene::speed_batch_over`: the range of the finite, positive
+/// ones), or `None` when it cannot be (the chunks then meet the scene's error
+/// themselves).
+fn speed_batch<'s>(
+    py: Python<'_>,
+    scene: &'s tabor::scene::Scene,
+    speeds: impl Iterator<Item = f64>,
+    count: usize,
+) -> Option<tabor::scene::SpeedBatch<'s>> {
+    let (lower, upper) = speeds
+        .filter(|x| x.is_finite() && *x > 0.0)
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), x| {
+            (lo.min(x), hi.max(x))
+        });
+    py.detach(|| scene.speed_batch_over(lower, upper, count).ok())
+}
+
 /// Emits the warnings of `outcomes` (code, message) through Python's `warnings`.
 fn warn(
     py: Python<'_>,
@@ -219,18 +237,21 @@ impl Scene {
         let cols = call.columns(&[("speed", &speeds)])?;
         let v = cols[0];
         let scene = &self.inner;
-        // each chunk prepares the models once (`Scene::restitutions`)
+        // the whole array prepared once: the models, and for a long array of a
+        // coupled viscous-adhesive scene its certified speed table
+        let batch = speed_batch(py, scene, (0..n).map(|i| v.at(i)), n);
+        let restitutions = |speeds: &[f64]| match &batch {
+            Some(b) => b.restitutions(speeds),
+            None => scene.restitutions(speeds),
+        };
         let result = call.chunked_floats(
             py,
             |range| {
                 let speeds: Vec<f64> = range.clone().map(|i| v.at(i)).collect();
-                scene
-                    .restitutions(&speeds)
-                    .map_err(|(j, e)| (range.start + j, Failure::scene(&e)))
+                restitutions(&speeds).map_err(|(j, e)| (range.start + j, Failure::scene(&e)))
             },
             |i| {
-                scene
-                    .restitutions(&[v.at(i)])
+                restitutions(&[v.at(i)])
                     .map(|r| r[0])
                     .map_err(|(_, e)| Failure::scene(&e))
             },
@@ -365,14 +386,25 @@ impl Scene {
         let cols = call.columns(&[("values", &values)])?;
         let v = cols[0];
         let scene = &self.inner;
+        // a sweep over speeds prepares the whole array once (as `tabor::scene::sweep`
+        // does): the models, and for a long sweep of a coupled viscous-adhesive
+        // scene its certified speed table
+        let batch = (which == SweepParameter::Speed)
+            .then(|| speed_batch(py, scene, (0..n).map(|i| v.at(i)), n))
+            .flatten();
         call.chunked_records(
             py,
-            |range| {
-                let values: Vec<f64> = range.map(|i| v.at(i)).collect();
-                tabor::scene::sweep(scene, which, &values, || {})
-                    .into_iter()
-                    .map(|r| r.map_err(|e| Failure::scene(&e)))
-                    .collect()
+            |range| match &batch {
+                Some(b) => range
+                    .map(|i| b.outcome_at(v.at(i)).map_err(|e| Failure::scene(&e)))
+                    .collect(),
+                None => {
+                    let values: Vec<f64> = range.map(|i| v.at(i)).collect();
+                    tabor::scene::sweep(scene, which, &values, || {})
+                        .into_iter()
+                        .map(|r| r.map_err(|e| Failure::scene(&e)))
+                        .collect()
+                }
             },
             |out, o: Outcome| push(out, &o),
         )

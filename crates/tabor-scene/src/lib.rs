@@ -61,6 +61,6 @@ pub use inputs::{
 };
 pub use outcome::{Effect, Outcome};
 pub use parameter::SweepParameter;
-pub use scene::Scene;
+pub use scene::{Scene, SpeedBatch};
 pub use select::Sticking;
 pub use sweep::{spaced, sweep};

@@ -317,6 +317,32 @@ impl Scene {
         Ok(law)
     }
 
+    /// The scene prepared for many impact speeds within the range of `speeds` (m/s;
+    /// only their count and the range of the finite, positive ones count): its
+    /// models and sticking velocity built once and, for at least 500 speeds of a
+    /// coupled viscous-adhesive scene, a speed table of that model certified
+    /// against its simulation (`tabor_viscoadhesive::table`) over the range.
+    /// What [`crate::sweep`] over speeds uses; front ends that evaluate in chunks
+    /// (Python) prepare the whole array once with it.
+    pub fn speed_batch(&self, speeds: &[f64]) -> Result<SpeedBatch<'_>, SceneError> {
+        let valid = speeds.iter().copied().filter(|v| v.is_finite() && *v > 0.0);
+        let upper = valid.clone().fold(0.0, f64::max);
+        let lower = valid.fold(f64::INFINITY, f64::min);
+        self.speed_batch_over(lower, upper, speeds.len())
+    }
+
+    /// [`Scene::speed_batch`] for `count` speeds from `lower` to `upper` (m/s).
+    pub fn speed_batch_over(
+        &self,
+        lower: f64,
+        upper: f64,
+        count: usize,
+    ) -> Result<SpeedBatch<'_>, SceneError> {
+        Ok(SpeedBatch {
+            prepared: self.prepared()?.with_speed_table(lower, upper, count),
+        })
+    }
+
     /// The coefficient of restitution (5.37) at each of `speeds` (m/s), computed in
     /// parallel on rayon's pool, by the same model and combination rule as
     /// [`Scene::outcome_at`] at that speed (the models are built once). The first
@@ -327,26 +353,51 @@ impl Scene {
     /// same negligible-effect rule as the outcome (bit-identical to it).
     pub fn restitutions(&self, speeds: &[f64]) -> Result<Vec<f64>, (usize, SceneError)> {
         let prepared = self.prepared().map_err(|e| (0, e))?;
-        match prepared.constant_loss().map_err(|e| (0, e))? {
-            Some(loss) => speeds
-                .par_iter()
-                .enumerate()
-                .map(|(i, &v)| {
-                    impact_speed(v)
-                        .and_then(|v| prepared.restitution_with_constant_loss(loss, v))
-                        .map_err(|e| (i, e))
-                })
-                .collect(),
-            None => speeds
-                .par_iter()
-                .enumerate()
-                .map(|(i, &v)| {
-                    impact_speed(v)
-                        .and_then(|v| prepared.restitution_with_error(v))
-                        .map(|(e, _)| e)
-                        .map_err(|e| (i, e))
-                })
-                .collect(),
-        }
+        restitutions(&prepared, speeds)
+    }
+}
+
+/// A scene prepared for many impact speeds ([`Scene::speed_batch`]).
+pub struct SpeedBatch<'a> {
+    prepared: Prepared<'a>,
+}
+
+impl SpeedBatch<'_> {
+    /// The outcome at impact speed `speed` (m/s), as [`Scene::outcome_at`] (from
+    /// the speed table where the batch has one, within its certified error).
+    pub fn outcome_at(&self, speed: f64) -> Result<Outcome, SceneError> {
+        let v = impact_speed(speed)?;
+        self.prepared.outcome_at(v)
+    }
+
+    /// The restitution at each of `speeds` (m/s), as [`Scene::restitutions`] (from
+    /// the speed table where the batch has one, within its certified error).
+    pub fn restitutions(&self, speeds: &[f64]) -> Result<Vec<f64>, (usize, SceneError)> {
+        restitutions(&self.prepared, speeds)
+    }
+}
+
+/// [`Scene::restitutions`] on a prepared scene.
+fn restitutions(prepared: &Prepared<'_>, speeds: &[f64]) -> Result<Vec<f64>, (usize, SceneError)> {
+    match prepared.constant_loss().map_err(|e| (0, e))? {
+        Some(loss) => speeds
+            .par_iter()
+            .enumerate()
+            .map(|(i, &v)| {
+                impact_speed(v)
+                    .and_then(|v| prepared.restitution_with_constant_loss(loss, v))
+                    .map_err(|e| (i, e))
+            })
+            .collect(),
+        None => speeds
+            .par_iter()
+            .enumerate()
+            .map(|(i, &v)| {
+                impact_speed(v)
+                    .and_then(|v| prepared.restitution_with_error(v))
+                    .map(|(e, _)| e)
+                    .map_err(|e| (i, e))
+            })
+            .collect(),
     }
 }

@@ -1,6 +1,6 @@
 //! Sweeps: the outcome of a scene over many values of one parameter, in parallel.
 
-use crate::error::{impact_speed, SceneError};
+use crate::error::SceneError;
 use crate::outcome::Outcome;
 use crate::parameter::SweepParameter;
 use crate::scene::Scene;
@@ -20,16 +20,16 @@ where
 {
     if parameter == SweepParameter::Speed {
         // one scene: its models and its sticking velocity are built once
-        let prepared = match scene.prepared() {
-            // a long sweep of a coupled viscous-adhesive scene answers from a
-            // certified speed table (tabor_viscoadhesive::table)
-            Ok(p) => p.with_speed_table(values),
+        // a long sweep of a coupled viscous-adhesive scene answers from a
+        // certified speed table (tabor_viscoadhesive::table)
+        let batch = match scene.speed_batch(values) {
+            Ok(b) => b,
             Err(e) => return values.iter().map(|_| Err(e.clone())).collect(),
         };
         return values
             .par_iter()
             .map(|&v| {
-                let result = impact_speed(v).and_then(|v| prepared.outcome_at(v));
+                let result = batch.outcome_at(v);
                 on_point();
                 result
             })
