@@ -129,6 +129,24 @@ def test_sweep_columns():
     assert w["energy_loss"][1] / w["energy_loss"][0] == pytest.approx(2 ** (5 / 3), rel=1e-10)
 
 
+def test_long_coupled_arrays_answer_like_single_outcomes():
+    # 600 speeds of the coupled viscous-adhesive scene: prepared once for the
+    # whole array (Scene::speed_batch_over), so the model answers from its speed
+    # table certified against its simulation (tolerance 1e-10 of the scene);
+    # every 50th point against an outcome of its own (simulated)
+    scene = tabor.Scene.from_path(SCENES / "polymer_grains_viscoadhesive.toml")
+    v = np.geomspace(0.9, 5.0, 600)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        e = scene.restitution(v)
+        s = scene.sweep("speed", v)
+        for i in range(0, 600, 50):
+            one = scene.outcome(speed=v[i])["restitution"]
+            assert e[i] == pytest.approx(one, rel=0, abs=1e-9), i
+            assert s["restitution"][i] == pytest.approx(one, rel=0, abs=1e-9), i
+    np.testing.assert_array_equal(s["sticks"], e == 0.0)
+
+
 def test_sweep_with_more_distinct_strings_than_one_byte_codes_hold():
     # every Tabor parameter names its model: 300 distinct strings in one column,
     # merged from chunks with two-byte codes; each point against a sweep of its
