@@ -683,7 +683,9 @@ fn regression_of_the_large_run_a_narrow_sticking_window() {
     let o = scene.outcome_at(0.2).unwrap();
     assert!(!o.sticks, "rebounds inside the window's gap");
     assert!(
-        o.warnings.iter().any(|w| w.code == "restitution-not-monotone"),
+        o.warnings
+            .iter()
+            .any(|w| w.code == "restitution-not-monotone"),
         "{:?}",
         o.warnings
     );
