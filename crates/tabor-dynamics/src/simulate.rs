@@ -371,10 +371,8 @@ impl<'s> Run<'s> {
             t: run.solution.t,
             y: run.solution.y,
         };
-        match run.event {
-            Some(0) => Ok((EventKind::BranchEnd, hit, None)),
-            Some(_) if u_prev > 0.0 => Ok((EventKind::MaxCompression, hit, None)),
-            Some(_) => Ok((EventKind::MinCompression, hit, None)),
+        match event_kind(run.event, u_prev) {
+            Some(kind) => Ok((kind, hit, None)),
             None => Err(time_limit_error(law, settings, units)),
         }
     }
@@ -501,11 +499,9 @@ impl<'s> Run<'s> {
             t: st[3],
             y: [end.overlap / units.length, st[1], st[2]],
         };
-        match run.event {
-            Some(0) => Ok((EventKind::BranchEnd, hit, st[0])),
-            Some(1) if u_prev > 0.0 => Ok((EventKind::MaxCompression, hit, st[0])),
-            Some(1) => Ok((EventKind::MinCompression, hit, st[0])),
-            _ => Err(time_limit_error(law, settings, units)),
+        match event_kind(run.event, u_prev) {
+            Some(kind) => Ok((kind, hit, st[0])),
+            None => Err(time_limit_error(law, settings, units)),
         }
     }
 
@@ -650,6 +646,19 @@ fn record_point<L: ForceLaw + ?Sized>(
         });
     }
     Ok(f)
+}
+
+/// The kind of the event of index `event` among a segment's event functions
+/// `[branch end, ḋ, …]` (`u_prev`: ḋ at the start of the step that held it, whose
+/// sign tells the turning point); `None` for no event or a later index (the time
+/// limit).
+fn event_kind(event: Option<usize>, u_prev: f64) -> Option<EventKind> {
+    match event? {
+        0 => Some(EventKind::BranchEnd),
+        1 if u_prev > 0.0 => Some(EventKind::MaxCompression),
+        1 => Some(EventKind::MinCompression),
+        _ => None,
+    }
 }
 
 /// The blend `c/S(q_start)` of [`Run::integrate_on_curve`]: the regularized time

@@ -43,15 +43,13 @@ pub struct MaugisDugdaleForceLaw {
     scales: JkrScales,
     path: ImpactPath,
     part: Part,
+    /// b̂_c and K b̂_c (5.46): the no-contact branch's snap-off and junction radii.
+    no_contact_radii: (f64, f64),
     /// Cases 1 and 2: the depth of the junction of the parts (normalized), where
     /// b̂ = K b̂_c on the no-contact branch.
     junction: Option<f64>,
     hint: Hint,
 }
-
-/// Depths within this many ε (relative) above the junction are the junction
-/// (`MaugisDugdaleForceLaw::state`).
-const JUNCTION_ROUNDING: f64 = 64.0 * f64::EPSILON;
 
 /// The shortest no-contact part, `K − 1`, that the path follows after the
 /// junction (as Λ → Λ2, K → 1); below it the bodies separate at the junction.
@@ -123,13 +121,14 @@ impl MaugisDugdaleForceLaw {
     /// The force law of a Maugis-Dugdale impact.
     pub fn new(model: &MaugisDugdaleImpact) -> Result<Self> {
         let path = impact_path(model.tabor_parameter())?;
+        let lambda = path.lambda;
+        let bc = no_contact_pull_off_radius(lambda);
+        let b_junction = junction_factor(lambda) * bc;
         Ok(MaugisDugdaleForceLaw {
             scales: model.scales(),
-            junction: (path.case != TaborCase::Contact).then(|| {
-                let lambda = path.lambda;
-                let b = junction_factor(lambda) * no_contact_pull_off_radius(lambda);
-                no_contact_state(lambda, b).depth
-            }),
+            no_contact_radii: (bc, b_junction),
+            junction: (path.case != TaborCase::Contact)
+                .then(|| no_contact_state(lambda, b_junction).depth),
             path,
             part: Part::Approaching,
             hint: Hint::empty(),
@@ -139,13 +138,8 @@ impl MaugisDugdaleForceLaw {
     /// Whether the no-contact part (b̂ from b̂_c to K b̂_c) is longer than
     /// [`NO_CONTACT_SHORTEST`] relative to b̂_c.
     fn no_contact_part_is_long(&self) -> bool {
-        junction_factor(self.path.lambda) - 1.0 > NO_CONTACT_SHORTEST
-    }
-
-    /// b̂_c and K b̂_c: the no-contact branch's snap-off and junction radii.
-    fn no_contact_radii(&self) -> (f64, f64) {
-        let bc = no_contact_pull_off_radius(self.path.lambda);
-        (bc, junction_factor(self.path.lambda) * bc)
+        let (bc, b_junction) = self.no_contact_radii;
+        b_junction / bc - 1.0 > NO_CONTACT_SHORTEST
     }
 
     /// The range of adhesion h = d_n/Λ (m).
@@ -188,15 +182,7 @@ impl MaugisDugdaleForceLaw {
 
     fn state(&self, overlap: f64) -> Result<crate::impact::PathState> {
         // clamp trial points beyond the snap-off to the snap-off state
-        let mut d = (overlap / self.scales.depth).max(self.path.pull_off.depth);
-        if let Some(j) = self.junction {
-            // a hair above the junction (rounding, at its events) the contact
-            // branch's d̂(θ = π/2) may lie on either side of the target, so that
-            // θ is not bracketed: the junction state is the same to O(ε)
-            if d > j && d <= j + JUNCTION_ROUNDING * j.abs().max(1.0) {
-                d = j;
-            }
-        }
+        let d = (overlap / self.scales.depth).max(self.path.pull_off.depth);
         let mut cost = Cost::ZERO;
         let (state, next) = equilibrium_state_near(&self.path, d, self.hint.get(), &mut cost)?;
         if let Some(p) = next {
@@ -325,25 +311,19 @@ impl BranchCurve for MaugisDugdaleForceLaw {
         let lambda = self.path.lambda;
         let depth = overlap / self.scales.depth;
         if self.part == Part::NoContact {
-            // (3/2)b² − 3 b_c b − (1/Λ + d) = 0, larger root
-            let (bc, _) = self.no_contact_radii();
+            // (3/2)b² − 3 b_c b − (1/Λ + d) = 0, larger root, on the part
+            // [b̂_c, K b̂_c] (rounding at its ends)
+            let (bc, b_junction) = self.no_contact_radii;
             let c = 1.0 / lambda + depth;
             let disc = (9.0 * bc * bc + 6.0 * c).max(0.0);
-            // on the part: [b̂_c, K b̂_c] (rounding at its ends)
-            let (_, b_junction) = self.no_contact_radii();
             return Ok(((3.0 * bc + disc.sqrt()) / 3.0).clamp(bc, b_junction));
         }
-        if let Some(j) = self.junction {
-            // at the junction (â = 0, θ = π/2) to rounding: d̂ − d̂_j ∝ (π/2 − θ)²
-            // there, so the depth tells θ to the square root of its rounding only
-            if depth <= j + JUNCTION_ROUNDING * j.abs().max(1.0) {
-                return Ok(std::f64::consts::FRAC_PI_2);
-            }
-        }
-        match self.state(overlap)?.theta {
-            Some(theta) => Ok(theta),
-            None => Ok(std::f64::consts::FRAC_PI_2),
-        }
+        // at or below the junction the traced path answers with the no-contact
+        // state (the contact part starts there, θ = π/2)
+        Ok(self
+            .state(overlap)?
+            .theta
+            .unwrap_or(std::f64::consts::FRAC_PI_2))
     }
 
     /// The state at θ ([`contact_state`], seed 000 section 5.3.2) or at b̂
@@ -354,8 +334,7 @@ impl BranchCurve for MaugisDugdaleForceLaw {
             let lambda = self.path.lambda;
             let b = coordinate;
             let s = no_contact_state(lambda, b);
-            let (bc, _) = self.no_contact_radii();
-            (s.depth, 3.0 * (b - bc), s.force, 0.0)
+            (s.depth, 3.0 * (b - self.no_contact_radii.0), s.force, 0.0)
         } else {
             let s = contact_state(self.path.lambda, coordinate);
             (s.depth, s.depth_slope, s.force, s.contact_radius)
@@ -376,7 +355,7 @@ impl BranchCurve for MaugisDugdaleForceLaw {
         let loading = overlap_rate > 0.0;
         Ok(match (self.part, self.path.pull_off.theta) {
             (Part::NoContact, _) => {
-                let (bc, b_junction) = self.no_contact_radii();
+                let (bc, b_junction) = self.no_contact_radii;
                 if loading {
                     (coordinate - bc).min(b_junction - coordinate)
                 } else {
@@ -394,7 +373,7 @@ impl BranchCurve for MaugisDugdaleForceLaw {
     fn slope_scale(&self) -> f64 {
         let slope = match self.path.jump_in.theta {
             Some(theta) => contact_state(self.path.lambda, theta).depth_slope.abs(),
-            None => 3.0 * no_contact_pull_off_radius(self.path.lambda),
+            None => 3.0 * self.no_contact_radii.0,
         };
         slope * self.scales.depth
     }

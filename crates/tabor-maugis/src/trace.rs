@@ -149,13 +149,13 @@ pub(crate) fn equilibrium_state_near(
             // gives it at θ = π/2 (they differ by rounding, up to ~1e-14, as the
             // contact branch's depth cancels there) has no θ below π/2: it is the
             // junction (â = 0)
-            Err(_)
-                if path.case != TaborCase::Contact
-                    && contact_state(lambda, FRAC_PI_2).depth >= depth =>
-            {
-                contact_state(lambda, FRAC_PI_2)
+            Err(e) => {
+                let junction = contact_state(lambda, FRAC_PI_2);
+                if path.case == TaborCase::Contact || junction.depth < depth {
+                    return Err(e);
+                }
+                junction
             }
-            Err(e) => return Err(e),
         },
     };
     let state = PathState {
