@@ -34,7 +34,9 @@ pub struct CurvePoint {
 /// d(q) and the force F(q, ḋ) are smooth, explicit functions: the root of the JKR
 /// quartic `x = √(a/a_c)`, the angle θ of the Maugis-Dugdale contact branch.
 ///
-/// Given one ([`ForceLaw::curve`]), the simulator integrates the branch in `q`
+/// The equation of motion is seed 000 eq. (5.5), `m d̈ = −F`, as for
+/// [`ForceLaw`]. Given one ([`ForceLaw::curve`]), the simulator integrates the
+/// branch in `q`
 /// with the regularized time σ, `dt = |dd/dq| dσ` (a Sundman transformation):
 /// `dq/dσ = ±ḋ`, `dḋ/dσ = −(F/m)|dd/dq|`. This needs no solve for q at a force
 /// evaluation, and the motion stays smooth in σ where d(q) has a fold at the
