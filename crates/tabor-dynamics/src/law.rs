@@ -36,9 +36,9 @@ pub struct CurvePoint {
 ///
 /// The equation of motion is seed 000 eq. (5.5), `m d̈ = −F`, as for
 /// [`ForceLaw`]. Given one ([`ForceLaw::curve`]), the simulator integrates the
-/// branch in `q`
-/// with the regularized time σ, `dt = |dd/dq| dσ` (a Sundman transformation):
-/// `dq/dσ = ±ḋ`, `dḋ/dσ = −(F/m)|dd/dq|`. This needs no solve for q at a force
+/// branch in `q` over a regularized time σ that is the time where |dd/dq| is
+/// large and turns into the Sundman time `dt = |dd/dq| dσ` where it falls to 0
+/// (there `dq/dσ ∝ ±ḋ`, `dḋ/dσ ∝ −(F/m)|dd/dq|`). This needs no solve for q at a force
 /// evaluation, and the motion stays smooth in σ where d(q) has a fold at the
 /// branch end (dd/dq = 0), where F(d), and with it d(t), has a square-root
 /// singularity that an integrator in t can only approach with ever shorter steps.
