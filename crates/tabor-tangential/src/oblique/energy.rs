@@ -14,6 +14,11 @@ pub struct EnergyLosses {
     pub normal_damping: f64,
     /// Work of the tangential force on the slip (Coulomb friction).
     pub sliding_friction: f64,
+    /// Work of the tangential force on the slip of `mindlin_deresiewicz`'s springs
+    /// (micro-slip in the partial-slip annulus and gross sliding): the tangential
+    /// work less the dashpot's and less what is left in the springs
+    /// (`tangential_spring`); 0 for the other models.
+    pub micro_slip: f64,
     /// Work against the tangential dashpot `∫ γ_t |v_t|² dt`.
     pub tangential_damping: f64,
     /// The rest of the tangential work: elastic energy left in the tangential
@@ -35,6 +40,7 @@ impl EnergyLosses {
         self.normal_adhesion
             + self.normal_damping
             + self.sliding_friction
+            + self.micro_slip
             + self.tangential_damping
             + self.tangential_spring
             + self.rolling

@@ -71,6 +71,7 @@
 //! 8e-4 at 40°; LAMMPS's runs contain the same geometry
 //! (`crates/tabor-scene/tests/oblique.rs`).
 
+mod bed;
 mod bodies;
 mod elements;
 mod energy;
@@ -79,6 +80,7 @@ mod outcome;
 mod simulate;
 mod state;
 
+pub use bed::MICRO_SLIP_NODES;
 pub use bodies::{Body, NormalContact, ObliqueImpact};
 pub use energy::EnergyLosses;
 pub use outcome::{AfterImpact, BodyMotion, ObliqueOutcome};

@@ -182,7 +182,7 @@ impl<'a> Setup<'a> {
             return Ok(());
         };
         for slot in [XT, XR] {
-            if slot == XR && fr.rolling.is_none() {
+            if (slot == XR && fr.rolling.is_none()) || (slot == XT && self.bed.is_some()) {
                 continue;
             }
             let (trial, limit, ..) = self.element(law, t, y, slot)?;
@@ -271,7 +271,8 @@ impl<'a> Setup<'a> {
             None
         };
         match modes.tangential {
-            _ if modes.frozen[0] => {}
+            // micro-slip has no stick/slip switch of the whole contact
+            _ if modes.frozen[0] || self.bed.is_some() => {}
             Mode::Stick => {
                 let (trial, limit, ..) = self.element(law, t, y, XT)?;
                 g[2] = (limit - trial.norm()) / self.force;

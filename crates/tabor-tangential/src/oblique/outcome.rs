@@ -94,6 +94,7 @@ impl<'a> Setup<'a> {
             normal_adhesion: y[EN],
             normal_damping: y[EN + 1],
             sliding_friction: y[EN + 2],
+            micro_slip: 0.0,
             tangential_damping: y[EN + 3],
             tangential_spring: y[EN + 4] - y[EN + 2] - y[EN + 3],
             rolling: y[EN + 5],
@@ -102,6 +103,18 @@ impl<'a> Setup<'a> {
         };
         if self.imp.friction.is_none() {
             losses.tangential_spring = 0.0;
+        }
+        if let Some(bed) = &self.bed {
+            // what is left in the springs (0 once the contact has broken)
+            let (_, overlap, rate, _) = self.geometry(t, y);
+            let a = if sticks || law.in_contact() {
+                law.contact_radius(overlap, rate)?.max(0.0)
+            } else {
+                0.0
+            };
+            let stored = bed.borrow().stored_energy(a);
+            losses.micro_slip = losses.tangential_spring - stored;
+            losses.tangential_spring = stored;
         }
         let energy_loss = kinetic0 - kinetic;
         let energy_error = (energy_loss - losses.total()).abs() / kinetic0;

@@ -2,15 +2,18 @@
 //! after segment from first touch to separation (or sticking), each ended by an
 //! event ([`Event`]), with the constants of its regularizations.
 
+use super::bed::{MicroSlipBed, MICRO_SLIP_NODES};
 use super::bodies::ObliqueImpact;
 use super::elements::*;
 use super::outcome::ObliqueOutcome;
 use super::state::*;
+use crate::model::TangentialModel;
 use crate::model::Twisting;
 use nalgebra::Vector3;
 use std::cell::Cell;
+use std::cell::RefCell;
 use tabor_dynamics::{BranchChange, ForceLaw, SimulationSettings};
-use tabor_numerics::ode::{drive, DormandPrince, EventDirection};
+use tabor_numerics::ode::{drive, DenseStepper, DormandPrince, EventDirection};
 use tabor_numerics::Cost;
 use tabor_restitution::{validate, Error, Result};
 
@@ -46,6 +49,10 @@ impl ObliqueImpact {
     /// (degrees, 0 ≤ α < 90) through the normal law `law` (left in its final
     /// state), to the accuracy of `settings` (tolerances in normalized units: the
     /// law's overlap scale, the impact speed, the normal force scale).
+    ///
+    /// `mindlin_deresiewicz` uses a spring bed of [`MICRO_SLIP_NODES`] nodes per
+    /// squared contact-radius scale ([`ObliqueImpact::simulate_with_nodes`] sets
+    /// another count).
     pub fn simulate(
         &self,
         law: &mut dyn ForceLaw,
@@ -53,6 +60,28 @@ impl ObliqueImpact {
         angle: f64,
         settings: &SimulationSettings,
     ) -> Result<ObliqueOutcome> {
+        self.simulate_with_nodes(law, speed, angle, settings, MICRO_SLIP_NODES)
+    }
+
+    /// [`ObliqueImpact::simulate`] with the node count of `mindlin_deresiewicz`'s
+    /// spring bed given (≥ 16; ignored by the other tangential models): the error
+    /// of the micro-slip falls as `1/nodes²` (the crate README gives the measured
+    /// constant), so two counts show it.
+    pub fn simulate_with_nodes(
+        &self,
+        law: &mut dyn ForceLaw,
+        speed: f64,
+        angle: f64,
+        settings: &SimulationSettings,
+        nodes: usize,
+    ) -> Result<ObliqueOutcome> {
+        if nodes < 16 {
+            return Err(Error::invalid(
+                "nodes",
+                nodes as f64,
+                "the micro-slip spring bed needs at least 16 nodes",
+            ));
+        }
         let v = validate::positive("speed", speed)?;
         let alpha_deg = validate::finite("angle", angle)?;
         if !(0.0..90.0).contains(&alpha_deg) {
@@ -83,7 +112,7 @@ impl ObliqueImpact {
             }
         }
         if this != *self {
-            return this.simulate(law, speed, angle, settings);
+            return this.simulate_with_nodes(law, speed, angle, settings, nodes);
         }
         validate::non_negative("pull_off_force", self.normal.pull_off_force)?;
         validate::non_negative("damping", self.normal.damping)?;
@@ -161,6 +190,11 @@ impl ObliqueImpact {
             time,
             length,
             force,
+            bed: None,
+        };
+        let setup = Setup {
+            bed: self.micro_slip_bed(law, r_eff, length, v_n, nodes),
+            ..setup
         };
 
         // start on the undisturbed path at the law's start overlap
@@ -196,6 +230,7 @@ impl ObliqueImpact {
         let mut t = t0;
         let mut onset = modes.in_contact.then_some(t0);
         if modes.in_contact {
+            setup.reset_bed(law, t, &y)?;
             setup.decide_initial_modes(law, t, &mut y, &mut modes)?;
         }
         let mut cost = Cost::ZERO;
@@ -248,6 +283,7 @@ impl ObliqueImpact {
                         if !modes.in_contact && law.in_contact() {
                             modes.in_contact = true;
                             onset = Some(t);
+                            setup.reset_bed(law, t, &y)?;
                             setup.decide_initial_modes(law, t, &mut y, &mut modes)?;
                         }
                         modes.in_contact = law.in_contact();
@@ -413,7 +449,15 @@ impl<'a> Setup<'a> {
             &mut g,
             EventDirection::Falling,
             s_end,
-            &mut |_: &DormandPrince<N>, _: f64| {},
+            &mut |stepper: &DormandPrince<N>, stop: f64| {
+                // micro-slip: the springs' state at the end of the accepted step
+                if self.bed.is_some() && modes.in_contact {
+                    let y = self.to_si(&stepper.dense(stop));
+                    if let Err(e) = self.commit_bed(law, stop * self.time, &y) {
+                        keep_first(&failure, e);
+                    }
+                }
+            },
         )
         .map_err(numerics)?;
         if let Some(e) = failure.take().or(g_failure.take()) {
@@ -450,5 +494,60 @@ impl<'a> Setup<'a> {
             Event::FrictionOnset,
         ][which];
         Ok((event, t_hit, y_hit, sol.cost + run.event_cost))
+    }
+}
+
+impl ObliqueImpact {
+    /// The spring bed of `mindlin_deresiewicz`, its grid scaled by the contact
+    /// radius at the overlap scale (the Hertz radius `√(R δ)` or the law's own,
+    /// whichever is larger); `None` for the other tangential models.
+    fn micro_slip_bed(
+        &self,
+        law: &dyn ForceLaw,
+        r_eff: f64,
+        length: f64,
+        v_n: f64,
+        nodes: usize,
+    ) -> Option<RefCell<MicroSlipBed>> {
+        let f = self.friction.as_ref()?;
+        if f.tangential.model != TangentialModel::MindlinDeresiewicz {
+            return None;
+        }
+        let hertz = (r_eff * length).sqrt();
+        let own = law.contact_radius(length, v_n).unwrap_or(0.0);
+        let a_ref = if own.is_finite() {
+            hertz.max(own)
+        } else {
+            hertz
+        };
+        Some(RefCell::new(MicroSlipBed::new(
+            f.tangential.stiffness,
+            a_ref,
+            nodes,
+        )))
+    }
+}
+
+impl<'a> Setup<'a> {
+    /// Contact onset: the springs unstrained, the current displacement the
+    /// reference.
+    pub(super) fn reset_bed(&self, law: &dyn ForceLaw, t: f64, y: &[f64; N]) -> Result<()> {
+        if let Some(bed) = &self.bed {
+            let (n, overlap, rate, _) = self.geometry(t, y);
+            let a = law.contact_radius(overlap, rate)?.max(0.0);
+            bed.borrow_mut().reset(&v3(y, XT), &n, a);
+        }
+        Ok(())
+    }
+
+    /// Commits the spring bed at SI (t, y) (after an accepted step).
+    pub(super) fn commit_bed(&self, law: &dyn ForceLaw, t: f64, y: &[f64; N]) -> Result<()> {
+        let (Some(bed), Some(fr)) = (&self.bed, &self.imp.friction) else {
+            return Ok(());
+        };
+        let (a, fc, .., n) = self.contact(law, t, y)?;
+        bed.borrow_mut()
+            .commit(&n, &v3(y, XT), a, fr.tangential.coefficient * fc);
+        Ok(())
     }
 }

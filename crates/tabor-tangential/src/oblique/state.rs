@@ -2,11 +2,13 @@
 //! friction elements, and the quantities fixed during one impact ([`Setup`]):
 //! geometry, kinetic energy and the rates of the state ([`Setup::evaluate`]).
 
+use super::bed::MicroSlipBed;
 use super::bodies::ObliqueImpact;
 use super::elements::*;
 use super::simulate::*;
 use crate::model::{TangentialModel, Twisting};
 use nalgebra::Vector3;
+use std::cell::RefCell;
 use tabor_dynamics::ForceLaw;
 use tabor_restitution::Result;
 
@@ -67,6 +69,9 @@ pub(super) struct Setup<'a> {
     pub(super) time: f64,
     pub(super) length: f64,
     pub(super) force: f64,
+    /// The spring bed of `mindlin_deresiewicz` (micro-slip), committed after every
+    /// accepted step; `None` for the other tangential models.
+    pub(super) bed: Option<RefCell<MicroSlipBed>>,
 }
 
 /// Physical quantities at one state.
@@ -249,11 +254,18 @@ impl<'a> Setup<'a> {
             let gamma = t.damping_ratio * c * a;
             let limit = t.coefficient * fc;
             let xi = v3(y, XT);
-            f_t = match modes.tangential {
-                Mode::Stick => cap(-(xi * k + v_tr * gamma), limit, modes.frozen[0]),
-                Mode::Slip => -direction(&xi, &v_tr) * limit,
-            };
-            tang = Some((k, gamma, limit, xi));
+            if let Some(bed) = &self.bed {
+                // Mindlin-Deresiewicz: the spring bed, a dashpot in parallel
+                f_t = bed.borrow().force(&n, &xi, a, limit) - v_tr * gamma;
+                put(&mut out.dy, XT, &(v_tr - n * xi.dot(&n_dot)));
+                out.dy[EN + 3] = gamma * v_tr.norm_squared();
+            } else {
+                f_t = match modes.tangential {
+                    Mode::Stick => cap(-(xi * k + v_tr * gamma), limit, modes.frozen[0]),
+                    Mode::Slip => -direction(&xi, &v_tr) * limit,
+                };
+                tang = Some((k, gamma, limit, xi));
+            }
             if let Some(r) = &fr.rolling {
                 let psi = v3(y, XR);
                 let limit_r = r.coefficient * fc;
