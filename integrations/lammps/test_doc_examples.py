@@ -78,10 +78,9 @@ def new_lammps():
 
 
 def force_on_first(lmp):
-    f = lmp.numpy.extract_atom("f")
-    ids = lmp.numpy.extract_atom("id")
-    k = list(ids[: lmp.extract_global("nlocal")]).index(1)
-    return [float(c) for c in f[k]]
+    """The force on atom 1 (gathered by atom ID)."""
+    f = lmp.gather_atoms("f", 1, 3)
+    return [f[0], f[1], f[2]]
 
 
 def run_example(lines, workdir):
