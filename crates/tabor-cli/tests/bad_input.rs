@@ -498,3 +498,40 @@ fn huge_values_are_echoed_in_exponent_form() {
         assert!(line.len() < 200, "{} characters: {line}", line.len());
     }
 }
+
+/// Issue 33: a negative number in exponent form is a value, not a flag
+/// (`--poisson-ratio -3e-1` was "unexpected argument '-3' found").
+#[test]
+fn negative_numbers_in_any_form_are_values() {
+    let base = [
+        "effective",
+        "--youngs-modulus",
+        "54e9",
+        "--radius",
+        "1e-6",
+        "--density",
+        "2650",
+        "--json",
+        "--poisson-ratio",
+    ];
+    let run = |nu: &str| {
+        let mut args = base.to_vec();
+        args.push(nu);
+        let out = tabor(&args);
+        assert!(out.status.success(), "{nu}: {out:?}");
+        String::from_utf8(out.stdout).unwrap()
+    };
+    assert_eq!(run("-3e-1"), run("-0.3"));
+    assert_eq!(run("-3E-1"), run("-.3"));
+    // a flag where a value belongs is still an error (clap's usage message)
+    let out = tabor(&[
+        "effective",
+        "--youngs-modulus",
+        "54e9",
+        "--poisson-ratio",
+        "--radius",
+        "1e-6",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).starts_with("error: "));
+}
