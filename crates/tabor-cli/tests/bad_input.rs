@@ -570,3 +570,47 @@ fn a_scene_on_standard_input() {
     let file = tabor(&["impact", path.to_str().unwrap(), "--json"]);
     assert_eq!(out.stdout, file.stdout);
 }
+
+/// Issue 33: a sweep's point count has a ceiling checked before anything is
+/// allocated (2^64 − 1 points panicked with "capacity overflow", 10⁹ aborted
+/// after 7.7 GB).
+#[test]
+fn a_sweep_beyond_its_ceiling_is_refused() {
+    let scene = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/silica.toml");
+    let scene = scene.to_str().unwrap();
+    for points in [
+        "18446744073709551615",
+        "1000000000",
+        "99999999999999999999999",
+    ] {
+        let range = format!("0.01:1:{points}");
+        let line = one_line_error(&["sweep", scene, "--speed", &range]);
+        assert!(
+            line.contains("--speed") && line.contains("at most 10000000"),
+            "{line}"
+        );
+    }
+}
+
+/// Issue 33: a failing point leaves no partial file behind.
+#[test]
+fn a_failed_sweep_leaves_no_file() {
+    let scene = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/silica.toml");
+    let dir = std::env::temp_dir().join(format!("tabor-sweep-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("sweep.csv");
+    one_line_error(&[
+        "sweep",
+        scene.to_str().unwrap(),
+        "--speed",
+        "-1:1:5",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!out.exists());
+    assert!(
+        std::fs::read_dir(&dir).unwrap().next().is_none(),
+        "a partial file remains"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

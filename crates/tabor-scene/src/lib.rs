@@ -63,4 +63,4 @@ pub use outcome::{Effect, Outcome};
 pub use parameter::SweepParameter;
 pub use scene::{Scene, SpeedBatch, MAX_SCENE_BYTES};
 pub use select::Sticking;
-pub use sweep::{spaced, sweep};
+pub use sweep::{spaced, sweep, sweep_streamed, Spacing, MAX_SWEEP_POINTS};
