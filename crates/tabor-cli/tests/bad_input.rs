@@ -614,3 +614,67 @@ fn a_failed_sweep_leaves_no_file() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Issue 33: errors name the flag as typed, each body's its own, and no Rust type
+/// name leaks into a message about a scene file.
+#[test]
+fn errors_speak_the_users_words() {
+    let line = one_line_error(&[
+        "effective",
+        "--youngs-modulus",
+        "54e9",
+        "--poisson-ratio",
+        "0.3",
+        "--target-poisson-ratio",
+        "0.7",
+        "--radius",
+        "1e-6",
+        "--density",
+        "2650",
+    ]);
+    assert!(
+        line.contains("invalid --target-poisson-ratio = 7e-1"),
+        "{line}"
+    );
+    let line = one_line_error(&[
+        "effective",
+        "--youngs-modulus",
+        "54e9",
+        "--poisson-ratio",
+        "0.6",
+        "--radius",
+        "1e-6",
+        "--density",
+        "2650",
+    ]);
+    assert!(line.contains("invalid --poisson-ratio = 6e-1"), "{line}");
+    let scene = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/silica.toml");
+    let line = one_line_error(&[
+        "sweep",
+        scene.to_str().unwrap(),
+        "--parameter",
+        "angle",
+        "--values",
+        "80:100:2",
+    ]);
+    assert_eq!(line.matches("1e2").count(), 1, "{line}");
+    let dir = std::env::temp_dir().join(format!("tabor-words-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let base = std::fs::read_to_string(&scene).unwrap();
+    for (extra, words) in [
+        (
+            "\n[friction]\ncoefficient = 0.3\nrolling = 5\n",
+            "a table { stiffness",
+        ),
+        (
+            "\n[friction]\ncoefficient = 0.3\ntwisting = 5\n",
+            "\"marshall\" or a table",
+        ),
+    ] {
+        let path = dir.join("bad.toml");
+        std::fs::write(&path, format!("{base}{extra}")).unwrap();
+        let line = one_line_error(&["impact", path.to_str().unwrap()]);
+        assert!(line.contains(words) && !line.contains("File"), "{line}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

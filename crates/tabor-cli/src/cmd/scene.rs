@@ -259,6 +259,18 @@ fn range(text: &str, log: bool, flag: &str) -> Result<Spacing, String> {
     Spacing::new(from, to, points, log).map_err(|e| format!("{flag}: {e}"))
 }
 
+/// The error of one sweep point: the scene's message when it names the value
+/// already (a bad parameter: "impact.angle: invalid angle = 1e2: …"), else the
+/// parameter and value first.
+fn point_error(parameter: SweepParameter, value: f64, e: impl std::fmt::Display) -> String {
+    let message = e.to_string();
+    if message.contains(&format!("= {value:e}")) {
+        message
+    } else {
+        format!("{} = {value:e}: {message}", parameter.name())
+    }
+}
+
 /// Points computed and written per chunk of a sweep (memory independent of the
 /// number of points).
 const SWEEP_CHUNK: usize = 4096;
@@ -402,7 +414,7 @@ pub fn sweep(args: &SweepArgs) -> Outcome {
         |values, results| -> Result<(), Failure> {
             let mut rows = Vec::with_capacity(values.len());
             for (value, result) in values.iter().zip(results) {
-                rows.push(result.map_err(|e| format!("{} = {value:e}: {e}", parameter.name()))?);
+                rows.push(result.map_err(|e| point_error(parameter, *value, e))?);
             }
             // the header once the first chunk has succeeded: a sweep whose first
             // points fail prints nothing
@@ -459,12 +471,15 @@ fn oblique_sweep(
         "model".into(),
         "tabor_version".into(),
     ];
+    // rows are written a chunk at a time, once every point of the chunk succeeded
+    const OBLIQUE_CHUNK: usize = 256;
     let mut run = || -> Outcome {
+        let mut rows: Vec<[String; 11]> = Vec::with_capacity(OBLIQUE_CHUNK);
         for i in 0..spacing.len() {
             let value = spacing.value(i);
             let point = scene
                 .with_parameter(parameter, value)
-                .map_err(|e| format!("{} = {value:e}: {e}", parameter.name()))?;
+                .map_err(|e| point_error(parameter, value, e))?;
             let speed = point.speed.ok_or_else(|| {
                 format!(
                     "{}: an oblique sweep needs [impact] speed",
@@ -479,24 +494,27 @@ fn oblique_sweep(
                     point.oblique(speed, 0.0).map_err(|e| e.to_string())?,
                 ),
             };
-            if i == 0 {
-                out.writer.write_record(&header).map_err(&fail)?;
+            rows.push([
+                number(value),
+                number(o.normal_restitution),
+                optional(o.tangential_restitution),
+                optional(o.rebound_angle),
+                o.sticks.to_string(),
+                number(o.energy_loss),
+                number(o.losses.sliding_friction),
+                number(o.after.sphere.angular_velocity[2]),
+                number(central.restitution),
+                o.law.clone(),
+                VERSION.to_string(),
+            ]);
+            if rows.len() == OBLIQUE_CHUNK || i + 1 == spacing.len() {
+                if i < OBLIQUE_CHUNK {
+                    out.writer.write_record(&header).map_err(&fail)?;
+                }
+                for row in rows.drain(..) {
+                    out.writer.write_record(&row).map_err(&fail)?;
+                }
             }
-            out.writer
-                .write_record([
-                    number(value),
-                    number(o.normal_restitution),
-                    optional(o.tangential_restitution),
-                    optional(o.rebound_angle),
-                    o.sticks.to_string(),
-                    number(o.energy_loss),
-                    number(o.losses.sliding_friction),
-                    number(o.after.sphere.angular_velocity[2]),
-                    number(central.restitution),
-                    o.law.clone(),
-                    VERSION.to_string(),
-                ])
-                .map_err(&fail)?;
         }
         Ok(())
     };
