@@ -678,3 +678,31 @@ fn errors_speak_the_users_words() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Issue 33: a speed beyond the small-strain limit of the pair is refused, naming
+/// the limit (10⁹ m/s answered restitution 1 with exit 0), unless asked for.
+#[test]
+fn beyond_small_strain_is_refused_unless_asked_for() {
+    let scene = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/silica.toml");
+    let scene = scene.to_str().unwrap();
+    // two silica spheres of 1 µm: E* = 27.8 GPa, R = 0.5 µm, m = 5.55e-15 kg, the
+    // Hertz overlap reaches R at v² = 16 E* R³/(15 m): 817 m/s
+    let limit = (16.0 * 54e9 / (2.0 * (1.0 - 0.17f64 * 0.17)) * 0.5e-6f64.powi(3)
+        / (15.0 * 0.5 * 4.0 / 3.0 * std::f64::consts::PI * 2650.0 * 1e-18))
+        .sqrt();
+    assert!((limit / 817.27 - 1.0).abs() < 1e-4, "{limit}");
+    for args in [
+        vec!["impact", scene, "--speed", "1e9"],
+        vec!["trajectory", scene, "--speed", "1e3"],
+        vec!["sweep", scene, "--speed", "1:1000:3"],
+    ] {
+        let line = one_line_error(&args);
+        assert!(line.contains("small-strain limit 8.1727e2 m/s"), "{line}");
+    }
+    assert!(
+        tabor(&["impact", scene, "--speed", "1e9", "--allow-large-strain"])
+            .status
+            .success()
+    );
+    assert!(tabor(&["impact", scene, "--speed", "800"]).status.success());
+}

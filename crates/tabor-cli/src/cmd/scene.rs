@@ -32,6 +32,35 @@ pub struct ImpactArgs {
     /// Print one JSON object instead of a report
     #[arg(long)]
     json: bool,
+    /// Answer beyond the small-strain limit of the pair (refused by default)
+    #[arg(long)]
+    allow_large_strain: bool,
+}
+
+/// Refuses a normal impact speed `speed` beyond the small-strain limit of the
+/// scene's pair, where the quasi-static small-strain models do not hold: the Hertz
+/// overlap (15 m v²/(16 E* √R))^(2/5) reaches `SMALL_STRAIN_OVERLAP` of R (the
+/// export's limit, `tabor::lammps::small_strain_speed`). `allow` lets it through;
+/// a graded medium (whose E* is another constant) is not checked.
+fn within_small_strain(scene: &Scene, speed: f64, allow: bool, flag: &str) -> Outcome {
+    if allow || scene.data().target.gradation.is_some() || !speed.is_finite() {
+        return Ok(());
+    }
+    let limit = tabor::lammps::small_strain_speed(
+        scene.effective_modulus,
+        scene.effective_radius,
+        scene.effective_mass,
+    );
+    if limit.is_finite() && speed > limit {
+        return Err(format!(
+            "{flag} = {speed:e} m/s is beyond the small-strain limit {limit:.4e} m/s of this pair \
+             (the Hertz overlap would exceed {} times the radius, where the quasi-static models \
+             do not hold); pass --allow-large-strain to answer anyway",
+            tabor::lammps::SMALL_STRAIN_OVERLAP
+        )
+        .into());
+    }
+    Ok(())
 }
 
 /// The scene's oblique impact at `speed` and `angle` (degrees), when it is one:
@@ -68,6 +97,16 @@ fn oblique_json(scene: &Scene, path: &Path, speed: f64, angle: f64) -> Outcome {
 pub fn impact(args: &ImpactArgs) -> Outcome {
     let scene = load(&args.scene)?;
     let angle = args.angle.or(scene.angle()).unwrap_or(0.0);
+    if let Some(v) = args.speed.or(scene.speed) {
+        // the normal speed sets the overlap
+        let normal = v * angle.to_radians().cos().abs();
+        within_small_strain(
+            &scene,
+            normal,
+            args.allow_large_strain,
+            "the normal impact speed",
+        )?;
+    }
     if angle != 0.0 || scene.is_oblique() {
         let speed = args
             .speed
@@ -232,6 +271,9 @@ pub struct SweepArgs {
     /// Space the points logarithmically
     #[arg(long)]
     log: bool,
+    /// Sweep beyond the small-strain limit of the pair (refused by default)
+    #[arg(long)]
+    allow_large_strain: bool,
     /// The CSV file to write; default: stdout
     #[arg(long)]
     out: Option<PathBuf>,
@@ -383,6 +425,19 @@ pub fn sweep(args: &SweepArgs) -> Outcome {
             parameter.name()
         )
     })?;
+    let fastest = if parameter == SweepParameter::Speed {
+        Some(spacing.bounds().1)
+    } else {
+        scene.speed
+    };
+    if let Some(v) = fastest {
+        within_small_strain(
+            &scene,
+            v,
+            args.allow_large_strain,
+            "the highest impact speed",
+        )?;
+    }
     if parameter == SweepParameter::Angle || scene.is_oblique() {
         return oblique_sweep(&scene, args, parameter, &spacing);
     }
@@ -603,6 +658,9 @@ pub struct TrajectoryArgs {
     /// Print one JSON object
     #[arg(long)]
     json: bool,
+    /// Answer beyond the small-strain limit of the pair (refused by default)
+    #[arg(long)]
+    allow_large_strain: bool,
 }
 
 #[derive(Serialize)]
@@ -635,6 +693,13 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
         .or(scene.speed)
         .ok_or_else(|| format!("{}: give --speed or [impact] speed", args.scene.display()))?;
     let angle = args.angle.or(scene.angle()).unwrap_or(0.0);
+    let normal = speed * angle.to_radians().cos().abs();
+    within_small_strain(
+        &scene,
+        normal,
+        args.allow_large_strain,
+        "the normal impact speed",
+    )?;
     if angle != 0.0 || scene.is_oblique() {
         if args.out.is_some() {
             return Err("--out: the oblique impact has no trajectory record yet".into());
