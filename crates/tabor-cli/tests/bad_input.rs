@@ -706,3 +706,38 @@ fn beyond_small_strain_is_refused_unless_asked_for() {
     );
     assert!(tabor(&["impact", scene, "--speed", "800"]).status.success());
 }
+
+/// Issue 33: spins and stiffnesses that overflow the oblique integration are
+/// refused by name (they answered null energies, "NaN at x = 0e0" or "invalid
+/// depth = NaN").
+#[test]
+fn overflowing_oblique_inputs_are_named() {
+    let scene =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/silica_oblique.toml");
+    let base = std::fs::read_to_string(&scene).unwrap();
+    let dir = std::env::temp_dir().join(format!("tabor-overflow-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (from, to, named) in [
+        (
+            "angle = 10.0",
+            "angle = 10.0\nsphere_spin = [1e308, 1e308, 1e308]",
+            "invalid sphere_spin = 1e308",
+        ),
+        (
+            "angle = 10.0",
+            "angle = 10.0\ntarget_spin = [0, 0, 1e300]",
+            "invalid target_spin = 1e300",
+        ),
+        (
+            "twisting = \"marshall\"",
+            "twisting = \"marshall\"\ntangential_stiffness = 1e308",
+            "invalid tangential_stiffness = 1e308",
+        ),
+    ] {
+        let path = dir.join("s.toml");
+        std::fs::write(&path, base.replacen(from, to, 1)).unwrap();
+        let line = one_line_error(&["impact", path.to_str().unwrap()]);
+        assert!(line.contains(named), "{line}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
