@@ -47,6 +47,14 @@ pub(super) const MAX_SURFACE_SPEED_RATIO: f64 = 1e6;
 /// normal force scale.
 pub(super) const MAX_SPRING_RATIO: f64 = 1e12;
 
+/// `x ≤ limit`, false for NaN.
+fn at_most(x: f64, limit: f64) -> bool {
+    matches!(
+        x.partial_cmp(&limit),
+        Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
+    )
+}
+
 /// The effective radius of the impact (the sphere's on a flat).
 fn r_eff_of(imp: &ObliqueImpact) -> f64 {
     if imp.target.is_flat() {
@@ -153,7 +161,7 @@ impl ObliqueImpact {
         ] {
             // the largest component: the norm of huge components overflows
             let largest = spin.amax();
-            if radius.is_finite() && !(largest * radius <= MAX_SURFACE_SPEED_RATIO * v) {
+            if radius.is_finite() && !at_most(largest * radius, MAX_SURFACE_SPEED_RATIO * v) {
                 return Err(Error::invalid(
                     name,
                     largest,
@@ -186,7 +194,7 @@ impl ObliqueImpact {
         if let Some(f) = &self.friction {
             let a_ref = (r_eff_of(self) * length).sqrt();
             let spring = f.tangential.spring(a_ref) * length;
-            if !(spring <= MAX_SPRING_RATIO * force) {
+            if !at_most(spring, MAX_SPRING_RATIO * force) {
                 return Err(Error::invalid(
                     "tangential_stiffness",
                     f.tangential.stiffness,
@@ -194,7 +202,7 @@ impl ObliqueImpact {
                 ));
             }
             if let Some(r) = &f.rolling {
-                if !(r.stiffness * length <= MAX_SPRING_RATIO * force) {
+                if !at_most(r.stiffness * length, MAX_SPRING_RATIO * force) {
                     return Err(Error::invalid(
                         "rolling stiffness",
                         r.stiffness,
