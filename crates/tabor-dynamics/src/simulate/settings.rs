@@ -1,6 +1,7 @@
 //! [`SimulationSettings`]: how accurately and how long to simulate.
 
 use tabor_numerics::ode::OdeTolerance;
+use tabor_numerics::tolerance;
 use tabor_restitution::{validate, Result};
 
 /// How accurately and how long to simulate.
@@ -42,7 +43,7 @@ impl SimulationSettings {
     pub fn with_tolerance(relative: f64) -> Result<Self> {
         let rel = validate::tolerance("tolerance", relative)?;
         let mut s = SimulationSettings::default();
-        let per_step = (rel * 1e-2).max(1e-15);
+        let per_step = (rel * 1e-2).max(tolerance::FINEST_TOLERANCE);
         s.tolerance.relative = per_step;
         s.tolerance.absolute = per_step * 1e-2;
         Ok(s)

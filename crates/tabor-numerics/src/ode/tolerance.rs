@@ -97,7 +97,7 @@ impl OdeTolerance {
     }
 
     pub(crate) fn relative_effective(&self) -> f64 {
-        self.relative.max(1e-15)
+        self.relative.max(crate::tolerance::FINEST_TOLERANCE)
     }
 }
 
