@@ -4,7 +4,7 @@
 use super::{
     ContactEvent, EventKind, ImpactSimulation, SimulationSettings, TrajectoryPoint, Units,
 };
-use crate::law::{BranchChange, ForceLaw};
+use crate::law::{BranchChange, CurvePoint, ForceLaw};
 use std::cell::Cell;
 use tabor_numerics::ode::{DormandPrince853, EventPoint};
 use tabor_numerics::Cost;
@@ -22,11 +22,81 @@ pub(super) struct Run<'s> {
     /// What the segments integrated on a [`BranchCurve`] cost.
     pub(super) curve_cost: Cost,
     pub(super) events: Vec<ContactEvent>,
-    pub(super) trajectory: Vec<TrajectoryPoint>,
     /// Normalized time of contact onset, once known.
     pub(super) onset: Option<f64>,
+    /// The largest overlap and force, and the trajectory.
+    pub(super) seen: Seen,
+}
+
+/// What a run has seen: the largest overlap and force so far, and the trajectory
+/// (when it is kept). The one place the observers of the segments write to,
+/// borrowed apart from the run's integrator.
+pub(super) struct Seen {
+    pub(super) trajectory: Vec<TrajectoryPoint>,
     pub(super) max_overlap: f64,
     pub(super) max_force: f64,
+    /// Whether the trajectory is kept (`SimulationSettings::record_trajectory`).
+    keep: bool,
+}
+
+impl Seen {
+    /// The force (N) at normalized time `s` and state `y`, kept in the largest
+    /// force and, when the trajectory is kept, as its next point.
+    pub(super) fn record<L: ForceLaw + ?Sized>(
+        &mut self,
+        law: &L,
+        units: &Units,
+        s: f64,
+        y: &[f64; 3],
+    ) -> Result<f64> {
+        let d = units.overlap(y);
+        let r = units.rate(y);
+        let f = law.force(d, r)?;
+        if self.keep {
+            self.trajectory.push(TrajectoryPoint {
+                time: s * units.time,
+                overlap: d,
+                overlap_rate: r,
+                force: f,
+                contact_radius: law.contact_radius(d, r)?,
+                contact_work: y[2] * units.mass * units.speed * units.speed,
+            });
+        }
+        self.max_force = self.max_force.max(f);
+        Ok(f)
+    }
+
+    /// The end of an accepted step of a segment integrated in time, at normalized
+    /// time `s` and state `y`: the largest overlap, then [`Seen::record`].
+    pub(super) fn time_step<L: ForceLaw + ?Sized>(
+        &mut self,
+        law: &L,
+        units: &Units,
+        s: f64,
+        y: &[f64; 3],
+    ) -> Result<()> {
+        self.max_overlap = self.max_overlap.max(units.overlap(y));
+        self.record(law, units, s, y).map(|_| ())
+    }
+
+    /// The end of an accepted step of a segment on a [`BranchCurve`]: the point
+    /// `p` of the curve at the state `(q, u, w, s)` `st`.
+    ///
+    /// [`BranchCurve`]: crate::BranchCurve
+    pub(super) fn curve_step(&mut self, p: &CurvePoint, units: &Units, st: &[f64; 4]) {
+        self.max_overlap = self.max_overlap.max(p.overlap);
+        self.max_force = self.max_force.max(p.force);
+        if self.keep {
+            self.trajectory.push(TrajectoryPoint {
+                time: st[3] * units.time,
+                overlap: p.overlap,
+                overlap_rate: st[1] * units.speed,
+                force: p.force,
+                contact_radius: p.contact_radius,
+                contact_work: st[2] * units.mass * units.speed * units.speed,
+            });
+        }
+    }
 }
 
 impl<'s> Run<'s> {
@@ -46,10 +116,13 @@ impl<'s> Run<'s> {
             stepper: None,
             curve_cost: Cost::ZERO,
             events: Vec::new(),
-            trajectory: Vec::new(),
             onset: law.in_contact().then_some(0.0),
-            max_overlap: start,
-            max_force: f64::NEG_INFINITY,
+            seen: Seen {
+                trajectory: Vec::new(),
+                max_overlap: start,
+                max_force: f64::NEG_INFINITY,
+                keep: settings.record_trajectory,
+            },
         };
         let (s, y) = (run.s, run.y);
         run.record(law, s, &y)?;
@@ -57,23 +130,14 @@ impl<'s> Run<'s> {
     }
 
     /// The force at normalized time `s` and state `y` (N), kept in the trajectory
-    /// (when requested) and in the largest force.
+    /// (when requested) and in the largest force ([`Seen::record`]).
     pub(super) fn record<L: ForceLaw + ?Sized>(
         &mut self,
         law: &L,
         s: f64,
         y: &[f64; 3],
     ) -> Result<f64> {
-        let force = record_point(
-            law,
-            &self.units,
-            self.settings.record_trajectory,
-            s,
-            y,
-            &mut self.trajectory,
-        )?;
-        self.max_force = self.max_force.max(force);
-        Ok(force)
+        self.seen.record(law, &self.units, s, y)
     }
 
     /// Moves to the event point `hit` (a turning point has ḋ = 0 exactly), records it
@@ -94,7 +158,7 @@ impl<'s> Run<'s> {
         }
         let (s, y) = (self.s, self.y);
         let d = units.overlap(&y);
-        self.max_overlap = self.max_overlap.max(d);
+        self.seen.max_overlap = self.seen.max_overlap.max(d);
         let force_before = self.record(law, s, &y)?;
         let decision = match kind {
             EventKind::MaxCompression => law.on_max_compression(d)?,
@@ -177,8 +241,8 @@ impl<'s> Run<'s> {
             contact_time: (!sticks).then_some((s - onset_s) * time_unit),
             contact_onset_time: onset_s * time_unit,
             end_time: s * time_unit,
-            max_overlap: self.max_overlap,
-            max_force: self.max_force,
+            max_overlap: self.seen.max_overlap,
+            max_force: self.seen.max_force,
             kinetic_energy: kinetic,
             energy_loss: if sticks {
                 kinetic
@@ -187,36 +251,10 @@ impl<'s> Run<'s> {
             },
             energy_error,
             events: self.events,
-            trajectory: self.trajectory,
+            trajectory: self.seen.trajectory,
             cost,
         }
     }
-}
-
-/// The force (N) at normalized time `s` and state `y`, and, when `keep` is true, the
-/// trajectory point there appended to `out`.
-pub(super) fn record_point<L: ForceLaw + ?Sized>(
-    law: &L,
-    units: &Units,
-    keep: bool,
-    s: f64,
-    y: &[f64; 3],
-    out: &mut Vec<TrajectoryPoint>,
-) -> Result<f64> {
-    let d = units.overlap(y);
-    let r = units.rate(y);
-    let f = law.force(d, r)?;
-    if keep {
-        out.push(TrajectoryPoint {
-            time: s * units.time,
-            overlap: d,
-            overlap_rate: r,
-            force: f,
-            contact_radius: law.contact_radius(d, r)?,
-            contact_work: y[2] * units.mass * units.speed * units.speed,
-        });
-    }
-    Ok(f)
 }
 
 /// An error of the simulation itself (not of the law or the integrator).

@@ -2,8 +2,8 @@
 //! point to the first event, in time ([`Run::integrate_to_event`]) or, on a branch
 //! the law gives as a curve, over a regularized time ([`Run::integrate_on_curve`]).
 
-use super::run::{keep_first, record_point, simulation_error, time_limit_error, Run};
-use super::{EventKind, SimulationSettings, TrajectoryPoint};
+use super::run::{keep_first, simulation_error, time_limit_error, Run};
+use super::{EventKind, SimulationSettings};
 use crate::law::{BranchCurve, ForceLaw};
 use std::cell::Cell;
 use tabor_numerics::ode::{
@@ -72,16 +72,10 @@ impl<'s> Run<'s> {
         )?;
         // ḋ at the start of the current step: its sign tells the kind of turning point
         let mut u_prev = self.y[1];
-        let (trajectory, max_overlap, max_force) = (
-            &mut self.trajectory,
-            &mut self.max_overlap,
-            &mut self.max_force,
-        );
+        let seen = &mut self.seen;
         let mut observer = |s: f64, y: &[f64; 3]| {
-            *max_overlap = max_overlap.max(units.overlap(y));
-            match record_point(law, &units, settings.record_trajectory, s, y, trajectory) {
-                Ok(force) => *max_force = max_force.max(force),
-                Err(e) => keep_first(&event_failure, e),
+            if let Err(e) = seen.time_step(law, &units, s, y) {
+                keep_first(&event_failure, e);
             }
             u_prev = y[1];
         };
@@ -181,27 +175,10 @@ impl<'s> Run<'s> {
         let mut stepper = DormandPrince853::new(&mut rhs, 0.0, y0, sigma_end, tolerance)
             .map_err(|e| failure.take().unwrap_or(Error::Numerics(e)))?;
         let mut u_prev = self.y[1];
-        let (trajectory, max_overlap, max_force) = (
-            &mut self.trajectory,
-            &mut self.max_overlap,
-            &mut self.max_force,
-        );
+        let seen = &mut self.seen;
         let mut observer = |_sigma: f64, st: &[f64; 4]| {
             match curve.point(st[0], st[1] * units.speed) {
-                Ok(p) => {
-                    *max_overlap = max_overlap.max(p.overlap);
-                    *max_force = max_force.max(p.force);
-                    if settings.record_trajectory {
-                        trajectory.push(TrajectoryPoint {
-                            time: st[3] * units.time,
-                            overlap: p.overlap,
-                            overlap_rate: st[1] * units.speed,
-                            force: p.force,
-                            contact_radius: p.contact_radius,
-                            contact_work: st[2] * units.mass * units.speed * units.speed,
-                        });
-                    }
-                }
+                Ok(p) => seen.curve_step(&p, &units, st),
                 Err(e) => keep_first(&event_failure, e),
             }
             u_prev = st[1];
