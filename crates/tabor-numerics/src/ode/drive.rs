@@ -4,7 +4,7 @@
 
 use super::events::{earliest_crossing, finite_events};
 use super::solution::solution_of;
-use super::{DenseStepper, EventDirection, EventsIntegration, Integration};
+use super::{DenseStepper, EventDirection, EventsIntegration, Integration, OdeSolution};
 use crate::{Cost, Result};
 
 /// The step-and-locate-event loop: advances `stepper` from its current point until
@@ -55,6 +55,26 @@ where
         solution: run.solution,
         event_cost: run.event_cost,
     })
+}
+
+/// [`drive`] with nothing observed, to its solution: the body of every
+/// `solve_until_event` ([`solve_until_event`](super::solve_until_event),
+/// [`rosenbrock::solve_until_event`](super::rosenbrock::solve_until_event)), the
+/// stepper started at their initial point.
+pub(crate) fn drive_unobserved<S, F, G, const N: usize>(
+    stepper: &mut S,
+    f: &mut F,
+    g: &mut G,
+    direction: EventDirection,
+    t_end: f64,
+) -> Result<OdeSolution<N>>
+where
+    S: DenseStepper<N>,
+    F: FnMut(f64, &[f64; N]) -> [f64; N],
+    G: FnMut(f64, &[f64; N]) -> f64,
+{
+    let run = drive(stepper, f, g, direction, t_end, &mut |_: &S, _: f64| {})?;
+    Ok(run.solution)
 }
 
 /// [`drive`] with `M` event functions `g(t, y) = [g_0, …, g_{M−1}]`, each with its

@@ -49,6 +49,7 @@ pub use solution::{EventsIntegration, Integration, OdeSolution};
 pub use stepper::DenseStepper;
 pub use tolerance::OdeTolerance;
 
+pub(crate) use drive::drive_unobserved;
 pub(crate) use events::no_event;
 pub(crate) use stepper::one_step_method;
 pub(crate) use stepper_core::{finite, first_non_finite, FailureNames, StepperCore};
