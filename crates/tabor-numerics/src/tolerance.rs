@@ -46,8 +46,10 @@ pub const COSTLY_TOLERANCE: f64 = 1000.0 * DEFAULT_TOLERANCE;
 
 /// The finest relative tolerance of one integration step: [`OdeTolerance`]'s
 /// effective relative tolerance and the per-step tolerance of
-/// `tabor_dynamics::SimulationSettings::with_tolerance` are never below it (about
-/// 4.5 ε; a scene's `accuracy` may not be below it either).
+/// `tabor_dynamics::SimulationSettings::with_tolerance` are never below it, nor
+/// are the integrations of `tabor-visco` (Hertz with damping, MDR) and the
+/// sticking search of `tabor jkr` (about 4.5 ε; a scene's `accuracy` may not be
+/// below it either).
 ///
 /// [`OdeTolerance`]: crate::ode::OdeTolerance
 pub const FINEST_TOLERANCE: f64 = DEFAULT_TOLERANCE / 1000.0;
@@ -57,12 +59,15 @@ pub const FINEST_TOLERANCE: f64 = DEFAULT_TOLERANCE / 1000.0;
 /// at [`FINEST_TOLERANCE`], so a finer request integrates as this one. The floor of
 /// a scene's oblique impact (`Scene::oblique`; it was 1e-9 before: the silica
 /// oblique scene at 10, 40 and 80 degrees converges at 1e-12, within 4e-14 of a
-/// 1e-13 run). A scene asking for less is told so by a warning.
+/// 1e-13 run); also of the samples of the viscous-adhesive speed table and the
+/// inner solves of the Kelvin-Voigt sphere's inversion. A scene asking for less is
+/// told so by a warning.
 pub const SIMULATION_ACCURACY_FLOOR: f64 = DEFAULT_TOLERANCE / 10.0;
 
 /// The finest tolerance at which a scene builds its viscoelastic models (the
 /// viscoelastic contact's impact model and the viscous-adhesive model of
-/// `tabor-viscoadhesive`). A scene asking for less is told so by a warning.
+/// `tabor-viscoadhesive`), and of the Kelvin-Voigt sphere's inversion for a
+/// restitution. A scene asking for less is told so by a warning.
 pub const MODEL_ACCURACY_FLOOR: f64 = DEFAULT_TOLERANCE;
 
 /// The finest relative tolerance of a scene's sticking-velocity search (the root
