@@ -38,6 +38,7 @@ mod builder;
 mod combination;
 mod error;
 pub mod file;
+mod floors;
 mod friction;
 mod inputs;
 mod models;

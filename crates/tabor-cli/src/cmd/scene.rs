@@ -76,9 +76,10 @@ fn oblique_at(
     }
     let fail = |e: tabor::scene::SceneError| format!("{}: {e}", path.display());
     let oblique = scene.oblique(speed, angle).map_err(fail)?;
-    let central = scene
+    let mut central = scene
         .outcome_at(speed * angle.to_radians().cos())
         .map_err(fail)?;
+    central.warnings.extend(scene.oblique_accuracy_warning());
     Ok(Some((central, oblique)))
 }
 
