@@ -170,6 +170,9 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
                 "central model          {} (restitution {} at the normal speed)",
                 central.model, central.restitution
             )?;
+            for w in &central.warnings {
+                writeln!(out, "warning [{}]: {}", w.code, w.message)?;
+            }
             return out.finish();
         }
     }
