@@ -88,7 +88,7 @@ impl Scene {
                     .as_ref()
                     .ok_or_else(|| SceneError::field("scene", "no viscous-adhesive model"))?;
                 let law = m.force_law();
-                (Box::new(law.inner().clone()), 2.0 * law.contact_viscosity())
+                (Box::new(law.inner().clone()), 2.0 * m.contact_viscosity())
             }
             Rule::AdhesiveInterpolation
             | Rule::AdhesivePlasticExcess
