@@ -393,9 +393,9 @@ fn damping(
     }
     let value = value.ok_or_else(|| {
         SceneError::field(
-            format!("damping.{key}"),
+            "damping",
             format!(
-                "is required for model \"{model}\" ({})",
+                "{key} is required for model \"{model}\" ({})",
                 match model {
                     DampingModel::Viscoelastic => "eta_n0 in 1/(m s): F = eta_n0 m* a v_n",
                     DampingModel::Tsuji =>
