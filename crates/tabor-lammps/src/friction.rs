@@ -31,8 +31,17 @@ pub(crate) fn null_stiffness_fits(scene: &Scene, f: &Friction, e: f64, nu: f64) 
 }
 
 /// The scene's validated friction, `None` without a `[friction]` section.
+/// Mindlin-Deresiewicz micro-slip is refused: none of LAMMPS's `pair granular`
+/// tangential models has it, and `pair_style tabor` does not take it yet.
 pub(crate) fn scene_friction(scene: &Scene) -> Result<Option<Friction>, ExportError> {
-    scene.friction().map_err(model_err)
+    let friction = scene.friction().map_err(model_err)?;
+    if friction.is_some_and(|f| f.tangential.model == TangentialModel::MindlinDeresiewicz) {
+        return Err(ExportError::Unrepresentable {
+            effect: "tangential = \"mindlin_deresiewicz\"".into(),
+            reason: "no LAMMPS tangential model has Mindlin-Deresiewicz micro-slip (pair granular's mindlin is a no-slip spring on the total displacement) and pair_style tabor does not take it yet; export the scene with tangential = \"mindlin\" for LAMMPS's nearest model".into(),
+        });
+    }
+    Ok(friction)
 }
 
 /// What the friction keywords of a calibrated export leave out: the Coulomb limit

@@ -20,6 +20,14 @@ pub enum TangentialModel {
     /// `a/a_old` whenever the contact radius shrinks (Thornton & Yin 1991's
     /// unloading correction as LAMMPS implements it).
     MindlinRescale,
+    /// `mindlin_deresiewicz`: Mindlin-Deresiewicz micro-slip (Cattaneo 1938,
+    /// Mindlin & Deresiewicz 1953): the contact sticks in its centre and slips in
+    /// an annulus, with memory of every turning point of the loading history;
+    /// computed exactly in the oblique impact by the method of dimensionality
+    /// reduction (a bed of springs of stiffness `k_t/2` per unit length, each
+    /// with its own Coulomb limit; Popov & Heß 2015), `k_t = 8 G*` as for
+    /// `mindlin`. Not a LAMMPS `pair granular` model.
+    MindlinDeresiewicz,
     /// `linear_history`: a constant stiffness `k_t` (N/m) on the accumulated
     /// displacement (Cundall & Strack 1979; LAMMPS's `gran/hooke/history`).
     LinearHistory,
@@ -30,6 +38,7 @@ tabor_restitution::menu! {
     LinearHistory => "linear_history", "a constant spring k_t (N/m) on the accumulated tangential displacement (Cundall & Strack 1979)";
     Mindlin => "mindlin", "the spring k_t a, k_t = 8 G*, on the accumulated tangential displacement (Mindlin 1949)";
     MindlinRescale => "mindlin_rescale", "mindlin, the stored displacement scaled by a/a_old as the contact shrinks";
+    MindlinDeresiewicz => "mindlin_deresiewicz", "Mindlin-Deresiewicz micro-slip: a stick centre and a slipping annulus, with memory of the loading history (exact by the method of dimensionality reduction)";
 }
 
 /// The rolling resistance model, LAMMPS keyword `rolling`.
@@ -115,9 +124,9 @@ impl Tangential {
     /// `k_t a` for the Mindlin models, `k_t` for `linear_history`.
     pub fn spring(&self, contact_radius: f64) -> f64 {
         match self.model {
-            TangentialModel::Mindlin | TangentialModel::MindlinRescale => {
-                self.stiffness * contact_radius
-            }
+            TangentialModel::Mindlin
+            | TangentialModel::MindlinRescale
+            | TangentialModel::MindlinDeresiewicz => self.stiffness * contact_radius,
             TangentialModel::LinearHistory => self.stiffness,
         }
     }

@@ -294,7 +294,7 @@ fn menus_parse_their_own_names() {
     let err = "coulomb".parse::<TangentialModel>().unwrap_err();
     assert_eq!(
         err.to_string(),
-        "unknown tangential model \"coulomb\": expected \"linear_history\", \"mindlin\" or \"mindlin_rescale\""
+        "unknown tangential model \"coulomb\": expected \"linear_history\", \"mindlin\", \"mindlin_rescale\" or \"mindlin_deresiewicz\""
     );
 }
 

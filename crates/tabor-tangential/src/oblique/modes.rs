@@ -1,0 +1,321 @@
+//! The stick/slip logic of the friction elements: contact quantities, entering
+//! and leaving slip, the initial and later mode decisions and the event values
+//! that locate the switches.
+
+use super::elements::*;
+use super::simulate::*;
+use super::state::*;
+use crate::model::Twisting;
+use nalgebra::Vector3;
+use tabor_dynamics::ForceLaw;
+use tabor_restitution::Result;
+
+impl<'a> Setup<'a> {
+    /// Contact quantities at SI state `y`: (a, γ_t, k_t-spring, limit, F_n0, v_tr,
+    /// v_rl, ω_tw) for the mode switches.
+    #[allow(clippy::type_complexity)]
+    pub(super) fn contact(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &[f64; N],
+    ) -> Result<(f64, f64, Vector3<f64>, Vector3<f64>, f64, Vector3<f64>)> {
+        let (n, overlap, rate, _) = self.geometry(t, y);
+        let u = v3(y, U);
+        let wi = v3(y, WI);
+        let wj = if self.flat {
+            Vector3::zeros()
+        } else {
+            v3(y, WJ)
+        };
+        let a = law.contact_radius(overlap, rate)?.max(0.0);
+        let f_el = law.force(overlap, rate)?;
+        let c = self.imp.normal.damping;
+        let fc = crate::critical_force(f_el, f_el + c * a * rate, self.imp.normal.pull_off_force);
+        let r_j = if self.flat {
+            0.0
+        } else {
+            self.imp.target.radius
+        };
+        let v_tr = u - n * n.dot(&u) - (wi * self.imp.sphere.radius + wj * r_j).cross(&n);
+        let v_rl = (wi - wj).cross(&n) * self.r_eff;
+        Ok((a, fc, v_tr, v_rl, (wi - wj).dot(&n), n))
+    }
+
+    /// (trial force T, limit L, damping γ, spring k, velocity) of the vector
+    /// element stored at `slot` (XT or XR).
+    #[allow(clippy::type_complexity)]
+    pub(super) fn element(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &[f64; N],
+        slot: usize,
+    ) -> Result<(Vector3<f64>, f64, f64, f64, Vector3<f64>)> {
+        let Some(fr) = &self.imp.friction else {
+            return Ok((Vector3::zeros(), 0.0, 0.0, 0.0, Vector3::zeros()));
+        };
+        let (a, fc, v_tr, v_rl, _, _) = self.contact(law, t, y)?;
+        let x = v3(y, slot);
+        if slot == XT {
+            let tg = &fr.tangential;
+            let k = tg.spring(a);
+            let gamma = tg.damping_ratio * self.imp.normal.damping * a;
+            Ok((x * k + v_tr * gamma, tg.coefficient * fc, gamma, k, v_tr))
+        } else {
+            let Some(r) = &fr.rolling else {
+                return Ok((Vector3::zeros(), 0.0, 0.0, 0.0, Vector3::zeros()));
+            };
+            Ok((
+                x * r.stiffness + v_rl * r.damping,
+                r.coefficient * fc,
+                r.damping,
+                r.stiffness,
+                v_rl,
+            ))
+        }
+    }
+
+    /// Stick → slip of a vector element: its state now carries the direction of
+    /// the trial force (keeping the length of the displacement).
+    pub(super) fn enter_slip(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &mut [f64; N],
+        _modes: &Modes,
+        slot: usize,
+    ) -> Result<()> {
+        let (trial, _, _, _, vel) = self.element(law, t, y, slot)?;
+        let x = v3(y, slot);
+        let len = x.norm().max(1e-6 * self.length);
+        put_state(y, slot, &(direction(&trial, &vel) * len));
+        Ok(())
+    }
+
+    /// Slip → stick: the displacement becomes the elastic part of the limit force.
+    pub(super) fn leave_slip(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &mut [f64; N],
+        _modes: &Modes,
+        slot: usize,
+    ) -> Result<()> {
+        let (_, limit, gamma, k, vel) = self.element(law, t, y, slot)?;
+        let x = v3(y, slot);
+        let uhat = direction(&x, &vel);
+        if k > 0.0 {
+            put_state(y, slot, &((uhat * limit - vel * gamma) / k));
+        }
+        Ok(())
+    }
+
+    /// The trial twisting torque `k θ + γ ω_tw` (N m).
+    pub(super) fn twist_trial(&self, law: &dyn ForceLaw, t: f64, y: &[f64; N]) -> Result<f64> {
+        let Some(fr) = &self.imp.friction else {
+            return Ok(0.0);
+        };
+        let Some(tw) = &fr.twisting else {
+            return Ok(0.0);
+        };
+        let (a, fc, _, _, w_tw, _) = self.contact(law, t, y)?;
+        let (k, g, _) = twist_coefficients(tw, fr, a, self.imp.normal.damping, fc);
+        Ok(k * y[XW] + g * w_tw)
+    }
+
+    pub(super) fn leave_twist_slip(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &mut [f64; N],
+        modes: &Modes,
+    ) -> Result<()> {
+        let Some(fr) = &self.imp.friction else {
+            return Ok(());
+        };
+        let Some(tw) = &fr.twisting else {
+            return Ok(());
+        };
+        let (a, fc, _, _, w_tw, _) = self.contact(law, t, y)?;
+        let (k, g, l) = twist_coefficients(tw, fr, a, self.imp.normal.damping, fc);
+        if k > 0.0 {
+            y[XW] = (l * modes.twist_sign - g * w_tw) / k;
+        }
+        Ok(())
+    }
+
+    /// At contact onset: a law with a Coulomb limit at first touch (adhesion)
+    /// starts in stick; one without (Hertz: every limit and spring starts from 0)
+    /// runs the first [`WARMUP`] of the overlap scale without friction forces, the
+    /// springs following the motion, and decides there ([`Setup::decide_modes`]).
+    pub(super) fn decide_initial_modes(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &mut [f64; N],
+        modes: &mut Modes,
+    ) -> Result<()> {
+        if self.imp.friction.is_none() {
+            return Ok(());
+        }
+        let (_, overlap, ..) = self.geometry(t, y);
+        let (_, fc0, ..) = self.contact(law, t, y)?;
+        if fc0 > 0.0 || overlap / self.length >= WARMUP {
+            return self.decide_modes(law, t, y, modes);
+        }
+        modes.warmup = true;
+        Ok(())
+    }
+
+    /// Each element whose trial force exceeds its limit is put on the limit (its
+    /// displacement reset to the elastic part of the limit force, as LAMMPS) and
+    /// slips if the trial force keeps outgrowing the limit there, else sticks.
+    pub(super) fn decide_modes(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &mut [f64; N],
+        modes: &mut Modes,
+    ) -> Result<()> {
+        let Some(fr) = &self.imp.friction else {
+            return Ok(());
+        };
+        for slot in [XT, XR] {
+            if (slot == XR && fr.rolling.is_none()) || (slot == XT && self.bed.is_some()) {
+                continue;
+            }
+            let (trial, limit, ..) = self.element(law, t, y, slot)?;
+            if trial.norm() <= limit {
+                continue;
+            }
+            let mut slip = *modes;
+            if slot == XT {
+                slip.tangential = Mode::Slip;
+            } else {
+                slip.rolling = Mode::Slip;
+            }
+            let mut on_limit = *y;
+            self.enter_slip(law, t, &mut on_limit, modes, slot)?;
+            let ev = self.evaluate(law, t, &on_limit, &slip)?;
+            let rate = if slot == XT {
+                ev.slip_rate_t
+            } else {
+                ev.slip_rate_r
+            };
+            if rate > 0.0 {
+                *y = on_limit;
+                *modes = slip;
+            } else {
+                self.leave_slip(law, t, y, modes, slot)?;
+            }
+        }
+        if fr.twisting.is_some() {
+            let m = self.twist_trial(law, t, y)?;
+            let (a, fc, ..) = self.contact(law, t, y)?;
+            let (_, _, l) = twist_coefficients(
+                fr.twisting.as_ref().unwrap_or(&Twisting::Marshall),
+                fr,
+                a,
+                self.imp.normal.damping,
+                fc,
+            );
+            if m.abs() > l {
+                let mut slip = *modes;
+                slip.twisting = Mode::Slip;
+                slip.twist_sign = if m >= 0.0 { 1.0 } else { -1.0 };
+                if self.evaluate(law, t, y, &slip)?.slip_rate_w > 0.0 {
+                    *modes = slip;
+                } else {
+                    self.leave_twist_slip(law, t, y, &slip)?;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The event values at SI (t, y): all positive while the modes hold.
+    pub(super) fn event_values(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &[f64; N],
+        modes: &Modes,
+    ) -> Result<[f64; 9]> {
+        let (_, overlap, rate, _) = self.geometry(t, y);
+        let mut g = [f64::INFINITY; 9];
+        g[0] = law.branch_end(overlap, rate)? / self.length;
+        if modes.in_contact {
+            g[1] = if modes.loading { rate } else { -rate } / self.v_n;
+        }
+        if modes.warmup {
+            g[8] = WARMUP - overlap / self.length;
+            return Ok(g);
+        }
+        if !modes.in_contact || self.imp.friction.is_none() || modes.frozen == [true; 3] {
+            return Ok(g);
+        }
+        let fr = self
+            .imp
+            .friction
+            .as_ref()
+            .map(|f| (f.rolling.is_some(), f.twisting.is_some()));
+        let (rolling, twisting) = fr.unwrap_or((false, false));
+        let rate_unit = self.force / self.time;
+        let need_rates = modes.tangential == Mode::Slip
+            || modes.rolling == Mode::Slip
+            || modes.twisting == Mode::Slip;
+        let ev = if need_rates {
+            Some(self.evaluate(law, t, y, modes)?)
+        } else {
+            None
+        };
+        match modes.tangential {
+            // micro-slip has no stick/slip switch of the whole contact
+            _ if modes.frozen[0] || self.bed.is_some() => {}
+            Mode::Stick => {
+                let (trial, limit, ..) = self.element(law, t, y, XT)?;
+                g[2] = (limit - trial.norm()) / self.force;
+            }
+            Mode::Slip => g[3] = ev.as_ref().map_or(f64::INFINITY, |e| e.slip_rate_t) / rate_unit,
+        }
+        if rolling && !modes.frozen[1] {
+            match modes.rolling {
+                Mode::Stick => {
+                    let (trial, limit, ..) = self.element(law, t, y, XR)?;
+                    g[4] = (limit - trial.norm()) / self.force;
+                }
+                Mode::Slip => {
+                    g[5] = ev.as_ref().map_or(f64::INFINITY, |e| e.slip_rate_r) / rate_unit
+                }
+            }
+        }
+        if twisting && !modes.frozen[2] {
+            let torque_unit = self.force * self.length;
+            match modes.twisting {
+                Mode::Stick => {
+                    let m = self.twist_trial(law, t, y)?;
+                    let (a, fc, ..) = self.contact(law, t, y)?;
+                    let fr = self
+                        .imp
+                        .friction
+                        .as_ref()
+                        .ok_or_else(|| model_error("no friction".into()))?;
+                    let (_, _, l) = twist_coefficients(
+                        fr.twisting.as_ref().unwrap_or(&Twisting::Marshall),
+                        fr,
+                        a,
+                        self.imp.normal.damping,
+                        fc,
+                    );
+                    g[6] = (l - m.abs()) / torque_unit;
+                }
+                Mode::Slip => {
+                    g[7] = ev.as_ref().map_or(f64::INFINITY, |e| e.slip_rate_w)
+                        / (torque_unit / self.time)
+                }
+            }
+        }
+        Ok(g)
+    }
+}

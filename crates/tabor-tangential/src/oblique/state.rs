@@ -1,0 +1,460 @@
+//! The state vector of the integration (its layout and units), the modes of the
+//! friction elements, and the quantities fixed during one impact ([`Setup`]):
+//! geometry, kinetic energy and the rates of the state ([`Setup::evaluate`]).
+
+use super::bed::MicroSlipBed;
+use super::bodies::ObliqueImpact;
+use super::elements::*;
+use super::simulate::*;
+use crate::model::{TangentialModel, Twisting};
+use nalgebra::Vector3;
+use std::cell::RefCell;
+use tabor_dynamics::ForceLaw;
+use tabor_restitution::Result;
+
+// ---------------------------------------------------------------------------
+// state layout
+
+pub(super) const E: usize = 0; // deviation from the undisturbed path (3)
+pub(super) const U: usize = 3; // relative velocity v_i − v_j (3)
+pub(super) const WI: usize = 6; // ω_i (3)
+pub(super) const WJ: usize = 9; // ω_j (3)
+pub(super) const XT: usize = 12; // tangential displacement (3)
+pub(super) const XR: usize = 15; // rolling displacement (3)
+pub(super) const XW: usize = 18; // twist angle (1)
+pub(super) const EN: usize = 19; // energies (8): normal, damping, sliding, t-damping, t-total, rolling, twisting, arm
+pub(super) const N: usize = 27;
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Mode {
+    Stick,
+    /// Slipping, with the direction of the limit force (twisting: the sign in x).
+    Slip,
+}
+
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Modes {
+    pub(super) in_contact: bool,
+    /// Stick/slip switching of the tangential, rolling and twisting element
+    /// ended (chattering, see `ObliqueImpact::simulate`): a frozen element keeps
+    /// its mode, its stick force capped at the limit.
+    pub(super) frozen: [bool; 3],
+    /// The first 10⁻⁶ of the overlap scale of a contact that starts without a
+    /// Coulomb limit: no friction force yet, the springs follow the motion.
+    pub(super) warmup: bool,
+    pub(super) loading: bool,
+    pub(super) tangential: Mode,
+    pub(super) rolling: Mode,
+    pub(super) twisting: Mode,
+    pub(super) twist_sign: f64,
+}
+
+/// Everything fixed during one impact.
+pub(super) struct Setup<'a> {
+    pub(super) imp: &'a ObliqueImpact,
+    pub(super) flat: bool,
+    pub(super) r_sum: f64,
+    pub(super) r_eff: f64,
+    pub(super) m_eff: f64,
+    pub(super) m_i: f64,
+    pub(super) m_j: f64,
+    pub(super) inv_i_i: f64,
+    pub(super) inv_i_j: f64,
+    pub(super) u0: Vector3<f64>,
+    pub(super) d_touch: Vector3<f64>,
+    pub(super) v: f64,
+    pub(super) v_n: f64,
+    /// SI value of one normalized unit of each state component.
+    pub(super) scale: [f64; N],
+    pub(super) time: f64,
+    pub(super) length: f64,
+    pub(super) force: f64,
+    /// The spring bed of `mindlin_deresiewicz` (micro-slip), committed after every
+    /// accepted step; `None` for the other tangential models.
+    pub(super) bed: Option<RefCell<MicroSlipBed>>,
+}
+
+/// Physical quantities at one state.
+pub(super) struct Eval {
+    pub(super) dy: [f64; N],
+    /// event values (positive while the mode holds)
+    pub(super) slip_rate_t: f64,
+    pub(super) slip_rate_r: f64,
+    pub(super) slip_rate_w: f64,
+}
+
+pub(super) fn v3(y: &[f64; N], i: usize) -> Vector3<f64> {
+    Vector3::new(y[i], y[i + 1], y[i + 2])
+}
+
+pub(super) fn put(dy: &mut [f64; N], i: usize, v: &Vector3<f64>) {
+    dy[i] = v[0];
+    dy[i + 1] = v[1];
+    dy[i + 2] = v[2];
+}
+
+/// `(f(x), f'(x))` by central differences with step `h` (one-sided forward when
+/// the law errs below).
+pub(super) fn derivative(f: &dyn Fn(f64) -> Result<f64>, x: f64, h: f64) -> Result<(f64, f64)> {
+    let fx = f(x)?;
+    let up = f(x + h)?;
+    match f(x - h) {
+        Ok(down) => Ok((fx, (up - down) / (2.0 * h))),
+        Err(_) => Ok((fx, (up - fx) / h)),
+    }
+}
+
+impl<'a> Setup<'a> {
+    pub(super) fn to_si(&self, y: &[f64; N]) -> [f64; N] {
+        let mut out = *y;
+        for (o, s) in out.iter_mut().zip(self.scale.iter()) {
+            *o *= s;
+        }
+        out
+    }
+
+    pub(super) fn to_normalized(&self, y: &[f64; N]) -> [f64; N] {
+        let mut out = *y;
+        for (o, s) in out.iter_mut().zip(self.scale.iter()) {
+            *o /= s;
+        }
+        out
+    }
+
+    /// Normal, overlap, overlap rate, ṅ at SI time `t` and SI state `y`.
+    pub(super) fn geometry(&self, t: f64, y: &[f64; N]) -> (Vector3<f64>, f64, f64, Vector3<f64>) {
+        let e = v3(y, E);
+        let u = v3(y, U);
+        if self.flat {
+            let n = -Vector3::x();
+            let overlap = self.v_n * t + e[0];
+            return (n, overlap, -n.dot(&u), Vector3::zeros());
+        }
+        let p = self.d_touch + self.u0 * t;
+        let d = p + e;
+        let r = d.norm();
+        let numerator =
+            2.0 * self.r_sum * self.v_n * t - self.v * self.v * t * t - 2.0 * p.dot(&e) - e.dot(&e);
+        let overlap = numerator / (self.r_sum + r);
+        let n = d / r;
+        let rate = -n.dot(&u);
+        let n_dot = (u - n * n.dot(&u)) / r;
+        (n, overlap, rate, n_dot)
+    }
+
+    /// The step of the central differences of the law's force and contact radius
+    /// at `overlap`: 10⁻⁵ of the distance to the branch end (where the law is
+    /// singular: Hertz's `a ∝ δ^½` at first touch, JKR's vertical tangent at
+    /// pull-off), at most 10⁻⁵ of the overlap scale, at least 10⁻¹² of it.
+    /// Relative truncation error ~10⁻¹⁰, rounding ~10⁻¹¹: a fixed step of the
+    /// overlap scale is as large as the overlap itself just after first touch,
+    /// where the slip conditions are decided.
+    pub(super) fn difference_step(
+        &self,
+        law: &dyn ForceLaw,
+        overlap: f64,
+        rate: f64,
+    ) -> Result<f64> {
+        let end = law.branch_end(overlap, rate)?;
+        Ok(DIFFERENCE_STEP * end.clamp(1e-7 * self.length, self.length))
+    }
+
+    pub(super) fn kinetic(&self, y: &[f64; N]) -> f64 {
+        let u = v3(y, U);
+        let wi = v3(y, WI);
+        let mut k = 0.5 * self.m_eff * u.norm_squared()
+            + 0.5 * self.imp.sphere.moment_of_inertia * wi.norm_squared();
+        if !self.flat {
+            k += 0.5 * self.imp.target.moment_of_inertia * v3(y, WJ).norm_squared();
+        }
+        k
+    }
+
+    /// The rates of the SI state at SI time `t` in `modes`.
+    pub(super) fn evaluate(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &[f64; N],
+        modes: &Modes,
+    ) -> Result<Eval> {
+        let (n, overlap, rate, n_dot) = self.geometry(t, y);
+        let u = v3(y, U);
+        let wi = v3(y, WI);
+        let wj = if self.flat {
+            Vector3::zeros()
+        } else {
+            v3(y, WJ)
+        };
+        let mut dy = [0.0; N];
+        put(&mut dy, E, &(u - self.u0));
+        let f_el = law.force(overlap, rate)?;
+        let mut out = Eval {
+            dy,
+            slip_rate_t: f64::INFINITY,
+            slip_rate_r: f64::INFINITY,
+            slip_rate_w: f64::INFINITY,
+        };
+        if !modes.in_contact {
+            // free flight (or the Maugis-Dugdale approach before jump-in)
+            put(&mut out.dy, U, &(n * (f_el / self.m_eff)));
+            out.dy[EN] = f_el * rate;
+            return Ok(out);
+        }
+        let h = self.difference_step(law, overlap, rate)?;
+        let a_of = |d: f64| law.contact_radius(d, rate);
+        let (a, a_prime) = derivative(&a_of, overlap, h)?;
+        let a = a.max(0.0);
+        let c = self.imp.normal.damping;
+        let f_d = c * a * rate;
+        let f_n = f_el + f_d;
+        let pull_off = self.imp.normal.pull_off_force;
+        let cohesive = pull_off > 0.0;
+        let fc = crate::critical_force(f_el, f_n, pull_off);
+
+        let (arm_i, arm_j) = if self.flat {
+            (self.imp.sphere.radius, 0.0)
+        } else {
+            (
+                self.imp.sphere.radius - 0.5 * overlap,
+                self.imp.target.radius - 0.5 * overlap,
+            )
+        };
+        let r_i = self.imp.sphere.radius;
+        let r_j = if self.flat {
+            0.0
+        } else {
+            self.imp.target.radius
+        };
+
+        let vt = u - n * n.dot(&u);
+        let wr = wi * r_i + wj * r_j;
+        let v_tr = vt - wr.cross(&n);
+        let w_rel = wi - wj;
+        let v_rl = w_rel.cross(&n) * self.r_eff;
+        let w_tw = w_rel.dot(&n);
+
+        // forces (they do not depend on the slip rates)
+        let mut f_t = Vector3::zeros();
+        let mut f_r = Vector3::zeros();
+        let mut m_tw = 0.0;
+        let mut tang = None;
+        if modes.warmup {
+            put(&mut out.dy, U, &(n * (f_n / self.m_eff)));
+            put(&mut out.dy, XT, &v_tr);
+            put(&mut out.dy, XR, &v_rl);
+            out.dy[XW] = w_tw;
+            out.dy[EN] = f_el * rate;
+            out.dy[EN + 1] = f_d * rate;
+            return Ok(out);
+        }
+        if let Some(fr) = &self.imp.friction {
+            let t = &fr.tangential;
+            let k = t.spring(a);
+            let gamma = t.damping_ratio * c * a;
+            let limit = t.coefficient * fc;
+            let xi = v3(y, XT);
+            if let Some(bed) = &self.bed {
+                // Mindlin-Deresiewicz: the spring bed, a dashpot in parallel
+                f_t = bed.borrow().force(&n, &xi, a, limit) - v_tr * gamma;
+                put(&mut out.dy, XT, &(v_tr - n * xi.dot(&n_dot)));
+                out.dy[EN + 3] = gamma * v_tr.norm_squared();
+            } else {
+                f_t = match modes.tangential {
+                    Mode::Stick => cap(-(xi * k + v_tr * gamma), limit, modes.frozen[0]),
+                    Mode::Slip => -direction(&xi, &v_tr) * limit,
+                };
+                tang = Some((k, gamma, limit, xi));
+            }
+            if let Some(r) = &fr.rolling {
+                let psi = v3(y, XR);
+                let limit_r = r.coefficient * fc;
+                f_r = match modes.rolling {
+                    Mode::Stick => cap(
+                        -(psi * r.stiffness + v_rl * r.damping),
+                        limit_r,
+                        modes.frozen[1],
+                    ),
+                    Mode::Slip => -direction(&psi, &v_rl) * limit_r,
+                };
+            }
+            if let Some(tw) = &fr.twisting {
+                let (k_tw, g_tw, l_tw) = twist_coefficients(tw, fr, a, c, fc);
+                m_tw = match modes.twisting {
+                    Mode::Stick => {
+                        let m = -(k_tw * y[XW] + g_tw * w_tw);
+                        if modes.frozen[2] && m.abs() > l_tw {
+                            l_tw.copysign(m)
+                        } else {
+                            m
+                        }
+                    }
+                    Mode::Slip => -modes.twist_sign * l_tw,
+                };
+            }
+        }
+
+        // accelerations
+        let force_i = n * f_n + f_t;
+        let u_dot = force_i / self.m_eff;
+        let n_cross_ft = n.cross(&f_t);
+        let torque_roll = n.cross(&f_r) * self.r_eff;
+        let torque_i = -n_cross_ft * arm_i + torque_roll + n * m_tw;
+        let torque_j = -n_cross_ft * arm_j - torque_roll - n * m_tw;
+        let wi_dot = torque_i * self.inv_i_i;
+        let wj_dot = if self.flat {
+            Vector3::zeros()
+        } else {
+            torque_j * self.inv_i_j
+        };
+        put(&mut out.dy, U, &u_dot);
+        put(&mut out.dy, WI, &wi_dot);
+        put(&mut out.dy, WJ, &wj_dot);
+
+        // energies (power removed from the bodies)
+        out.dy[EN] = f_el * rate;
+        out.dy[EN + 1] = f_d * rate;
+        out.dy[EN + 4] = -f_t.dot(&v_tr);
+        out.dy[EN + 5] = -f_r.dot(&v_rl);
+        out.dy[EN + 6] = -m_tw * w_tw;
+        // bodies gain F_t·[(δ/2)(ω_i + ω_j) × n] beyond −F_t·v_tr (pair convention)
+        let arm_gain = f_t.dot(&(wi * (r_i - arm_i) + wj * (r_j - arm_j)).cross(&n));
+        out.dy[EN + 7] = -arm_gain;
+
+        let Some(fr) = &self.imp.friction else {
+            return Ok(out);
+        };
+
+        // rates of the quantities the slip conditions need
+        let accel_normal = -n_dot.dot(&u) - n.dot(&u_dot); // δ̈
+        let f_of = |d: f64| law.force(d, rate);
+        let (_, f_prime) = derivative(&f_of, overlap, h)?;
+        let a_dot = a_prime * rate;
+        let fc_dot = {
+            let raw = if cohesive { f_el + 2.0 * pull_off } else { f_n };
+            let mut d = f_prime * rate;
+            if !cohesive {
+                d += c * (a_dot * rate + a * accel_normal);
+            }
+            if raw < 0.0 {
+                -d
+            } else {
+                d
+            }
+        };
+        let vt_dot = u_dot - n_dot * n.dot(&u) - n * (n_dot.dot(&u) + n.dot(&u_dot));
+        let v_tr_dot = vt_dot - (wi_dot * r_i + wj_dot * r_j).cross(&n) - wr.cross(&n_dot);
+        let v_rl_dot = ((wi_dot - wj_dot).cross(&n) + w_rel.cross(&n_dot)) * self.r_eff;
+        let w_tw_dot = (wi_dot - wj_dot).dot(&n) + w_rel.dot(&n_dot);
+
+        // tangential
+        if let Some((k, gamma, limit, xi)) = tang {
+            let t = &fr.tangential;
+            let k_dot = match t.model {
+                TangentialModel::LinearHistory => 0.0,
+                _ => t.stiffness * a_dot,
+            };
+            let gamma_dot = t.damping_ratio * c * a_dot;
+            let limit_dot = t.coefficient * fc_dot;
+            let rescale = t.model == TangentialModel::MindlinRescale && !modes.loading;
+            // ξ ∝ a while it shrinks: the rate ȧ/a diverges where the contact
+            // vanishes (Hertz: a ∝ δ^½ at separation), and so do ξ's derivatives;
+            // capped as the turning of a slip direction ([`turn_rate`]). The cap
+            // acts only within ~10⁻⁴ of the end, where the stick force is
+            // bounded by a limit ~10⁻⁶ of its largest value.
+            let rescale_rate = if rescale && a > 0.0 {
+                (a_dot / a).max(-RATE_CAP / self.time)
+            } else {
+                0.0
+            };
+            match modes.tangential {
+                Mode::Stick => {
+                    let d = v_tr - n * xi.dot(&n_dot) + xi * rescale_rate;
+                    put(&mut out.dy, XT, &d);
+                    out.dy[EN + 3] = gamma * v_tr.norm_squared();
+                }
+                Mode::Slip => {
+                    let uhat = direction(&xi, &v_tr);
+                    let drive =
+                        v_tr * k + v_tr * (gamma_dot - k_dot * ratio(gamma, k)) + v_tr_dot * gamma;
+                    let turn = turn_rate(&drive, &uhat, &n, limit, self.time);
+                    let d = (turn - n * uhat.dot(&n_dot)) * xi.norm();
+                    put(&mut out.dy, XT, &d);
+                    // û·Ṫ_stick − L̇ with ξ on the limit surface
+                    let uv = uhat.dot(&v_tr);
+                    let on_surface = limit - gamma * uv;
+                    let kappa_rate = ratio(k_dot, k) + rescale_rate;
+                    let g = kappa_rate * on_surface
+                        + k * uv
+                        + gamma_dot * uv
+                        + gamma * uhat.dot(&v_tr_dot)
+                        - limit_dot;
+                    out.slip_rate_t = g;
+                    out.dy[EN + 2] = if k > 0.0 {
+                        g.max(0.0) * on_surface / k
+                    } else {
+                        0.0
+                    };
+                    out.dy[EN + 3] = gamma * v_tr.norm_squared();
+                }
+            }
+        }
+        // rolling
+        if let Some(r) = &fr.rolling {
+            let psi = v3(y, XR);
+            let limit_r = r.coefficient * fc;
+            match modes.rolling {
+                Mode::Stick => {
+                    let d = v_rl - n * psi.dot(&n_dot);
+                    put(&mut out.dy, XR, &d);
+                }
+                Mode::Slip => {
+                    let uhat = direction(&psi, &v_rl);
+                    let drive = v_rl * r.stiffness + v_rl_dot * r.damping;
+                    let turn = turn_rate(&drive, &uhat, &n, limit_r, self.time);
+                    put(
+                        &mut out.dy,
+                        XR,
+                        &((turn - n * uhat.dot(&n_dot)) * psi.norm()),
+                    );
+                    out.slip_rate_r = uhat.dot(&drive) - r.coefficient * fc_dot;
+                }
+            }
+        }
+        // twisting
+        if let Some(tw) = &fr.twisting {
+            let (k_tw, g_tw, l_tw) = twist_coefficients(tw, fr, a, c, fc);
+            match modes.twisting {
+                Mode::Stick => out.dy[XW] = w_tw,
+                Mode::Slip => {
+                    let (k_dot, g_dot, l_dot) = match tw {
+                        Twisting::Marshall => {
+                            let t = &fr.tangential;
+                            (
+                                t.stiffness * a * a_dot,
+                                t.damping_ratio * c * 1.5 * a * a * a_dot,
+                                2.0 / 3.0 * t.coefficient * (a_dot * fc + a * fc_dot),
+                            )
+                        }
+                        Twisting::Sds { coefficient, .. } => (0.0, 0.0, coefficient * fc_dot),
+                    };
+                    let s = modes.twist_sign;
+                    let on_surface = l_tw * s - g_tw * w_tw;
+                    let g = s
+                        * (ratio(k_dot, k_tw) * on_surface
+                            + k_tw * w_tw
+                            + g_dot * w_tw
+                            + g_tw * w_tw_dot)
+                        - l_dot;
+                    out.slip_rate_w = g;
+                    out.dy[XW] = 0.0;
+                }
+            }
+        }
+        Ok(out)
+    }
+}
+
+pub(super) fn put_state(y: &mut [f64; N], i: usize, v: &Vector3<f64>) {
+    put(y, i, v);
+}
