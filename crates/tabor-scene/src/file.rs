@@ -40,12 +40,14 @@ pub struct SceneFile {
 #[derive(Clone, Debug, Default, PartialEq, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct DampingFile {
-    /// "viscoelastic", "tsuji" or "coeff_restitution".
+    /// "viscoelastic", "tsuji" or "coeff_restitution" (LAMMPS `pair_granular`,
+    /// "Damping").
     pub model: String,
     /// `viscoelastic`: η_n0 (1/(m s)), `F = η_n0 m* a v_n`; `tsuji`: the damping
     /// value (read as a restitution by Tsuji's polynomial), in (0, 1].
     pub coefficient: Option<f64>,
-    /// `coeff_restitution`: the restitution e, in (0, 1].
+    /// `coeff_restitution`: the restitution e, in (0, 1] (LAMMPS reads it the
+    /// same way).
     pub restitution: Option<f64>,
 }
 

@@ -150,14 +150,16 @@ impl<L: SeparationPotential> ViscousDamping<L> {
         &self.inner
     }
 
-    /// The normal damping law.
+    /// The normal damping law (Kuwabara-Kono (5.66) or a LAMMPS DEM law, README
+    /// "DEM damping laws").
     pub fn damping(&self) -> NormalDamping {
         self.damping
     }
 
     /// The damping coefficient `c` (N s/m) of the force `c ḋ` at contact radius
     /// `contact_radius` (m), in the effective mass of the current impact (NaN
-    /// before [`ForceLaw::begin_impact`] for the laws that need the mass).
+    /// before [`ForceLaw::begin_impact`] for the laws that need the mass); seed 000
+    /// eq. (5.72), [`NormalDamping::coefficient`].
     pub fn damping_coefficient(&self, contact_radius: f64) -> f64 {
         self.damping.coefficient(self.mass, contact_radius)
     }

@@ -256,14 +256,15 @@ impl ViscoadhesiveImpact {
     }
 
     /// The viscous coefficient η_c (Pa s) of the Kuwabara-Kono form `2 η_c a ḋ`
-    /// (`viscoelastic`: `η_n0 m/2`); NaN for the Tsuji form.
+    /// (`viscoelastic`: `η_n0 m/2`), seed 000 eq. (5.66); NaN for the Tsuji form.
     pub fn contact_viscosity(&self) -> f64 {
         self.damping
             .contact_viscosity(self.effective_mass)
             .unwrap_or(f64::NAN)
     }
 
-    /// The normal damping law.
+    /// The normal damping law (Kuwabara-Kono (5.66) or a LAMMPS DEM law, README
+    /// "DEM damping laws").
     pub fn damping(&self) -> NormalDamping {
         self.damping
     }
