@@ -22,7 +22,7 @@ fn err(e: Error) -> SceneError {
 
 /// The effects an outcome used, as the set its damped law is built from (the
 /// kinds that choose the law: adhesion's and plasticity's from the scene).
-fn outcome_set(outcome: &Outcome) -> crate::combination::EffectSet {
+pub(crate) fn outcome_set(outcome: &Outcome) -> crate::combination::EffectSet {
     let uses = |e| outcome.combination.effects.contains(&e);
     crate::combination::EffectSet {
         adhesion: uses(EffectKind::Adhesion)

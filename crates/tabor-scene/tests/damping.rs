@@ -431,3 +431,80 @@ fn viscoelastic_with_adhesion_is_the_viscous_adhesive_model() {
         assert!(reference.energy_loss(v).is_ok());
     }
 }
+
+/// The oblique impact of a damped scene (`[damping]` with adhesion): at a
+/// vanishing angle, frictionless, tabor-tangential's integrator (its own ODE, the
+/// damping `c a^β ḋ` of `NormalContact`, the work of each mechanism integrated
+/// with the motion) reproduces the central damped outcome (tabor-dynamics with the
+/// viscous wrapper): the restitution, the damping work and the adhesive
+/// hysteresis, to the oblique impact's tolerance (1e-9 relative, as energies of
+/// the kinetic energy).
+#[test]
+fn damped_oblique_impact_at_normal_incidence_is_the_central_one() {
+    for (w, model) in [
+        (0.05, "coeff_restitution\"\nrestitution = 0.6"),
+        (0.05, "viscoelastic\"\ncoefficient = 5e15"),
+        (0.0, "tsuji\"\ncoefficient = 0.6"),
+    ] {
+        let s = scene(&format!(
+            "[adhesion]\nwork_of_adhesion = {w}\n[damping]\nmodel = \"{model}\n"
+        ));
+        let v = 0.5;
+        let central = s.outcome_at(v).unwrap();
+        let o = s.oblique(v, 1e-6).unwrap();
+        let kinetic = 0.5 * s.effective_mass * v * v;
+        let tol = 1e-8;
+        assert!(
+            (o.normal_restitution - central.restitution).abs() < tol,
+            "{model}: {} vs {}",
+            o.normal_restitution,
+            central.restitution
+        );
+        let share = |name: &str| {
+            central
+                .effects
+                .iter()
+                .find(|x| x.name == name)
+                .and_then(|x| x.energy_loss)
+                .unwrap_or(0.0)
+        };
+        assert!(
+            (o.losses.normal_damping - share("damping")).abs() < tol * kinetic,
+            "{model}: {:e} vs {:e}",
+            o.losses.normal_damping,
+            share("damping")
+        );
+        assert!(
+            (o.losses.normal_adhesion - share("adhesion")).abs() < tol * kinetic,
+            "{model}: {:e} vs {:e}",
+            o.losses.normal_adhesion,
+            share("adhesion")
+        );
+    }
+}
+
+/// Hertz + `coeff_restitution` on a flat with friction at 45°: the normal motion
+/// on a flat does not depend on the tangential one, so the normal restitution is
+/// e exactly; the mechanisms account for the kinetic energy lost (the oblique
+/// impact's energy error, 1e-9 relative), the damping work non-negative.
+#[test]
+fn damped_oblique_impact_on_a_flat_keeps_e_and_its_energy() {
+    let text = format!(
+        "{}[damping]\nmodel = \"coeff_restitution\"\nrestitution = 0.7\n[friction]\ncoefficient = 0.3\n",
+        SILICA.replace(
+            "[target]\nradius = 1e-6\ndensity = 2650\n",
+            "[target]\n"
+        )
+    );
+    let s = Scene::from_str(&text, Format::Toml).unwrap();
+    for angle in [10.0, 45.0, 80.0] {
+        let o = s.oblique(0.5, angle).unwrap();
+        assert!(
+            (o.normal_restitution - 0.7).abs() < 1e-8,
+            "{angle}: {}",
+            o.normal_restitution
+        );
+        assert!(o.losses.normal_damping > 0.0 && o.losses.sliding_friction >= 0.0);
+        assert!(o.energy_error < 1e-8, "{angle}: {:e}", o.energy_error);
+    }
+}

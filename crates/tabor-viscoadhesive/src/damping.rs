@@ -128,7 +128,8 @@ impl NormalDamping {
         })
     }
 
-    /// The DEM law's menu entry; `None` for Kuwabara-Kono (a material model).
+    /// The DEM law's menu entry (LAMMPS `pair_granular` `damping` keyword); `None`
+    /// for Kuwabara-Kono (a material model, seed 000 eq. (5.66)).
     pub fn model(&self) -> Option<DampingModel> {
         match self {
             NormalDamping::KuwabaraKono { .. } => None,
@@ -138,8 +139,8 @@ impl NormalDamping {
         }
     }
 
-    /// The value as LAMMPS's `pair_coeff` writes it (η_n0, the damping value, e),
-    /// or η_c for Kuwabara-Kono.
+    /// The value as LAMMPS's `pair_coeff` writes it (η_n0, the damping value, e;
+    /// LAMMPS `pair_granular`, "Damping"), or η_c for Kuwabara-Kono (5.66).
     pub fn value(&self) -> f64 {
         match *self {
             NormalDamping::KuwabaraKono { contact_viscosity } => contact_viscosity,
@@ -151,7 +152,8 @@ impl NormalDamping {
 
     /// The Kelvin-Voigt contact viscosity η_c (Pa s) this damping equals in
     /// effective mass `effective_mass` (kg), where it has the Kuwabara-Kono form
-    /// `c = 2 η_c a` (Kuwabara-Kono, and `viscoelastic` with `η_c = η_n0 m/2`).
+    /// `c = 2 η_c a` (Kuwabara-Kono, seed 000 eq. (5.66), and `viscoelastic` with
+    /// `η_c = η_n0 m/2`).
     pub fn contact_viscosity(&self, effective_mass: f64) -> Option<f64> {
         match *self {
             NormalDamping::KuwabaraKono { contact_viscosity } => Some(contact_viscosity),
@@ -160,7 +162,8 @@ impl NormalDamping {
         }
     }
 
-    /// α of the Tsuji form (`tsuji`, `coeff_restitution`), else `None`.
+    /// α of the Tsuji form (`tsuji`: [`tsuji_alpha`], Marshall 2009 eq. 53;
+    /// `coeff_restitution`: [`coeff_restitution_alpha`]), else `None`.
     pub fn alpha(&self) -> Option<f64> {
         match *self {
             NormalDamping::Tsuji { coefficient, .. } => Some(tsuji_alpha(coefficient)),
@@ -174,7 +177,8 @@ impl NormalDamping {
     /// The coefficient `c` (N s/m, ≥ 0) of `F_d = c ḋ` for effective mass
     /// `effective_mass` (kg) at contact radius `contact_radius` (m; a negative or
     /// NaN radius counts as 0: no contact, no damping). Monotone non-decreasing in
-    /// the radius. See the variants for the formulas.
+    /// the radius. See the variants for the formulas (seed 000 eqs. (5.66),
+    /// (5.72)-(5.73); LAMMPS `pair_granular`, "Damping").
     pub fn coefficient(&self, effective_mass: f64, contact_radius: f64) -> f64 {
         let a = if contact_radius > 0.0 {
             contact_radius
@@ -196,13 +200,36 @@ impl NormalDamping {
         }
     }
 
+    /// The coefficient as a power of the contact radius, `c(m, a) = k a^β`: (k, β)
+    /// for effective mass `effective_mass` (kg): `(2 η_c, 1)`, `(η_n0 m, 1)`, or
+    /// `(α √(m (4/3) E*), 1/2)` for the Tsuji form (for
+    /// `tabor_tangential::oblique::NormalContact`).
+    pub fn power_law(&self, effective_mass: f64) -> (f64, f64) {
+        match *self {
+            NormalDamping::KuwabaraKono { contact_viscosity } => (2.0 * contact_viscosity, 1.0),
+            NormalDamping::Viscoelastic { coefficient } => (coefficient * effective_mass, 1.0),
+            NormalDamping::Tsuji {
+                effective_modulus, ..
+            }
+            | NormalDamping::CoeffRestitution {
+                effective_modulus, ..
+            } => (
+                self.alpha().unwrap_or(0.0)
+                    * (effective_mass * 4.0 / 3.0 * effective_modulus).sqrt(),
+                0.5,
+            ),
+        }
+    }
+
     /// The damping force `c ḋ` (N) at contact radius `contact_radius` (m) and
-    /// overlap rate `overlap_rate` (m/s).
+    /// overlap rate `overlap_rate` (m/s): seed 000 eq. (5.72) with c of
+    /// [`NormalDamping::coefficient`].
     pub fn force(&self, effective_mass: f64, contact_radius: f64, overlap_rate: f64) -> f64 {
         self.coefficient(effective_mass, contact_radius) * overlap_rate
     }
 
-    /// A short description for law names ("viscoelastic damping (eta_n0 = …)").
+    /// A short description for law names ("viscoelastic damping (eta_n0 = …)"),
+    /// naming the LAMMPS law and its α where it has one (Marshall 2009, LAMMPS).
     pub fn describe(&self) -> String {
         match *self {
             NormalDamping::KuwabaraKono { contact_viscosity } => {

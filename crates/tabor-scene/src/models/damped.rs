@@ -144,6 +144,24 @@ impl Models {
         Ok(Box::new(law))
     }
 
+    /// The undamped force law of `set` and the damping law that acts on it (for
+    /// the oblique impact, which adds the damping itself: its work is the
+    /// `normal_damping` mechanism).
+    pub(crate) fn damped_parts(
+        &self,
+        set: &EffectSet,
+    ) -> Result<(Box<dyn ForceLaw>, NormalDamping), SceneError> {
+        let d = self.damped()?;
+        if set.adhesion.is_some() && set.plasticity.is_none() {
+            let a = d
+                .adhesive
+                .as_ref()
+                .ok_or_else(|| Self::missing("damped adhesive"))?;
+            return Ok((Box::new(a.force_law().inner().clone()), d.damping));
+        }
+        Ok((self.undamped_law(set)?, d.damping))
+    }
+
     /// The simulated impact of the damped law of `set` at `speed` with `settings`.
     pub(crate) fn simulate_damped(
         &self,
