@@ -64,7 +64,7 @@ pub use inputs::{
 };
 pub use outcome::{Effect, Outcome};
 pub use parameter::SweepParameter;
-pub use scene::{Scene, SpeedBatch};
+pub use scene::{Scene, SpeedBatch, MAX_SCENE_BYTES};
 pub use select::Sticking;
 pub use sweep::{spaced, sweep};
 pub use tabor_viscoadhesive::{DampingModel, NormalDamping};
