@@ -6,6 +6,7 @@ from __future__ import annotations
 import inspect
 import itertools
 import numbers
+import os
 import warnings
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
@@ -80,7 +81,36 @@ def float_array(name: str, value: Any) -> np.ndarray:
     if a.dtype.kind not in "iuf":
         what = {"c": "complex", "b": "bool", "U": "str", "S": "bytes", "O": "object"}.get(a.dtype.kind, str(a.dtype))
         raise TypeError(f"{name} must be a real number or an array of real numbers, not an array of {what}")
+    check_elements(name, a.size)
     return a.astype(np.float64, copy=False)
+
+
+def _max_elements() -> int:
+    """The most elements a batch may have: the machine's memory over the bytes a
+    batch needs per element (python/README: 10**7 elements peak at 1.15 GiB, about
+    115 bytes each; 128 here)."""
+    try:
+        memory = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    except (AttributeError, ValueError, OSError):
+        memory = 16 * 2**30
+    return max(memory // 128, 10**6)
+
+
+#: The most elements a batch may have (the machine's memory / 128 bytes): larger
+#: inputs are refused before anything is copied (a zero-stride view of 3e9
+#: elements was copied in full).
+MAX_ELEMENTS = _max_elements()
+
+
+def check_elements(name: str, size: int) -> None:
+    """Refuses `size` elements beyond MAX_ELEMENTS, naming `name`."""
+    if size > MAX_ELEMENTS:
+        from ._errors import InputError
+
+        raise InputError(
+            f"invalid {name}: {size} elements, more than this machine's memory allows "
+            f"(at most {MAX_ELEMENTS}, about 128 bytes each)"
+        )
 
 
 class Batch:
@@ -96,7 +126,8 @@ class Batch:
             shapes = ", ".join(f"{k} {a.shape}" for k, a in arrays.items())
             raise InputError(f"the arguments do not broadcast together: {shapes}") from None
         self.scalar = all(a.ndim == 0 for a in arrays.values())
-        self.n = int(np.prod(self.shape)) if self.shape else 1
+        self.n = int(np.prod(self.shape, dtype=object)) if self.shape else 1
+        check_elements(", ".join(arrays) or "arguments", self.n)
         self.columns: Dict[str, Optional[np.ndarray]] = {k: None for k in arguments}
         for k, a in arrays.items():
             if a.size == 1:

@@ -284,3 +284,15 @@ def test_edges_a_user_touches():
     with pytest.raises(TypeError, match=r"speed must be one real number"):
         scene.outcome(np.array([0.1, 0.2]))
     assert scene.outcome(np.array([0.1]))["restitution"] == scene.outcome(0.1)["restitution"]
+
+
+def test_arrays_beyond_the_machine_are_refused_before_any_copy():
+    """Issue 33: a zero-stride view of 3e9 elements was copied in full (4 GB within
+    seconds); it is refused at once, naming the argument and the ceiling."""
+    view = np.broadcast_to(np.float32(0.5), (3 * 10**9,))
+    t0 = time.perf_counter()
+    with pytest.raises(tabor.InputError, match=r"tabor_parameter: 3000000000 elements"):
+        tabor.maugis_dugdale_loss(view)
+    with pytest.raises(tabor.InputError, match=r"at most"):
+        tabor.maugis_dugdale_loss(np.broadcast_to(0.5, (10**5, 10**5)))
+    assert time.perf_counter() - t0 < 1.0
