@@ -241,3 +241,40 @@ fn gross_sliding_is_the_same_for_every_coulomb_model_with_adhesion() {
         assert!((b_md - b_mindlin).abs() < 1e-4, "{b_md} vs {b_mindlin}");
     }
 }
+
+/// The tangential dashpot never pushes the contact beyond the Coulomb limit
+/// (found by the Chung & Ooi Test 6 work: with x_γ,t = 1 the dashpot in parallel
+/// to the bed gave β = +0.016 where sliding allows at most −0.47). Sliding
+/// throughout, the contact point's change is at most χ μ times the normal
+/// impulse over the mass, χ = 7/2, the normal impulse m (1 + e_n) v_n; the 10 %
+/// margin is the tensile end of a damped contact, where F_n0 = |F_n| still acts.
+#[test]
+fn the_tangential_dashpot_respects_the_coulomb_limit() {
+    let mu = 0.1;
+    let mut imp = steel(TangentialModel::MindlinDeresiewicz, mu);
+    // Kuwabara-Kono damping c a δ̇ of the order of the Hertz stiffness over the
+    // contact time: e_n ≈ 0.8
+    imp.normal = NormalContact {
+        pull_off_force: 0.0,
+        damping: 2e5,
+        damping_exponent: 1.0,
+    };
+    if let Some(f) = imp.friction.as_mut() {
+        f.tangential.damping_ratio = 1.0;
+    }
+    for angle in [60.0f64, 80.0] {
+        let mut law = ElasticContact::hertz(e_star(), R).unwrap();
+        let out = imp.simulate(&mut law, 1.0, angle, &settings()).unwrap();
+        let a = angle.to_radians();
+        let (vn, c0) = (a.cos(), a.sin());
+        let change = (1.0 + out.tangential_restitution.unwrap()) * c0;
+        let bound = 1.1 * 3.5 * mu * (1.0 + out.normal_restitution) * vn;
+        assert!(out.normal_restitution < 0.95, "{}", out.normal_restitution);
+        assert!(
+            change <= bound,
+            "{angle}°: contact point slowed by {change}, limit {bound}"
+        );
+        assert!(out.losses.tangential_damping >= 0.0 && out.losses.micro_slip > 0.0);
+        assert!(out.energy_error < 1e-8, "{}", out.energy_error);
+    }
+}

@@ -256,10 +256,13 @@ impl<'a> Setup<'a> {
             let limit = t.coefficient * fc;
             let xi = v3(y, XT);
             if let Some(bed) = &self.bed {
-                // Mindlin-Deresiewicz: the spring bed, a dashpot in parallel
-                f_t = bed.borrow().force(&n, &xi, a, limit) - v_tr * gamma;
+                // Mindlin-Deresiewicz: the spring bed, a dashpot in parallel up to
+                // the Coulomb limit (the bed alone never exceeds it)
+                let f_bed = bed.borrow().force(&n, &xi, a, limit);
+                let s = dashpot_share(&f_bed, &(v_tr * gamma), limit);
+                f_t = f_bed - v_tr * (gamma * s);
                 put(&mut out.dy, XT, &(v_tr - n * xi.dot(&n_dot)));
-                out.dy[EN + 3] = gamma * v_tr.norm_squared();
+                out.dy[EN + 3] = s * gamma * v_tr.norm_squared();
             } else {
                 f_t = match modes.tangential {
                     Mode::Stick => cap(-(xi * k + v_tr * gamma), limit, modes.frozen[0]),
@@ -455,6 +458,22 @@ impl<'a> Setup<'a> {
         }
         Ok(out)
     }
+}
+
+/// The share `s ∈ [0, 1]` of the dashpot force `g` that the contact carries on
+/// top of the spring bed's force `f` (`|f| ≤ limit`): all of it while
+/// `|f − g| ≤ limit`, else the share that brings the sum to the Coulomb limit
+/// (the smallest root of `|f − s g| = limit`), so no dashpot pushes a contact
+/// beyond `μ F_n0`.
+pub(super) fn dashpot_share(f: &Vector3<f64>, g: &Vector3<f64>, limit: f64) -> f64 {
+    let g2 = g.norm_squared();
+    if g2 == 0.0 || (f - g).norm() <= limit {
+        return 1.0;
+    }
+    let fg = f.dot(g);
+    let slack = (limit * limit - f.norm_squared()).max(0.0);
+    let root = (fg + (fg * fg + g2 * slack).sqrt()) / g2;
+    root.clamp(0.0, 1.0)
 }
 
 pub(super) fn put_state(y: &mut [f64; N], i: usize, v: &Vector3<f64>) {
