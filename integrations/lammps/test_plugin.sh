@@ -5,7 +5,8 @@
 # `tabor export lammps --plugin`; 1 vs 2 MPI ranks), test_plugin_friction.py
 # (oblique collisions with friction, rolling and twisting against pair granular and
 # tabor's library), test_plugin_cloud.py (a polydisperse cloud on 1 and 2 ranks, a
-# restart in the middle), then the MPI cloud example of examples/lammps with the
+# restart in the middle), test_doc_examples.py (every example line of the doc pages
+# doc/pair_tabor.rst and doc/fix_tabor_history.rst), then the MPI cloud example of examples/lammps with the
 # plugin (sticking fraction against tabor's prediction).
 # Exit status 0 only if everything passed.
 set -euo pipefail
@@ -22,6 +23,7 @@ export LD_LIBRARY_PATH="$VENV/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export OBLIQUE_LIBRARY="$TARGET/release/examples/oblique_library"
 export PATH="$VENV/bin:$PATH"
 "$VENV/bin/python" "$HERE/test_plugin.py" "$@"
+"$VENV/bin/python" "$HERE/test_doc_examples.py"  # every example of doc/*.rst runs in LAMMPS
 "$VENV/bin/python" "$HERE/test_plugin_friction.py"
 "$VENV/bin/python" "$HERE/test_lammps.py" plugin_friction  # the exported --plugin fragment with [friction], oblique (export branch)
 "$VENV/bin/python" "$HERE/test_plugin_cloud.py"

@@ -223,7 +223,11 @@ fn every_bundled_scene_exports_within_its_claim_or_is_refused() {
                 exported += 1;
             }
             Err(ExportError::Unrepresentable { effect, .. }) => {
-                assert!(name.contains("graded"), "{name} refused: {effect}")
+                // a graded medium; micro-slip, which no LAMMPS model has
+                assert!(
+                    name.contains("graded") || effect.contains("mindlin_deresiewicz"),
+                    "{name} refused: {effect}"
+                )
             }
             Err(e) => panic!("{name}: {e}"),
         }
