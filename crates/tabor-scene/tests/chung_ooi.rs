@@ -1,6 +1,6 @@
 //! Chung & Ooi (2011), "Benchmark tests for verifying discrete element modelling
 //! codes at particle impact level", Granular Matter 13:643: the paper's Tests 1,
-//! 2, 4 and 5 through tabor's scenes (`examples/scenes/chung_ooi/`), with the
+//! 2, 4, 5 and 7 through tabor's scenes (`examples/scenes/chung_ooi/`), with the
 //! paper's materials and no fitted parameter, against closed forms, the paper's
 //! figures, its finite-element solution (Test 5) and the measurements of Kharaz,
 //! Gorham & Salman (2001), Powder Technol. 120:281 (Test 4).
@@ -474,6 +474,66 @@ fn test_5_micro_slip_follows_the_papers_fem() {
                 if x < 1.6 {
                     assert!(other > 0.0, "x = {x}: mindlin {other}");
                 }
+            }
+        }
+    }
+}
+
+// ------------------------------------------------------------------- Test 7
+
+/// Test 7: two identical spheres meeting head-on with equal and opposite spins
+/// ω = (v_n/R) tan θ, θ from 5° to 85° (the paper's 0.175-22.9 rad/s): their
+/// contact points move together, so no tangential force acts and the paper's
+/// curves are the identity (ω' = ω) and zero (v_t' = 0). tabor, both models,
+/// Al alloy and copper: exactly that, to 1e-9 of ωR (nothing approximates a
+/// zero force here; the bound is the integration's rounding). With the spins in
+/// the same sense (contact points opposing) the spin does change.
+#[test]
+fn test_7_matched_spins_exchange_nothing() {
+    for file in ["test7_al_alloy.toml", "test7_copper.toml"] {
+        let text = std::fs::read_to_string(dir().join(file)).unwrap();
+        for model in ["mindlin_deresiewicz", "mindlin"] {
+            for theta in [5.0f64, 20.0, 45.0, 70.0, 85.0] {
+                let w = 0.2 / 0.1 * theta.to_radians().tan();
+                let spins = format!(
+                    "sphere_spin = [0.0, 0.0, {w}]\ntarget_spin = [0.0, 0.0, {}]",
+                    -w
+                );
+                let t = text
+                    .replace("tangential = \"mindlin_deresiewicz\"", &format!("tangential = \"{model}\""))
+                    .replace(
+                        "sphere_spin = [0.0, 0.0, 2.0]    # rad/s (the tests vary it)\ntarget_spin = [0.0, 0.0, -2.0]",
+                        &spins,
+                    );
+                let s = Scene::from_str(&t, Format::Toml).unwrap();
+                let o = s.oblique(0.4, 0.0).unwrap();
+                let (v, spin) = (o.after.sphere.velocity, o.after.sphere.angular_velocity);
+                let scale = w * 0.1;
+                assert!(
+                    v[1].abs() < 1e-9 * scale,
+                    "{file} {model} {theta}: v_t' {}",
+                    v[1]
+                );
+                assert!(
+                    (spin[2] - w).abs() < 1e-9 * w,
+                    "{file} {model} {theta}: {spin:?}"
+                );
+                let t_spin = o.after.target.angular_velocity[2];
+                assert!((t_spin + w).abs() < 1e-9 * w, "{file} {model}: {t_spin}");
+                // the same spins in the same sense: the contact points oppose,
+                // friction acts and the spin changes (the test is not vacuous)
+                let same = Scene::from_str(
+                    &t.replace(&format!("{}]", -w), &format!("{w}]")),
+                    Format::Toml,
+                )
+                .unwrap()
+                .oblique(0.4, 0.0)
+                .unwrap();
+                let changed = same.after.sphere.angular_velocity[2];
+                assert!(
+                    (changed - w).abs() > 1e-3 * w,
+                    "{file} {model} {theta}: {changed}"
+                );
             }
         }
     }
