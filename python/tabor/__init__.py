@@ -477,7 +477,7 @@ class Scene:
 
 # --------------------------------------------------------------------------------
 # single models (the CLI subcommands), built from the keyword tables of the native
-# core (python/src/models.rs): each keyword is written once, there
+# core (python/src/models/tables.rs): each keyword is written once, there
 
 
 effective = _core.model_function(

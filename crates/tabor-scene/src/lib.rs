@@ -38,6 +38,7 @@ mod builder;
 mod combination;
 mod error;
 pub mod file;
+mod floors;
 mod friction;
 mod inputs;
 mod models;
@@ -61,6 +62,6 @@ pub use inputs::{
 };
 pub use outcome::{Effect, Outcome};
 pub use parameter::SweepParameter;
-pub use scene::{Scene, SpeedBatch};
+pub use scene::{Scene, SpeedBatch, MAX_SCENE_BYTES};
 pub use select::Sticking;
-pub use sweep::{spaced, sweep};
+pub use sweep::{spaced, sweep, sweep_streamed, Spacing, MAX_SWEEP_POINTS};

@@ -10,6 +10,7 @@ use crate::models::AdhesiveModel;
 use crate::scene::Scene;
 use tabor_dynamics::{ForceLaw, SimulationSettings};
 use tabor_maugis::MaugisDugdaleForceLaw;
+use tabor_numerics::tolerance::SIMULATION_ACCURACY_FLOOR;
 use tabor_restitution::Error;
 use tabor_tangential::oblique::{Body, NormalContact, ObliqueImpact, ObliqueOutcome};
 use tabor_tangential::Friction;
@@ -147,7 +148,9 @@ impl Scene {
             sphere_spin: impact.sphere_spin.unwrap_or([0.0; 3]),
             target_spin: impact.target_spin.unwrap_or([0.0; 3]),
         };
-        let settings = SimulationSettings::with_tolerance(self.accuracy.max(1e-9)).map_err(err)?;
+        let settings =
+            SimulationSettings::with_tolerance(self.accuracy.max(SIMULATION_ACCURACY_FLOOR))
+                .map_err(err)?;
         problem
             .simulate(law.as_mut(), v, alpha, &settings)
             .map_err(err)
@@ -170,7 +173,8 @@ impl Scene {
             return Ok(None);
         }
         let o = self.oblique(speed, angle)?;
-        let central = self.outcome_at(speed * angle.to_radians().cos())?;
+        let mut central = self.outcome_at(speed * angle.to_radians().cos())?;
+        central.warnings.extend(self.oblique_accuracy_warning());
         let json = |e: serde_json::Error| SceneError::field("scene", e.to_string());
         let mut value = serde_json::to_value(&central).map_err(json)?;
         let extra = serde_json::to_value(ObliqueFields {
