@@ -245,3 +245,59 @@ def test_scene_properties():
     assert scene.tabor_parameter is not None and scene.tabor_parameter > 0
     assert "Scene" in repr(scene)
     assert math.isfinite(scene.sticking_velocity())
+
+
+def _with_accuracy(name, accuracy):
+    """The bundled scene `name` with the top-level `accuracy` set."""
+    lines = [l for l in (SCENES / name).read_text().splitlines() if not l.startswith("accuracy")]
+    out = []
+    for l in lines:
+        out.append(l)
+        if l.startswith("name ="):
+            out.append(f"accuracy = {accuracy}")
+    return tabor.Scene.from_toml("\n".join(out) + "\n")
+
+
+def test_accuracy_floors_are_warned():
+    """A path that computes at a floor of `tabor_numerics::tolerance` coarser than
+    the scene's accuracy says so (code `accuracy-floor`); at the floor, silence."""
+
+    def floors(run):
+        with warnings.catch_warnings(record=True) as seen:
+            warnings.simplefilter("always")
+            out = run()
+        return out, [str(w.message) for w in seen if "FLOOR" in str(w.message)]
+
+    assert floors(lambda: _with_accuracy("rubber_viscoelastic.toml", "1e-12").outcome())[1] == []
+    o, named = floors(lambda: _with_accuracy("rubber_viscoelastic.toml", "1e-13").outcome())
+    assert len(named) == 1 and "MODEL_ACCURACY_FLOOR" in named[0]
+    assert any(w["code"] == "accuracy-floor" for w in o["warnings"])
+    oblique = lambda a: _with_accuracy("silica_oblique.toml", a).outcome(0.3, angle=40.0)
+    assert floors(lambda: oblique("1e-13"))[1] == []
+    o, named = floors(lambda: oblique("1e-14"))
+    assert len(named) == 1 and "SIMULATION_ACCURACY_FLOOR" in named[0]
+    assert any(w["code"] == "accuracy-floor" for w in o["warnings"])
+
+
+def test_damped_scene_through_the_scene_api():
+    """A scene with [damping] (silica_damped.toml: JKR + coeff_restitution e = 0.9)
+    through the same Scene API: the dem-damping rule names the damping loss, sticks
+    below the sticking velocity, tends to e far above it; without adhesion
+    coeff_restitution gives e exactly (Hertz); sweeps and trajectories work."""
+    s = tabor.Scene.from_path(SCENES / "silica_damped.toml")
+    vc = s.sticking_velocity()
+    assert math.isfinite(vc) and vc > 0
+    below, above = s.outcome(0.5 * vc), s.outcome(100 * vc)
+    assert below["sticks"] and below["restitution"] == 0.0
+    assert not above["sticks"] and abs(above["restitution"] - 0.9) < 0.02
+    assert above["combination"]["rule"] == "dem-damping"
+    damping = next(e for e in above["effects"] if e["name"] == "damping")
+    assert damping["used"] and damping["energy_loss"] > 0
+    sw = s.sweep("speed", np.geomspace(0.1 * vc, 10 * vc, 5))
+    assert np.all(np.isfinite(sw["restitution"]))
+    assert sw["effects.damping.used"].all()
+    tr = s.trajectory(10 * vc, tolerance=1e-9)
+    assert tr["restitution"] == pytest.approx(s.outcome(10 * vc)["restitution"], rel=1e-6)
+    hertz = tabor.Scene.from_toml(
+        (SCENES / "silica_damped.toml").read_text().replace("work_of_adhesion = 0.05", "work_of_adhesion = 0.0"))
+    assert hertz.outcome(0.3)["restitution"] == pytest.approx(0.9, abs=1e-9)

@@ -52,6 +52,7 @@ fn the_scene_builds_the_impact_a_user_would_build() {
         normal: NormalContact {
             pull_off_force: 1.5 * std::f64::consts::PI * w * 0.5 * r,
             damping: 0.0,
+            damping_exponent: 1.0,
         },
         friction: Some(Friction::sliding(
             Tangential::new(TangentialModel::MindlinDeresiewicz, 8.0 * g_star, 0.0, 0.3).unwrap(),
