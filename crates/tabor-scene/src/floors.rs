@@ -3,11 +3,9 @@
 //! warning with the code `accuracy-floor`, naming the floor.
 
 use crate::models::Plastic;
-use crate::scene::Scene;
 use crate::select::{Prepared, Selection};
 use tabor_numerics::tolerance::{
-    MICRO_SLIP_RESOLUTION, MODEL_ACCURACY_FLOOR, SIMULATION_ACCURACY_FLOOR,
-    STICKING_ACCURACY_FLOOR,
+    MICRO_SLIP_RESOLUTION, MODEL_ACCURACY_FLOOR, SIMULATION_ACCURACY_FLOOR, STICKING_ACCURACY_FLOOR,
 };
 use tabor_restitution::Warning;
 
@@ -69,36 +67,30 @@ pub(crate) fn outcome_floors(prepared: &Prepared, selection: &Selection) -> Vec<
     .collect()
 }
 
-impl Scene {
-    /// The warnings of an oblique impact ([`Scene::oblique`]) when the scene's
-    /// `accuracy` is finer than the simulation resolves
-    /// ([`SIMULATION_ACCURACY_FLOOR`], 1e-13) or, with `mindlin_deresiewicz`, than
-    /// its spring bed does ([`MICRO_SLIP_RESOLUTION`], 1e-4): the oblique reports
-    /// carry them with the central outcome's warnings.
-    pub fn oblique_accuracy_warning(&self) -> Vec<Warning> {
-        let micro_slip = self.friction().ok().flatten().is_some_and(|f| {
-            f.tangential.model == tabor_tangential::TangentialModel::MindlinDeresiewicz
-        });
-        [
-            floor_warning(
-                self.accuracy,
-                SIMULATION_ACCURACY_FLOOR,
-                "SIMULATION_ACCURACY_FLOOR",
-                "the oblique impact's simulation",
-            ),
-            micro_slip
-                .then(|| {
-                    floor_warning(
-                        self.accuracy,
-                        MICRO_SLIP_RESOLUTION,
-                        "MICRO_SLIP_RESOLUTION",
-                        "the micro-slip of mindlin_deresiewicz (a bed of 1024 springs)",
-                    )
-                })
-                .flatten(),
-        ]
-        .into_iter()
-        .flatten()
-        .collect()
-    }
+/// The floors of an oblique impact ([`crate::Scene::oblique`]) finer than the
+/// scene's `accuracy`: the simulation ([`SIMULATION_ACCURACY_FLOOR`], 1e-13) and,
+/// with `mindlin_deresiewicz` (`micro_slip`), its spring bed
+/// ([`MICRO_SLIP_RESOLUTION`], 1e-4).
+pub(crate) fn oblique_floors(accuracy: f64, micro_slip: bool) -> Vec<Warning> {
+    [
+        floor_warning(
+            accuracy,
+            SIMULATION_ACCURACY_FLOOR,
+            "SIMULATION_ACCURACY_FLOOR",
+            "the oblique impact's simulation",
+        ),
+        micro_slip
+            .then(|| {
+                floor_warning(
+                    accuracy,
+                    MICRO_SLIP_RESOLUTION,
+                    "MICRO_SLIP_RESOLUTION",
+                    "the micro-slip of mindlin_deresiewicz (a bed of 1024 springs)",
+                )
+            })
+            .flatten(),
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
 }

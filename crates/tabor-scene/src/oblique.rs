@@ -12,9 +12,9 @@ use crate::simulate::outcome_set;
 use tabor_dynamics::{ForceLaw, SimulationSettings};
 use tabor_maugis::MaugisDugdaleForceLaw;
 use tabor_numerics::tolerance::SIMULATION_ACCURACY_FLOOR;
-use tabor_restitution::Error;
+use tabor_restitution::{Error, Warning};
 use tabor_tangential::oblique::{Body, NormalContact, ObliqueImpact, ObliqueOutcome};
-use tabor_tangential::Friction;
+use tabor_tangential::{Friction, TangentialModel};
 
 /// The oblique fields added to the central-impact ones.
 #[derive(serde::Serialize)]
@@ -219,4 +219,20 @@ impl Scene {
 /// `MaugisDugdaleForceLaw::pull_off_force`, the plugin's too.
 fn maugis_pull_off(md: &tabor_maugis::MaugisDugdaleImpact) -> Result<f64, Error> {
     MaugisDugdaleForceLaw::new(md)?.pull_off_force()
+}
+
+impl Scene {
+    /// The warnings of an oblique impact ([`Scene::oblique`]) when the scene's
+    /// `accuracy` is finer than the simulation resolves
+    /// (`tabor_numerics::tolerance::SIMULATION_ACCURACY_FLOOR`, 1e-13) or, with
+    /// `mindlin_deresiewicz`, than its spring bed does (`MICRO_SLIP_RESOLUTION`,
+    /// 1e-4): the oblique reports carry them with the central outcome's warnings.
+    pub fn oblique_accuracy_warning(&self) -> Vec<Warning> {
+        let micro_slip = self
+            .friction()
+            .ok()
+            .flatten()
+            .is_some_and(|f| f.tangential.model == TangentialModel::MindlinDeresiewicz);
+        crate::floors::oblique_floors(self.accuracy, micro_slip)
+    }
 }

@@ -4,11 +4,31 @@
 
 use super::data::{same_name, Column, Data, Table};
 use super::reasons::{split_numbers, templated};
-use super::serializer::{Error, Row};
 use super::Warnings;
+use serde::ser;
+#[cfg(test)]
 use serde::Serialize;
 use serde_json::Value;
 use std::borrow::Cow;
+use std::fmt;
+
+/// Serialization can fail only on a type mismatch between rows (a bug).
+#[derive(Debug)]
+pub struct Error(pub(super) String);
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for Error {}
+
+impl ser::Error for Error {
+    fn custom<T: fmt::Display>(msg: T) -> Self {
+        Error(msg.to_string())
+    }
+}
 
 /// The columns of one chunk of records.
 #[derive(Default)]
@@ -48,24 +68,13 @@ impl Columns {
         }
     }
 
-    /// Appends one record as a row.
-    pub fn push<T: Serialize>(&mut self, record: &T) -> Result<(), Error> {
-        record.serialize(Row {
-            cols: self,
-            prefix: None,
-        })?;
-        self.valid.push(true);
-        self.end_row();
-        Ok(())
-    }
-
     /// Appends an empty row (a failed element).
     pub fn push_missing(&mut self) {
         self.valid.push(false);
         self.end_row();
     }
 
-    fn end_row(&mut self) {
+    pub(super) fn end_row(&mut self) {
         self.rows += 1;
         for c in &mut self.columns {
             let short = self.rows - c.data.len();

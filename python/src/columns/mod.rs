@@ -33,9 +33,9 @@ mod warnings;
 pub use alloc::{numpy_zeros, Fresh};
 #[cfg(test)]
 pub use chunk::field_names;
+pub use chunk::Error;
 pub use chunk::{shared_rows, Columns};
 pub use merged::Merged;
-pub use serializer::Error;
 pub use sink::Sink;
 pub use split::{split_into_py, OwnFields, OwnKind, NO_RECORD};
 pub use warnings::Warnings;

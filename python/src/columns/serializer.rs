@@ -2,29 +2,10 @@
 //! [`Columns`]: [`Row`] (a struct, nested structs flattened to dotted keys) and
 //! [`Field`] (one field's value).
 
-use super::chunk::{Scalar, COMPOUND};
+use super::chunk::{Error, Scalar, COMPOUND};
 use super::Columns;
 use serde::ser::{self, Impossible, Serialize};
 use std::borrow::Cow;
-use std::fmt;
-
-/// Serialization can fail only on a type mismatch between rows (a bug).
-#[derive(Debug)]
-pub struct Error(pub(super) String);
-
-impl fmt::Display for Error {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.0)
-    }
-}
-
-impl std::error::Error for Error {}
-
-impl ser::Error for Error {
-    fn custom<T: fmt::Display>(msg: T) -> Self {
-        Error(msg.to_string())
-    }
-}
 
 /// Serializes a record (a struct) into the current row.
 pub(super) struct Row<'a> {
@@ -306,5 +287,18 @@ impl<'a> ser::Serializer for Field<'a> {
         _: usize,
     ) -> Result<Self::SerializeStructVariant, Error> {
         compound()
+    }
+}
+
+impl Columns {
+    /// Appends one record as a row.
+    pub fn push<T: Serialize>(&mut self, record: &T) -> Result<(), Error> {
+        record.serialize(Row {
+            cols: self,
+            prefix: None,
+        })?;
+        self.valid.push(true);
+        self.end_row();
+        Ok(())
     }
 }

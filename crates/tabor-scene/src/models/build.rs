@@ -272,7 +272,7 @@ impl Models {
             _ => None,
         };
 
-        let damped = super::damped::Damped::build(scene, adhesive.as_ref(), plastic.as_ref())?;
+        let damped = super::types::Damped::build(scene, adhesive.as_ref(), plastic.as_ref())?;
         Ok(Models {
             damped,
             mass: scene.effective_mass,

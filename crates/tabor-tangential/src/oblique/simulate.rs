@@ -5,6 +5,7 @@
 use super::bed::{MicroSlipBed, MICRO_SLIP_NODES};
 use super::bodies::ObliqueImpact;
 use super::elements::*;
+use super::limits::*;
 use super::outcome::ObliqueOutcome;
 use super::state::*;
 use crate::model::TangentialModel;
@@ -31,22 +32,6 @@ pub(super) enum Event {
     FrictionOnset,
 }
 
-/// The largest rate (per time unit of the impact) of the relaxations that diverge
-/// where a contact without adhesion vanishes: the turning of a slip direction
-/// ([`turn_rate`]) and `mindlin_rescale`'s shrinking of ξ.
-pub(super) const RATE_CAP: f64 = 1e4;
-
-/// The step of the central differences of the normal law, relative to the
-/// distance to its branch end ([`Setup::difference_step`]).
-pub(super) const DIFFERENCE_STEP: f64 = 1e-5;
-
-/// The largest surface speed of an initial spin, in units of the impact speed.
-pub(super) const MAX_SURFACE_SPEED_RATIO: f64 = 1e6;
-
-/// The largest force of a friction spring at the overlap scale, in units of the
-/// normal force scale.
-pub(super) const MAX_SPRING_RATIO: f64 = 1e12;
-
 /// `x ≤ limit`, false for NaN.
 fn at_most(x: f64, limit: f64) -> bool {
     matches!(
@@ -63,10 +48,6 @@ fn r_eff_of(imp: &ObliqueImpact) -> f64 {
         imp.sphere.radius * imp.target.radius / (imp.sphere.radius + imp.target.radius)
     }
 }
-
-/// The overlap (in units of the overlap scale) up to which a contact that starts
-/// without a Coulomb limit runs without friction ([`ObliqueImpact::simulate`]).
-pub(super) const WARMUP: f64 = 1e-6;
 
 impl ObliqueImpact {
     /// Simulates the impact at relative speed `speed` (m/s) and angle `angle`
