@@ -192,8 +192,80 @@ def maugis_against_library(lam=0.5):
     return failures
 
 
+# Maw, Barber & Fawcett's steel (nu = 0.3), two equal spheres: the same chi = 3.5 as
+# MBF's sphere on a flat, hence the same tangential restitution beta(Psi)
+ST_R, ST_RHO, ST_E, ST_NU, ST_MU = 1e-3, 7800.0, 200e9, 0.3, 0.3
+ST_E_STAR = ST_E / (2 * (1 - ST_NU ** 2))
+ST_KAPPA = 2 * (1 - ST_NU) / (2 - ST_NU)
+CHI = 3.5
+# The largest gap in beta between the incremental form of Friction::step (the
+# plugin's) and the library's exact spring bed, by band of Psi: (Psi up to, gap),
+# GAP_BANDS of crates/tabor-tangential/tests/micro_slip_step.rs, which asserts them
+MICRO_SLIP_GAP_BANDS = [(1.7, 0.17), (3.5, 0.06), (math.inf, 3e-3)]
+
+
+def micro_slip_against_library():
+    """`tangential mindlin_deresiewicz` in the plugin (Thornton's incremental form)
+    against the library's exact spring bed (oblique_library ... mindlin_deresiewicz),
+    Hertz, two steel spheres at MBF's Psi = kappa tan(a)/mu from 0.1 to 10.
+
+    Tolerance: the time-step one (EVENTS impulses dt F/m*, as above) plus the model
+    gap: the two forms differ in beta by at most the band's gap g (measured and
+    asserted in Rust against the exact bed), and a change d(beta) of the contact
+    point's slip v_t0 d(beta) is an impulse m* v_t0 d(beta)/chi, which moves u_y by
+    g v_t0/chi and each spin by g v_t0 m* R/(chi I). The normal velocity u_x gets
+    the time-step tolerance only (the tangential force does not act on it but by
+    the line of centres' turn, ~(u_t dt_contact/R)^2)."""
+    failures = []
+    r_star, m = ST_R / 2, ST_RHO * 4 / 3 * math.pi * ST_R ** 3
+    m_star, inertia = m / 2, 0.4 * m * ST_R ** 2
+    v = 1.0
+    psis = [0.1, 0.3, 0.6, 1.0, 1.5, 2.5, 3.5, 5.0, 8.0, 10.0]
+    angles = [math.degrees(math.atan(p * ST_MU / ST_KAPPA)) for p in psis]
+    text = "".join(f"{ST_R} {ST_RHO} {ST_E} {ST_NU} 0 hertz 0 {v} {a!r} 0 {ST_MU} 0 0 mindlin_deresiewicz\n"
+                   for a in angles)
+    out = subprocess.run([LIBRARY], input=text, check=True, capture_output=True, text=True).stdout
+    lib = [tuple(float(x) for x in line.split()) for line in out.splitlines()]
+    t_c = 2.87 * (m_star ** 2 / (r_star * ST_E_STAR ** 2 * v)) ** 0.2
+    dt = t_c / STEPS_PER_CONTACT
+    dmax = (15 * m_star * v * v / (16 * ST_E_STAR * math.sqrt(r_star))) ** 0.4
+    f_scale = 4 / 3 * ST_E_STAR * math.sqrt(r_star) * dmax ** 1.5
+    tol_v = EVENTS * dt * f_scale / m_star
+    tol_w = EVENTS * dt * ST_MU * ST_R * f_scale / inertia
+    bodies = {"sphere_radius": ST_R, "sphere_density": ST_RHO, "target_radius": ST_R, "target_density": ST_RHO}
+    coeff = [f"plugin load \"{PLUGIN}\"", "pair_style tabor",
+             f"pair_coeff * * hertz {ST_E_STAR!r} poisson {ST_NU} tangential mindlin_deresiewicz NULL 0 {ST_MU}"]
+    print("mindlin_deresiewicz (steel, Hertz): plugin (incremental) vs library (exact bed); "
+          "beta = -(u_y + R (w1 + w2))/v_t0")
+    print(f"{'Psi':>5} {'angle':>6} {'beta plugin':>11} {'beta lib':>9} {'|du_x|':>8} {'tol':>8} "
+          f"{'|du_y|':>8} {'tol':>8} {'|dw|':>8} {'tol':>8}")
+    for psi, a, ref in zip(psis, angles, lib):
+        o = collide_oblique(coeff, bodies, v, a, dt, 1e-3 * ST_R, 12 * STEPS_PER_CONTACT)
+        s_, t_ = o["sphere"], o["target"]
+        p = (s_["velocity"][0] - t_["velocity"][0], s_["velocity"][1] - t_["velocity"][1],
+             s_["angular_velocity"][2], t_["angular_velocity"][2])
+        vt0 = v * math.sin(math.radians(a))
+        gap = next(g for top, g in MICRO_SLIP_GAP_BANDS if psi <= top)
+        tv_y = tol_v + gap * vt0 / CHI
+        tw = tol_w + gap * vt0 / CHI * m_star * ST_R / inertia
+        beta = [-(x[1] + ST_R * (x[2] + x[3])) / vt0 for x in (p, ref)]
+        dux, duy = abs(p[0] - ref[0]), abs(p[1] - ref[1])
+        dw = max(abs(p[2] - ref[2]), abs(p[3] - ref[3]))
+        print(f"{psi:5.2f} {a:6.2f} {beta[0]:+11.4f} {beta[1]:+9.4f} {dux:8.1e} {tol_v:8.1e} "
+              f"{duy:8.1e} {tv_y:8.1e} {dw:8.1e} {tw:8.1e}")
+        if not o["separated"]:
+            failures.append(f"mindlin_deresiewicz Psi {psi}: the spheres did not separate")
+        if not all(math.isfinite(x) for x in p):
+            failures.append(f"mindlin_deresiewicz Psi {psi}: not finite {p}")
+        elif dux > tol_v or duy > tv_y or dw > tw:
+            failures.append(f"mindlin_deresiewicz Psi {psi}: du_x {dux:.2e} (tol {tol_v:.2e}), du_y {duy:.2e} "
+                            f"(tol {tv_y:.2e}), dw {dw:.2e} (tol {tw:.2e})")
+    return failures
+
+
 def main():
-    failures = jkr_against_granular()
+    failures = micro_slip_against_library()
+    failures += jkr_against_granular()
     failures += maugis_against_library()
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))

@@ -51,6 +51,11 @@
 // `tangential mindlin_rescale k_t x_γ,t μ`.
 #define TABOR_TANGENTIAL_MINDLIN_RESCALE 3
 
+// `tangential mindlin_deresiewicz k_t x_γ,t μ` (k_t = 8 G*, Pa): Mindlin-Deresiewicz
+// micro-slip in Thornton (1991)'s incremental form (`tabor_tangential::Friction::step`),
+// not a LAMMPS `pair granular` model.
+#define TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ 4
+
 // [`TaborFrictionParams::rolling_model`]: none.
 #define TABOR_ROLLING_NONE 0
 
@@ -67,7 +72,7 @@
 #define TABOR_TWISTING_SDS 2
 
 // Number of doubles in a [`TaborContactHistory`].
-#define TABOR_CONTACT_HISTORY_LEN 10
+#define TABOR_CONTACT_HISTORY_LEN 16
 
 // An opaque contact model: a normal law with optional friction (create with
 // [`tabor_contact_new`], free with [`tabor_contact_free`]).
@@ -206,14 +211,24 @@ typedef struct TaborContactHistory {
   double contact;
   // The turning point (see [`TaborHistory::max_overlap`]) (m).
   double max_overlap;
-  // Accumulated tangential displacement (m).
+  // Accumulated tangential displacement (m); `mindlin_deresiewicz`: the
+  // elastic tangential force T (N, the force on body i is −T).
   double tangential[3];
-  // `mindlin_rescale`: the contact radius of the last update (m).
+  // `mindlin_rescale`: the contact radius of the last update (m);
+  // `mindlin_deresiewicz`: the Coulomb limit μ F_n0 of the last update (N).
   double tangential_contact_radius;
   // Accumulated rolling displacement (m).
   double rolling[3];
   // Accumulated twist angle (rad).
   double twisting;
+  // `mindlin_deresiewicz`: the turning point T* (N) (Thornton 1991).
+  double micro_slip_turning[3];
+  // `mindlin_deresiewicz`: the reloading turning point T** (N).
+  double micro_slip_reversal;
+  // `mindlin_deresiewicz`: 0 loading, 1 unloading, 2 reloading.
+  double micro_slip_mode;
+  // `mindlin_deresiewicz`: the no-slip stiffness k_t a of the last update (N/m).
+  double micro_slip_spring;
 } TaborContactHistory;
 
 // The forces and torques of one contact at one step.

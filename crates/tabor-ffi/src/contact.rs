@@ -29,6 +29,10 @@ pub const TABOR_TANGENTIAL_LINEAR_HISTORY: i32 = 1;
 pub const TABOR_TANGENTIAL_MINDLIN: i32 = 2;
 /// `tangential mindlin_rescale k_t x_γ,t μ`.
 pub const TABOR_TANGENTIAL_MINDLIN_RESCALE: i32 = 3;
+/// `tangential mindlin_deresiewicz k_t x_γ,t μ` (k_t = 8 G*, Pa): Mindlin-Deresiewicz
+/// micro-slip in Thornton (1991)'s incremental form (`tabor_tangential::Friction::step`),
+/// not a LAMMPS `pair granular` model.
+pub const TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ: i32 = 4;
 /// [`TaborFrictionParams::rolling_model`]: none.
 pub const TABOR_ROLLING_NONE: i32 = 0;
 /// `rolling sds k_roll γ_roll μ_roll`.
@@ -41,7 +45,7 @@ pub const TABOR_TWISTING_MARSHALL: i32 = 1;
 pub const TABOR_TWISTING_SDS: i32 = 2;
 
 /// Number of doubles in a [`TaborContactHistory`].
-pub const TABOR_CONTACT_HISTORY_LEN: usize = 10;
+pub const TABOR_CONTACT_HISTORY_LEN: usize = 16;
 
 /// Friction, rolling and twisting parameters, as LAMMPS's `pair_style granular`
 /// names them (SI units).
@@ -87,14 +91,24 @@ pub struct TaborContactHistory {
     pub contact: f64,
     /// The turning point (see [`TaborHistory::max_overlap`]) (m).
     pub max_overlap: f64,
-    /// Accumulated tangential displacement (m).
+    /// Accumulated tangential displacement (m); `mindlin_deresiewicz`: the
+    /// elastic tangential force T (N, the force on body i is −T).
     pub tangential: [f64; 3],
-    /// `mindlin_rescale`: the contact radius of the last update (m).
+    /// `mindlin_rescale`: the contact radius of the last update (m);
+    /// `mindlin_deresiewicz`: the Coulomb limit μ F_n0 of the last update (N).
     pub tangential_contact_radius: f64,
     /// Accumulated rolling displacement (m).
     pub rolling: [f64; 3],
     /// Accumulated twist angle (rad).
     pub twisting: f64,
+    /// `mindlin_deresiewicz`: the turning point T* (N) (Thornton 1991).
+    pub micro_slip_turning: [f64; 3],
+    /// `mindlin_deresiewicz`: the reloading turning point T** (N).
+    pub micro_slip_reversal: f64,
+    /// `mindlin_deresiewicz`: 0 loading, 1 unloading, 2 reloading.
+    pub micro_slip_mode: f64,
+    /// `mindlin_deresiewicz`: the no-slip stiffness k_t a of the last update (N/m).
+    pub micro_slip_spring: f64,
 }
 
 /// The geometry and motion of one contact at one time step (LAMMPS's
@@ -172,11 +186,12 @@ pub fn friction_from_params(p: &TaborFrictionParams) -> Result<Option<Friction>>
         TABOR_TANGENTIAL_LINEAR_HISTORY => TangentialModel::LinearHistory,
         TABOR_TANGENTIAL_MINDLIN => TangentialModel::Mindlin,
         TABOR_TANGENTIAL_MINDLIN_RESCALE => TangentialModel::MindlinRescale,
+        TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ => TangentialModel::MindlinDeresiewicz,
         other => {
             return Err(Error::invalid(
                 "tangential_model",
                 f64::from(other),
-                "must be one of TABOR_TANGENTIAL_NONE, _LINEAR_HISTORY, _MINDLIN, _MINDLIN_RESCALE",
+                "must be one of TABOR_TANGENTIAL_NONE, _LINEAR_HISTORY, _MINDLIN, _MINDLIN_RESCALE, _MINDLIN_DERESIEWICZ",
             ))
         }
     };
@@ -299,6 +314,10 @@ impl ContactModel {
                 tangential_contact_radius: history.tangential_contact_radius,
                 rolling: history.rolling,
                 twisting: history.twisting,
+                micro_slip_turning: history.micro_slip_turning,
+                micro_slip_reversal: history.micro_slip_reversal,
+                micro_slip_mode: history.micro_slip_mode,
+                micro_slip_spring: history.micro_slip_spring,
             };
             let kinematics = ContactKinematics {
                 normal: n,
@@ -336,6 +355,10 @@ impl ContactModel {
             history.tangential_contact_radius = fh.tangential_contact_radius;
             history.rolling = fh.rolling;
             history.twisting = fh.twisting;
+            history.micro_slip_turning = fh.micro_slip_turning;
+            history.micro_slip_reversal = fh.micro_slip_reversal;
+            history.micro_slip_mode = fh.micro_slip_mode;
+            history.micro_slip_spring = fh.micro_slip_spring;
         }
         history.contact = normal.contact;
         history.max_overlap = normal.max_overlap;

@@ -24,7 +24,7 @@
 //! With friction: [`tabor_contact_new`] takes the normal law's parameters and the
 //! friction, rolling and twisting parameters of LAMMPS's `pair_style granular`
 //! ([`TaborFrictionParams`]); [`tabor_contact_step`] advances one contact by one
-//! time step ([`TaborContactState`] in, [`TaborContactHistory`] of 10 doubles kept,
+//! time step ([`TaborContactState`] in, [`TaborContactHistory`] of 16 doubles kept,
 //! [`TaborContactForces`] out: the force and both torques). The friction models
 //! are `tabor-tangential`'s (module [`contact`]).
 //!
@@ -40,8 +40,9 @@ pub mod table;
 pub use contact::{
     friction_from_params, ContactModel, TaborContactForces, TaborContactHistory, TaborContactState,
     TaborFrictionParams, TABOR_CONTACT_HISTORY_LEN, TABOR_ROLLING_NONE, TABOR_ROLLING_SDS,
-    TABOR_TANGENTIAL_LINEAR_HISTORY, TABOR_TANGENTIAL_MINDLIN, TABOR_TANGENTIAL_MINDLIN_RESCALE,
-    TABOR_TANGENTIAL_NONE, TABOR_TWISTING_MARSHALL, TABOR_TWISTING_NONE, TABOR_TWISTING_SDS,
+    TABOR_TANGENTIAL_LINEAR_HISTORY, TABOR_TANGENTIAL_MINDLIN,
+    TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ, TABOR_TANGENTIAL_MINDLIN_RESCALE, TABOR_TANGENTIAL_NONE,
+    TABOR_TWISTING_MARSHALL, TABOR_TWISTING_NONE, TABOR_TWISTING_SDS,
 };
 pub use law::{ContactLaw, LawKind, RadiusScales, TaborForce, TaborHistory};
 

@@ -280,7 +280,7 @@ pub fn export_plugin(
     }
     // the scene's [friction] with pair granular's keywords (k_t NULL: the plugin
     // computes 8 G* from E* and `poisson nu`, for two bodies of one material)
-    let friction = scene_friction(scene)?;
+    let friction = scene_friction(scene, true)?;
     let friction_kw = friction.as_ref().map(|f| {
         let nu = scene.sphere.material.poisson_ratio();
         let null = null_stiffness_fits(scene, f, 2.0 * e_star * (1.0 - nu * nu), nu);

@@ -105,7 +105,7 @@ pub(crate) fn advance(
     };
     let old_limit = h.tangential_contact_radius;
     h.tangential_contact_radius = limit;
-    if !(k0 > 0.0) || limit == 0.0 {
+    if k0.is_nan() || k0 <= 0.0 || limit == 0.0 {
         // no contact area (the no-contact branch of Maugis-Dugdale) or no
         // limit: every spring of the bed is released
         wipe(h);

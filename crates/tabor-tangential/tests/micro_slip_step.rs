@@ -75,9 +75,11 @@ fn constant_load_follows_mindlin_deresiewicz() {
     let steps = 20000;
     let dt = 1.0;
     let ds = 0.7 * s_slide / steps as f64;
-    let mut h = ContactHistory::default();
     // the limit set at the first step without a jump: start at the load
-    h.tangential_contact_radius = l;
+    let mut h = ContactHistory {
+        tangential_contact_radius: l,
+        ..Default::default()
+    };
     let mut s = 0.0;
     let mut worst: f64 = 0.0;
     for _ in 0..steps {
@@ -116,11 +118,13 @@ fn constant_load_follows_mindlin_deresiewicz() {
 fn growing_load_sticks() {
     let f = friction(MU);
     let a = 1e-4;
-    let mut h = ContactHistory::default();
     let dt = 1.0;
     let ds = 1e-9;
     let mut n = 1.0;
-    h.tangential_contact_radius = MU * n;
+    let mut h = ContactHistory {
+        tangential_contact_radius: MU * n,
+        ..Default::default()
+    };
     for _ in 0..100 {
         n += 1.0; // μ ΔN = 0.3 N > k_t a Δs
         f.step(&slide(ds / dt), &response(a, n), dt, true, &mut h);

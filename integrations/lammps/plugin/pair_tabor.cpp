@@ -86,7 +86,9 @@ void PairTabor::settings(int narg, char ** /*arg*/)
    range h = d_n(R*)/Lambda grows as R*^(1/3)), A: Kuwabara-Kono dissipative time
    (s); the normal damping coefficient the tangential x_gamma multiplies is 2 E* A a.
    tangential, rolling, twisting: the keywords and parameters of pair_style granular
-   (TMODEL linear_history, mindlin, mindlin_rescale; k_t NULL for the Mindlin models
+   (TMODEL linear_history, mindlin, mindlin_rescale, and tabor's mindlin_deresiewicz:
+   Mindlin-Deresiewicz micro-slip in Thornton (1991)'s incremental form, its turning
+   points kept in the contact's history; k_t NULL for the Mindlin models
    means 8 G* with G* = E* (1 - nu) / (2 (2 - nu)), the value pair granular computes
    for two bodies of one material, which needs `poisson nu`).
    Every error is reported on all ranks (error->all). */
@@ -149,8 +151,12 @@ void PairTabor::coeff(int narg, char **arg)
       if (t == "linear_history") fr.tangential_model = TABOR_TANGENTIAL_LINEAR_HISTORY;
       else if (t == "mindlin") fr.tangential_model = TABOR_TANGENTIAL_MINDLIN;
       else if (t == "mindlin_rescale") fr.tangential_model = TABOR_TANGENTIAL_MINDLIN_RESCALE;
+      else if (t == "mindlin_deresiewicz") fr.tangential_model = TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ;
       else
-        error->all(FLERR, "pair tabor: unknown tangential model {} (linear_history, mindlin, mindlin_rescale)", t);
+        error->all(FLERR,
+                   "pair tabor: unknown tangential model {} (linear_history, mindlin, mindlin_rescale, "
+                   "mindlin_deresiewicz)",
+                   t);
       if (iarg < narg && strcmp(arg[iarg], "NULL") == 0) {
         if (fr.tangential_model == TABOR_TANGENTIAL_LINEAR_HISTORY)
           error->all(FLERR, "pair tabor: tangential linear_history needs a stiffness k_t (N/m), not NULL");
@@ -187,7 +193,9 @@ void PairTabor::coeff(int narg, char **arg)
   if (stiffness_null) {
     if (!have_poisson)
       error->all(FLERR, "pair tabor: tangential {} NULL needs `poisson nu` (k_t = 8 G*, G* = E* (1 - nu) / (2 (2 - nu)))",
-                 fr.tangential_model == TABOR_TANGENTIAL_MINDLIN ? "mindlin" : "mindlin_rescale");
+                 fr.tangential_model == TABOR_TANGENTIAL_MINDLIN           ? "mindlin"
+                     : fr.tangential_model == TABOR_TANGENTIAL_MINDLIN_RESCALE ? "mindlin_rescale"
+                                                                               : "mindlin_deresiewicz");
     fr.tangential_stiffness = 8.0 * p.effective_modulus * (1.0 - poisson) / (2.0 * (2.0 - poisson));
   }
   if ((fr.rolling_model != TABOR_ROLLING_NONE || fr.twisting_model != TABOR_TWISTING_NONE) &&
