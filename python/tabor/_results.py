@@ -84,7 +84,7 @@ PENALTY: Dict[str, str] = {
     "energy_error": "float",
 }
 
-EFFECTS = ("elasticity", "adhesion", "plasticity", "viscoelasticity")
+EFFECTS = ("elasticity", "adhesion", "plasticity", "viscoelasticity", "damping")
 
 SWEEP: Dict[str, str] = {
     "scene": "str",

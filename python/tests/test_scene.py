@@ -264,3 +264,27 @@ def test_oblique_outcome_with_angle():
     # angle 0 without friction is today's outcome
     plain = tabor.Scene.from_path(SCENES / "silica.toml")
     assert plain.outcome(angle=0.0) == plain.outcome()
+
+
+def test_damped_scene_through_the_scene_api():
+    """A scene with [damping] (silica_damped.toml: JKR + coeff_restitution e = 0.9)
+    through the same Scene API: the dem-damping rule names the damping loss, sticks
+    below the sticking velocity, tends to e far above it; without adhesion
+    coeff_restitution gives e exactly (Hertz); sweeps and trajectories work."""
+    s = tabor.Scene.from_path(SCENES / "silica_damped.toml")
+    vc = s.sticking_velocity()
+    assert math.isfinite(vc) and vc > 0
+    below, above = s.outcome(0.5 * vc), s.outcome(100 * vc)
+    assert below["sticks"] and below["restitution"] == 0.0
+    assert not above["sticks"] and abs(above["restitution"] - 0.9) < 0.02
+    assert above["combination"]["rule"] == "dem-damping"
+    damping = next(e for e in above["effects"] if e["name"] == "damping")
+    assert damping["used"] and damping["energy_loss"] > 0
+    sw = s.sweep("speed", np.geomspace(0.1 * vc, 10 * vc, 5))
+    assert np.all(np.isfinite(sw["restitution"]))
+    assert sw["effects.damping.used"].all()
+    tr = s.trajectory(10 * vc, tolerance=1e-9)
+    assert tr["restitution"] == pytest.approx(s.outcome(10 * vc)["restitution"], rel=1e-6)
+    hertz = tabor.Scene.from_toml(
+        (SCENES / "silica_damped.toml").read_text().replace("work_of_adhesion = 0.05", "work_of_adhesion = 0.0"))
+    assert hertz.outcome(0.3)["restitution"] == pytest.approx(0.9, abs=1e-9)

@@ -72,6 +72,7 @@ fn main() {
             normal: NormalContact {
                 pull_off_force: pull_off,
                 damping: 0.0,
+                damping_exponent: 1.0,
             },
             friction: Some(friction),
             sphere_spin: [0.0, 0.0, spin],

@@ -22,6 +22,7 @@ use tabor_scene::Scene;
 /// calibration where possible.
 pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> {
     let s = setup(scene, speed)?;
+    refuse_damping_with_adhesion(scene, s.adhesive)?;
     let mut parameters = vec![modulus_parameter(&s)];
     let mut limits = Vec::new();
     let adhesion = if s.adhesive {
@@ -52,14 +53,23 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
         None => None,
     };
     let undamped = undamped_model(&s, adhesion.as_ref().map(|a| a.gamma));
-    let model = if s.lossy.is_empty() {
+    let model = if let Some(d) = scene.damping {
+        dem_damping(undamped, d, &mut parameters)?
+    } else if s.lossy.is_empty() {
         undamped
     } else {
         let (model, eta) = calibrate_damping(&s, undamped, sticking, &mut parameters)?;
         parameters.push(eta);
         model
     };
-    let scope = if s.lossy.is_empty() && adhesion.as_ref().is_none_or(|a| a.speed_independent) {
+    // the Tsuji form on Hertz is self-similar: its restitution holds at every speed
+    let speed_independent_damping = scene.damping.is_none_or(|d| {
+        adhesion.is_none() && d.model() != Some(tabor_scene::DampingModel::Viscoelastic)
+    });
+    let scope = if s.lossy.is_empty()
+        && speed_independent_damping
+        && adhesion.as_ref().is_none_or(|a| a.speed_independent)
+    {
         Scope::SpeedIndependent
     } else {
         Scope::CalibrationSpeed
@@ -113,6 +123,63 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
         time_step: contact_time * TIME_STEP_FRACTION,
         comparison: verification.comparison,
     })
+}
+
+/// The scene's DEM damping law (`[damping]`) on the LAMMPS normal model
+/// `undamped`: `damping <model>` with the scene's value as LAMMPS reads it (η_n0,
+/// the Tsuji damping value, the restitution e), no calibration (the law is
+/// LAMMPS's own; LAMMPS documentation `pair_granular`, "Damping"); the refusal
+/// with adhesion is [`refuse_damping_with_adhesion`]'s, before any calibration.
+fn dem_damping(
+    undamped: GranularModel,
+    damping: tabor_scene::NormalDamping,
+    parameters: &mut Vec<Parameter>,
+) -> Result<GranularModel, ExportError> {
+    use crate::law::DampingModel as Lammps;
+    use tabor_scene::DampingModel as Dem;
+    let model = damping
+        .model()
+        .ok_or_else(|| model_err("a Kuwabara-Kono damping is not a [damping] law"))?;
+    let lammps = match model {
+        Dem::Viscoelastic => Lammps::Viscoelastic,
+        Dem::Tsuji => Lammps::Tsuji,
+        Dem::CoeffRestitution => Lammps::CoeffRestitution,
+    };
+    let value = damping.value();
+    parameters.push(Parameter {
+        name: "damping".into(),
+        value,
+        unit: match model {
+            Dem::Viscoelastic => "1/(m s)".into(),
+            _ => "1".into(),
+        },
+        derivation: format!(
+            "the scene's [damping] {model} as LAMMPS reads it ({}): no calibration, the law is LAMMPS's own",
+            damping.describe()
+        ),
+    });
+    Ok(GranularModel {
+        damp: value,
+        damping: lammps,
+        limit_damping: false,
+        ..undamped
+    })
+}
+
+/// LAMMPS refuses `damping tsuji` and `coeff_restitution` with `jkr` (an error at
+/// `pair_coeff`): so does the export of a scene whose adhesion enters
+/// (`adhesive`), naming the rule tabor uses instead.
+fn refuse_damping_with_adhesion(scene: &Scene, adhesive: bool) -> Result<(), ExportError> {
+    let Some(model) = scene.damping.and_then(|d| d.model()) else {
+        return Ok(());
+    };
+    if adhesive && model != tabor_scene::DampingModel::Viscoelastic {
+        return Err(crate::report::unrepresentable(
+            &format!("damping {model} with adhesion"),
+            format!("LAMMPS refuses damping {model} with a cohesive normal model (jkr, dmt: an error at pair_coeff; lammps/lammps issue 4180); tabor computes it with the Tsuji damping of the adhesive contact radius, k_n = (4/3) E* a (the dem-damping rule): use damping viscoelastic, a scene without adhesion, or the --plugin export once pair_style tabor takes a damping keyword"),
+        ));
+    }
+    Ok(())
 }
 
 /// The pull-off force of LAMMPS's `jkr` (N): 3πγR*.

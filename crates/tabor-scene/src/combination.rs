@@ -19,6 +19,10 @@ pub enum EffectKind {
     Plasticity,
     /// Viscoelasticity (5.54)-(5.100), by the correspondence principle.
     Viscoelasticity,
+    /// A DEM normal damping law of LAMMPS's `pair granular` (`[damping]`:
+    /// `viscoelastic`, `tsuji`, `coeff_restitution`) on the scene's force law
+    /// (`tabor_viscoadhesive::NormalDamping`).
+    Damping,
 }
 
 impl EffectKind {
@@ -29,6 +33,7 @@ impl EffectKind {
             EffectKind::Adhesion => "adhesion",
             EffectKind::Plasticity => "plasticity",
             EffectKind::Viscoelasticity => "viscoelasticity",
+            EffectKind::Damping => "damping",
         }
     }
 }
@@ -101,6 +106,8 @@ pub struct EffectSet {
     /// Whether the scene asks for the superposition of adhesion and plasticity
     /// (`[plasticity] adhesive_model = "superposition"`).
     pub superposition_requested: bool,
+    /// Whether a DEM damping law damps the normal force (`[damping]`).
+    pub damping: bool,
 }
 
 impl EffectSet {
@@ -110,6 +117,7 @@ impl EffectSet {
             EffectKind::Adhesion => self.adhesion = None,
             EffectKind::Plasticity => self.plasticity = None,
             EffectKind::Viscoelasticity => self.viscoelasticity = None,
+            EffectKind::Damping => self.damping = false,
             EffectKind::Elasticity => {}
         }
         self
@@ -122,6 +130,7 @@ impl EffectSet {
             EffectKind::Adhesion => self.adhesion.is_some(),
             EffectKind::Plasticity => self.plasticity.is_some(),
             EffectKind::Viscoelasticity => self.viscoelasticity.is_some(),
+            EffectKind::Damping => self.damping,
         }
     }
 }
@@ -151,6 +160,11 @@ pub enum Rule {
     /// The sum of the effects' losses, seed 000 (5.109) generalized; reported with
     /// a warning.
     Superposition,
+    /// A DEM damping law (`[damping]`) on the scene's normal force law (Hertz,
+    /// JKR, Maugis-Dugdale, an elasto-plastic law, or the adhesive interpolation
+    /// law), simulated: `F + c(m, a) ḋ` with the law's own contact radius
+    /// (tabor-viscoadhesive, "DEM damping laws").
+    Damped,
     /// Adhesion + plasticity where the adhesive-interpolation or
     /// adhesive-plastic-excess rule takes its lower bound: the superposition (5.109)
     /// of the adhesive and the non-adhesive plastic losses, which dissipates more
@@ -171,6 +185,8 @@ tabor_restitution::menu! {
     ViscousAdhesive => "viscous-adhesive",
         "adhesion + Kelvin-Voigt viscosity: adhesive force + Kuwabara-Kono force (5.66), simulated";
     Superposition => "superposition", "the sum of the effects' losses (5.109)";
+    Damped => "dem-damping",
+        "a DEM damping law on the scene's force law: F + c(m, a) v_n with its contact radius, simulated";
     SuperpositionBound => "superposition-bound",
         "adhesion + plasticity where the adhesive interpolation model dissipates less: the superposition (5.109) as its lower bound";
 }
@@ -197,6 +213,9 @@ impl Rule {
                 "tabor (crates/tabor-viscoadhesive/README.md): adhesive force + Kuwabara-Kono force (5.66) with the adhesive contact radius"
             }
             Rule::Superposition => "Willert 2020 (5.109): the losses are added",
+            Rule::Damped => {
+                "LAMMPS pair granular damping (viscoelastic, tsuji, coeff_restitution) on the scene's force law with its own contact radius, k_n = (4/3) E* a for the Tsuji form (crates/tabor-viscoadhesive/README.md)"
+            }
             Rule::SuperpositionBound => {
                 "Willert 2020 (5.109): the adhesive and plastic losses added, the lower bound of the adhesive interpolation rules where the adhesive interpolation model (5.111)-(5.126) dissipates less (crates/tabor-scene/README.md)"
             }
@@ -227,6 +246,11 @@ pub struct Refusal {
 /// | any | any | any (plasticity and viscoelasticity) | superposition |
 /// | graded | any | – or any | refused (no plastic or viscoelastic model of graded media) |
 /// | – or any | – or any | two relaxation times | refused |
+///
+/// With a DEM damping law (`[damping]`) every set is `dem-damping` (the damped
+/// force law of the other effects, simulated), except those without one force
+/// law (adhesion + plasticity other than JKR fixed grip + interpolation, graded
+/// targets), which are refused.
 pub fn rule(set: &EffectSet) -> Result<Rule, Refusal> {
     use AdhesionKind::*;
     use PlasticityKind::*;
@@ -249,6 +273,9 @@ pub fn rule(set: &EffectSet) -> Result<Rule, Refusal> {
             message: "two viscous bodies with different relaxation times 4η/M: the contact is a four-parameter medium that no tabor model solves; give equal relaxation times, or drop the viscosity of the body whose relaxation time is negligible against the contact time".into(),
         });
     }
+    if set.damping {
+        return damped_rule(set);
+    }
     let n = usize::from(set.adhesion.is_some())
         + usize::from(set.plasticity.is_some())
         + usize::from(set.viscoelasticity.is_some());
@@ -270,6 +297,36 @@ pub fn rule(set: &EffectSet) -> Result<Rule, Refusal> {
     })
 }
 
+/// The rule of a scene with a DEM damping law: the damped force law of its other
+/// effects, when they have one (Hertz, JKR, Maugis-Dugdale, an elasto-plastic
+/// law, JKR fixed grip + the interpolation model's adhesive law); else refused.
+fn damped_rule(set: &EffectSet) -> Result<Rule, Refusal> {
+    use AdhesionKind::*;
+    if set.viscoelasticity.is_some() {
+        return Err(Refusal {
+            effect: EffectKind::Damping,
+            message: "a DEM damping law with a viscosity: each damps the normal contact; keep one"
+                .into(),
+        });
+    }
+    if set.graded {
+        return Err(Refusal {
+            effect: EffectKind::Damping,
+            message: "a DEM damping law on a graded target: JKR on a graded medium has no time-domain force law to damp".into(),
+        });
+    }
+    match (set.adhesion, set.plasticity) {
+        (_, None) | (None, Some(_)) => Ok(Rule::Damped),
+        (Some(JkrFixedGrip), Some(PlasticityKind::Interpolation)) if !set.superposition_requested => {
+            Ok(Rule::Damped)
+        }
+        _ => Err(Refusal {
+            effect: EffectKind::Damping,
+            message: "a DEM damping law with adhesion and plasticity needs one force law of both: only JKR (fixed grip) with the interpolation model has one (the adhesive interpolation model (5.111)-(5.126)); the other combinations are sums of losses".into(),
+        }),
+    }
+}
+
 /// The rule that produced an outcome, as reported.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Combination {
@@ -288,6 +345,7 @@ impl Combination {
             EffectKind::Adhesion,
             EffectKind::Plasticity,
             EffectKind::Viscoelasticity,
+            EffectKind::Damping,
         ]
         .into_iter()
         .filter(|e| set.contains(*e))

@@ -30,6 +30,25 @@ pub struct SceneFile {
     /// Friction, rolling and twisting resistance (optional; LAMMPS `pair granular`
     /// sub-models), for the oblique impact.
     pub friction: Option<FrictionFile>,
+    /// A DEM normal damping law (optional; LAMMPS `pair granular` `damping`).
+    pub damping: Option<DampingFile>,
+}
+
+/// The `[damping]` section: a DEM normal damping law of LAMMPS's `pair granular`
+/// (documentation `pair_granular`, "Damping"), applied to the scene's normal force
+/// law (`tabor_viscoadhesive::NormalDamping`).
+#[derive(Clone, Debug, Default, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct DampingFile {
+    /// "viscoelastic", "tsuji" or "coeff_restitution" (LAMMPS `pair_granular`,
+    /// "Damping").
+    pub model: String,
+    /// `viscoelastic`: η_n0 (1/(m s)), `F = η_n0 m* a v_n`; `tsuji`: the damping
+    /// value (read as a restitution by Tsuji's polynomial), in (0, 1].
+    pub coefficient: Option<f64>,
+    /// `coeff_restitution`: the restitution e, in (0, 1] (LAMMPS reads it the
+    /// same way).
+    pub restitution: Option<f64>,
 }
 
 /// The `[friction]` section: LAMMPS `pair granular`'s tangential, rolling and

@@ -3,7 +3,7 @@
 //! model needs (seed 000, introduction of chapter 5).
 
 use crate::error::{in_field, SceneError};
-use crate::file::{AdhesionFile, BodyFile, GradationFile, PlasticityFile, SceneFile};
+use crate::file::{AdhesionFile, BodyFile, DampingFile, GradationFile, PlasticityFile, SceneFile};
 use serde::Serialize;
 use tabor_jkr::SeparationRule;
 use tabor_maugis::units::{
@@ -14,6 +14,7 @@ use tabor_restitution::effective::{
     effective_modulus, effective_radius, reduced_mass, sphere_mass,
 };
 use tabor_restitution::{validate, ElasticMaterial, Error};
+use tabor_viscoadhesive::{DampingModel, NormalDamping};
 
 /// The default requested relative accuracy.
 pub const DEFAULT_ACCURACY: f64 = tabor_numerics::tolerance::ACCURACY;
@@ -78,6 +79,8 @@ pub(crate) struct Inputs {
     pub effective_modulus: f64,
     pub effective_radius: f64,
     pub effective_mass: f64,
+    /// The DEM normal damping law of `[damping]`, when given.
+    pub damping: Option<NormalDamping>,
 }
 
 impl Inputs {
@@ -132,6 +135,10 @@ impl Inputs {
                 ));
             }
         }
+        let damping = match &data.damping {
+            None => None,
+            Some(d) => Some(damping(d, e, &sphere, &target)?),
+        };
         Ok(Inputs {
             sphere,
             target,
@@ -142,6 +149,7 @@ impl Inputs {
             effective_modulus: e,
             effective_radius: r,
             effective_mass: m,
+            damping,
         })
     }
 
@@ -344,6 +352,60 @@ fn adhesion(a: &AdhesionFile, e: f64, r: f64) -> Result<Adhesion, SceneError> {
         range,
         separation,
     })
+}
+
+/// The `[damping]` section: the model's name (its menu), its one value
+/// (`coefficient` for `viscoelastic` and `tsuji`, `restitution` for
+/// `coeff_restitution`) and the refusal of a scene that also gives a viscosity
+/// (a DEM damping law is not a material model: the two would damp twice).
+/// LAMMPS documentation `pair_granular`, "Damping".
+fn damping(
+    d: &DampingFile,
+    effective_modulus: f64,
+    sphere: &Body,
+    target: &Body,
+) -> Result<NormalDamping, SceneError> {
+    let model: DampingModel = choice(Some(d.model.as_str()), "damping.model")?;
+    if let Some(body) = [("sphere", sphere), ("target", target)]
+        .iter()
+        .find_map(|(name, b)| b.viscosity.is_some().then_some(*name))
+    {
+        return Err(SceneError::field(
+            "damping",
+            format!(
+                "[damping] (a DEM damping law, model \"{model}\") and {body}.viscosity (a viscoelastic material model) are both given: each damps the normal contact, together they would damp it twice; keep one"
+            ),
+        ));
+    }
+    let (key, value, other) = match model {
+        DampingModel::CoeffRestitution => {
+            ("restitution", d.restitution, ("coefficient", d.coefficient))
+        }
+        DampingModel::Viscoelastic | DampingModel::Tsuji => {
+            ("coefficient", d.coefficient, ("restitution", d.restitution))
+        }
+    };
+    if other.1.is_some() {
+        return Err(SceneError::field(
+            format!("damping.{}", other.0),
+            format!("does not apply to model \"{model}\": give {key}"),
+        ));
+    }
+    let value = value.ok_or_else(|| {
+        SceneError::field(
+            "damping",
+            format!(
+                "{key} is required for model \"{model}\" ({})",
+                match model {
+                    DampingModel::Viscoelastic => "eta_n0 in 1/(m s): F = eta_n0 m* a v_n",
+                    DampingModel::Tsuji =>
+                        "the damping value in (0, 1], read by Tsuji's polynomial",
+                    DampingModel::CoeffRestitution => "the restitution e in (0, 1]",
+                }
+            ),
+        )
+    })?;
+    NormalDamping::dem(model, value, effective_modulus).map_err(in_field("damping", key))
 }
 
 fn plasticity(

@@ -55,7 +55,7 @@ pub use combination::{
     ViscoKind,
 };
 pub use error::{SceneError, SceneErrorKind};
-pub use file::{Format, FrictionFile, ParseError, SceneFile, SdsFile, TwistingFile};
+pub use file::{DampingFile, Format, FrictionFile, ParseError, SceneFile, SdsFile, TwistingFile};
 pub use inputs::{
     Adhesion, AdhesionRange, AdhesivePlasticity, Body, PlasticModel, DEFAULT_ACCURACY,
 };
@@ -64,3 +64,4 @@ pub use parameter::SweepParameter;
 pub use scene::{Scene, SpeedBatch};
 pub use select::Sticking;
 pub use sweep::{spaced, sweep};
+pub use tabor_viscoadhesive::{DampingModel, NormalDamping};

@@ -8,6 +8,7 @@ use crate::error::{impact_speed, SceneError};
 use crate::friction::{check_angle, friction_of};
 use crate::models::AdhesiveModel;
 use crate::scene::Scene;
+use crate::simulate::outcome_set;
 use tabor_dynamics::{ForceLaw, SimulationSettings};
 use tabor_maugis::MaugisDugdaleForceLaw;
 use tabor_restitution::Error;
@@ -64,7 +65,9 @@ impl Scene {
     /// (`tabor_tangential::oblique`) through the normal force law of the model the
     /// scene selects at the normal speed `v cos α` (Hertz, JKR with the scene's
     /// separation rule, Maugis-Dugdale, the elasto-plastic laws, the
-    /// viscous-adhesive model with its Kuwabara-Kono damping), with the scene's
+    /// viscous-adhesive model with its Kuwabara-Kono damping, and any of these with
+    /// the scene's `[damping]`: its normal damping `c a^β ḋ`, β = 1 for
+    /// `viscoelastic`, 1/2 for the Tsuji form), with the scene's
     /// friction (none: frictionless) and initial spins. Combinations that are sums
     /// of losses without a force law are refused with a message naming them.
     ///
@@ -81,14 +84,21 @@ impl Scene {
         let models = prepared.models();
         let adhesive = outcome.combination.effects.contains(&EffectKind::Adhesion);
         let err = SceneError::model;
-        let (mut law, damping): (Box<dyn ForceLaw>, f64) = match rule {
+        let (mut law, (damping, damping_exponent)): (Box<dyn ForceLaw>, (f64, f64)) = match rule {
             Rule::ViscousAdhesive => {
                 let m = models
                     .viscous_adhesive
                     .as_ref()
                     .ok_or_else(|| SceneError::field("scene", "no viscous-adhesive model"))?;
                 let law = m.force_law();
-                (Box::new(law.inner().clone()), 2.0 * law.contact_viscosity())
+                (
+                    Box::new(law.inner().clone()),
+                    (2.0 * m.contact_viscosity(), 1.0),
+                )
+            }
+            Rule::Damped => {
+                let (law, damping) = models.damped_parts(&outcome_set(&outcome))?;
+                (law, damping.power_law(self.effective_mass))
             }
             Rule::AdhesiveInterpolation
             | Rule::AdhesivePlasticExcess
@@ -103,9 +113,10 @@ impl Scene {
                     ),
                 }))
             }
-            _ => (prepared.force_law(&outcome)?, 0.0),
+            _ => (prepared.force_law(&outcome)?, (0.0, 1.0)),
         };
         let pull_off_force = if adhesive || rule == Rule::ViscousAdhesive {
+            // the adhesive interpolation law's pull-off is its JKR one
             match models.adhesive.as_ref().map(|a| &a.model) {
                 Some(AdhesiveModel::Jkr(_)) | None => {
                     let w = self.adhesion.as_ref().map_or(0.0, |a| a.work_of_adhesion);
@@ -142,6 +153,7 @@ impl Scene {
             normal: NormalContact {
                 pull_off_force,
                 damping,
+                damping_exponent,
             },
             friction: self.friction()?,
             sphere_spin: impact.sphere_spin.unwrap_or([0.0; 3]),

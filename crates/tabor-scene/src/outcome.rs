@@ -90,7 +90,7 @@ fn effect_list(prepared: &Prepared, selection: &Selection, kinetic: f64) -> Vec<
         model: Some(models.elastic.name()),
         energy_loss: Some(0.0),
     }];
-    let given: [(EffectKind, Option<String>, Option<String>, &str); 3] = [
+    let given: [(EffectKind, Option<String>, Option<String>, &str); 4] = [
         (
             EffectKind::Adhesion,
             models.adhesive.as_ref().map(|a| a.model.model().name()),
@@ -114,6 +114,15 @@ fn effect_list(prepared: &Prepared, selection: &Selection, kinetic: f64) -> Vec<
             models.visco.as_ref().map(|v| v.model.name()),
             models.visco.as_ref().map(|v| v.why.clone()),
             "no viscosity given",
+        ),
+        (
+            EffectKind::Damping,
+            models.damped.as_ref().map(|d| d.damping.describe()),
+            models.damped.as_ref().map(|_| {
+                "[damping]: a DEM damping law (LAMMPS pair granular) on the scene's force law"
+                    .to_string()
+            }),
+            "no [damping] section",
         ),
     ];
     for (kind, model, why, absent) in given {

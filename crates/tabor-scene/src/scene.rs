@@ -12,6 +12,7 @@ use rayon::prelude::*;
 use std::path::Path;
 use tabor_dynamics::{ForceLaw, ImpactSimulation, SimulationSettings};
 use tabor_restitution::validate;
+use tabor_viscoadhesive::NormalDamping;
 
 /// A validated scene. Its fields are read-only views of the validated inputs: a
 /// scene with other inputs is made by [`Scene::with_parameter`],
@@ -47,6 +48,9 @@ pub struct Scene {
     pub effective_radius: f64,
     /// Effective (reduced) mass m (kg).
     pub effective_mass: f64,
+    /// The DEM normal damping law of `[damping]`, when given (LAMMPS
+    /// `pair granular` `damping`; `tabor_viscoadhesive::NormalDamping`).
+    pub damping: Option<NormalDamping>,
 }
 
 impl Scene {
@@ -74,6 +78,7 @@ impl Scene {
             effective_modulus: inputs.effective_modulus,
             effective_radius: inputs.effective_radius,
             effective_mass: inputs.effective_mass,
+            damping: inputs.damping,
         })
     }
 
@@ -237,6 +242,7 @@ impl Scene {
             effective_modulus: self.effective_modulus,
             effective_radius: self.effective_radius,
             effective_mass: self.effective_mass,
+            damping: self.damping,
         }
     }
 

@@ -467,6 +467,7 @@ impl ImpactModel for SceneModel<'_, '_> {
         let c = m.candidates;
         c.plasticity.is_none()
             && c.viscoelasticity.is_none()
+            && !c.damping
             && m.adhesive
                 .as_ref()
                 .is_some_and(|a| a.model.model().loss_is_speed_independent())
@@ -484,10 +485,14 @@ impl ImpactModel for SceneModel<'_, '_> {
         }
     }
     /// The lowest validity limit of the models the scene can use (the
-    /// small-strain limit of the simulated viscous-adhesive model).
+    /// small-strain limit of the simulated viscous-adhesive model, or of the
+    /// damped adhesive one).
     fn speed_limit(&self) -> Option<SpeedLimit> {
         let m = self.prepared.models();
-        m.viscous_adhesive.as_ref().and_then(|v| v.speed_limit())
+        m.viscous_adhesive
+            .as_ref()
+            .or(m.damped.as_ref().and_then(|d| d.adhesive.as_ref()))
+            .and_then(|v| v.speed_limit())
     }
 }
 

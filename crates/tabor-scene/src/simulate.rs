@@ -20,6 +20,20 @@ fn err(e: Error) -> SceneError {
     SceneError::model(e)
 }
 
+/// The effects an outcome used, as the set its damped law is built from (the
+/// kinds that choose the law: adhesion's and plasticity's from the scene).
+pub(crate) fn outcome_set(outcome: &Outcome) -> crate::combination::EffectSet {
+    let uses = |e| outcome.combination.effects.contains(&e);
+    crate::combination::EffectSet {
+        adhesion: uses(EffectKind::Adhesion)
+            .then_some(crate::combination::AdhesionKind::JkrFixedGrip),
+        plasticity: uses(EffectKind::Plasticity)
+            .then_some(crate::combination::PlasticityKind::Interpolation),
+        damping: uses(EffectKind::Damping),
+        ..Default::default()
+    }
+}
+
 /// The force law the trajectory simulates.
 struct Law {
     law: Box<dyn ForceLaw>,
@@ -102,6 +116,7 @@ impl Prepared<'_> {
                 .adhesive_interpolation
                 .as_ref()
                 .map(|a| Box::new(a.force_law()) as Box<dyn ForceLaw>),
+            Rule::Damped => Some(models.damped_law(&outcome_set(outcome))?),
             Rule::ViscousAdhesive => models
                 .viscous_adhesive
                 .as_ref()

@@ -242,6 +242,13 @@ fn trajectory_and_impact_agree_for_every_rule() {
             )),
             5.0,
         ), // superposition
+        (bundled("silica_damped.toml"), 0.5), // dem-damping (JKR + coeff_restitution)
+        (
+            scene(&format!(
+                "{steel}[adhesion]\nwork_of_adhesion = 0.5\n[damping]\nmodel = \"tsuji\"\ncoefficient = 0.8\n"
+            )),
+            5.0,
+        ), // dem-damping (the adhesive interpolation law + tsuji)
     ];
     for (s, v) in &cases {
         seen.push(trajectory_agrees(s, *v, 1e-5));

@@ -135,6 +135,7 @@ fn every_cell_of_the_table_has_one_rule() {
                         viscoelasticity,
                         graded,
                         superposition_requested,
+                        damping: false,
                     };
                     let got = rule(&set);
                     match expected(&set) {

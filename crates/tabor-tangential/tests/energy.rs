@@ -69,6 +69,7 @@ fn run(
                 0.0
             },
             damping,
+            damping_exponent: 1.0,
         },
         friction: Some(friction),
         sphere_spin: axis.map(|c| c * spin),

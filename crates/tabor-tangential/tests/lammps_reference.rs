@@ -29,6 +29,7 @@ fn silica_10_degrees_matches_lammps() {
         normal: NormalContact {
             pull_off_force: 1.5 * std::f64::consts::PI * w * reff,
             damping: 0.0,
+            damping_exponent: 1.0,
         },
         friction: Some(friction),
         sphere_spin: [0.0; 3],

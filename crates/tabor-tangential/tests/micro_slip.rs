@@ -215,6 +215,7 @@ fn gross_sliding_is_the_same_for_every_coulomb_model_with_adhesion() {
                 normal: NormalContact {
                     pull_off_force: 1.5 * std::f64::consts::PI * w * 0.5 * r,
                     damping: 0.0,
+                    damping_exponent: 1.0,
                 },
                 friction: Some(Friction::sliding(
                     Tangential::new(model, 8.0 * shear.modulus(), 0.0, 0.05).unwrap(),

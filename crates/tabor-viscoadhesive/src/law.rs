@@ -1,6 +1,7 @@
 //! The viscous wrapper: any [`ForceLaw`] plus the Kuwabara-Kono viscous force of
 //! its own contact radius, and the energy criterion for sticking.
 
+use crate::damping::NormalDamping;
 use tabor_dynamics::{BranchChange, BranchCurve, CurvePoint, ForceLaw};
 use tabor_jkr::JkrForceLaw;
 use tabor_maugis::MaugisDugdaleForceLaw;
@@ -46,6 +47,9 @@ const TRAP_SAMPLES: usize = 32;
 
 impl SeparationPotential for JkrForceLaw {}
 impl SeparationPotential for MaugisDugdaleForceLaw {}
+/// Any boxed law (Hertz, the elasto-plastic laws): no potential known, so the
+/// wrapper sticks only where the inner law does (README eq. (V4) unused).
+impl SeparationPotential for Box<dyn ForceLaw> {}
 
 /// An impact that starts without the energy to separate (README eq. (V4)) can never
 /// separate: its record ends once the kinetic energy has fallen below this fraction
@@ -56,12 +60,17 @@ impl SeparationPotential for MaugisDugdaleForceLaw {}
 /// far shorter inertial one.
 const CREEP_END: f64 = 1.0 - 1e-6;
 
-/// An inner force law plus the viscous force of a Kelvin-Voigt contact modulus
-/// `E*(s) = E* + η_c s` acting over the inner law's contact radius:
+/// An inner force law plus a normal damping force `c(m, a) ḋ` over the inner
+/// law's contact radius ([`NormalDamping`]): the viscous force of a Kelvin-Voigt
+/// contact modulus `E*(s) = E* + η_c s`,
 ///
 /// ```text
 /// F(d, ḋ) = F_inner(d, ḋ; history) + 2 η_c a_inner(d, ḋ) ḋ      (README, (V1))
 /// ```
+///
+/// or one of LAMMPS's DEM damping laws (`viscoelastic`, `tsuji`,
+/// `coeff_restitution`; README, "DEM damping laws"), with every convention below
+/// unchanged (the trap test needs only that `c` grows with the contact radius).
 ///
 /// For the Hertz law (`a = √(Rd)`) and an incompressible Kelvin-Voigt half-space
 /// (`E* = 4G`, `η_c = 4η`) this is exactly the Kuwabara-Kono force of seed 000
@@ -92,7 +101,7 @@ const CREEP_END: f64 = 1.0 - 1e-6;
 #[derive(Clone, Debug, PartialEq)]
 pub struct ViscousDamping<L> {
     inner: L,
-    contact_viscosity: f64,
+    damping: NormalDamping,
     /// m (kg), set by `begin_impact`.
     mass: f64,
     /// length per energy for the energy branch end: L / (m v0²/2) (m/J).
@@ -109,21 +118,26 @@ impl<L: SeparationPotential> ViscousDamping<L> {
     /// modulus `E*(s) = E* + η_c s` (finite, > 0; incompressible Kelvin-Voigt
     /// half-space: `η_c = 4η`). Seed 000 eq. (5.66) with `8η = 2η_c`.
     pub fn new(inner: L, contact_viscosity: f64) -> Result<Self> {
-        Ok(ViscousDamping {
+        Self::damped(
             inner,
-            contact_viscosity: validate::positive("contact_viscosity", contact_viscosity)?,
-            mass: f64::NAN,
-            length_per_energy: f64::NAN,
-            kinetic_energy: f64::NAN,
-            doomed: false,
-        })
+            NormalDamping::KuwabaraKono {
+                contact_viscosity: validate::positive("contact_viscosity", contact_viscosity)?,
+            },
+        )
     }
 
-    /// `new` for an η_c validated before.
-    pub(crate) fn from_validated(inner: L, contact_viscosity: f64) -> Self {
+    /// Wraps `inner` with the normal damping `damping` (Kuwabara-Kono, or a DEM
+    /// law of LAMMPS's `pair granular`; its values checked again). README
+    /// eq. (V1) and "DEM damping laws".
+    pub fn damped(inner: L, damping: NormalDamping) -> Result<Self> {
+        Ok(Self::from_validated(inner, damping.validated()?))
+    }
+
+    /// `damped` for a damping validated before.
+    pub(crate) fn from_validated(inner: L, damping: NormalDamping) -> Self {
         ViscousDamping {
             inner,
-            contact_viscosity,
+            damping,
             mass: f64::NAN,
             length_per_energy: f64::NAN,
             kinetic_energy: f64::NAN,
@@ -136,14 +150,23 @@ impl<L: SeparationPotential> ViscousDamping<L> {
         &self.inner
     }
 
-    /// The viscous coefficient η_c (Pa s) of `E*(s) = E* + η_c s`.
-    pub fn contact_viscosity(&self) -> f64 {
-        self.contact_viscosity
+    /// The normal damping law (Kuwabara-Kono (5.66) or a LAMMPS DEM law, README
+    /// "DEM damping laws").
+    pub fn damping(&self) -> NormalDamping {
+        self.damping
     }
 
-    /// The viscous force `2 η_c a ḋ` (N, repulsive > 0) at overlap `overlap` (m)
-    /// and rate `overlap_rate` (m/s) on the current branch; 0 out of contact.
-    /// README eq. (V1), seed 000 eq. (5.66).
+    /// The damping coefficient `c` (N s/m) of the force `c ḋ` at contact radius
+    /// `contact_radius` (m), in the effective mass of the current impact (NaN
+    /// before [`ForceLaw::begin_impact`] for the laws that need the mass); seed 000
+    /// eq. (5.72), [`NormalDamping::coefficient`].
+    pub fn damping_coefficient(&self, contact_radius: f64) -> f64 {
+        self.damping.coefficient(self.mass, contact_radius)
+    }
+
+    /// The viscous force `c ḋ` (N, repulsive > 0; `2 η_c a ḋ` for Kuwabara-Kono) at
+    /// overlap `overlap` (m) and rate `overlap_rate` (m/s) on the current branch;
+    /// 0 out of contact. README eq. (V1), seed 000 eq. (5.66).
     pub fn viscous_force(&self, overlap: f64, overlap_rate: f64) -> Result<f64> {
         if !self.inner.in_contact() {
             return Ok(0.0);
@@ -167,11 +190,16 @@ impl<L: SeparationPotential> ViscousDamping<L> {
     }
 
     fn viscous_force_at(&self, contact_radius: f64, overlap_rate: f64) -> f64 {
-        tabor_visco::kuwabara_kono::viscous_force(
-            self.contact_viscosity,
-            contact_radius,
-            overlap_rate,
-        )
+        match self.damping {
+            NormalDamping::KuwabaraKono { contact_viscosity } => {
+                tabor_visco::kuwabara_kono::viscous_force(
+                    contact_viscosity,
+                    contact_radius,
+                    overlap_rate,
+                )
+            }
+            other => other.force(self.mass, contact_radius, overlap_rate),
+        }
     }
 
     /// The energy criterion as a length (> 0 while the body can still separate).
@@ -193,7 +221,8 @@ impl<L: SeparationPotential> ViscousDamping<L> {
     /// Whether the body, at rest at its turning point `d*` (m), is trapped between
     /// the equilibrium d_eq of the contact branch and d*, so that it never reaches
     /// the separation point (README eq. (V5)). With `s = d − d_eq`,
-    /// `m s̈ = −F − c ṡ`, `c = 2 η_c a(d) ≥ c0 = 2 η_c a(d_eq)` (a grows with d)
+    /// `m s̈ = −F − c ṡ`, `c = c(a(d)) ≥ c0 = c(a(d_eq))` (a grows with d, c with a;
+    /// `2 η_c a` for Kuwabara-Kono)
     /// and `0 ≤ F ≤ k s` on [d_eq, d*]: if `c0² ≥ 4 m k`, a λ with
     /// `(c0/m − λ) λ ≥ k/m` exists, on the line `ṡ = −λ s` the field gives
     /// `d(ṡ + λs)/dt ≥ −F/m + (c0/m − λ) λ s ≥ 0`, so the body (starting at
@@ -215,7 +244,7 @@ impl<L: SeparationPotential> ViscousDamping<L> {
         if span.is_nan() || span <= 0.0 {
             return Ok(false);
         }
-        let damping = 2.0 * self.contact_viscosity * self.inner.contact_radius(d_eq, 0.0)?;
+        let damping = self.damping_coefficient(self.inner.contact_radius(d_eq, 0.0)?);
         let mut stiffness = 0.0f64;
         for i in 1..=TRAP_SAMPLES {
             let s = span * i as f64 / TRAP_SAMPLES as f64;
@@ -318,11 +347,7 @@ impl<L: SeparationPotential> BranchCurve for ViscousDamping<L> {
 
 impl<L: SeparationPotential> ForceLaw for ViscousDamping<L> {
     fn name(&self) -> String {
-        format!(
-            "{} + viscous damping (eta_c = {:e} Pa s)",
-            self.inner.name(),
-            self.contact_viscosity
-        )
+        format!("{} + {}", self.inner.name(), self.damping.describe())
     }
 
     /// The inner law's scale (the elastic d_max or the adhesive depth scale):

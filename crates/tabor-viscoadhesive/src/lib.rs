@@ -11,7 +11,9 @@
 //! ```
 //!
 //! - [`ViscousDamping`]: any `tabor_dynamics::ForceLaw` plus `2 η_c a ḋ`, every hook
-//!   and branch delegated to the inner law;
+//!   and branch delegated to the inner law; or plus a DEM damping law of LAMMPS's
+//!   `pair granular` ([`NormalDamping`]: `viscoelastic`, `tsuji`,
+//!   `coeff_restitution`, on the adhesive contact radius where LAMMPS refuses);
 //! - [`ViscoadhesiveImpact`]: the model (E*, R, m, Δγ, [`Adhesion`], η_c, tolerance)
 //!   as a `tabor_restitution::ImpactModel` (loss `(1 − ε²) m v0²/2` from
 //!   `simulate_impact`), with the trajectory record and the comparison with the
@@ -24,11 +26,13 @@
 //! Δγ → 0 and η_c → 0 are in the crate's README.
 
 mod adhesive;
+pub mod damping;
 mod law;
 mod model;
 pub mod table;
 
 pub use adhesive::AdhesiveForceLaw;
+pub use damping::{coeff_restitution_alpha, tsuji_alpha, DampingModel, NormalDamping};
 pub use law::{SeparationPotential, ViscousDamping};
 pub use model::{Adhesion, AdhesiveImpact, Superposition, ViscoadhesiveImpact};
 pub use table::SpeedTable;

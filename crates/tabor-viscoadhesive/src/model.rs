@@ -2,6 +2,7 @@
 //! Kuwabara-Kono damping, simulated in the time domain.
 
 use crate::adhesive::{AdhesiveForceLaw, LawSpec};
+use crate::damping::NormalDamping;
 use crate::law::SeparationPotential;
 use crate::law::ViscousDamping;
 use crate::table::{SharedTable, SpeedTable, Tabulated};
@@ -79,7 +80,7 @@ pub struct ViscoadhesiveImpact {
     effective_radius: f64,
     work_of_adhesion: f64,
     effective_mass: f64,
-    contact_viscosity: f64,
+    damping: NormalDamping,
     adhesion: Adhesion,
     tolerance: f64,
     settings: SimulationSettings,
@@ -137,6 +138,28 @@ impl ViscoadhesiveImpact {
     /// Seed 000 eqs. (5.33)-(5.36) / (5.40)-(5.46) plus (5.66); README eq. (V1).
     pub fn of(adhesive: AdhesiveImpact, contact_viscosity: f64, tolerance: f64) -> Result<Self> {
         let eta = validate::positive("contact_viscosity", contact_viscosity)?;
+        Self::damped(
+            adhesive,
+            NormalDamping::KuwabaraKono {
+                contact_viscosity: eta,
+            },
+            tolerance,
+        )
+    }
+
+    /// The model on an elastic adhesive impact (as [`ViscoadhesiveImpact::of`])
+    /// with the normal damping `damping`: Kuwabara-Kono, or one of LAMMPS's DEM
+    /// damping laws acting on the adhesive contact radius (README, "DEM damping
+    /// laws": `viscoelastic` `η_n0 m a ḋ`; `tsuji`, `coeff_restitution`
+    /// `α √(m (4/3) E* a) ḋ`). `tolerance` as in [`ViscoadhesiveImpact::new`].
+    ///
+    /// Seed 000 eqs. (5.33)-(5.36) / (5.40)-(5.46) plus (5.66) or (5.72)-(5.73).
+    pub fn damped(
+        adhesive: AdhesiveImpact,
+        damping: NormalDamping,
+        tolerance: f64,
+    ) -> Result<Self> {
+        let damping = damping.validated()?;
         let tol = validate::tolerance("tolerance", tolerance)?;
         let mut settings = SimulationSettings::with_tolerance(tol)?;
         settings.record_trajectory = false;
@@ -173,7 +196,7 @@ impl ViscoadhesiveImpact {
             effective_radius: sphere.effective_radius(),
             work_of_adhesion: sphere.work_of_adhesion(),
             effective_mass: m,
-            contact_viscosity: eta,
+            damping,
             adhesion,
             tolerance: tol,
             settings,
@@ -232,9 +255,18 @@ impl ViscoadhesiveImpact {
         self.adhesion
     }
 
-    /// The viscous coefficient η_c (Pa s).
+    /// The viscous coefficient η_c (Pa s) of the Kuwabara-Kono form `2 η_c a ḋ`
+    /// (`viscoelastic`: `η_n0 m/2`), seed 000 eq. (5.66); NaN for the Tsuji form.
     pub fn contact_viscosity(&self) -> f64 {
-        self.contact_viscosity
+        self.damping
+            .contact_viscosity(self.effective_mass)
+            .unwrap_or(f64::NAN)
+    }
+
+    /// The normal damping law (Kuwabara-Kono (5.66) or a LAMMPS DEM law, README
+    /// "DEM damping laws").
+    pub fn damping(&self) -> NormalDamping {
+        self.damping
     }
 
     /// The requested relative accuracy of the simulated outcome.
@@ -247,10 +279,10 @@ impl ViscoadhesiveImpact {
         self.settings
     }
 
-    /// A fresh force law `F_adhesive + 2 η_c a ḋ` (README eq. (V1)), for
+    /// A fresh force law `F_adhesive + c(a) ḋ` (`2 η_c a ḋ`: README eq. (V1)), for
     /// [`simulate_impact`] or a `Box<dyn ForceLaw>`.
     pub fn force_law(&self) -> ViscousDamping<AdhesiveForceLaw> {
-        ViscousDamping::from_validated(self.law.build(), self.contact_viscosity)
+        ViscousDamping::from_validated(self.law.build(), self.damping)
     }
 
     /// Simulates one impact at `impact_speed` (m/s) with `settings` (the simulation
@@ -311,11 +343,22 @@ impl ViscoadhesiveImpact {
     }
 
     /// The Kuwabara-Kono sphere without adhesion with the same E*, R, m, η_c:
-    /// `KelvinVoigtSphere(G = E*/4, η = η_c/4, R, m)`, seed 000 (5.66)-(5.68).
+    /// `KelvinVoigtSphere(G = E*/4, η = η_c/4, R, m)`, seed 000 (5.66)-(5.68); an
+    /// error for the Tsuji form (no Kuwabara-Kono counterpart).
     pub fn kuwabara_kono(&self) -> Result<KelvinVoigtSphere> {
+        let eta_c = self
+            .damping
+            .contact_viscosity(self.effective_mass)
+            .ok_or_else(|| Error::Model {
+                model: MODEL,
+                message: format!(
+                    "{} has no Kuwabara-Kono counterpart",
+                    self.damping.describe()
+                ),
+            })?;
         KelvinVoigtSphere::new(
             0.25 * self.effective_modulus,
-            0.25 * self.contact_viscosity,
+            0.25 * eta_c,
             self.effective_radius,
             self.effective_mass,
             SphereModel::KuwabaraKono,
@@ -389,7 +432,11 @@ impl ImpactModel for ViscoadhesiveImpact {
                 format!("Maugis-Dugdale (Lambda = {tabor_parameter:.6e})")
             }
         };
-        format!("{adhesion} + Kuwabara-Kono damping (time-domain simulation)")
+        let damping = match self.damping.model() {
+            None => "Kuwabara-Kono damping".to_string(),
+            Some(m) => format!("{m} damping"),
+        };
+        format!("{adhesion} + {damping} (time-domain simulation)")
     }
 
     fn effective_mass(&self) -> f64 {

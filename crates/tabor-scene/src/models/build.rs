@@ -209,6 +209,7 @@ impl Models {
             viscoelasticity: visco_kind,
             graded: scene.target.gradation.is_some(),
             superposition_requested: scene.adhesive_plasticity == AdhesivePlasticity::Superposition,
+            damping: scene.damping.is_some(),
         };
         // every refusal is structural: the full set is the worst case
         let fields = EffectFields::of(scene);
@@ -270,7 +271,9 @@ impl Models {
             _ => None,
         };
 
+        let damped = super::damped::Damped::build(scene, adhesive.as_ref(), plastic.as_ref())?;
         Ok(Models {
+            damped,
             mass: scene.effective_mass,
             accuracy: scene.accuracy,
             elastic,

@@ -31,6 +31,8 @@ impl Models {
             Ok(Rule::AdhesiveInterpolation | Rule::AdhesivePlasticExcess) => {
                 self.adhesive_interpolation.as_ref()
             }
+            // the damped adhesive interpolation law yields at its own onset
+            Ok(Rule::Damped) if set.adhesion.is_some() => self.adhesive_interpolation.as_ref(),
             _ => None,
         }
     }
@@ -160,6 +162,7 @@ impl Models {
                     single(EffectKind::Viscoelasticity, self.visco_model()?)
                 }
             }
+            Rule::Damped => self.damped_loss(set, speed),
             Rule::ViscousAdhesive => {
                 let m = self
                     .viscous_adhesive

@@ -3,6 +3,7 @@
 //! effects is evaluated by the rule of the combination table (`evaluate.rs`).
 
 mod build;
+mod damped;
 mod evaluate;
 mod types;
 

@@ -97,6 +97,8 @@ pub(crate) struct Models {
     pub jkr_fixed_grip: Option<JkrImpact<JkrSphere>>,
     pub visco: Option<Visco>,
     pub viscous_adhesive: Option<ViscoadhesiveImpact>,
+    /// The DEM damping law of `[damping]` and the laws it damps.
+    pub damped: Option<super::damped::Damped>,
     /// The scene field each effect's model errors point at.
     pub fields: EffectFields,
     /// The effects whose parameters the scene gives.
@@ -130,6 +132,7 @@ impl EffectFields {
             EffectKind::Adhesion => self.adhesion,
             EffectKind::Plasticity => self.plasticity,
             EffectKind::Viscoelasticity => self.viscoelasticity,
+            EffectKind::Damping => "damping",
             EffectKind::Elasticity => "sphere.youngs_modulus",
         }
     }

@@ -60,11 +60,18 @@ pub struct NormalContact {
     /// The pull-off force magnitude (N) of a cohesive law (0 for Hertz); see
     /// [`crate::critical_force`].
     pub pull_off_force: f64,
-    /// The coefficient `c` (Pa s) of the viscous normal force `F_d = c a δ̇`
+    /// The coefficient `c` of the normal damping force `F_d = c a^β δ̇`
+    /// ([`NormalContact::damping_exponent`] β): with β = 1 (Pa s) the viscous force
     /// (Kuwabara-Kono, seed 000 eq. (5.66): `c = 2 η_c`; LAMMPS `damping
-    /// viscoelastic`: `c = η_n0 m_eff`); 0 without damping. The normal damping
-    /// coefficient of the friction models is `c a`.
+    /// viscoelastic`: `c = η_n0 m_eff`); with β = 1/2 the Tsuji form of LAMMPS's
+    /// `damping tsuji` and `coeff_restitution`, `c = α √(m_eff (4/3) E*)`
+    /// (`tabor_viscoadhesive::NormalDamping`); 0 without damping. The normal
+    /// damping coefficient of the friction models is `c a^β`
+    /// ([`NormalContact::damping_at`]).
     pub damping: f64,
+    /// The exponent β of the contact radius in `F_d = c a^β δ̇`, in (0, 1]: 1 for
+    /// Kuwabara-Kono and `viscoelastic`, 1/2 for the Tsuji form.
+    pub damping_exponent: f64,
 }
 
 impl NormalContact {
@@ -72,7 +79,29 @@ impl NormalContact {
     pub const ELASTIC: NormalContact = NormalContact {
         pull_off_force: 0.0,
         damping: 0.0,
+        damping_exponent: 1.0,
     };
+
+    /// The normal damping coefficient `c a^β` (N s/m) at contact radius `a` (m;
+    /// 0 where a ≤ 0): the prefactor of LAMMPS's damping models (seed 000
+    /// eq. (5.72) with β = 1/2 of the overlap for `viscoelastic`, 1/4 for Tsuji).
+    pub fn damping_at(&self, a: f64) -> f64 {
+        if a > 0.0 {
+            self.damping * a.powf(self.damping_exponent)
+        } else {
+            0.0
+        }
+    }
+
+    /// Its rate `β c a^(β−1) ȧ` (N s/m per s) at contact radius `a` (m) changing at
+    /// `a_dot` (m/s); 0 where a ≤ 0.
+    pub fn damping_rate(&self, a: f64, a_dot: f64) -> f64 {
+        if a > 0.0 {
+            self.damping_exponent * self.damping * a.powf(self.damping_exponent - 1.0) * a_dot
+        } else {
+            0.0
+        }
+    }
 }
 
 /// The oblique impact: two bodies, the normal contact's extras, the friction (none:

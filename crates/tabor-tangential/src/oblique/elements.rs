@@ -70,12 +70,13 @@ pub(super) fn direction(x: &Vector3<f64>, fallback: &Vector3<f64>) -> Vector3<f6
     }
 }
 
-/// Stiffness, damping and limit of the twisting resistance at contact radius `a`.
+/// Stiffness, damping and limit of the twisting resistance at contact radius `a`
+/// with the normal damping coefficient `c_n` (`c a^β`, N s/m) there.
 pub(super) fn twist_coefficients(
     tw: &Twisting,
     fr: &Friction,
     a: f64,
-    c: f64,
+    c_n: f64,
     fc: f64,
 ) -> (f64, f64, f64) {
     match *tw {
@@ -83,7 +84,7 @@ pub(super) fn twist_coefficients(
             let t = &fr.tangential;
             (
                 0.5 * t.stiffness * a * a,
-                0.5 * t.damping_ratio * c * a * a * a,
+                0.5 * t.damping_ratio * c_n * a * a,
                 2.0 / 3.0 * t.coefficient * a * fc,
             )
         }

@@ -30,8 +30,8 @@ impl<'a> Setup<'a> {
         };
         let a = law.contact_radius(overlap, rate)?.max(0.0);
         let f_el = law.force(overlap, rate)?;
-        let c = self.imp.normal.damping;
-        let fc = crate::critical_force(f_el, f_el + c * a * rate, self.imp.normal.pull_off_force);
+        let c_n = self.imp.normal.damping_at(a);
+        let fc = crate::critical_force(f_el, f_el + c_n * rate, self.imp.normal.pull_off_force);
         let r_j = if self.flat {
             0.0
         } else {
@@ -60,7 +60,7 @@ impl<'a> Setup<'a> {
         if slot == XT {
             let tg = &fr.tangential;
             let k = tg.spring(a);
-            let gamma = tg.damping_ratio * self.imp.normal.damping * a;
+            let gamma = tg.damping_ratio * self.imp.normal.damping_at(a);
             Ok((x * k + v_tr * gamma, tg.coefficient * fc, gamma, k, v_tr))
         } else {
             let Some(r) = &fr.rolling else {
@@ -120,7 +120,7 @@ impl<'a> Setup<'a> {
             return Ok(0.0);
         };
         let (a, fc, _, _, w_tw, _) = self.contact(law, t, y)?;
-        let (k, g, _) = twist_coefficients(tw, fr, a, self.imp.normal.damping, fc);
+        let (k, g, _) = twist_coefficients(tw, fr, a, self.imp.normal.damping_at(a), fc);
         Ok(k * y[XW] + g * w_tw)
     }
 
@@ -138,7 +138,7 @@ impl<'a> Setup<'a> {
             return Ok(());
         };
         let (a, fc, _, _, w_tw, _) = self.contact(law, t, y)?;
-        let (k, g, l) = twist_coefficients(tw, fr, a, self.imp.normal.damping, fc);
+        let (k, g, l) = twist_coefficients(tw, fr, a, self.imp.normal.damping_at(a), fc);
         if k > 0.0 {
             y[XW] = (l * modes.twist_sign - g * w_tw) / k;
         }
@@ -217,7 +217,7 @@ impl<'a> Setup<'a> {
                 fr.twisting.as_ref().unwrap_or(&Twisting::Marshall),
                 fr,
                 a,
-                self.imp.normal.damping,
+                self.imp.normal.damping_at(a),
                 fc,
             );
             if m.abs() > l {
@@ -305,7 +305,7 @@ impl<'a> Setup<'a> {
                         fr.twisting.as_ref().unwrap_or(&Twisting::Marshall),
                         fr,
                         a,
-                        self.imp.normal.damping,
+                        self.imp.normal.damping_at(a),
                         fc,
                     );
                     g[6] = (l - m.abs()) / torque_unit;

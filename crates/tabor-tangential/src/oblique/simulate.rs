@@ -116,6 +116,13 @@ impl ObliqueImpact {
         }
         validate::non_negative("pull_off_force", self.normal.pull_off_force)?;
         validate::non_negative("damping", self.normal.damping)?;
+        validate::in_open_interval(
+            "damping_exponent",
+            self.normal.damping_exponent,
+            0.0,
+            1.0 + f64::EPSILON,
+            "must be in (0, 1] (1: Kuwabara-Kono, viscoelastic; 1/2: the Tsuji form)",
+        )?;
         let spin_i = Vector3::from(self.sphere_spin);
         let flat = self.target.is_flat();
         let spin_j = if flat {

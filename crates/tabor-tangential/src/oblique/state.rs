@@ -205,8 +205,9 @@ impl<'a> Setup<'a> {
         let a_of = |d: f64| law.contact_radius(d, rate);
         let (a, a_prime) = derivative(&a_of, overlap, h)?;
         let a = a.max(0.0);
-        let c = self.imp.normal.damping;
-        let f_d = c * a * rate;
+        let normal = &self.imp.normal;
+        let c_n = normal.damping_at(a);
+        let f_d = c_n * rate;
         let f_n = f_el + f_d;
         let pull_off = self.imp.normal.pull_off_force;
         let cohesive = pull_off > 0.0;
@@ -251,7 +252,7 @@ impl<'a> Setup<'a> {
         if let Some(fr) = &self.imp.friction {
             let t = &fr.tangential;
             let k = t.spring(a);
-            let gamma = t.damping_ratio * c * a;
+            let gamma = t.damping_ratio * c_n;
             let limit = t.coefficient * fc;
             let xi = v3(y, XT);
             if let Some(bed) = &self.bed {
@@ -279,7 +280,7 @@ impl<'a> Setup<'a> {
                 };
             }
             if let Some(tw) = &fr.twisting {
-                let (k_tw, g_tw, l_tw) = twist_coefficients(tw, fr, a, c, fc);
+                let (k_tw, g_tw, l_tw) = twist_coefficients(tw, fr, a, c_n, fc);
                 m_tw = match modes.twisting {
                     Mode::Stick => {
                         let m = -(k_tw * y[XW] + g_tw * w_tw);
@@ -330,11 +331,12 @@ impl<'a> Setup<'a> {
         let f_of = |d: f64| law.force(d, rate);
         let (_, f_prime) = derivative(&f_of, overlap, h)?;
         let a_dot = a_prime * rate;
+        let c_n_dot = normal.damping_rate(a, a_dot);
         let fc_dot = {
             let raw = if cohesive { f_el + 2.0 * pull_off } else { f_n };
             let mut d = f_prime * rate;
             if !cohesive {
-                d += c * (a_dot * rate + a * accel_normal);
+                d += c_n_dot * rate + c_n * accel_normal;
             }
             if raw < 0.0 {
                 -d
@@ -354,7 +356,7 @@ impl<'a> Setup<'a> {
                 TangentialModel::LinearHistory => 0.0,
                 _ => t.stiffness * a_dot,
             };
-            let gamma_dot = t.damping_ratio * c * a_dot;
+            let gamma_dot = t.damping_ratio * c_n_dot;
             let limit_dot = t.coefficient * fc_dot;
             let rescale = t.model == TangentialModel::MindlinRescale && !modes.loading;
             // ξ ∝ a while it shrinks: the rate ȧ/a diverges where the contact
@@ -423,7 +425,7 @@ impl<'a> Setup<'a> {
         }
         // twisting
         if let Some(tw) = &fr.twisting {
-            let (k_tw, g_tw, l_tw) = twist_coefficients(tw, fr, a, c, fc);
+            let (k_tw, g_tw, l_tw) = twist_coefficients(tw, fr, a, c_n, fc);
             match modes.twisting {
                 Mode::Stick => out.dy[XW] = w_tw,
                 Mode::Slip => {
@@ -432,7 +434,7 @@ impl<'a> Setup<'a> {
                             let t = &fr.tangential;
                             (
                                 t.stiffness * a * a_dot,
-                                t.damping_ratio * c * 1.5 * a * a * a_dot,
+                                0.5 * t.damping_ratio * (c_n_dot * a + 2.0 * c_n * a_dot) * a,
                                 2.0 / 3.0 * t.coefficient * (a_dot * fc + a * fc_dot),
                             )
                         }
