@@ -4,7 +4,9 @@
 # (two-body restitution and pull-off force against tabor, also with the fragment of
 # `tabor export lammps --plugin`; 1 vs 2 MPI ranks), test_plugin_friction.py
 # (oblique collisions with friction, rolling and twisting against pair granular and
-# tabor's library), test_plugin_cloud.py (a polydisperse cloud on 1 and 2 ranks, a
+# tabor's library; mindlin_deresiewicz against the library's exact bed),
+# test_plugin_damping.py (damping viscoelastic|tsuji|coeff_restitution against
+# pair granular and, with adhesion, against tabor impact), test_plugin_cloud.py (a polydisperse cloud on 1 and 2 ranks, a
 # restart in the middle), then the MPI cloud example of examples/lammps with the
 # plugin (sticking fraction against tabor's prediction).
 # Exit status 0 only if everything passed.
@@ -23,6 +25,7 @@ export OBLIQUE_LIBRARY="$TARGET/release/examples/oblique_library"
 export PATH="$VENV/bin:$PATH"
 "$VENV/bin/python" "$HERE/test_plugin.py" "$@"
 "$VENV/bin/python" "$HERE/test_plugin_friction.py"
+"$VENV/bin/python" "$HERE/test_plugin_damping.py"
 "$VENV/bin/python" "$HERE/test_lammps.py" plugin_friction  # the exported --plugin fragment with [friction], oblique (export branch)
 "$VENV/bin/python" "$HERE/test_plugin_cloud.py"
 CLOUD_PLUGIN="$PLUGIN" CLOUD_OUT="$TARGET/lammps-cloud-plugin" bash "$ROOT/examples/lammps/run.sh"

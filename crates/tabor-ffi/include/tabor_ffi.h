@@ -36,6 +36,23 @@
 // [`TaborLawParams::model`]: Maugis-Dugdale at Tabor parameter Λ (section 5.3.2).
 #define TABOR_MODEL_MAUGIS_DUGDALE 3
 
+// [`TaborLawParams::damping_model`]: Kuwabara-Kono with the dissipative time
+// [`TaborLawParams::damping_time`] (0: no damping), seed 000 (5.66).
+#define TABOR_DAMPING_KUWABARA_KONO 0
+
+// LAMMPS `damping viscoelastic`: `F_d = η_n0 m* a δ̇`, η_n0 =
+// [`TaborLawParams::damping_value`] (1/(m s)); `tabor_viscoadhesive::NormalDamping`.
+#define TABOR_DAMPING_VISCOELASTIC 1
+
+// LAMMPS `damping tsuji`: `F_d = α(e) √(m* (4/3) E* a) δ̇`, α by Tsuji's polynomial of
+// e = [`TaborLawParams::damping_value`] (Marshall 2009, eq. 53).
+#define TABOR_DAMPING_TSUJI 2
+
+// LAMMPS `damping coeff_restitution`: `F_d = α(e) √(m* (4/3) E* a) δ̇`,
+// `α = −√5 ln e/√(π² + ln² e)`, e = [`TaborLawParams::damping_value`] (the nominal
+// restitution exactly for Hertz; with adhesion on the adhesive contact radius).
+#define TABOR_DAMPING_COEFF_RESTITUTION 3
+
 // Number of doubles in a [`TaborHistory`].
 #define TABOR_HISTORY_LEN 2
 
@@ -94,8 +111,14 @@ typedef struct TaborLawParams {
   double work_of_adhesion;
   // Tabor parameter Λ (Maugis-Dugdale only; the range is h = d_n/Λ).
   double tabor_parameter;
-  // Kuwabara-Kono dissipative time A (s), ≥ 0 (0: no damping), seed 000 (5.66).
+  // Kuwabara-Kono dissipative time A (s), ≥ 0 (0: no damping), seed 000 (5.66);
+  // must be 0 with a DEM damping law.
   double damping_time;
+  // One of `TABOR_DAMPING_*` (0, Kuwabara-Kono, for a zero-initialized struct).
+  int32_t damping_model;
+  // The DEM damping law's value: η_n0 (1/(m s)) for viscoelastic, e in (0, 1]
+  // for tsuji and coeff_restitution.
+  double damping_value;
 } TaborLawParams;
 
 // The state a contact carries from one time step to the next (one per pair of
@@ -199,6 +222,9 @@ typedef struct TaborContactState {
   // 1: advance the friction displacements (a time step); 0: evaluate only
   // (LAMMPS's setup force call and `single()`).
   int32_t update_history;
+  // Effective mass m* = m_i m_j/(m_i + m_j) (kg; m_i for a wall): the DEM
+  // damping laws need it (`TABOR_DAMPING_*`), the others ignore it.
+  double effective_mass;
 } TaborContactState;
 
 // The state a contact carries from step to step: the normal law's

@@ -8,9 +8,10 @@
 //! model ([`tabor_tangential::NormalResponse`]): the Mindlin spring `8 G* a`, the
 //! Coulomb limit `μ F_n0` with `F_n0 = |F_n,elastic + 2 F_pulloff|` for an adhesive
 //! law (JKR: (3/2)πwR*, as LAMMPS's `jkr`; Maugis-Dugdale: the law's own pull-off
-//! force) and `|F_n|` for Hertz, and the normal damping coefficient `2E*A a` of the
-//! Kuwabara-Kono force (seed 000 (5.66)) that the tangential damping `x_γ,t`
-//! multiplies. The models themselves are `tabor_tangential::Friction::step`; this
+//! force) and `|F_n|` for Hertz, and the normal damping coefficient that the
+//! tangential damping `x_γ,t` multiplies: `2E*A a` of the Kuwabara-Kono force (seed
+//! 000 (5.66)) or the DEM damping law's (`ContactLaw::damping_coefficient`,
+//! LAMMPS's `damp_prefactor`). The models themselves are `tabor_tangential::Friction::step`; this
 //! module only converts between the C structs and them.
 
 use crate::law::{ContactLaw, TaborHistory};
@@ -135,6 +136,9 @@ pub struct TaborContactState {
     /// 1: advance the friction displacements (a time step); 0: evaluate only
     /// (LAMMPS's setup force call and `single()`).
     pub update_history: i32,
+    /// Effective mass m* = m_i m_j/(m_i + m_j) (kg; m_i for a wall): the DEM
+    /// damping laws need it (`TABOR_DAMPING_*`), the others ignore it.
+    pub effective_mass: f64,
 }
 
 /// The forces and torques of one contact at one step.
@@ -294,9 +298,13 @@ impl ContactModel {
             contact: history.contact,
             max_overlap: history.max_overlap,
         };
-        let f = self
-            .law
-            .evaluate_scaled(&scales, state.overlap, -n.dot(&v), &mut normal)?;
+        let f = self.law.evaluate_with_mass(
+            &scales,
+            state.overlap,
+            -n.dot(&v),
+            state.effective_mass,
+            &mut normal,
+        )?;
         let mut out = TaborContactForces {
             normal_force: f.force,
             contact_radius: f.contact_radius,
@@ -333,10 +341,9 @@ impl ContactModel {
                 elastic_force: f.elastic_force,
                 total_force: f.force,
                 pull_off_force: -self.law.pull_off_force_at(&scales),
-                damping_coefficient: 2.0
-                    * self.law.effective_modulus()
-                    * self.law.damping_time()
-                    * f.contact_radius,
+                damping_coefficient: self
+                    .law
+                    .damping_coefficient(state.effective_mass, f.contact_radius),
             };
             let c = friction.step(
                 &kinematics,

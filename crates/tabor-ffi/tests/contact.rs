@@ -21,6 +21,8 @@ fn contact(friction: TaborFrictionParams) -> *mut TaborContact {
         work_of_adhesion: W,
         tabor_parameter: 0.0,
         damping_time: 0.0,
+        damping_model: TABOR_DAMPING_KUWABARA_KONO,
+        damping_value: 0.0,
     };
     let mut c = std::ptr::null_mut();
     assert_eq!(
@@ -134,6 +136,7 @@ fn swapping_the_bodies_reverses_forces_and_histories() {
         angular_velocity_j: [-3e2, 1e3, 4e3],
         time_step: 1e-10,
         update_history: 1,
+        effective_mass: 1e-15,
     };
     let b = TaborContactState {
         normal: n.map(|x| -x),
@@ -173,6 +176,8 @@ fn bad_friction_and_states_are_status_codes() {
         work_of_adhesion: 0.0,
         tabor_parameter: 0.0,
         damping_time: 0.0,
+        damping_model: TABOR_DAMPING_KUWABARA_KONO,
+        damping_value: 0.0,
     };
     let mut c = std::ptr::null_mut();
     for f in [
