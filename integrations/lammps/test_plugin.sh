@@ -17,11 +17,12 @@ TARGET="${CARGO_TARGET_DIR:-$ROOT/target}"
 export CARGO_TARGET_DIR="$TARGET"
 PLUGIN="$(cd "$ROOT" && cargo xtask lammps-plugin | tail -n 1)"
 VENV="$("$HERE/setup.sh")"
-(cd "$ROOT" && cargo build --release -q -p tabor-cli && cargo build --release -q -p tabor-ffi --example oblique_library)
+(cd "$ROOT" && cargo build --release -q -p tabor-cli && cargo build --release -q -p tabor-ffi --example oblique_library --example oblique_dem)
 export TABOR="$TARGET/release/tabor" TABOR_PLUGIN="$PLUGIN" LAMMPS_VENV="$VENV"
 export TABOR_FFI_LIB="$TARGET/release/libtabor_ffi.so"
 export LD_LIBRARY_PATH="$VENV/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export OBLIQUE_LIBRARY="$TARGET/release/examples/oblique_library"
+export OBLIQUE_DEM="$TARGET/release/examples/oblique_dem"
 export PATH="$VENV/bin:$PATH"
 "$VENV/bin/python" "$HERE/test_plugin.py" "$@"
 "$VENV/bin/python" "$HERE/test_plugin_friction.py"

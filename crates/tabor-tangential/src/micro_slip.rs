@@ -52,7 +52,9 @@
 //! −0.36: the profile a stick phase leaves is not known to it), by less than 0.06
 //! up to Ψ = 3.5, and by less than 3e-3 from Ψ = 5 to the gross-sliding line, where
 //! both are exact (Coulomb). Without the unloading correction the small-Ψ gap is
-//! 0.48 (β → −0.75).
+//! 0.48 (β → −0.75). With adhesion (JKR, the Thornton-Yin limit) the gap is larger
+//! where the contact sticks most (silica spheres at 0.3 m/s: β −0.08 against the
+//! bed's +0.25 at 5°; `integrations/lammps/test_plugin_friction.py` prints it).
 //!
 //! **In three dimensions** the axis `ê` is the direction of `T` while loading and
 //! of `T*` while unloading or reloading; the whole `Δs` (also its part across the
