@@ -334,9 +334,27 @@ def micro_slip_same_form():
     return failures
 
 
+def micro_slip_newton():
+    """`mindlin_deresiewicz` with `damping coeff_restitution` (its coefficient the
+    one x_gamma multiplies) and an initial spin: newton on and off give identical
+    collisions (the plugin keeps each history on both atoms)."""
+    failures = []
+    lines = [f'plugin load "{PLUGIN}"', "pair_style tabor",
+             f"pair_coeff * * jkr/load-controlled {E_STAR!r} {W} poisson {NU} damping coeff_restitution 0.7 "
+             f"tangential mindlin_deresiewicz NULL 0.5 {MU}"]
+    for a in (10, 40):
+        on = collide(lines, 0.5, a, 2e4)
+        off = collide(lines, 0.5, a, 2e4, newton="off")
+        print(f"mindlin_deresiewicz + coeff_restitution, {a} degrees: newton on {on[:4]}, off identical: {off == on}")
+        if off != on or not all(math.isfinite(x) for x in on[:4]):
+            failures.append(f"mindlin_deresiewicz newton off differs or not finite at {a} degrees: {on} vs {off}")
+    return failures
+
+
 def main():
     failures = micro_slip_against_library()
     failures += micro_slip_same_form()
+    failures += micro_slip_newton()
     failures += jkr_against_granular()
     failures += maugis_against_library()
     if failures:
