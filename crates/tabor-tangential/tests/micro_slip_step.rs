@@ -254,3 +254,39 @@ fn dem_form_against_the_exact_bed() {
         assert!((d - e).abs() < band, "Ψ {psi}: gap {}", d - e);
     }
 }
+
+proptest::proptest! {
+    /// Any history of 3-D slip increments, contact radii (zero included: the
+    /// no-contact branch) and limits (growing, shrinking): the force stays finite
+    /// and within the Coulomb limit, the mode one of 0, 1, 2.
+    #[test]
+    fn any_history_stays_within_the_limit(
+        steps in proptest::collection::vec(
+            (-1.0f64..1.0, -1.0f64..1.0, -1.0f64..1.0, 0.0f64..2e-4, 0.0f64..20.0, 0.0f64..1.0),
+            1..200,
+        )
+    ) {
+        let f = friction(MU);
+        let mut h = ContactHistory::default();
+        for (vx, vy, vz, a, n, turn) in steps {
+            // a normal that turns a little: (cos, sin, 0) about the start x
+            let phi = 0.1 * turn;
+            let k = ContactKinematics {
+                normal: Vector3::new(phi.cos(), phi.sin(), 0.0),
+                overlap: 1e-6,
+                radius_i: R,
+                radius_j: R,
+                relative_velocity: Vector3::new(vx, vy, vz) * 1e-6,
+                angular_velocity_i: Vector3::zeros(),
+                angular_velocity_j: Vector3::zeros(),
+            };
+            let out = f.step(&k, &response(a, n), 1.0, true, &mut h);
+            let limit = MU * n;
+            let t = out.tangential_force.norm();
+            proptest::prop_assert!(t.is_finite());
+            proptest::prop_assert!(t <= limit * (1.0 + 1e-12) + 1e-300, "{} > {}", t, limit);
+            proptest::prop_assert!([0.0, 1.0, 2.0].contains(&h.micro_slip_mode));
+            proptest::prop_assert!(h.tangential.iter().all(|x| x.is_finite()));
+        }
+    }
+}
