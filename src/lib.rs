@@ -53,3 +53,24 @@ pub mod single;
 
 /// The tabor version (every workspace crate has this version).
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");
+
+/// The guide's Rust examples (`docs/guide/*.md`) as doc tests: `cargo test --doc -p
+/// tabor` compiles and runs every ```rust block of them, so the guide cannot drift
+/// from the library. Only collected for doc tests, never part of the API.
+#[cfg(doctest)]
+mod guide {
+    #[doc = include_str!("../docs/guide/README.md")]
+    struct Index;
+    #[doc = include_str!("../docs/guide/researcher.md")]
+    struct Researcher;
+    #[doc = include_str!("../docs/guide/dem.md")]
+    struct Dem;
+    #[doc = include_str!("../docs/guide/cli.md")]
+    struct Cli;
+    #[doc = include_str!("../docs/guide/models.md")]
+    struct Models;
+    #[doc = include_str!("../docs/guide/validation.md")]
+    struct Validation;
+    #[doc = include_str!("../docs/guide/accuracy-and-speed.md")]
+    struct AccuracyAndSpeed;
+}

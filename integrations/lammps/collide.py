@@ -208,3 +208,33 @@ def time_step_errors(after, coarse, fine, speed, radius):
                 rows.append((f"{body}.{field}[{k}]", ours, lf, lc, abs(ours - lf),
                              2.0 * abs(lc - lf) + FLOOR * scale))
     return rows
+
+
+
+def aitken_limit(x1, x2, x3):
+    """The limit of a sequence converging geometrically, from three terms (Aitken's
+    delta-squared): LAMMPS's answers at dt, dt/2, dt/4 converge at first order with
+    errors that halve, of one sign or alternating (where the contact forms at a
+    step boundary), both geometric. The last term where the differences vanish."""
+    d1, d2 = x2 - x1, x3 - x2
+    if d2 == d1:
+        return x3
+    return x3 - d2 * d2 / (d2 - d1)
+
+
+def extrapolated_errors(after, runs, speed, radius, tolerance):
+    """tabor's `after` against LAMMPS's limit dt -> 0, the Aitken extrapolation
+    (`aitken_limit`) of three runs at dt, dt/2, dt/4 (`runs`), with a `tolerance`
+    fixed in advance (a fraction of the scale: speed for velocities, speed/radius
+    for spins), whatever the runs give. Returns
+    [(name, tabor, limit, finest run, |tabor - limit|, tolerance)]."""
+    rows = []
+    for body in ("sphere", "target"):
+        for field, scale in (("velocity", speed), ("angular_velocity", speed / radius)):
+            for k in range(3):
+                ours = after[body][field][k]
+                xs = [r[body][field][k] for r in runs]
+                limit = aitken_limit(*xs)
+                rows.append((f"{body}.{field}[{k}]", ours, limit, xs[-1], abs(ours - limit),
+                             tolerance * scale))
+    return rows

@@ -177,9 +177,10 @@ def test_bundled_scenes_hold_their_claims():
         r = subprocess.run([TABOR, "export", "lammps", path, "--json"], capture_output=True, text=True)
         if r.returncode == 2:
             assert len(r.stderr.strip().splitlines()) == 1, r.stderr
+            # a graded medium; Mindlin-Deresiewicz micro-slip, which no LAMMPS model has;
             # LAMMPS refuses coeff_restitution with jkr: so does the export
-            assert "graded" in f or ("damped" in f and "with adhesion" in r.stderr), \
-                f"{f} refused: {r.stderr}"
+            assert "graded" in f or "mindlin_deresiewicz" in r.stderr \
+                or ("damped" in f and "with adhesion" in r.stderr), f"{f} refused: {r.stderr}"
             continue
         assert r.returncode == 0, r
         check_export(path)

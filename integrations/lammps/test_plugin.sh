@@ -6,8 +6,10 @@
 # (oblique collisions with friction, rolling and twisting against pair granular and
 # tabor's library; mindlin_deresiewicz against the library's exact bed),
 # test_plugin_damping.py (damping viscoelastic|tsuji|coeff_restitution against
-# pair granular and, with adhesion, against tabor impact), test_plugin_cloud.py (a polydisperse cloud on 1 and 2 ranks, a
-# restart in the middle), then the MPI cloud example of examples/lammps with the
+# pair granular and, with adhesion, against tabor impact), test_plugin_cloud.py (a
+# polydisperse cloud on 1 and 2 ranks, a restart in the middle), test_doc_examples.py
+# (every example line of the doc pages doc/pair_tabor.rst and doc/fix_tabor_history.rst),
+# then the MPI cloud example of examples/lammps with the
 # plugin (sticking fraction against tabor's prediction).
 # Exit status 0 only if everything passed.
 set -euo pipefail
@@ -25,6 +27,7 @@ export OBLIQUE_LIBRARY="$TARGET/release/examples/oblique_library"
 export OBLIQUE_DEM="$TARGET/release/examples/oblique_dem"
 export PATH="$VENV/bin:$PATH"
 "$VENV/bin/python" "$HERE/test_plugin.py" "$@"
+"$VENV/bin/python" "$HERE/test_doc_examples.py"  # every example of doc/*.rst runs in LAMMPS
 "$VENV/bin/python" "$HERE/test_plugin_friction.py"
 "$VENV/bin/python" "$HERE/test_plugin_damping.py"
 "$VENV/bin/python" "$HERE/test_lammps.py" plugin_friction  # the exported --plugin fragment with [friction], oblique (export branch)

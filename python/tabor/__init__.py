@@ -8,7 +8,7 @@ axialsymmetrischer Körper", chapter 5 of *Stoßprobleme in Physik, Technik und
 Medizin*, Springer Vieweg 2020, doi:10.1007/978-3-662-60296-6_5. The other sources
 (the dimensionless FEM fit of ``plastic(model="dimensionless-fit")``, the numpedia
 contact characteristic of ``penalty(law="characteristic")``) and the cited papers
-are in the "Sources" and "Bibliography" sections of the repository README.
+are in docs/sources.md of the repository ("Sources", "Bibliography").
 
 Conventions (as ContactEngineering's ``Adhesion`` package): module-level functions,
 keyword arguments, SI units unless a name says otherwise; a name shared with
@@ -521,8 +521,8 @@ jkr.__signature__ = _jkr.__signature__  # type: ignore[attr-defined]
 plastic = _core.model_function(
     "plastic",
     "Elasto-plastic impact with and without adhesion (``tabor plastic``).\n\n"
-    "Willert (2020) sections 5.5-5.6, (5.101)-(5.126); the dimensionless FEM fit (README,\n"
-    "Sources) eqs. (12), (18), (19). Inputs are\n"
+    "Willert (2020) sections 5.5-5.6, (5.101)-(5.126); the dimensionless FEM fit (docs/sources.md)\n"
+    "eqs. (12), (18), (19). Inputs are\n"
     "the effective quantities of the collision and the yield stress of the softer body.",
     "Returns a dict: ``model``, ``branch``, ``impact_speed``, ``restitution``, ``energy_loss``\n"
     "(J), ``sticks``, ``yield_velocity`` (m/s), ``sticking_velocity``,\n"
@@ -549,7 +549,7 @@ penalty = _core.model_function(
     "penalty",
     "Penalty contact laws for multibody codes (``tabor penalty``): the parameters for a\n"
     "nominal restitution and what a simulated impact achieves.\n\n"
-    "Laws: numpedia's contact characteristic (README, Sources) ``F = k κ(h, ε) l(v, V)`` with the loss speed V\n"
+    "Laws: numpedia's contact characteristic (docs/sources.md) ``F = k κ(h, ε) l(v, V)`` with the loss speed V\n"
     "calibrated exactly; ``F = K δⁿ (1 + χ δ̇)`` with χ = 3(1 − e)/(2v0) (Hunt-Crossley),\n"
     "3(1 − e²)/(4v0) (Lankarani-Nikravesh), 8(1 − e)/(5 e v0) (Flores).",
     "Returns a dict: ``law``, ``nominal_restitution``, ``achieved_restitution`` (simulated),\n"

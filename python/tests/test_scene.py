@@ -247,25 +247,6 @@ def test_scene_properties():
     assert math.isfinite(scene.sticking_velocity())
 
 
-def test_oblique_outcome_with_angle():
-    """`Scene.outcome(speed, angle=...)`: the oblique report of `tabor impact
-    --angle --json`; LAMMPS's pair granular on this case (jkr + mindlin + sds +
-    marshall, 10 degrees, 0.3 m/s) gives (-0.14455, 0.01749) m/s, -2.145e4 rad/s."""
-    s = tabor.Scene.from_path(SCENES / "silica_oblique.toml")
-    o = s.outcome(0.3, angle=10.0)
-    for key in ("normal_restitution", "tangential_restitution", "rebound_angle",
-                "energy_lost_by_mechanism", "after"):
-        assert key in o
-    sphere = o["after"]["sphere"]
-    assert len(sphere["velocity"]) == 3 and len(sphere["angular_velocity"]) == 3
-    assert abs(sphere["velocity"][0] + 0.14455) < 2e-4
-    assert abs(sphere["velocity"][1] - 0.01749) < 2e-4
-    assert abs(sphere["angular_velocity"][2] + 2.145e4) < 200.0
-    # angle 0 without friction is today's outcome
-    plain = tabor.Scene.from_path(SCENES / "silica.toml")
-    assert plain.outcome(angle=0.0) == plain.outcome()
-
-
 def test_damped_scene_through_the_scene_api():
     """A scene with [damping] (silica_damped.toml: JKR + coeff_restitution e = 0.9)
     through the same Scene API: the dem-damping rule names the damping loss, sticks

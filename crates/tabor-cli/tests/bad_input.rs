@@ -498,3 +498,75 @@ fn huge_values_are_echoed_in_exponent_form() {
         assert!(line.len() < 200, "{} characters: {line}", line.len());
     }
 }
+
+/// Issue 33: a negative number in exponent form is a value, not a flag
+/// (`--poisson-ratio -3e-1` was "unexpected argument '-3' found").
+#[test]
+fn negative_numbers_in_any_form_are_values() {
+    let base = [
+        "effective",
+        "--youngs-modulus",
+        "54e9",
+        "--radius",
+        "1e-6",
+        "--density",
+        "2650",
+        "--json",
+        "--poisson-ratio",
+    ];
+    let run = |nu: &str| {
+        let mut args = base.to_vec();
+        args.push(nu);
+        let out = tabor(&args);
+        assert!(out.status.success(), "{nu}: {out:?}");
+        String::from_utf8(out.stdout).unwrap()
+    };
+    assert_eq!(run("-3e-1"), run("-0.3"));
+    assert_eq!(run("-3E-1"), run("-.3"));
+    // a flag where a value belongs is still an error (clap's usage message)
+    let out = tabor(&[
+        "effective",
+        "--youngs-modulus",
+        "54e9",
+        "--poisson-ratio",
+        "--radius",
+        "1e-6",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).starts_with("error: "));
+}
+
+/// Issue 33: a scene file is read up to a ceiling (1 MiB): `/dev/zero` is refused
+/// at once (it was read until the memory ran out).
+#[test]
+fn an_endless_scene_file_is_refused_at_once() {
+    let t0 = std::time::Instant::now();
+    let line = one_line_error(&["impact", "/dev/zero"]);
+    assert!(line.contains("1048576 bytes"), "{line}");
+    assert!(t0.elapsed().as_secs_f64() < 1.0, "{:?}", t0.elapsed());
+}
+
+/// Issue 33: `-` reads the scene from standard input (TOML, or JSON when it
+/// starts with `{`), with the same answer as the file.
+#[test]
+fn a_scene_on_standard_input() {
+    use std::io::Write;
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/silica.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_tabor"))
+        .args(["impact", "-", "--json"])
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(text.as_bytes())
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert!(out.status.success(), "{out:?}");
+    let file = tabor(&["impact", path.to_str().unwrap(), "--json"]);
+    assert_eq!(out.stdout, file.stdout);
+}

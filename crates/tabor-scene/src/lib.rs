@@ -31,8 +31,11 @@
 //! refused). With adhesion on a Kelvin-Voigt contact it is coupled to it in the
 //! time domain (the viscous-adhesive rule, `tabor-viscoadhesive`); otherwise its
 //! loss is added to the others' on the kinetic energy they leave (superposition,
-//! with a warning). The one rule per combination of effects: [`rule`] and the
-//! crate README.
+//! with a warning). A DEM damping law (`[damping]`: LAMMPS `pair granular`'s
+//! `viscoelastic`, `tsuji`, `coeff_restitution`, [`NormalDamping`]) damps the force
+//! law of the other effects, simulated (the `dem-damping` rule; with adhesion the
+//! Tsuji form uses the adhesive contact radius, `k_n = (4/3) E* a`). The one rule
+//! per combination of effects: [`rule`] and the crate README.
 
 mod builder;
 mod combination;
@@ -61,7 +64,7 @@ pub use inputs::{
 };
 pub use outcome::{Effect, Outcome};
 pub use parameter::SweepParameter;
-pub use scene::{Scene, SpeedBatch};
+pub use scene::{Scene, SpeedBatch, MAX_SCENE_BYTES};
 pub use select::Sticking;
 pub use sweep::{spaced, sweep};
 pub use tabor_viscoadhesive::{DampingModel, NormalDamping};

@@ -98,12 +98,30 @@ impl Scene {
         located(self.source.as_ref(), e)
     }
 
-    /// Reads and validates a scene file (`.json` is JSON, anything else TOML).
+    /// Reads and validates a scene file (`.json` is JSON, anything else TOML);
+    /// the path `-` reads standard input (JSON when it starts with `{`, else
+    /// TOML). A file larger than [`MAX_SCENE_BYTES`] is refused before it is read
+    /// whole.
     pub fn from_path(path: &Path) -> Result<Scene, SceneError> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| SceneError::input(format!("cannot read {}: {e}", path.display())))?;
-        let mut scene = Scene::from_str(&text, Format::of_path(path))?;
-        if scene.data.name.is_none() {
+        let stdin = path.as_os_str() == "-";
+        let text = if stdin {
+            bounded_read(std::io::stdin().lock(), "standard input")?
+        } else {
+            let file = std::fs::File::open(path)
+                .map_err(|e| SceneError::input(format!("cannot read {}: {e}", path.display())))?;
+            bounded_read(file, &path.display().to_string())?
+        };
+        let format = if stdin {
+            if text.trim_start().starts_with('{') {
+                Format::Json
+            } else {
+                Format::Toml
+            }
+        } else {
+            Format::of_path(path)
+        };
+        let mut scene = Scene::from_str(&text, format)?;
+        if scene.data.name.is_none() && !stdin {
             if let Some(stem) = path.file_stem().and_then(|s| s.to_str()) {
                 scene.name = stem.to_string();
             }
@@ -406,4 +424,27 @@ fn restitutions(prepared: &Prepared<'_>, speeds: &[f64]) -> Result<Vec<f64>, (us
             })
             .collect(),
     }
+}
+
+/// The largest scene file read (1 MiB; the bundled scenes are below 2 kB): a
+/// larger file, or a device that never ends (`/dev/zero`), is refused after
+/// reading one byte more than this.
+pub const MAX_SCENE_BYTES: u64 = 1 << 20;
+
+/// Reads at most [`MAX_SCENE_BYTES`] of UTF-8 text from `reader` (`what` names it
+/// in errors).
+fn bounded_read(reader: impl std::io::Read, what: &str) -> Result<String, SceneError> {
+    use std::io::Read;
+    let mut bytes = Vec::new();
+    reader
+        .take(MAX_SCENE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| SceneError::input(format!("cannot read {what}: {e}")))?;
+    if bytes.len() as u64 > MAX_SCENE_BYTES {
+        return Err(SceneError::input(format!(
+            "the scene is larger than {MAX_SCENE_BYTES} bytes (1 MiB), the ceiling of a scene file"
+        )));
+    }
+    String::from_utf8(bytes)
+        .map_err(|e| SceneError::input(format!("cannot read {what}: not UTF-8 text ({e})")))
 }

@@ -508,3 +508,68 @@ fn damped_oblique_impact_on_a_flat_keeps_e_and_its_energy() {
         assert!(o.energy_error < 1e-8, "{angle}: {:e}", o.energy_error);
     }
 }
+
+/// Every normal model a scene has a force law for takes the damping (Hertz, JKR
+/// with both rules, Maugis-Dugdale, Thornton, interpolation, Jackson-Green, JKR +
+/// interpolation plasticity): the rule is `dem-damping`, the answer finite, and
+/// the damping only adds loss (ε below the undamped scene's, which rebounds
+/// here); the dimensionless fit (no force law) is refused naming `[damping]`.
+#[test]
+fn every_force_law_takes_the_damping() {
+    let steel = "[sphere]\nradius = 5e-6\ndensity = 7800\nyoungs_modulus = 2.1e11\npoisson_ratio = 0.3\n\
+                 [target]\nradius = 5e-6\ndensity = 7800\nyoungs_modulus = 2.1e11\npoisson_ratio = 0.3\nyield_stress = 1e9\n";
+    let damping = "[damping]\nmodel = \"coeff_restitution\"\nrestitution = 0.8\n";
+    let cases = [
+        (SILICA.to_string(), 0.5),
+        (
+            format!("{SILICA}[adhesion]\nwork_of_adhesion = 0.05\n"),
+            0.5,
+        ),
+        (
+            format!(
+                "{SILICA}[adhesion]\nwork_of_adhesion = 0.05\nseparation = \"load-controlled\"\n"
+            ),
+            0.5,
+        ),
+        (
+            format!("{SILICA}[adhesion]\nwork_of_adhesion = 0.05\nrange = 3e-10\n"),
+            0.5,
+        ),
+        (format!("{steel}[plasticity]\nmodel = \"thornton\"\n"), 5.0),
+        (
+            format!("{steel}[plasticity]\nmodel = \"interpolation\"\n"),
+            5.0,
+        ),
+        (
+            format!("{steel}[plasticity]\nmodel = \"jackson-green\"\n"),
+            5.0,
+        ),
+        (format!("{steel}[adhesion]\nwork_of_adhesion = 0.5\n"), 5.0),
+    ];
+    for (text, v) in cases {
+        let undamped = Scene::from_str(&text, Format::Toml)
+            .unwrap()
+            .outcome_at(v)
+            .unwrap();
+        let damped = Scene::from_str(&format!("{text}{damping}"), Format::Toml)
+            .unwrap()
+            .outcome_at(v)
+            .unwrap();
+        assert_eq!(damped.combination.rule.as_str(), "dem-damping", "{text}");
+        assert!(
+            damped.restitution.is_finite() && undamped.restitution > 0.0,
+            "{text}"
+        );
+        assert!(
+            damped.restitution < undamped.restitution,
+            "{text}: damped {} vs {}",
+            damped.restitution,
+            undamped.restitution
+        );
+    }
+    let fit = format!("{steel}[plasticity]\nmodel = \"dimensionless-fit\"\n{damping}");
+    let e = Scene::from_str(&fit, Format::Toml)
+        .and_then(|s| s.outcome_at(5.0))
+        .unwrap_err();
+    assert!(e.to_string().contains("damping"), "{e}");
+}

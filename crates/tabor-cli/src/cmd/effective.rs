@@ -9,38 +9,38 @@ use tabor::single::Naming;
 #[derive(clap::Args)]
 pub struct Args {
     /// Young's modulus of the sphere (Pa)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     youngs_modulus: f64,
     /// Poisson's ratio of the sphere
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     poisson_ratio: f64,
     /// Radius of the sphere (m)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     radius: f64,
     /// Density of the sphere (kg/m³); or give --mass
-    #[arg(long, allow_negative_numbers = true, conflicts_with = "mass")]
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "mass")]
     density: Option<f64>,
     /// Mass of the sphere (kg)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     mass: Option<f64>,
     /// Young's modulus of the target (Pa); default: same as the sphere
-    #[arg(long, allow_negative_numbers = true, conflicts_with = "rigid_target")]
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "rigid_target")]
     target_youngs_modulus: Option<f64>,
     /// Poisson's ratio of the target; default: same as the sphere
-    #[arg(long, allow_negative_numbers = true, conflicts_with = "rigid_target")]
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "rigid_target")]
     target_poisson_ratio: Option<f64>,
     /// The target is rigid
     #[arg(long)]
     rigid_target: bool,
     /// Radius of the target (m); omit for a flat half-space
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     target_radius: Option<f64>,
     /// Density of the target (kg/m³), for a spherical target (default: the sphere's
     /// --density; with neither density nor --target-mass the target is immovable)
-    #[arg(long, allow_negative_numbers = true, conflicts_with = "target_mass")]
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "target_mass")]
     target_density: Option<f64>,
     /// Mass of the target (kg); omit for an immovable target
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     target_mass: Option<f64>,
     /// Print one JSON object instead of a table
     #[arg(long)]

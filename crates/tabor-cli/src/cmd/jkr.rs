@@ -17,26 +17,26 @@ use tabor::single::jkr::{jkr, JkrArgs};
 )]
 pub struct Args {
     /// Effective modulus E* (Pa)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     modulus: f64,
     /// Effective radius R (m)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     radius: f64,
     /// Work of adhesion Δγ (J/m²)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     work_of_adhesion: f64,
     /// Effective (reduced) mass m (kg)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     mass: f64,
     /// Relative impact speed v0 (m/s); adds the maximum contact radius and the restitution
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     speed: Option<f64>,
     /// Where contact breaks
     #[arg(long, value_parser = args::menu(&SeparationRule::ALL, |_| String::new()),
         default_value_t = SeparationRule::FixedGrip)]
     separation: SeparationRule,
     /// Relative tolerance of quadratures and root searches, in [1e-15, 0.5]
-    #[arg(long, allow_negative_numbers = true,
+    #[arg(long, allow_hyphen_values = true,
         default_value_t = Tolerance(tolerance::DEFAULT_TOLERANCE))]
     tolerance: Tolerance,
     /// Print one JSON object instead of a table

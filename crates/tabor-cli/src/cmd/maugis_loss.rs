@@ -26,19 +26,19 @@ tabor maugis-loss --from 0.01 --to 100 --points 50 --log"
 )]
 pub struct Args {
     /// Willert's (2020) Tabor parameter Λ = d_n/h (repeatable)
-    #[arg(long = "lambda", allow_negative_numbers = true)]
+    #[arg(long = "lambda", allow_hyphen_values = true)]
     lambdas: Vec<f64>,
     /// Maugis' parameter λ (repeatable); converted to Λ = 0.6861 λ
-    #[arg(long = "maugis-parameter", allow_negative_numbers = true)]
+    #[arg(long = "maugis-parameter", allow_hyphen_values = true)]
     maugis_parameters: Vec<f64>,
     /// Tabor's μ (repeatable); converted to Λ through λ ≈ 1.157 μ
-    #[arg(long = "tabor-mu", allow_negative_numbers = true)]
+    #[arg(long = "tabor-mu", allow_hyphen_values = true)]
     tabor_mus: Vec<f64>,
     /// Start of a range of Λ
-    #[arg(long, allow_negative_numbers = true, requires_all = ["to", "points"])]
+    #[arg(long, allow_hyphen_values = true, requires_all = ["to", "points"])]
     from: Option<f64>,
     /// End of a range of Λ
-    #[arg(long, allow_negative_numbers = true, requires = "from")]
+    #[arg(long, allow_hyphen_values = true, requires = "from")]
     to: Option<f64>,
     /// Number of points of the range (2 to 1e7)
     #[arg(long, requires = "from")]
@@ -47,7 +47,7 @@ pub struct Args {
     #[arg(long)]
     log: bool,
     /// Relative tolerance of the direct evaluation
-    #[arg(long, default_value_t = Tolerance(tolerance::DEFAULT_TOLERANCE), allow_negative_numbers = true)]
+    #[arg(long, default_value_t = Tolerance(tolerance::DEFAULT_TOLERANCE), allow_hyphen_values = true)]
     tolerance: Tolerance,
     /// Use the precomputed fast tier (relative error < 1e-10) instead
     #[arg(long)]

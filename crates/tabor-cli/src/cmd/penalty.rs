@@ -20,23 +20,23 @@ pub struct Args {
     #[arg(long, value_parser = args::menu(&PenaltyLaw::ALL, |_| String::new()))]
     law: PenaltyLaw,
     /// Nominal coefficient of restitution e, in (0, 1]
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     restitution: f64,
     /// Stiffness K (N/m^n; N/m for the characteristic)
-    #[arg(long, allow_negative_numbers = true, default_value = "1e7")]
+    #[arg(long, allow_hyphen_values = true, default_value = "1e7")]
     stiffness: f64,
     /// Force exponent n of K δⁿ (hunt-crossley, lankarani-nikravesh, flores; the
     /// characteristic is linear)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     exponent: Option<f64>,
     /// Rounding half-width ε of the characteristic (m), ≥ 0
-    #[arg(long, allow_negative_numbers = true, default_value = "0")]
+    #[arg(long, allow_hyphen_values = true, default_value = "0")]
     rounding: f64,
     /// Effective (reduced) mass m (kg)
-    #[arg(long, allow_negative_numbers = true, default_value = "1")]
+    #[arg(long, allow_hyphen_values = true, default_value = "1")]
     mass: f64,
     /// Impact speed v0 (m/s)
-    #[arg(long, allow_negative_numbers = true, default_value = "1")]
+    #[arg(long, allow_hyphen_values = true, default_value = "1")]
     speed: f64,
     /// Print one JSON object instead of a table
     #[arg(long)]

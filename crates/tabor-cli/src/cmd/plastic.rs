@@ -27,32 +27,32 @@ pub struct Args {
     #[arg(long, value_parser = args::menu(&PlasticModel::ALL, |m| args::needs(model_inputs(m))))]
     model: PlasticModel,
     /// Effective modulus E* (Pa)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     modulus: f64,
     /// Effective radius R (m)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     radius: f64,
     /// Effective (reduced) mass m (kg)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     mass: f64,
     /// Yield stress sigma_Y of the yielding body (Pa)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     yield_stress: f64,
     /// Relative impact speed v0 (m/s)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     speed: f64,
     /// Poisson's ratio of the yielding body (jackson-green)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     poisson_ratio: Option<f64>,
     /// Density of the sphere (kg/m³) (dimensionless-fit)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     density: Option<f64>,
     /// Work of adhesion Δγ (J/m²) (adhesive-interpolation, superposition)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     work_of_adhesion: Option<f64>,
     /// Adhesion parameter Phi, instead of computing it from the material data
     /// (adhesive-interpolation)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     adhesion_parameter: Option<f64>,
     /// The non-adhesive model of --model superposition
     #[arg(long, value_parser = args::menu(PlasticModel::NON_ADHESIVE, |m| args::needs(model_inputs(m))),

@@ -20,14 +20,14 @@ pub struct ImpactArgs {
     /// The scene file (.toml or .json)
     scene: PathBuf,
     /// Impact speed (m/s); overrides [impact] speed
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     speed: Option<f64>,
     /// Impact angle (degrees between the relative velocity and the line of centres);
     /// overrides [impact] angle. An oblique impact (an angle, a [friction] section or
     /// a spin) adds normal_restitution, tangential_restitution, rebound_angle,
     /// energy_lost_by_mechanism and after; the central-impact fields are then those
     /// of the normal speed v cos(angle)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     angle: Option<f64>,
     /// Print one JSON object instead of a report
     #[arg(long)]
@@ -483,18 +483,18 @@ pub struct TrajectoryArgs {
     /// The scene file (.toml or .json)
     scene: PathBuf,
     /// Impact speed (m/s); default: the scene's [impact] speed
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     speed: Option<f64>,
     /// Impact angle (degrees); default: the scene's [impact] angle. An oblique
     /// impact prints the simulated oblique outcome (as `impact --json`; no CSV)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     angle: Option<f64>,
     /// Write the trajectory as CSV here (columns time_s, overlap_m,
     /// overlap_rate_m_per_s, force_n, contact_radius_m, tabor_version)
     #[arg(long)]
     out: Option<PathBuf>,
     /// Requested relative accuracy of the simulated outcome
-    #[arg(long, default_value_t = crate::args::Tolerance(tabor::numerics::tolerance::COSTLY_TOLERANCE), allow_negative_numbers = true)]
+    #[arg(long, default_value_t = crate::args::Tolerance(tabor::numerics::tolerance::COSTLY_TOLERANCE), allow_hyphen_values = true)]
     tolerance: crate::args::Tolerance,
     /// Print one JSON object
     #[arg(long)]

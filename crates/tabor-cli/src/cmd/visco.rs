@@ -20,31 +20,31 @@ pub struct Args {
     #[arg(long, value_parser = args::menu(&ViscoModel::ALL, |m| args::needs(model_inputs(m))))]
     model: ViscoModel,
     /// Damping ratio D (flat punch; D1 of the compressible model), > 0
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     damping_ratio: Option<f64>,
     /// Viscous parameter δ, > 0
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     viscous_parameter: Option<f64>,
     /// Modulus ratio β = G∞/G1, in [1e-5, 1e4]
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     modulus_ratio: Option<f64>,
     /// Scaled damping γ of (5.72), in (0, 1e3]
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     damping: Option<f64>,
     /// Damping exponent β of (5.72), in [0, 1.5]
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     damping_exponent: Option<f64>,
     /// Tsuji's α of (5.73), > 0
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     alpha: Option<f64>,
     /// Static Poisson's ratio ν (compressible model), in (-1, 0.5)
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     poisson_ratio: Option<f64>,
     /// Bulk damping ratio D2 (compressible model); default (5.100), equal viscosities
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     bulk_damping_ratio: Option<f64>,
     /// Relative integration tolerance, in [1e-15, 0.5]
-    #[arg(long, allow_negative_numbers = true,
+    #[arg(long, allow_hyphen_values = true,
         default_value_t = Tolerance(tolerance::ACCURACY))]
     tolerance: Tolerance,
     /// Print one JSON object instead of a table

@@ -37,11 +37,13 @@ pub struct ObliqueOutcome {
     /// Impact angle α (degrees) between the relative velocity and the line of
     /// centres.
     pub angle: f64,
-    /// Normal restitution `−u'_x / u_x` of the relative velocity (frame axes).
+    /// Normal restitution `−u'_x / u_x` of the relative velocity (frame axes); 0
+    /// when the bodies stick.
     pub normal_restitution: f64,
     /// Tangential restitution of the contact point, `−c'_y / c_y` with
     /// `c = u_t − (R_i ω_i + R_j ω_j) × n` (n the normal at first touch); `None`
-    /// when the contact point does not slide before the impact (α = 0, no spin).
+    /// when the contact point does not slide before the impact (α = 0, no spin)
+    /// or the bodies stick.
     pub tangential_restitution: Option<f64>,
     /// Rebound angle (degrees) between the relative velocity after the impact and
     /// the line of centres; `None` when the bodies stick.
@@ -144,13 +146,14 @@ impl<'a> Setup<'a> {
         };
         let c0 = contact_point(&self.u0, &wi0, &wj0);
         let c1 = contact_point(&u, &wi, &wj);
-        let _ = law;
         Ok(ObliqueOutcome {
             law: law.name(),
             speed: self.v,
             angle,
-            normal_restitution: -u[0] / self.u0[0],
-            tangential_restitution: (c0 != 0.0).then(|| -c1 / c0),
+            // bodies that stick do not rebound: no rebound quantities (the state
+            // at the moment of sticking is in `after`)
+            normal_restitution: if sticks { 0.0 } else { -u[0] / self.u0[0] },
+            tangential_restitution: (c0 != 0.0 && !sticks).then(|| -c1 / c0),
             rebound_angle: (!sticks).then(|| u[1].atan2(-u[0]).to_degrees()),
             sticks,
             after: AfterImpact {
