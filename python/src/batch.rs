@@ -82,6 +82,10 @@ struct Pools {
 
 static POOLS: Mutex<Option<Pools>> = Mutex::new(None);
 
+/// The most threads a batch may use (checked before any is spawned; the Python
+/// layer checks the same ceiling, `tabor._core.MAX_THREADS`).
+pub const MAX_THREADS: usize = 1024;
+
 fn pool(threads: Option<usize>) -> Result<Option<Arc<ThreadPool>>, String> {
     let mut guard = POOLS
         .lock()
@@ -93,6 +97,11 @@ fn pool(threads: Option<usize>) -> Result<Option<Arc<ThreadPool>>, String> {
     let Some(k) = threads else {
         return Ok(pools.default.clone());
     };
+    if k == 0 || k > MAX_THREADS {
+        return Err(format!(
+            "invalid threads = {k}: must be >= 1 and <= {MAX_THREADS}"
+        ));
+    }
     if let Some(p) = pools.sized.get(&k) {
         return Ok(Some(p.clone()));
     }

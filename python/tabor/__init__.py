@@ -323,8 +323,12 @@ class Scene:
 
     @classmethod
     def from_path(cls, path: Any) -> "Scene":
-        """A scene from a file: ``.json`` is JSON, anything else TOML."""
-        return cls(_tabor.Scene.from_path(_os.fspath(path)))
+        """A scene from a file: ``.json`` is JSON, anything else TOML. A missing
+        file is a ``FileNotFoundError``."""
+        path = _os.fspath(path)
+        if not _os.path.exists(path):
+            raise FileNotFoundError(2, "no such scene file", path)
+        return cls(_tabor.Scene.from_path(path))
 
     @property
     def name(self) -> str:
@@ -369,8 +373,8 @@ class Scene:
             ``speed * cos(angle)``.
         """
         return self._core.outcome(
-            None if speed is None else _core.float_array("speed", speed).item(),
-            None if angle is None else _core.float_array("angle", angle).item(),
+            None if speed is None else _core.float_scalar("speed", speed),
+            None if angle is None else _core.float_scalar("angle", angle),
         )
 
     def force(self, overlap: Any, *, speed: Optional[float] = None, overlap_rate: Any = 0.0,
@@ -388,7 +392,7 @@ class Scene:
         float64 array of the broadcast shape.
         """
         b = _core.Batch({"overlap": overlap, "overlap_rate": overlap_rate})
-        speed = None if speed is None else _core.float_array("speed", speed).item()
+        speed = None if speed is None else _core.float_scalar("speed", speed)
         return b.outs(self._core.force(b["overlap"], b["overlap_rate"], speed, b.n, b.shape_list,
                                        _core.check_errors(errors), _core.check_threads(threads)))[0]
 
@@ -468,8 +472,8 @@ class Scene:
             Requested relative accuracy of the simulated outcome (default
             ``COSTLY_TOLERANCE``).
         """
-        v = None if speed is None else _core.float_array("speed", speed).item()
-        return self._core.trajectory(v, _core.float_array("tolerance", tolerance).item())
+        v = None if speed is None else _core.float_scalar("speed", speed)
+        return self._core.trajectory(v, _core.float_scalar("tolerance", tolerance))
 
     def __repr__(self) -> str:
         return f"tabor.Scene(name={self.name!r})"
@@ -477,7 +481,7 @@ class Scene:
 
 # --------------------------------------------------------------------------------
 # single models (the CLI subcommands), built from the keyword tables of the native
-# core (python/src/models.rs): each keyword is written once, there
+# core (python/src/models/tables.rs): each keyword is written once, there
 
 
 effective = _core.model_function(

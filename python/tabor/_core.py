@@ -47,11 +47,25 @@ def check_threads(threads: Any) -> Optional[int]:
         return None
     if isinstance(threads, bool) or not isinstance(threads, numbers.Integral):
         raise TypeError(f"threads must be an int or None, not {type(threads).__name__}")
-    if threads < 1:
+    if threads < 1 or threads > MAX_THREADS:
         from ._errors import InputError
 
-        raise InputError(f"invalid threads = {threads}: must be >= 1")
+        raise InputError(f"invalid threads = {threads}: must be >= 1 and <= {MAX_THREADS}")
     return int(threads)
+
+
+#: The most threads a batch may use (checked before any is spawned): 2**63 threads
+#: stalled the machine, 100000 took 11 s to fail.
+MAX_THREADS = 1024
+
+
+def float_scalar(name: str, value: Any) -> float:
+    """One real number (a Python or numpy scalar, or an array of one element); an
+    array of several is a TypeError naming `name`."""
+    a = float_array(name, value)
+    if a.size != 1:
+        raise TypeError(f"{name} must be one real number, not an array of shape {a.shape}")
+    return float(a.reshape(()))
 
 
 def float_array(name: str, value: Any) -> np.ndarray:

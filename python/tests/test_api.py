@@ -112,7 +112,8 @@ def test_curve_and_conversion_errors():
 def test_scene_errors(tmp_path):
     raises(r"sphere", tabor.Scene.from_toml, "[sphere]\nradius = -1\n")
     raises(r"line 1", tabor.Scene.from_toml, "this is not toml")
-    raises(r"nope\.toml", tabor.Scene.from_path, tmp_path / "nope.toml")
+    with pytest.raises(FileNotFoundError, match=r"nope\.toml"):
+        tabor.Scene.from_path(tmp_path / "nope.toml")
     raises(r"line 1|EOF", tabor.Scene.from_json, "{")
     text = (SCENES / "silica.toml").read_text().replace("speed = 0.1", "")
     no_speed = tabor.Scene.from_toml(text)
@@ -264,3 +265,22 @@ def test_menus_and_defaults_come_from_the_library():
         tabor.force_displacement("hertz", 1e-7, radius=1e-6, elastic_modulus=1e9, work_of_adhesion=0.05)
     with pytest.raises(tabor.InputError, match='expected "raise" or "nan"'):
         tabor.jkr_normalized_loss() and tabor.maugis_dugdale_loss(1.0, errors="ignore")
+
+
+def test_edges_a_user_touches():
+    """Issue 33: thread counts have a ceiling checked before any thread is spawned,
+    a missing scene file is a FileNotFoundError, an array where one number belongs
+    is a TypeError naming the argument."""
+    for threads in (2 ** 63, 100_000, 1025):
+        t0 = time.perf_counter()
+        with pytest.raises(tabor.InputError, match=r"threads .*<= 1024"):
+            tabor.set_num_threads(threads)
+        assert time.perf_counter() - t0 < 0.5
+    with pytest.raises(tabor.InputError, match=r"<= 1024"):
+        tabor.maugis_dugdale_loss([0.5, 2.0], threads=100_000)
+    with pytest.raises(FileNotFoundError):
+        tabor.Scene.from_path("missing.toml")
+    scene = tabor.Scene.from_path(SCENES / "silica.toml")
+    with pytest.raises(TypeError, match=r"speed must be one real number"):
+        scene.outcome(np.array([0.1, 0.2]))
+    assert scene.outcome(np.array([0.1]))["restitution"] == scene.outcome(0.1)["restitution"]

@@ -247,6 +247,38 @@ def test_scene_properties():
     assert math.isfinite(scene.sticking_velocity())
 
 
+def _with_accuracy(name, accuracy):
+    """The bundled scene `name` with the top-level `accuracy` set."""
+    lines = [l for l in (SCENES / name).read_text().splitlines() if not l.startswith("accuracy")]
+    out = []
+    for l in lines:
+        out.append(l)
+        if l.startswith("name ="):
+            out.append(f"accuracy = {accuracy}")
+    return tabor.Scene.from_toml("\n".join(out) + "\n")
+
+
+def test_accuracy_floors_are_warned():
+    """A path that computes at a floor of `tabor_numerics::tolerance` coarser than
+    the scene's accuracy says so (code `accuracy-floor`); at the floor, silence."""
+
+    def floors(run):
+        with warnings.catch_warnings(record=True) as seen:
+            warnings.simplefilter("always")
+            out = run()
+        return out, [str(w.message) for w in seen if "FLOOR" in str(w.message)]
+
+    assert floors(lambda: _with_accuracy("rubber_viscoelastic.toml", "1e-12").outcome())[1] == []
+    o, named = floors(lambda: _with_accuracy("rubber_viscoelastic.toml", "1e-13").outcome())
+    assert len(named) == 1 and "MODEL_ACCURACY_FLOOR" in named[0]
+    assert any(w["code"] == "accuracy-floor" for w in o["warnings"])
+    oblique = lambda a: _with_accuracy("silica_oblique.toml", a).outcome(0.3, angle=40.0)
+    assert floors(lambda: oblique("1e-13"))[1] == []
+    o, named = floors(lambda: oblique("1e-14"))
+    assert len(named) == 1 and "SIMULATION_ACCURACY_FLOOR" in named[0]
+    assert any(w["code"] == "accuracy-floor" for w in o["warnings"])
+
+
 def test_damped_scene_through_the_scene_api():
     """A scene with [damping] (silica_damped.toml: JKR + coeff_restitution e = 0.9)
     through the same Scene API: the dem-damping rule names the damping loss, sticks

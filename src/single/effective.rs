@@ -50,23 +50,56 @@ pub struct Effective {
     pub effective_mass: f64,
 }
 
-/// Validates `a` and computes the record of `tabor effective`; missing inputs are
-/// named in `naming`. A library error names the parameter as the library does
-/// (`youngs_modulus`, `radius`, …): the flags differ between the two bodies, so
-/// no front end renames it.
+/// A library error of one body's input, its parameter named as the input of that
+/// body (`target_poisson_ratio` for the target's): the error names what the user
+/// typed (`--target-poisson-ratio`, `--poisson-ratio`).
+fn of_body(naming: Naming, target: bool) -> impl Fn(crate::restitution::Error) -> Error {
+    move |e| match e {
+        crate::restitution::Error::InvalidParameter {
+            parameter,
+            value,
+            requirement,
+        } => {
+            let input = match (target, parameter) {
+                (true, "youngs_modulus") => "target_youngs_modulus",
+                (true, "poisson_ratio") => "target_poisson_ratio",
+                (true, "radius") => "target_radius",
+                (true, "density") => "target_density",
+                (_, p) => p,
+            };
+            Error::Input(format!(
+                "invalid {} = {value:e}: {requirement}",
+                naming.input(input)
+            ))
+        }
+        other => Error::Library(other),
+    }
+}
+
+/// Validates `a` and computes the record of `tabor effective`; inputs are named
+/// in `naming`, each body's as its own (`--poisson-ratio`,
+/// `--target-poisson-ratio`).
 pub fn effective(a: &EffectiveArgs, naming: Naming) -> Result<Effective, Error> {
-    let sphere = ElasticMaterial::new(a.youngs_modulus, a.poisson_ratio)?;
+    let sphere_input = of_body(naming, false);
+    let sphere = ElasticMaterial::new(a.youngs_modulus, a.poisson_ratio).map_err(&sphere_input)?;
     let target = if a.rigid_target {
         ElasticMaterial::rigid()
     } else {
+        // a target constant not given is the sphere's: an error there is the
+        // sphere's input
+        let input = of_body(
+            naming,
+            a.target_youngs_modulus.is_some() || a.target_poisson_ratio.is_some(),
+        );
         ElasticMaterial::new(
             a.target_youngs_modulus.unwrap_or(a.youngs_modulus),
             a.target_poisson_ratio.unwrap_or(a.poisson_ratio),
-        )?
+        )
+        .map_err(input)?
     };
     let m1 = match (a.mass, a.density) {
         (Some(m), _) => m,
-        (None, Some(rho)) => sphere_mass(a.radius, rho)?,
+        (None, Some(rho)) => sphere_mass(a.radius, rho).map_err(&sphere_input)?,
         (None, None) => {
             return Err(Error::Input(format!(
                 "give the sphere's {} or {}",
@@ -77,9 +110,9 @@ pub fn effective(a: &EffectiveArgs, naming: Naming) -> Result<Effective, Error> 
     };
     let m2 = match (a.target_mass, a.target_density, a.target_radius) {
         (Some(m), _, _) => Some(m),
-        (None, Some(rho), Some(r)) => Some(sphere_mass(r, rho)?),
+        (None, Some(rho), Some(r)) => Some(sphere_mass(r, rho).map_err(of_body(naming, true))?),
         (None, None, Some(r)) => match a.density {
-            Some(rho) => Some(sphere_mass(r, rho)?),
+            Some(rho) => Some(sphere_mass(r, rho).map_err(of_body(naming, true))?),
             None => None,
         },
         (None, Some(_), None) => {

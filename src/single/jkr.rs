@@ -3,6 +3,7 @@
 //! contact radius and the coefficient of restitution.
 
 use crate::jkr::{AdhesiveContact, JkrImpact, JkrSphere, SeparationRule};
+use crate::numerics::tolerance::FINEST_TOLERANCE;
 use crate::restitution::{restitution_from_loss, sticking_velocity, Error, ImpactModel};
 use serde::Serialize;
 
@@ -117,7 +118,7 @@ pub fn prepare(args: &JkrArgs) -> Result<JkrPrepared, Error> {
         .with_separation(rule)
         .with_tolerance(args.tolerance)?;
     let loss = model.adhesive_energy_loss()?;
-    let v_c = sticking_velocity(&model, args.tolerance.max(1e-15))?;
+    let v_c = sticking_velocity(&model, args.tolerance.max(FINEST_TOLERANCE))?;
     let separation = sphere.critical_state(rule)?;
     let touch = sphere.first_touch()?;
     let record = Jkr {

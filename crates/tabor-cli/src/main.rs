@@ -39,7 +39,7 @@ enum Command {
     /// The impact of a scene file: restitution, sticking, losses, effects used.
     Impact(cmd::scene::ImpactArgs),
     /// Restitution of a scene over a range of speeds (or another parameter), as CSV.
-    Sweep(cmd::scene::SweepArgs),
+    Sweep(cmd::sweep::SweepArgs),
     /// The sticking velocity of a scene.
     Sticking(cmd::scene::StickingArgs),
     /// Simulate a scene's impact in the time domain.
@@ -60,7 +60,7 @@ fn main() -> ExitCode {
         Command::Penalty(args) => cmd::penalty::run(&args),
         Command::Visco(args) => cmd::visco::run(&args),
         Command::Impact(args) => cmd::scene::impact(&args),
-        Command::Sweep(args) => cmd::scene::sweep(&args),
+        Command::Sweep(args) => cmd::sweep::sweep(&args),
         Command::Sticking(args) => cmd::scene::sticking(&args),
         Command::Trajectory(args) => cmd::scene::trajectory(&args),
         Command::Completions(args) => cmd::completions::run(&args, &mut Cli::command()),

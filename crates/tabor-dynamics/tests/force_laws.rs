@@ -236,58 +236,62 @@ fn approach_jump_in_and_snap_off() {
     }
 }
 
-/// A law whose `on_branch_end` says Continue without leaving the branch is
-/// reported, not looped on.
+/// A toy law of one branch, the force `force(d)` (N), that misbehaves: its
+/// `on_branch_end` answers `at_branch_end` (the default `Separate`, or
+/// `Continue` without leaving the branch).
 #[derive(Clone, Debug)]
-struct Stuck;
+struct Toy {
+    name: &'static str,
+    force: fn(f64) -> Result<f64>,
+    at_branch_end: BranchChange,
+}
 
-impl ForceLaw for Stuck {
+impl ForceLaw for Toy {
     fn name(&self) -> String {
-        "stuck".into()
+        self.name.into()
     }
     fn overlap_scale(&self, _m: f64, _v0: f64) -> Result<f64> {
         Ok(1.0)
     }
     fn force(&self, d: f64, _r: f64) -> Result<f64> {
-        Ok(d.max(0.0))
+        (self.force)(d)
     }
     fn contact_radius(&self, _d: f64, _r: f64) -> Result<f64> {
         Ok(0.0)
     }
     fn on_branch_end(&mut self, _d: f64, _r: f64) -> Result<BranchChange> {
-        Ok(BranchChange::Continue)
+        Ok(self.at_branch_end)
     }
 }
 
-/// A law whose force fails: the error comes back unchanged.
-#[derive(Clone, Debug)]
-struct Failing;
+/// A law whose `on_branch_end` says Continue without leaving the branch is
+/// reported, not looped on.
+const STUCK: Toy = Toy {
+    name: "stuck",
+    force: |d| Ok(d.max(0.0)),
+    at_branch_end: BranchChange::Continue,
+};
 
-impl ForceLaw for Failing {
-    fn name(&self) -> String {
-        "failing".into()
-    }
-    fn overlap_scale(&self, _m: f64, _v0: f64) -> Result<f64> {
-        Ok(1.0)
-    }
-    fn force(&self, d: f64, _r: f64) -> Result<f64> {
+/// A law whose force fails: the error comes back unchanged.
+const FAILING: Toy = Toy {
+    name: "failing",
+    force: |d| {
         if d > 0.5 {
             Err(Error::invalid("overlap", d, "beyond the toy's range"))
         } else {
             Ok(d.max(0.0))
         }
-    }
-    fn contact_radius(&self, _d: f64, _r: f64) -> Result<f64> {
-        Ok(0.0)
-    }
-}
+    },
+    at_branch_end: BranchChange::Separate,
+};
 
 #[test]
 fn misbehaving_laws_give_errors() {
     let s = SimulationSettings::default();
-    let err = simulate_impact(&mut Stuck, 1.0, 1.0, &s).unwrap_err();
+    let (mut stuck, mut failing) = (STUCK, FAILING);
+    let err = simulate_impact(&mut stuck, 1.0, 1.0, &s).unwrap_err();
     assert!(matches!(err, Error::Model { .. }), "{err:?}");
-    let err = simulate_impact(&mut Failing, 1.0, 1.0, &s).unwrap_err();
+    let err = simulate_impact(&mut failing, 1.0, 1.0, &s).unwrap_err();
     assert!(
         matches!(
             err,

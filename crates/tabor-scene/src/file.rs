@@ -257,7 +257,7 @@ pub fn parse(text: &str, format: Format) -> Result<SceneFile, ParseError> {
                     line,
                     column,
                     field: None,
-                    message: e.message().to_string(),
+                    message: plain(e.message()),
                 }
             })?;
             serde_path_to_error::deserialize(de).map_err(|e| {
@@ -271,7 +271,7 @@ pub fn parse(text: &str, format: Format) -> Result<SceneFile, ParseError> {
                     line,
                     column,
                     field,
-                    message: inner.message().to_string(),
+                    message: plain(inner.message()),
                 }
             })
         }
@@ -290,11 +290,42 @@ pub fn parse(text: &str, format: Format) -> Result<SceneFile, ParseError> {
                     line: (inner.line() > 0).then_some(inner.line()),
                     column: (inner.column() > 0).then_some(inner.column()),
                     field,
-                    message,
+                    message: plain(&message),
                 }
             })
         }
     }
+}
+
+/// A deserializer's message in the words of the scene file: serde names the Rust
+/// type it expected ("expected struct SdsFile"), which a user never wrote.
+fn plain(message: &str) -> String {
+    const TABLES: [(&str, &str); 10] = [
+        (
+            "data did not match any variant of untagged enum TwistingFile",
+            "expected \"marshall\" or a table { stiffness, damping, coefficient }",
+        ),
+        ("struct SceneFile", "a scene table"),
+        ("struct FrictionFile", "a [friction] table"),
+        (
+            "struct SdsFile",
+            "a table { stiffness, damping, coefficient }",
+        ),
+        (
+            "enum TwistingFile",
+            "\"marshall\" or a table { stiffness, damping, coefficient }",
+        ),
+        ("struct BodyFile", "a body table"),
+        ("struct GradationFile", "a [gradation] table"),
+        ("struct AdhesionFile", "an [adhesion] table"),
+        ("struct PlasticityFile", "a [plasticity] table"),
+        ("struct ImpactFile", "an [impact] table"),
+    ];
+    let mut out = message.to_string();
+    for (rust, words) in TABLES {
+        out = out.replace(rust, words);
+    }
+    out
 }
 
 /// The 1-based line where `key` is set inside table `[section]` of a TOML text (or

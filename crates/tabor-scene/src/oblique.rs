@@ -11,9 +11,10 @@ use crate::scene::Scene;
 use crate::simulate::outcome_set;
 use tabor_dynamics::{ForceLaw, SimulationSettings};
 use tabor_maugis::MaugisDugdaleForceLaw;
-use tabor_restitution::Error;
+use tabor_numerics::tolerance::SIMULATION_ACCURACY_FLOOR;
+use tabor_restitution::{Error, Warning};
 use tabor_tangential::oblique::{Body, NormalContact, ObliqueImpact, ObliqueOutcome};
-use tabor_tangential::Friction;
+use tabor_tangential::{Friction, TangentialModel};
 
 /// The oblique fields added to the central-impact ones.
 #[derive(serde::Serialize)]
@@ -159,7 +160,9 @@ impl Scene {
             sphere_spin: impact.sphere_spin.unwrap_or([0.0; 3]),
             target_spin: impact.target_spin.unwrap_or([0.0; 3]),
         };
-        let settings = SimulationSettings::with_tolerance(self.accuracy.max(1e-9)).map_err(err)?;
+        let settings =
+            SimulationSettings::with_tolerance(self.accuracy.max(SIMULATION_ACCURACY_FLOOR))
+                .map_err(err)?;
         problem
             .simulate(law.as_mut(), v, alpha, &settings)
             .map_err(err)
@@ -182,7 +185,8 @@ impl Scene {
             return Ok(None);
         }
         let o = self.oblique(speed, angle)?;
-        let central = self.outcome_at(speed * angle.to_radians().cos())?;
+        let mut central = self.outcome_at(speed * angle.to_radians().cos())?;
+        central.warnings.extend(self.oblique_accuracy_warning());
         let json = |e: serde_json::Error| SceneError::field("scene", e.to_string());
         let mut value = serde_json::to_value(&central).map_err(json)?;
         let extra = serde_json::to_value(ObliqueFields {
@@ -215,4 +219,20 @@ impl Scene {
 /// `MaugisDugdaleForceLaw::pull_off_force`, the plugin's too.
 fn maugis_pull_off(md: &tabor_maugis::MaugisDugdaleImpact) -> Result<f64, Error> {
     MaugisDugdaleForceLaw::new(md)?.pull_off_force()
+}
+
+impl Scene {
+    /// The warnings of an oblique impact ([`Scene::oblique`]) when the scene's
+    /// `accuracy` is finer than the simulation resolves
+    /// (`tabor_numerics::tolerance::SIMULATION_ACCURACY_FLOOR`, 1e-13) or, with
+    /// `mindlin_deresiewicz`, than its spring bed does (`MICRO_SLIP_RESOLUTION`,
+    /// 1e-4): the oblique reports carry them with the central outcome's warnings.
+    pub fn oblique_accuracy_warning(&self) -> Vec<Warning> {
+        let micro_slip = self
+            .friction()
+            .ok()
+            .flatten()
+            .is_some_and(|f| f.tangential.model == TangentialModel::MindlinDeresiewicz);
+        crate::floors::oblique_floors(self.accuracy, micro_slip)
+    }
 }

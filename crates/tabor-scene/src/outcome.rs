@@ -318,6 +318,7 @@ impl Prepared<'_> {
         if selection.evaluation.rule == Rule::ViscousAdhesive {
             warnings.extend(viscous_adhesive_remark(self, v));
         }
+        warnings.extend(crate::floors::outcome_floors(self, &selection));
         let effects = effect_list(self, &selection, kinetic);
         let combination = selection.combination();
         let e = selection.evaluation;

@@ -9,6 +9,7 @@ use crate::models::{Evaluation, Models};
 use serde::Serialize;
 use std::fmt;
 use std::sync::{Arc, OnceLock};
+use tabor_numerics::tolerance::STICKING_ACCURACY_FLOOR;
 use tabor_numerics::Cost;
 use tabor_restitution::{sticking_velocity, EnergyLoss, ImpactModel, SpeedLimit, StickingMethod};
 
@@ -244,8 +245,9 @@ impl<'a> Prepared<'a> {
                     return Ok((Sticking::Never, Cost::ZERO));
                 }
                 let whole = SceneModel { prepared: self };
-                let vc = sticking_velocity(&whole, self.inputs().accuracy.max(1e-14))
-                    .map_err(SceneError::model)?;
+                let vc =
+                    sticking_velocity(&whole, self.inputs().accuracy.max(STICKING_ACCURACY_FLOOR))
+                        .map_err(SceneError::model)?;
                 let sticking = match vc.method {
                     StickingMethod::NeverSticks => Sticking::Never,
                     StickingMethod::SticksUpToLimit => Sticking::UpToLimit {
@@ -398,7 +400,7 @@ fn upper_edge<M: ImpactModel + ?Sized>(
                     hi,
                     tabor_numerics::root_finding::RootTolerance {
                         absolute: 0.0,
-                        relative: accuracy.max(1e-14),
+                        relative: accuracy.max(STICKING_ACCURACY_FLOOR),
                         max_iterations: 200,
                     },
                 )

@@ -54,7 +54,7 @@
 
 use crate::scaled::{restitution_from_rebound, run_phase, PhaseEnd, ScaledImpact, ScaledPoint};
 use tabor_numerics::ode::{EventDirection, OdeTolerance};
-use tabor_numerics::special;
+use tabor_numerics::{special, tolerance};
 use tabor_restitution::{validate, Error, Result};
 
 /// Absolute tolerance of the integrations: negligible against every component
@@ -98,9 +98,11 @@ pub(crate) struct Outcome {
 /// The integration tolerance for a requested tolerance.
 fn integration_tolerance(tolerance: f64) -> Result<OdeTolerance> {
     let tol = validate::tolerance("tolerance", tolerance)?.min(LOOSEST) * TIGHTEN;
-    Ok(OdeTolerance::new(tol.max(1e-15), ABSOLUTE)
-        .with_max_step(MAX_STEP)
-        .with_max_steps(MAX_STEPS))
+    Ok(
+        OdeTolerance::new(tol.max(tolerance::FINEST_TOLERANCE), ABSOLUTE)
+            .with_max_step(MAX_STEP)
+            .with_max_steps(MAX_STEPS),
+    )
 }
 
 /// `x^p` for the overlap x clamped at 0. The exponents the laws of seed 000 use

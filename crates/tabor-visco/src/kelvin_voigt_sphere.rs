@@ -39,7 +39,7 @@ use crate::scaled::{positive_up_to, ScaledImpact, ScaledPoint};
 use serde::Serialize;
 use tabor_numerics::root_finding::{brent, RootTolerance};
 use tabor_numerics::special::beta;
-use tabor_numerics::tolerance::ACCURACY;
+use tabor_numerics::tolerance::{ACCURACY, MODEL_ACCURACY_FLOOR, SIMULATION_ACCURACY_FLOOR};
 use tabor_restitution::{validate, Error, Result};
 
 /// Largest viscous parameter δ accepted. Both models are solved up to here in a
@@ -192,10 +192,10 @@ pub fn viscous_parameter_for_restitution(
         ));
     }
     let tol = validate::tolerance("tolerance", tolerance)?;
-    let inner = (0.1 * tol).max(1e-13);
+    let inner = (0.1 * tol).max(SIMULATION_ACCURACY_FLOOR);
     // The forward solutions carry relative errors ~1e-13 at best: no point in
     // asking for more than 1e-12 in ln δ.
-    let accuracy = tol.max(1e-12);
+    let accuracy = tol.max(MODEL_ACCURACY_FLOOR);
     let logit_target = target.ln() - (1.0 - target).ln();
     let mut failure = None;
     let mut memo: Vec<(f64, f64)> = Vec::new();

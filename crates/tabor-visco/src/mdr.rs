@@ -115,6 +115,7 @@ use crate::scaled::{
 use std::cell::RefCell;
 use tabor_numerics::ode::EventDirection;
 use tabor_numerics::rosenbrock::Jacobian;
+use tabor_numerics::tolerance::FINEST_TOLERANCE;
 use tabor_restitution::{validate, Error, Result};
 
 #[cfg(test)]
@@ -414,7 +415,7 @@ pub(crate) fn solve(m: &ScaledMedium, tolerance: f64) -> Result<ScaledImpact> {
     let method = method_for(m);
     Ok(solve_with(
         m,
-        (tol * RECORD_TOLERANCE_FACTOR).max(1e-15),
+        (tol * RECORD_TOLERANCE_FACTOR).max(FINEST_TOLERANCE),
         tol,
         false,
         method,

@@ -32,6 +32,7 @@
 use std::sync::Arc;
 use tabor_dynamics::{ImpactSimulation, SimulationSettings};
 use tabor_numerics::chebyshev::PiecewiseChebyshev;
+use tabor_numerics::tolerance::SIMULATION_ACCURACY_FLOOR;
 use tabor_numerics::Cost;
 use tabor_restitution::{validate, EnergyLoss, Error, ImpactModel, Result};
 use tabor_visco::models::KelvinVoigtSphere;
@@ -133,7 +134,7 @@ impl SpeedTable {
             ));
         }
         let tolerance = model.tolerance();
-        let sample_tolerance = (tolerance * 1e-2).max(1e-13);
+        let sample_tolerance = (tolerance * 1e-2).max(SIMULATION_ACCURACY_FLOOR);
         let mut settings = SimulationSettings::with_tolerance(sample_tolerance)?;
         settings.record_trajectory = false;
         let mut cost = Cost::ZERO;

@@ -8,4 +8,5 @@ pub mod maugis_loss;
 pub mod penalty;
 pub mod plastic;
 pub mod scene;
+pub mod sweep;
 pub mod visco;

@@ -1,16 +1,15 @@
 //! The scene subcommands: `impact`, `sweep`, `sticking`, `trajectory`. A scene is a
 //! TOML or JSON file (format: `examples/scenes/README.md`).
 
-use crate::output::{number, optional, print_json, stdout, Failure, Outcome, VERSION};
-use indicatif::{ProgressBar, ProgressStyle};
+use crate::output::{number, print_json, stdout, Failure, Outcome, VERSION};
 use serde::Serialize;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use tabor::dynamics::SimulationSettings;
-use tabor::scene::{spaced, Scene, SweepParameter};
+use tabor::scene::Scene;
 use tabor::tangential::oblique::ObliqueOutcome;
 
-fn load(path: &Path) -> Result<Scene, String> {
+pub(crate) fn load(path: &Path) -> Result<Scene, String> {
     Scene::from_path(path).map_err(|e| format!("{}: {e}", path.display()))
 }
 
@@ -32,11 +31,40 @@ pub struct ImpactArgs {
     /// Print one JSON object instead of a report
     #[arg(long)]
     json: bool,
+    /// Answer beyond the small-strain limit of the pair (refused by default)
+    #[arg(long)]
+    allow_large_strain: bool,
+}
+
+/// Refuses a normal impact speed `speed` beyond the small-strain limit of the
+/// scene's pair, where the quasi-static small-strain models do not hold: the Hertz
+/// overlap (15 m v²/(16 E* √R))^(2/5) reaches `SMALL_STRAIN_OVERLAP` of R (the
+/// export's limit, `tabor::lammps::small_strain_speed`). `allow` lets it through;
+/// a graded medium (whose E* is another constant) is not checked.
+pub(crate) fn within_small_strain(scene: &Scene, speed: f64, allow: bool, flag: &str) -> Outcome {
+    if allow || scene.data().target.gradation.is_some() || !speed.is_finite() {
+        return Ok(());
+    }
+    let limit = tabor::lammps::small_strain_speed(
+        scene.effective_modulus,
+        scene.effective_radius,
+        scene.effective_mass,
+    );
+    if limit.is_finite() && speed > limit {
+        return Err(format!(
+            "{flag} = {speed:e} m/s is beyond the small-strain limit {limit:.4e} m/s of this pair \
+             (the Hertz overlap would exceed {} times the radius, where the quasi-static models \
+             do not hold); pass --allow-large-strain to answer anyway",
+            tabor::lammps::SMALL_STRAIN_OVERLAP
+        )
+        .into());
+    }
+    Ok(())
 }
 
 /// The scene's oblique impact at `speed` and `angle` (degrees), when it is one:
 /// the central outcome at the normal speed and the simulated oblique one.
-fn oblique_at(
+pub(crate) fn oblique_at(
     scene: &Scene,
     path: &Path,
     speed: f64,
@@ -47,9 +75,10 @@ fn oblique_at(
     }
     let fail = |e: tabor::scene::SceneError| format!("{}: {e}", path.display());
     let oblique = scene.oblique(speed, angle).map_err(fail)?;
-    let central = scene
+    let mut central = scene
         .outcome_at(speed * angle.to_radians().cos())
         .map_err(fail)?;
+    central.warnings.extend(scene.oblique_accuracy_warning());
     Ok(Some((central, oblique)))
 }
 
@@ -68,6 +97,16 @@ fn oblique_json(scene: &Scene, path: &Path, speed: f64, angle: f64) -> Outcome {
 pub fn impact(args: &ImpactArgs) -> Outcome {
     let scene = load(&args.scene)?;
     let angle = args.angle.or(scene.angle()).unwrap_or(0.0);
+    if let Some(v) = args.speed.or(scene.speed) {
+        // the normal speed sets the overlap
+        let normal = v * angle.to_radians().cos().abs();
+        within_small_strain(
+            &scene,
+            normal,
+            args.allow_large_strain,
+            "the normal impact speed",
+        )?;
+    }
     if angle != 0.0 || scene.is_oblique() {
         let speed = args
             .speed
@@ -131,6 +170,9 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
                 "central model          {} (restitution {} at the normal speed)",
                 central.model, central.restitution
             )?;
+            for w in &central.warnings {
+                writeln!(out, "warning [{}]: {}", w.code, w.message)?;
+            }
             return out.finish();
         }
     }
@@ -207,63 +249,8 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
     out.finish()
 }
 
-/// Arguments of `tabor sweep`.
-#[derive(clap::Args)]
-#[command(
-    after_help = "CSV columns: the swept parameter with its unit (speed_m_per_s, sphere_radius_m, \
-work_of_adhesion_j_per_m2, tabor_parameter, yield_stress_pa), restitution, sticks, energy_loss_j, \
-sticking_velocity_m_per_s (empty: never sticks), model, tabor_version. Numbers in shortest \
-round-trip form.\n\
-Example: tabor sweep examples/scenes/silica.toml --speed 0.01:1:200 --log --out silica.csv"
-)]
-pub struct SweepArgs {
-    /// The scene file (.toml or .json)
-    scene: PathBuf,
-    /// Speeds as from:to:points (m/s)
-    #[arg(long, conflicts_with = "values")]
-    speed: Option<String>,
-    /// Another parameter to sweep: sphere-radius, work-of-adhesion, tabor-parameter, yield-stress,
-    /// angle (degrees; an oblique sweep)
-    #[arg(long, requires = "values")]
-    parameter: Option<String>,
-    /// Values of --parameter as from:to:points
-    #[arg(long)]
-    values: Option<String>,
-    /// Space the points logarithmically
-    #[arg(long)]
-    log: bool,
-    /// The CSV file to write; default: stdout
-    #[arg(long)]
-    out: Option<PathBuf>,
-}
-
-fn range(text: &str, log: bool) -> Result<Vec<f64>, String> {
-    let parts: Vec<&str> = text.split(':').collect();
-    let bad = || format!("invalid range \"{text}\": expected from:to:points");
-    if parts.len() != 3 {
-        return Err(bad());
-    }
-    let from: f64 = parts[0].trim().parse().map_err(|_| bad())?;
-    let to: f64 = parts[1].trim().parse().map_err(|_| bad())?;
-    let points: usize = parts[2].trim().parse().map_err(|_| bad())?;
-    spaced(from, to, points, log).map_err(|e| e.to_string())
-}
-
-/// The CSV column of a swept parameter: its name with its SI unit.
-fn column(parameter: SweepParameter) -> String {
-    match parameter.name() {
-        "speed" => "speed_m_per_s".into(),
-        "sphere-radius" => "sphere_radius_m".into(),
-        "work-of-adhesion" => "work_of_adhesion_j_per_m2".into(),
-        "tabor-parameter" => "tabor_parameter".into(),
-        "yield-stress" => "yield_stress_pa".into(),
-        "angle" => "angle_deg".into(),
-        other => other.replace('-', "_"),
-    }
-}
-
 /// Where a CSV goes: a file or stdout.
-fn csv_target(path: Option<&Path>) -> Result<Box<dyn Write>, String> {
+pub(crate) fn csv_target(path: Option<&Path>) -> Result<Box<dyn Write>, String> {
     Ok(match path {
         Some(p) => Box::new(
             std::fs::File::create(p).map_err(|e| format!("cannot write {}: {e}", p.display()))?,
@@ -274,153 +261,11 @@ fn csv_target(path: Option<&Path>) -> Result<Box<dyn Write>, String> {
 
 /// Turns a CSV write error into the subcommand's failure: a file error names the
 /// file; on stdout a closed pipe is the quiet end.
-fn csv_failure(path: Option<&Path>) -> impl Fn(csv::Error) -> Failure + '_ {
+pub(crate) fn csv_failure(path: Option<&Path>) -> impl Fn(csv::Error) -> Failure + '_ {
     move |e| match path {
         Some(p) => format!("cannot write {}: {e}", p.display()).into(),
         None => e.into(),
     }
-}
-
-/// Runs `tabor sweep`.
-pub fn sweep(args: &SweepArgs) -> Outcome {
-    let scene = load(&args.scene)?;
-    let (parameter, values) = match (&args.speed, &args.parameter, &args.values) {
-        (Some(s), None, _) => (SweepParameter::Speed, range(s, args.log)?),
-        (None, Some(p), Some(v)) => {
-            let parameter = SweepParameter::from_name(p).ok_or_else(|| {
-                format!("invalid --parameter \"{p}\": expected sphere-radius, work-of-adhesion, tabor-parameter, yield-stress or angle")
-            })?;
-            (parameter, range(v, args.log)?)
-        }
-        _ => {
-            return Err(
-                "give --speed from:to:points, or --parameter NAME --values from:to:points".into(),
-            )
-        }
-    };
-    scene.check_parameter(parameter).map_err(|e| {
-        format!(
-            "{}: --parameter {}: {e}",
-            args.scene.display(),
-            parameter.name()
-        )
-    })?;
-    if parameter == SweepParameter::Angle || scene.is_oblique() {
-        return oblique_sweep(&scene, args, parameter, &values);
-    }
-    let bar = ProgressBar::new(values.len() as u64);
-    if values.len() < 100 {
-        bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
-    }
-    if let Ok(style) = ProgressStyle::with_template("{bar:40} {pos}/{len} points, {eta} left") {
-        bar.set_style(style);
-    }
-    let results = tabor::scene::sweep(&scene, parameter, &values, || bar.inc(1));
-    bar.finish_and_clear();
-    // Every point must succeed before anything is written (as before: no partial file).
-    let mut outcomes = Vec::with_capacity(values.len());
-    for (value, result) in values.iter().zip(results) {
-        outcomes.push(result.map_err(|e| format!("{} = {value:e}: {e}", parameter.name()))?);
-    }
-    let path = args.out.as_deref();
-    let fail = csv_failure(path);
-    let mut csv = csv::Writer::from_writer(csv_target(path)?);
-    csv.write_record([
-        column(parameter).as_str(),
-        "restitution",
-        "sticks",
-        "energy_loss_j",
-        "sticking_velocity_m_per_s",
-        "model",
-        "tabor_version",
-    ])
-    .map_err(&fail)?;
-    for (value, o) in values.iter().zip(&outcomes) {
-        csv.write_record([
-            number(*value),
-            number(o.restitution),
-            o.sticks.to_string(),
-            number(o.energy_loss),
-            optional(o.sticking_velocity),
-            o.model.clone(),
-            VERSION.to_string(),
-        ])
-        .map_err(&fail)?;
-    }
-    csv.flush().map_err(|e| fail(e.into()))?;
-    if let Some(p) = path {
-        eprintln!("wrote {} points to {}", values.len(), p.display());
-    }
-    Ok(())
-}
-
-/// An oblique sweep (`--parameter angle`, or a scene with an angle, friction or
-/// spin): per point the central fields at the normal speed and the oblique ones.
-fn oblique_sweep(
-    scene: &Scene,
-    args: &SweepArgs,
-    parameter: SweepParameter,
-    values: &[f64],
-) -> Outcome {
-    let mut rows = Vec::with_capacity(values.len());
-    for &value in values {
-        let point = scene
-            .with_parameter(parameter, value)
-            .map_err(|e| format!("{} = {value:e}: {e}", parameter.name()))?;
-        let speed = point.speed.ok_or_else(|| {
-            format!(
-                "{}: an oblique sweep needs [impact] speed",
-                args.scene.display()
-            )
-        })?;
-        let angle = point.angle().unwrap_or(0.0);
-        let (central, o) = match oblique_at(&point, &args.scene, speed, angle)? {
-            Some(pair) => pair,
-            None => (
-                point.outcome_at(speed).map_err(|e| e.to_string())?,
-                point.oblique(speed, 0.0).map_err(|e| e.to_string())?,
-            ),
-        };
-        rows.push((value, central, o));
-    }
-    let path = args.out.as_deref();
-    let fail = csv_failure(path);
-    let mut csv = csv::Writer::from_writer(csv_target(path)?);
-    csv.write_record([
-        column(parameter).as_str(),
-        "normal_restitution",
-        "tangential_restitution",
-        "rebound_angle_deg",
-        "sticks",
-        "energy_loss_j",
-        "sliding_friction_j",
-        "sphere_angular_velocity_z_rad_per_s",
-        "restitution_central",
-        "model",
-        "tabor_version",
-    ])
-    .map_err(&fail)?;
-    for (value, central, o) in &rows {
-        csv.write_record([
-            number(*value),
-            number(o.normal_restitution),
-            optional(o.tangential_restitution),
-            optional(o.rebound_angle),
-            o.sticks.to_string(),
-            number(o.energy_loss),
-            number(o.losses.sliding_friction),
-            number(o.after.sphere.angular_velocity[2]),
-            number(central.restitution),
-            o.law.clone(),
-            VERSION.to_string(),
-        ])
-        .map_err(&fail)?;
-    }
-    csv.flush().map_err(|e| fail(e.into()))?;
-    if let Some(p) = path {
-        eprintln!("wrote {} points to {}", values.len(), p.display());
-    }
-    Ok(())
 }
 
 /// Arguments of `tabor sticking`.
@@ -499,6 +344,9 @@ pub struct TrajectoryArgs {
     /// Print one JSON object
     #[arg(long)]
     json: bool,
+    /// Answer beyond the small-strain limit of the pair (refused by default)
+    #[arg(long)]
+    allow_large_strain: bool,
 }
 
 #[derive(Serialize)]
@@ -531,6 +379,13 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
         .or(scene.speed)
         .ok_or_else(|| format!("{}: give --speed or [impact] speed", args.scene.display()))?;
     let angle = args.angle.or(scene.angle()).unwrap_or(0.0);
+    let normal = speed * angle.to_radians().cos().abs();
+    within_small_strain(
+        &scene,
+        normal,
+        args.allow_large_strain,
+        "the normal impact speed",
+    )?;
     if angle != 0.0 || scene.is_oblique() {
         if args.out.is_some() {
             return Err("--out: the oblique impact has no trajectory record yet".into());

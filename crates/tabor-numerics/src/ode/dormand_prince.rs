@@ -12,14 +12,14 @@
 //! - [`DormandPrince`], a stepper: one accepted step at a time, dense output on the
 //!   last step, event search on the last step, restart after a discontinuity. Use it
 //!   when the right-hand side changes at events (branch changes of a contact law).
-//! - [`solve`] and [`solve_until_event`]: the driver [`drive`] with this stepper,
+//! - [`solve`] and [`solve_until_event`]: the driver [`drive`](super::drive) with this stepper,
 //!   to a final time or to the first event.
 
 #![allow(clippy::needless_range_loop)] // component loops over small fixed arrays
 
 use super::{
-    drive, finite, first_non_finite, locate_event_in_step, no_event, one_step_method, DenseStepper,
-    EventDirection, EventPoint, FailureNames, OdeSolution, OdeTolerance, StepperCore,
+    drive_unobserved, finite, first_non_finite, locate_event_in_step, no_event, one_step_method,
+    DenseStepper, EventDirection, EventPoint, FailureNames, OdeSolution, OdeTolerance, StepperCore,
 };
 use crate::{Cost, Result};
 
@@ -323,13 +323,5 @@ where
 {
     finite("t_end", t_end)?;
     let mut stepper = DormandPrince::new(&mut f, t0, y0, t_end, tol)?;
-    let run = drive(
-        &mut stepper,
-        &mut f,
-        &mut g,
-        direction,
-        t_end,
-        &mut |_: &DormandPrince<N>, _: f64| {},
-    )?;
-    Ok(run.solution)
+    drive_unobserved(&mut stepper, &mut f, &mut g, direction, t_end)
 }

@@ -8,6 +8,7 @@ use tabor_dynamics::SimulationSettings;
 use tabor_elastic::{ElasticContact, ElasticImpact};
 use tabor_jkr::{GradedSphere, JkrImpact, JkrSphere, SeparationRule};
 use tabor_maugis::{normalized_loss, MaugisContact, MaugisDugdaleImpact, LAMBDA_1};
+use tabor_numerics::tolerance::MODEL_ACCURACY_FLOOR;
 use tabor_plastic::{
     AdhesiveInterpolationImpact, AdhesivePlasticContact, DimensionlessFit, Interpolation,
     JacksonGreen, PlasticContact, PlasticImpact, Thornton,
@@ -271,7 +272,7 @@ impl Models {
             _ => None,
         };
 
-        let damped = super::damped::Damped::build(scene, adhesive.as_ref(), plastic.as_ref())?;
+        let damped = super::types::Damped::build(scene, adhesive.as_ref(), plastic.as_ref())?;
         Ok(Models {
             damped,
             mass: scene.effective_mass,
@@ -342,13 +343,13 @@ fn build_visco(scene: &Inputs) -> Result<Result<Option<Visco>, ViscoKind>, Scene
             format!("two Kelvin-Voigt bodies with equal relaxation times: a Kelvin-Voigt contact (5.64) with G* = {shear_modulus:e} Pa, eta* = {viscosity:e} Pa s (correspondence principle)"),
         ),
     };
-    // at the scene's accuracy, as every other model it builds (floored at 1e-12,
-    // as the viscous-adhesive model)
+    // at the scene's accuracy, as every other model it builds (floored at
+    // MODEL_ACCURACY_FLOOR, as the viscous-adhesive model)
     let Some(model) = contact
         .impact_model_with_tolerance(
             scene.effective_radius,
             scene.effective_mass,
-            scene.accuracy.max(1e-12),
+            scene.accuracy.max(MODEL_ACCURACY_FLOOR),
         )
         .map_err(in_field)?
     else {
@@ -382,6 +383,10 @@ fn build_viscous_adhesive(
             }))
         }
     };
-    ViscoadhesiveImpact::of(impact, contact_viscosity, scene.accuracy.max(1e-12))
-        .map_err(|e| EffectFields::of(scene).error(EffectKind::Viscoelasticity, e))
+    ViscoadhesiveImpact::of(
+        impact,
+        contact_viscosity,
+        scene.accuracy.max(MODEL_ACCURACY_FLOOR),
+    )
+    .map_err(|e| EffectFields::of(scene).error(EffectKind::Viscoelasticity, e))
 }

@@ -7,33 +7,19 @@
 //! includes the well depth, as for the viscous-adhesive rule), every other law
 //! (Hertz, the elasto-plastic laws, the adhesive interpolation law) boxed.
 
-use super::types::{Adhesive, AdhesiveModel, Evaluation, Models, Plastic};
+use super::types::{Adhesive, AdhesiveModel, Damped, Evaluation, Models, Plastic};
 use crate::combination::{EffectKind, EffectSet, Rule};
 use crate::error::SceneError;
 use crate::inputs::Inputs;
 use tabor_dynamics::{simulate_impact, ForceLaw, ImpactSimulation, SimulationSettings};
 use tabor_elastic::ElasticContact;
-use tabor_plastic::{JacksonGreen, JacksonGreenLaw, PlasticContact};
+use tabor_plastic::{JacksonGreen, PlasticContact};
 use tabor_restitution::{validate, EnergyLoss, Error, ImpactModel};
 use tabor_viscoadhesive::{
     AdhesiveImpact, NormalDamping, SeparationPotential, ViscoadhesiveImpact, ViscousDamping,
 };
 
 const MODEL: &str = "dem-damping";
-
-/// The scene's DEM damping law and the laws it damps, built once.
-pub(crate) struct Damped {
-    pub damping: NormalDamping,
-    /// The damped elastic adhesive impact (JKR or Maugis-Dugdale), when the scene
-    /// has adhesion on a homogeneous target.
-    pub adhesive: Option<ViscoadhesiveImpact>,
-    /// The elastic contact (Hertz).
-    elastic: ElasticContact,
-    /// The Jackson-Green law, when the scene's plastic model is Jackson-Green.
-    jackson_green: Option<JacksonGreenLaw>,
-    settings: SimulationSettings,
-    accuracy: f64,
-}
 
 fn err(e: Error) -> SceneError {
     SceneError::model(e)

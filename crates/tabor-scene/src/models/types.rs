@@ -98,7 +98,7 @@ pub(crate) struct Models {
     pub visco: Option<Visco>,
     pub viscous_adhesive: Option<ViscoadhesiveImpact>,
     /// The DEM damping law of `[damping]` and the laws it damps.
-    pub damped: Option<super::damped::Damped>,
+    pub damped: Option<Damped>,
     /// The scene field each effect's model errors point at.
     pub fields: EffectFields,
     /// The effects whose parameters the scene gives.
@@ -181,4 +181,19 @@ impl Models {
             .map(|v| v.model.as_ref())
             .ok_or_else(|| Self::missing("viscoelastic"))
     }
+}
+
+/// The scene's DEM damping law and the laws it damps, built once (its building
+/// and evaluation: `damped.rs`).
+pub(crate) struct Damped {
+    pub damping: tabor_viscoadhesive::NormalDamping,
+    /// The damped elastic adhesive impact (JKR or Maugis-Dugdale), when the scene
+    /// has adhesion on a homogeneous target.
+    pub adhesive: Option<ViscoadhesiveImpact>,
+    /// The elastic contact (Hertz).
+    pub(crate) elastic: tabor_elastic::ElasticContact,
+    /// The Jackson-Green law, when the scene's plastic model is Jackson-Green.
+    pub(crate) jackson_green: Option<tabor_plastic::JacksonGreenLaw>,
+    pub(crate) settings: tabor_dynamics::SimulationSettings,
+    pub(crate) accuracy: f64,
 }

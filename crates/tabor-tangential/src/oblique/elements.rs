@@ -1,7 +1,7 @@
 //! Small pieces of the friction elements: the turning rate of a slip direction,
 //! the cap of a frozen element, the twisting coefficients, error helpers.
 
-use super::simulate::RATE_CAP;
+use super::limits::RATE_CAP;
 use crate::model::Friction;
 use crate::model::Twisting;
 use nalgebra::Vector3;

@@ -75,6 +75,7 @@ mod bed;
 mod bodies;
 mod elements;
 mod energy;
+mod limits;
 mod modes;
 mod outcome;
 mod simulate;

@@ -3,7 +3,7 @@
 //! that locate the switches.
 
 use super::elements::*;
-use super::simulate::*;
+use super::limits::*;
 use super::state::*;
 use crate::model::Twisting;
 use nalgebra::Vector3;

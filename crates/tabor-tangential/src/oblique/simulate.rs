@@ -5,6 +5,7 @@
 use super::bed::{MicroSlipBed, MICRO_SLIP_NODES};
 use super::bodies::ObliqueImpact;
 use super::elements::*;
+use super::limits::*;
 use super::outcome::ObliqueOutcome;
 use super::state::*;
 use crate::model::TangentialModel;
@@ -31,18 +32,22 @@ pub(super) enum Event {
     FrictionOnset,
 }
 
-/// The largest rate (per time unit of the impact) of the relaxations that diverge
-/// where a contact without adhesion vanishes: the turning of a slip direction
-/// ([`turn_rate`]) and `mindlin_rescale`'s shrinking of ξ.
-pub(super) const RATE_CAP: f64 = 1e4;
+/// `x ≤ limit`, false for NaN.
+fn at_most(x: f64, limit: f64) -> bool {
+    matches!(
+        x.partial_cmp(&limit),
+        Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
+    )
+}
 
-/// The step of the central differences of the normal law, relative to the
-/// distance to its branch end ([`Setup::difference_step`]).
-pub(super) const DIFFERENCE_STEP: f64 = 1e-5;
-
-/// The overlap (in units of the overlap scale) up to which a contact that starts
-/// without a Coulomb limit runs without friction ([`ObliqueImpact::simulate`]).
-pub(super) const WARMUP: f64 = 1e-6;
+/// The effective radius of the impact (the sphere's on a flat).
+fn r_eff_of(imp: &ObliqueImpact) -> f64 {
+    if imp.target.is_flat() {
+        imp.sphere.radius
+    } else {
+        imp.sphere.radius * imp.target.radius / (imp.sphere.radius + imp.target.radius)
+    }
+}
 
 impl ObliqueImpact {
     /// Simulates the impact at relative speed `speed` (m/s) and angle `angle`
@@ -130,8 +135,27 @@ impl ObliqueImpact {
         } else {
             Vector3::from(self.target_spin)
         };
-        for s in spin_i.iter().chain(spin_j.iter()) {
-            validate::finite("spin", *s)?;
+        for s in spin_i.iter() {
+            validate::finite("sphere_spin", *s)?;
+        }
+        for s in spin_j.iter() {
+            validate::finite("target_spin", *s)?;
+        }
+        // a spin whose surface speed dwarfs the impact is no impact problem (and
+        // overflows the integration's units)
+        for (name, spin, radius) in [
+            ("sphere_spin", spin_i, self.sphere.radius),
+            ("target_spin", spin_j, self.target.radius),
+        ] {
+            // the largest component: the norm of huge components overflows
+            let largest = spin.amax();
+            if radius.is_finite() && !at_most(largest * radius, MAX_SURFACE_SPEED_RATIO * v) {
+                return Err(Error::invalid(
+                    name,
+                    largest,
+                    "the surface speed |ω| R must be at most 10⁶ times the impact speed",
+                ));
+            }
         }
         if self.sphere.is_flat() {
             return Err(Error::invalid(
@@ -153,6 +177,28 @@ impl ObliqueImpact {
         let length = validate::positive("overlap_scale", law.overlap_scale(m_eff, v_n)?)?;
         let time = length / v_n;
         let force = m_eff * v_n * v_n / length;
+        // the friction springs at the overlap scale: finite, and not beyond 10¹² of
+        // the normal force scale (a stiffness that overflows the units)
+        if let Some(f) = &self.friction {
+            let a_ref = (r_eff_of(self) * length).sqrt();
+            let spring = f.tangential.spring(a_ref) * length;
+            if !at_most(spring, MAX_SPRING_RATIO * force) {
+                return Err(Error::invalid(
+                    "tangential_stiffness",
+                    f.tangential.stiffness,
+                    "the tangential spring at the overlap scale must be at most 10¹² times the normal force scale",
+                ));
+            }
+            if let Some(r) = &f.rolling {
+                if !at_most(r.stiffness * length, MAX_SPRING_RATIO * force) {
+                    return Err(Error::invalid(
+                        "rolling stiffness",
+                        r.stiffness,
+                        "the rolling spring at the overlap scale must be at most 10¹² times the normal force scale",
+                    ));
+                }
+            }
+        }
         let r_i = self.sphere.radius;
         let (r_sum, r_eff) = if flat {
             (r_i, r_i)

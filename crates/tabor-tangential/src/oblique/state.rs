@@ -5,7 +5,7 @@
 use super::bed::MicroSlipBed;
 use super::bodies::ObliqueImpact;
 use super::elements::*;
-use super::simulate::*;
+use super::limits::*;
 use crate::model::{TangentialModel, Twisting};
 use nalgebra::Vector3;
 use std::cell::RefCell;

@@ -50,8 +50,8 @@ mod tableau;
 pub use lu::Matrix;
 
 use super::{
-    drive, finite, first_non_finite, locate_event_in_step, no_event, one_step_method, DenseStepper,
-    EventDirection, EventPoint, FailureNames, OdeSolution, OdeTolerance, StepperCore,
+    drive_unobserved, finite, first_non_finite, locate_event_in_step, no_event, one_step_method,
+    DenseStepper, EventDirection, EventPoint, FailureNames, OdeSolution, OdeTolerance, StepperCore,
 };
 use crate::{Cost, Result};
 use lu::Lu;
@@ -483,7 +483,7 @@ one_step_method!(Rosenbrock);
 
 /// Integrates `y' = f(t, y)` from `(t0, y0)` with Rodas5P (Jacobian strategy
 /// `jacobian`) until the event function `g(t, y)` crosses zero in `direction`, or
-/// until `t_end` when it does not: the driver [`drive`] with this stepper, as
+/// until `t_end` when it does not: the driver [`drive`](crate::ode::drive) with this stepper, as
 /// [`crate::ode::solve_until_event`] with Dormand-Prince.
 #[allow(clippy::too_many_arguments)]
 pub fn solve_until_event<F, G, const N: usize>(
@@ -502,15 +502,7 @@ where
 {
     finite("t_end", t_end)?;
     let mut stepper = Rosenbrock::new(&mut f, t0, y0, t_end, tol, jacobian, Scheme::Rodas5P)?;
-    let run = drive(
-        &mut stepper,
-        &mut f,
-        &mut g,
-        direction,
-        t_end,
-        &mut |_: &Rosenbrock<N>, _: f64| {},
-    )?;
-    Ok(run.solution)
+    drive_unobserved(&mut stepper, &mut f, &mut g, direction, t_end)
 }
 
 /// Integrates `y' = f(t, y)` from `(t0, y0)` to `t_end` > `t0` with Rodas5P.

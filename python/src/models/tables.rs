@@ -1,21 +1,12 @@
-//! The single-model functions `effective`, `jkr`, `plastic`, `visco`, `penalty`
-//! (the CLI subcommands of the same names, computed by `tabor::single`), driven by
-//! one table per model: each keyword once, with its kind, default and help line.
-//! The Python layer builds the functions' signatures, docs and type stubs from the
-//! same tables (`_tabor.SPECS`); a library error names the keyword through
-//! `tabor::single::input_name`.
+//! The tables: one per model, each keyword once, with its kind, default and help
+//! line; and the errors of the library renamed to the keywords.
 
-use crate::batch::Options;
+use super::{Input, Kind, Model, Split};
 use crate::columns::{OwnFields, OwnKind};
 use crate::failure::Failure;
-use crate::output::{push, Call, Col};
-use numpy::PyReadonlyArray1;
-use pyo3::exceptions::PyTypeError;
-use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyTuple};
 use tabor::jkr::SeparationRule;
 use tabor::numerics::tolerance;
-use tabor::restitution::{Error, Menu, UnknownChoice};
+use tabor::restitution::{Error, Menu};
 use tabor::single::effective::{effective, EffectiveArgs};
 use tabor::single::jkr::{jkr, prepare as prepare_jkr, JkrArgs, JkrAtSpeed, JkrPrepared};
 use tabor::single::penalty::{penalty, PenaltyArgs, PenaltyLaw};
@@ -23,62 +14,8 @@ use tabor::single::plastic::{plastic, PlasticArgs, PlasticModel};
 use tabor::single::visco::{visco, ViscoArgs, ViscoModel};
 use tabor::single::{input_name, Naming};
 
-/// How a keyword is given.
-pub enum Kind<A> {
-    /// A number (array_like); required when `default` is None.
-    Number {
-        /// The default value.
-        default: Option<f64>,
-        /// Stores the element's value.
-        set: fn(&mut A, f64),
-    },
-    /// An optional number (array_like or None).
-    Optional {
-        /// Stores the element's value.
-        set: fn(&mut A, Option<f64>),
-    },
-    /// A bool (strictly `True`/`False`), default False.
-    Flag {
-        /// Stores the value.
-        set: fn(&mut A, bool),
-    },
-    /// One of a menu of the model crates (a str: its `as_str` name; underscores
-    /// may stand for hyphens); required when `default` is None.
-    Choice {
-        /// The menu: each choice's name and description (from the crate's `ALL`,
-        /// `as_str`, `description`).
-        menu: fn() -> Vec<(&'static str, &'static str)>,
-        /// The default choice's name.
-        default: Option<fn() -> &'static str>,
-        /// Parses a name of `menu` (the menu's `FromStr`) and stores it.
-        set: fn(&mut A, &str) -> Result<(), UnknownChoice>,
-    },
-}
-
-/// One keyword of a model function.
-pub struct Input<A> {
-    /// The keyword (snake_case, the CLI flag without `--`).
-    pub name: &'static str,
-    /// The help line (with the unit).
-    pub help: &'static str,
-    /// How it is given.
-    pub kind: Kind<A>,
-}
-
-/// A model function: its keywords and its computation.
-pub struct Model<A: 'static, R> {
-    /// The function's name (= the CLI subcommand).
-    pub name: &'static str,
-    /// The keywords, in the order of the signature.
-    pub inputs: &'static [Input<A>],
-    /// The inputs before the keywords are applied.
-    pub blank: fn() -> A,
-    /// Validates and computes one element.
-    pub compute: fn(&A) -> Result<R, Failure>,
-}
-
 /// Every choice of menu `M`: (name, description).
-fn menu<M: Menu>() -> Vec<(&'static str, &'static str)> {
+pub(super) fn menu<M: Menu>() -> Vec<(&'static str, &'static str)> {
     M::ALL
         .iter()
         .map(|m| (m.as_str(), m.description()))
@@ -86,7 +23,7 @@ fn menu<M: Menu>() -> Vec<(&'static str, &'static str)> {
 }
 
 /// A library error with its parameter named as the keyword that gives it.
-fn library(e: Error) -> Failure {
+pub(super) fn library(e: Error) -> Failure {
     let message = match &e {
         Error::InvalidParameter {
             parameter,
@@ -101,15 +38,12 @@ fn library(e: Error) -> Failure {
     Failure::library(&e, message)
 }
 
-fn single(e: tabor::single::Error) -> Failure {
+pub(super) fn single(e: tabor::single::Error) -> Failure {
     match e {
         tabor::single::Error::Library(e) => library(e),
         tabor::single::Error::Input(m) => Failure::input(m),
     }
 }
-
-// ---------------------------------------------------------------------------------
-// the tables
 
 /// `effective` names the library's own parameters (its keywords differ between the
 /// two bodies), so its errors are not renamed.
@@ -487,298 +421,6 @@ pub static PENALTY: Model<PenaltyArgs, tabor::single::penalty::Penalty> = Model 
     },
     compute: |a| penalty(a, Naming::Keywords).map_err(single),
 };
-
-// ---------------------------------------------------------------------------------
-// the tables in Python
-
-fn spec<'py, A>(py: Python<'py>, inputs: &[Input<A>]) -> PyResult<Bound<'py, PyList>> {
-    let list = PyList::empty(py);
-    for i in inputs {
-        let none = py.None().into_bound(py);
-        let (kind, default, choices): (&str, Bound<'py, PyAny>, Bound<'py, PyAny>) = match &i.kind {
-            Kind::Number { default, .. } => (
-                "number",
-                default.into_pyobject(py)?.into_any(),
-                none.clone(),
-            ),
-            Kind::Optional { .. } => ("optional", none.clone(), none.clone()),
-            Kind::Flag { .. } => (
-                "flag",
-                false.into_pyobject(py)?.to_owned().into_any(),
-                none.clone(),
-            ),
-            Kind::Choice { default, menu, .. } => (
-                "choice",
-                default.map(|d| d()).into_pyobject(py)?.into_any(),
-                PyTuple::new(py, menu())?.into_any(),
-            ),
-        };
-        list.append((i.name, kind, default, choices, i.help))?;
-    }
-    Ok(list)
-}
-
-/// `{name: [(keyword, kind, default, choices, help), …]}` for the Python layer.
-pub fn specs(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
-    let d = PyDict::new(py);
-    d.set_item(EFFECTIVE.name, spec(py, EFFECTIVE.inputs)?)?;
-    d.set_item(JKR.name, spec(py, JKR.inputs)?)?;
-    d.set_item(PLASTIC.name, spec(py, PLASTIC.inputs)?)?;
-    d.set_item(VISCO.name, spec(py, VISCO.inputs)?)?;
-    d.set_item(PENALTY.name, spec(py, PENALTY.inputs)?)?;
-    Ok(d)
-}
-
-// ---------------------------------------------------------------------------------
-// running a model over a batch
-
-fn type_error(name: &str, what: &str, value: &Bound<'_, PyAny>) -> PyErr {
-    let t = value
-        .get_type()
-        .name()
-        .map(|n| n.to_string())
-        .unwrap_or_else(|_| "?".into());
-    PyTypeError::new_err(format!("{name} must be {what}, not {t}"))
-}
-
-/// The choice `value` of keyword `name`: its name on `menu`.
-fn choose(
-    name: &str,
-    value: &Bound<'_, PyAny>,
-    menu: &[(&'static str, &'static str)],
-) -> PyResult<&'static str> {
-    let text: String = value
-        .extract::<String>()
-        .map_err(|_| type_error(name, "a str", value))?;
-    let wanted = text.replace('_', "-");
-    menu.iter()
-        .map(|(c, _)| *c)
-        .find(|c| *c == wanted)
-        .ok_or_else(|| {
-            let list: Vec<String> = menu.iter().map(|(c, _)| format!("\"{c}\"")).collect();
-            Failure::input(format!(
-                "invalid {name} = \"{text}\": expected one of {}",
-                list.join(", ")
-            ))
-            .into_pyerr_static()
-        })
-}
-
-/// A keyword's value for one element.
-enum Given<'a> {
-    Number(Col<'a>),
-    Optional(Option<Col<'a>>),
-}
-
-impl<'a> Given<'a> {
-    /// The column, when given.
-    fn column(&self) -> Option<Col<'a>> {
-        match self {
-            Given::Number(c) | Given::Optional(Some(c)) => Some(*c),
-            Given::Optional(None) => None,
-        }
-    }
-}
-
-/// The scalars of a call set in `base`, and its array keywords (index into the
-/// table, array).
-struct Parsed<'py, A> {
-    base: A,
-    arrays: Vec<(usize, PyReadonlyArray1<'py, f64>)>,
-}
-
-fn parse<'py, A: 'static, R>(
-    model: &Model<A, R>,
-    args: &Bound<'py, PyDict>,
-) -> PyResult<Parsed<'py, A>> {
-    let mut base = (model.blank)();
-    let mut arrays: Vec<(usize, PyReadonlyArray1<'py, f64>)> = Vec::new();
-    for (k, input) in model.inputs.iter().enumerate() {
-        let value = args.get_item(input.name)?;
-        match &input.kind {
-            Kind::Number { .. } | Kind::Optional { .. } => {
-                if let Some(v) = value.filter(|v| !v.is_none()) {
-                    let a: PyReadonlyArray1<'py, f64> = v
-                        .extract()
-                        .map_err(|_| type_error(input.name, "a float64 array", &v))?;
-                    arrays.push((k, a));
-                } else if matches!(input.kind, Kind::Number { .. }) {
-                    return Err(PyTypeError::new_err(format!(
-                        "{}() missing the keyword argument {}",
-                        model.name, input.name
-                    )));
-                }
-            }
-            Kind::Flag { set } => {
-                let b = match value {
-                    None => false,
-                    Some(v) => v
-                        .cast::<pyo3::types::PyBool>()
-                        .map_err(|_| type_error(input.name, "True or False", &v))?
-                        .is_true(),
-                };
-                set(&mut base, b);
-            }
-            Kind::Choice { menu, default, set } => {
-                let k = match (value, default) {
-                    (Some(v), _) => choose(input.name, &v, &menu())?,
-                    (None, Some(d)) => d(),
-                    (None, None) => {
-                        return Err(PyTypeError::new_err(format!(
-                            "{}() missing the keyword argument {}",
-                            model.name, input.name
-                        )))
-                    }
-                };
-                set(&mut base, k).map_err(|e| {
-                    Failure::input(format!("invalid {} = \"{k}\": {e}", input.name))
-                        .into_pyerr_static()
-                })?;
-            }
-        }
-    }
-    Ok(Parsed { base, arrays })
-}
-
-/// The number keywords of a call: (index into the table, its column).
-fn given<'a, A: 'static, R>(
-    model: &Model<A, R>,
-    parsed: &'a Parsed<'_, A>,
-    call: &Call<'_>,
-) -> PyResult<Vec<(usize, Given<'a>)>> {
-    let named: Vec<(&str, &PyReadonlyArray1<'_, f64>)> = parsed
-        .arrays
-        .iter()
-        .map(|(k, a)| (model.inputs[*k].name, a))
-        .collect();
-    let cols = call.columns(&named)?;
-    let mut given = Vec::new();
-    for (k, input) in model.inputs.iter().enumerate() {
-        let pos = parsed.arrays.iter().position(|(j, _)| *j == k);
-        match &input.kind {
-            Kind::Number { .. } => {
-                if let Some(p) = pos {
-                    given.push((k, Given::Number(cols[p])));
-                }
-            }
-            Kind::Optional { .. } => given.push((k, Given::Optional(pos.map(|p| cols[p])))),
-            _ => {}
-        }
-    }
-    Ok(given)
-}
-
-/// The inputs of element `i`.
-fn element<A: Clone>(inputs: &[Input<A>], base: &A, given: &[(usize, Given<'_>)], i: usize) -> A {
-    let mut a = base.clone();
-    for (k, g) in given {
-        match (&inputs[*k].kind, g) {
-            (Kind::Number { set, .. }, Given::Number(c)) => set(&mut a, c.at(i)),
-            (Kind::Optional { set }, Given::Optional(c)) => set(&mut a, c.map(|c| c.at(i))),
-            _ => {}
-        }
-    }
-    a
-}
-
-fn run_model<'py, A: Sync + Clone + 'static, R: serde::Serialize>(
-    py: Python<'py>,
-    model: &Model<A, R>,
-    args: &Bound<'py, PyDict>,
-    call: &Call<'_>,
-) -> PyResult<Bound<'py, PyTuple>> {
-    let parsed = parse(model, args)?;
-    let given = given(model, &parsed, call)?;
-    let (inputs, compute, base) = (model.inputs, model.compute, &parsed.base);
-    call.records(py, |i, out| {
-        push(out, &compute(&element(inputs, base, &given, i))?)
-    })
-}
-
-/// The own fields of one element of a [`Split`] model: from the prepared part,
-/// the varying input and the previous element's own fields.
-pub type OwnFn<P, V> = fn(&P, Option<f64>, Option<&V>) -> Result<Option<V>, Failure>;
-
-/// A model whose record splits into a part that depends on all inputs but
-/// `varying` (computed once per distinct set of them: a batch over speeds pays for
-/// the model once) and the fields of each element's own.
-pub struct Split<A: 'static, P: 'static, R: 'static, V: 'static> {
-    /// The keyword of the element's own fields (a number or optional number).
-    pub varying: &'static str,
-    /// Validates the other inputs and computes the shared part.
-    pub prepare: fn(&A) -> Result<P, Failure>,
-    /// The shared part's record (the own fields unset).
-    pub record: fn(&P) -> &R,
-    /// The element's own fields from the varying input (None when it is not
-    /// given) and the previous element's own fields when it shares the prepared
-    /// part (a warm start).
-    pub own: OwnFn<P, V>,
-}
-
-fn run_split<'py, A, P, R, V>(
-    py: Python<'py>,
-    model: &Model<A, R>,
-    split: &Split<A, P, R, V>,
-    args: &Bound<'py, PyDict>,
-    call: &Call<'_>,
-) -> PyResult<Bound<'py, PyTuple>>
-where
-    A: Sync + Clone + 'static,
-    P: Send,
-    R: serde::Serialize,
-    V: OwnFields + Copy,
-{
-    let parsed = parse(model, args)?;
-    let given = given(model, &parsed, call)?;
-    // the columns that can change the shared part (a broadcast scalar cannot)
-    let key: Vec<Col<'_>> = given
-        .iter()
-        .filter(|(k, _)| model.inputs[*k].name != split.varying)
-        .filter_map(|(_, g)| g.column())
-        .filter(|c| c.0.len() > 1)
-        .collect();
-    let varying: Option<Col<'_>> = given
-        .iter()
-        .find(|(k, _)| model.inputs[*k].name == split.varying)
-        .and_then(|(_, g)| g.column());
-    let (inputs, base) = (model.inputs, &parsed.base);
-    call.split_columns(
-        py,
-        |i, j| key.iter().all(|c| c.at(i).to_bits() == c.at(j).to_bits()),
-        |i| key.iter().map(|c| c.at(i).to_bits()).collect(),
-        |i| (split.prepare)(&element(inputs, base, &given, i)),
-        split.record,
-        |p, i, near| (split.own)(p, varying.map(|c| c.at(i)), near),
-    )
-}
-
-/// `_tabor.model(name, args, shape, errors, threads)`: the model `name` over the
-/// flat float64 arrays (length 1 or n) and scalars of `args`.
-#[pyfunction]
-#[pyo3(signature = (name, args, n, shape, errors="raise", threads=None))]
-pub fn model<'py>(
-    py: Python<'py>,
-    name: &str,
-    args: &Bound<'py, PyDict>,
-    n: usize,
-    shape: Vec<usize>,
-    errors: &str,
-    threads: Option<usize>,
-) -> PyResult<Bound<'py, PyTuple>> {
-    let call = Call {
-        n,
-        shape: &shape,
-        options: Options::new(errors, threads)?,
-    };
-    match name {
-        "effective" => run_model(py, &EFFECTIVE, args, &call),
-        "jkr" => run_split(py, &JKR, &JKR_BY_SPEED, args, &call),
-        "plastic" => run_model(py, &PLASTIC, args, &call),
-        "visco" => run_model(py, &VISCO, args, &call),
-        "penalty" => run_model(py, &PENALTY, args, &call),
-        other => Err(PyTypeError::new_err(format!("no model function {other}"))),
-    }
-}
 
 #[cfg(test)]
 mod tests {

@@ -1,0 +1,22 @@
+//! The constants of the oblique integration's regularizations and of the inputs it
+//! accepts (one home: the driver, the state and the friction elements read them).
+
+/// The largest rate (per time unit of the impact) of the relaxations that diverge
+/// where a contact without adhesion vanishes: the turning of a slip direction
+/// (`elements::turn_rate`) and `mindlin_rescale`'s shrinking of ξ.
+pub(super) const RATE_CAP: f64 = 1e4;
+
+/// The step of the central differences of the normal law, relative to the
+/// distance to its branch end (`Setup::difference_step`).
+pub(super) const DIFFERENCE_STEP: f64 = 1e-5;
+
+/// The overlap (in units of the overlap scale) up to which a contact that starts
+/// without a Coulomb limit runs without friction (`ObliqueImpact::simulate`).
+pub(super) const WARMUP: f64 = 1e-6;
+
+/// The largest surface speed of an initial spin, in units of the impact speed.
+pub(super) const MAX_SURFACE_SPEED_RATIO: f64 = 1e6;
+
+/// The largest force of a friction spring at the overlap scale, in units of the
+/// normal force scale.
+pub(super) const MAX_SPRING_RATIO: f64 = 1e12;
