@@ -4,9 +4,12 @@
 # (two-body restitution and pull-off force against tabor, also with the fragment of
 # `tabor export lammps --plugin`; 1 vs 2 MPI ranks), test_plugin_friction.py
 # (oblique collisions with friction, rolling and twisting against pair granular and
-# tabor's library), test_plugin_cloud.py (a polydisperse cloud on 1 and 2 ranks, a
-# restart in the middle), test_doc_examples.py (every example line of the doc pages
-# doc/pair_tabor.rst and doc/fix_tabor_history.rst), then the MPI cloud example of examples/lammps with the
+# tabor's library; mindlin_deresiewicz against the library's exact bed),
+# test_plugin_damping.py (damping viscoelastic|tsuji|coeff_restitution against
+# pair granular and, with adhesion, against tabor impact), test_plugin_cloud.py (a
+# polydisperse cloud on 1 and 2 ranks, a restart in the middle), test_doc_examples.py
+# (every example line of the doc pages doc/pair_tabor.rst and doc/fix_tabor_history.rst),
+# then the MPI cloud example of examples/lammps with the
 # plugin (sticking fraction against tabor's prediction).
 # Exit status 0 only if everything passed.
 set -euo pipefail
@@ -16,15 +19,17 @@ TARGET="${CARGO_TARGET_DIR:-$ROOT/target}"
 export CARGO_TARGET_DIR="$TARGET"
 PLUGIN="$(cd "$ROOT" && cargo xtask lammps-plugin | tail -n 1)"
 VENV="$("$HERE/setup.sh")"
-(cd "$ROOT" && cargo build --release -q -p tabor-cli && cargo build --release -q -p tabor-ffi --example oblique_library)
+(cd "$ROOT" && cargo build --release -q -p tabor-cli && cargo build --release -q -p tabor-ffi --example oblique_library --example oblique_dem)
 export TABOR="$TARGET/release/tabor" TABOR_PLUGIN="$PLUGIN" LAMMPS_VENV="$VENV"
 export TABOR_FFI_LIB="$TARGET/release/libtabor_ffi.so"
 export LD_LIBRARY_PATH="$VENV/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export OBLIQUE_LIBRARY="$TARGET/release/examples/oblique_library"
+export OBLIQUE_DEM="$TARGET/release/examples/oblique_dem"
 export PATH="$VENV/bin:$PATH"
 "$VENV/bin/python" "$HERE/test_plugin.py" "$@"
 "$VENV/bin/python" "$HERE/test_doc_examples.py"  # every example of doc/*.rst runs in LAMMPS
 "$VENV/bin/python" "$HERE/test_plugin_friction.py"
+"$VENV/bin/python" "$HERE/test_plugin_damping.py"
 "$VENV/bin/python" "$HERE/test_lammps.py" plugin_friction  # the exported --plugin fragment with [friction], oblique (export branch)
 "$VENV/bin/python" "$HERE/test_plugin_cloud.py"
 CLOUD_PLUGIN="$PLUGIN" CLOUD_OUT="$TARGET/lammps-cloud-plugin" bash "$ROOT/examples/lammps/run.sh"

@@ -8,8 +8,9 @@ once with `pair_style granular jkr ... tangential mindlin NULL ... rolling sds .
 twisting marshall` and once with `pair_style tabor` (`jkr/load-controlled`, the
 same sub-models), alternately TIMING_REPEATS times (the machine may be shared);
 the fastest "Pair" time (LAMMPS's own timer breakdown) of each is kept, and the
-ratio plugin/granular printed (target: at most 1.5). Also a Maugis-Dugdale run
-(Lambda 0.5) of the plugin, for reference. No assertion: wall-clock times depend
+ratio plugin/granular printed (target: at most 1.5). Also the plugin with
+`tangential mindlin_deresiewicz` (issue 30 item 6: at most 1.0 of granular's
+mindlin) and a Maugis-Dugdale run (Lambda 0.5) of the plugin, for reference. No assertion: wall-clock times depend
 on the machine.
 
 Environment: TABOR_PLUGIN, LAMMPS_VENV; TIMING_GRAINS, TIMING_STEPS (1000),
@@ -35,6 +36,8 @@ def main():
     styles = {
         "granular jkr + mindlin + sds + marshall": cloud.setup_lines("granular"),
         "tabor jkr/load-controlled + same": cloud.setup_lines("tabor"),
+        "tabor jkr + mindlin_deresiewicz + same": [
+            l.replace("tangential mindlin ", "tangential mindlin_deresiewicz ") for l in cloud.setup_lines("tabor")],
         "tabor maugis 0.5 + same": [
             l if not l.startswith("pair_coeff") else
             f"pair_coeff * * maugis {cloud.E_STAR!r} {cloud.W} 0.5 poisson {cloud.NU} {cloud.FRICTION}"

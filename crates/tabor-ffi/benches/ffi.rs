@@ -16,6 +16,8 @@ fn params(model: i32, lambda: f64) -> TaborLawParams {
         work_of_adhesion: 0.05,
         tabor_parameter: lambda,
         damping_time: 0.0,
+        damping_model: TABOR_DAMPING_KUWABARA_KONO,
+        damping_value: 0.0,
     }
 }
 

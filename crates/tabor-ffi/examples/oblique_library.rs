@@ -3,9 +3,11 @@
 //! the reference the LAMMPS plugin test (`integrations/lammps/test_plugin_friction.py`)
 //! compares `pair_style tabor` with.
 //!
-//! stdin, one case a line: `R rho E nu w model lambda speed angle spin_z mu k_roll mu_roll`
-//! (SI units, angle in degrees, model `jkr` (load-controlled) or `maugis`, spin_z the
-//! initial spin of the sphere about z); stdout, one line each: the relative velocity
+//! stdin, one case a line: `R rho E nu w model lambda speed angle spin_z mu k_roll mu_roll
+//! [tangential]` (SI units, angle in degrees, model `hertz`, `jkr` (load-controlled) or
+//! `maugis`, spin_z the initial spin of the sphere about z, k_roll 0 for no rolling and
+//! no twisting resistance, tangential `mindlin` (the default) or `mindlin_deresiewicz`,
+//! the exact spring bed); stdout, one line each: the relative velocity
 //! sphere − target after the impact (x, y), the sphere's and the target's spin about z,
 //! 1 if they stick, the relative energy error of the integration.
 #![allow(missing_docs, clippy::unwrap_used, clippy::expect_used)]
@@ -16,7 +18,7 @@ use tabor_ffi::ContactLaw;
 use tabor_jkr::{JkrForceLaw, JkrSphere, SeparationRule};
 use tabor_maugis::{MaugisContact, MaugisDugdaleForceLaw, MaugisDugdaleImpact};
 use tabor_tangential::oblique::{Body, NormalContact, ObliqueImpact};
-use tabor_tangential::{EffectiveShear, Friction, Rolling, Tangential, Twisting};
+use tabor_tangential::{EffectiveShear, Friction, Rolling, Tangential, TangentialModel, Twisting};
 
 fn main() {
     for line in std::io::stdin().lock().lines() {
@@ -31,15 +33,21 @@ fn main() {
         let (mu, k_roll, mu_roll) = (x(10), x(11), x(12));
         let e_star = e / (2.0 * (1.0 - nu * nu));
         let reff = 0.5 * r;
-        let sphere = JkrSphere::new(e_star, reff, w).unwrap();
+        // the JKR sphere only for the adhesive models (w > 0)
+        let sphere = || JkrSphere::new(e_star, reff, w).unwrap();
         let (mut law, pull_off): (Box<dyn ForceLaw>, f64) = match model {
+            "hertz" => (
+                Box::new(tabor_elastic::ElasticContact::hertz(e_star, reff).unwrap()),
+                0.0,
+            ),
             "jkr" => (
-                Box::new(JkrForceLaw::new(sphere, SeparationRule::LoadControlled)),
+                Box::new(JkrForceLaw::new(sphere(), SeparationRule::LoadControlled)),
                 1.5 * std::f64::consts::PI * w * reff,
             ),
             "maugis" => {
-                let m = MaugisDugdaleImpact::new(MaugisContact::new(sphere, lambda).unwrap(), 1.0)
-                    .unwrap();
+                let m =
+                    MaugisDugdaleImpact::new(MaugisContact::new(sphere(), lambda).unwrap(), 1.0)
+                        .unwrap();
                 // the plugin's F_pulloff: the most tensile force of the law's branch
                 let p = ContactLaw::maugis_dugdale(e_star, reff, w, lambda)
                     .unwrap()
@@ -49,9 +57,14 @@ fn main() {
             other => panic!("unknown model {other}"),
         };
         let shear = EffectiveShear::of_pair(e, nu, e, nu).unwrap();
-        let friction = Friction::sliding(Tangential::mindlin(shear, 0.0, mu).unwrap())
-            .with_rolling(Rolling::sds(k_roll, 0.0, mu_roll).unwrap())
-            .with_twisting(Twisting::Marshall);
+        let tangential: TangentialModel = f.get(13).copied().unwrap_or("mindlin").parse().unwrap();
+        let mut friction =
+            Friction::sliding(Tangential::new(tangential, 8.0 * shear.modulus(), 0.0, mu).unwrap());
+        if k_roll > 0.0 {
+            friction = friction
+                .with_rolling(Rolling::sds(k_roll, 0.0, mu_roll).unwrap())
+                .with_twisting(Twisting::Marshall);
+        }
         let body = Body::solid_sphere(r, rho).unwrap();
         let imp = ObliqueImpact {
             sphere: body,

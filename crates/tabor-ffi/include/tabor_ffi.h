@@ -36,6 +36,23 @@
 // [`TaborLawParams::model`]: Maugis-Dugdale at Tabor parameter Λ (section 5.3.2).
 #define TABOR_MODEL_MAUGIS_DUGDALE 3
 
+// [`TaborLawParams::damping_model`]: Kuwabara-Kono with the dissipative time
+// [`TaborLawParams::damping_time`] (0: no damping), seed 000 (5.66).
+#define TABOR_DAMPING_KUWABARA_KONO 0
+
+// LAMMPS `damping viscoelastic`: `F_d = η_n0 m* a δ̇`, η_n0 =
+// [`TaborLawParams::damping_value`] (1/(m s)); `tabor_viscoadhesive::NormalDamping`.
+#define TABOR_DAMPING_VISCOELASTIC 1
+
+// LAMMPS `damping tsuji`: `F_d = α(e) √(m* (4/3) E* a) δ̇`, α by Tsuji's polynomial of
+// e = [`TaborLawParams::damping_value`] (Marshall 2009, eq. 53).
+#define TABOR_DAMPING_TSUJI 2
+
+// LAMMPS `damping coeff_restitution`: `F_d = α(e) √(m* (4/3) E* a) δ̇`,
+// `α = −√5 ln e/√(π² + ln² e)`, e = [`TaborLawParams::damping_value`] (the nominal
+// restitution exactly for Hertz; with adhesion on the adhesive contact radius).
+#define TABOR_DAMPING_COEFF_RESTITUTION 3
+
 // Number of doubles in a [`TaborHistory`].
 #define TABOR_HISTORY_LEN 2
 
@@ -50,6 +67,11 @@
 
 // `tangential mindlin_rescale k_t x_γ,t μ`.
 #define TABOR_TANGENTIAL_MINDLIN_RESCALE 3
+
+// `tangential mindlin_deresiewicz k_t x_γ,t μ` (k_t = 8 G*, Pa): Mindlin-Deresiewicz
+// micro-slip in Thornton (1991)'s incremental form (`tabor_tangential::Friction::step`),
+// not a LAMMPS `pair granular` model.
+#define TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ 4
 
 // [`TaborFrictionParams::rolling_model`]: none.
 #define TABOR_ROLLING_NONE 0
@@ -67,7 +89,7 @@
 #define TABOR_TWISTING_SDS 2
 
 // Number of doubles in a [`TaborContactHistory`].
-#define TABOR_CONTACT_HISTORY_LEN 10
+#define TABOR_CONTACT_HISTORY_LEN 16
 
 // An opaque contact model: a normal law with optional friction (create with
 // [`tabor_contact_new`], free with [`tabor_contact_free`]).
@@ -89,8 +111,14 @@ typedef struct TaborLawParams {
   double work_of_adhesion;
   // Tabor parameter Λ (Maugis-Dugdale only; the range is h = d_n/Λ).
   double tabor_parameter;
-  // Kuwabara-Kono dissipative time A (s), ≥ 0 (0: no damping), seed 000 (5.66).
+  // Kuwabara-Kono dissipative time A (s), ≥ 0 (0: no damping), seed 000 (5.66);
+  // must be 0 with a DEM damping law.
   double damping_time;
+  // One of `TABOR_DAMPING_*` (0, Kuwabara-Kono, for a zero-initialized struct).
+  int32_t damping_model;
+  // The DEM damping law's value: η_n0 (1/(m s)) for viscoelastic, e in (0, 1]
+  // for tsuji and coeff_restitution.
+  double damping_value;
 } TaborLawParams;
 
 // The state a contact carries from one time step to the next (one per pair of
@@ -194,6 +222,9 @@ typedef struct TaborContactState {
   // 1: advance the friction displacements (a time step); 0: evaluate only
   // (LAMMPS's setup force call and `single()`).
   int32_t update_history;
+  // Effective mass m* = m_i m_j/(m_i + m_j) (kg; m_i for a wall): the DEM
+  // damping laws need it (`TABOR_DAMPING_*`), the others ignore it.
+  double effective_mass;
 } TaborContactState;
 
 // The state a contact carries from step to step: the normal law's
@@ -206,14 +237,24 @@ typedef struct TaborContactHistory {
   double contact;
   // The turning point (see [`TaborHistory::max_overlap`]) (m).
   double max_overlap;
-  // Accumulated tangential displacement (m).
+  // Accumulated tangential displacement (m); `mindlin_deresiewicz`: the
+  // elastic tangential force T (N, the force on body i is −T).
   double tangential[3];
-  // `mindlin_rescale`: the contact radius of the last update (m).
+  // `mindlin_rescale`: the contact radius of the last update (m);
+  // `mindlin_deresiewicz`: the Coulomb limit μ F_n0 of the last update (N).
   double tangential_contact_radius;
   // Accumulated rolling displacement (m).
   double rolling[3];
   // Accumulated twist angle (rad).
   double twisting;
+  // `mindlin_deresiewicz`: the turning point T* (N) (Thornton 1991).
+  double micro_slip_turning[3];
+  // `mindlin_deresiewicz`: the reloading turning point T** (N).
+  double micro_slip_reversal;
+  // `mindlin_deresiewicz`: 0 loading, 1 unloading, 2 reloading.
+  double micro_slip_mode;
+  // `mindlin_deresiewicz`: the no-slip stiffness k_t a of the last update (N/m).
+  double micro_slip_spring;
 } TaborContactHistory;
 
 // The forces and torques of one contact at one step.

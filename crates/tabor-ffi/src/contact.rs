@@ -8,9 +8,10 @@
 //! model ([`tabor_tangential::NormalResponse`]): the Mindlin spring `8 G* a`, the
 //! Coulomb limit `μ F_n0` with `F_n0 = |F_n,elastic + 2 F_pulloff|` for an adhesive
 //! law (JKR: (3/2)πwR*, as LAMMPS's `jkr`; Maugis-Dugdale: the law's own pull-off
-//! force) and `|F_n|` for Hertz, and the normal damping coefficient `2E*A a` of the
-//! Kuwabara-Kono force (seed 000 (5.66)) that the tangential damping `x_γ,t`
-//! multiplies. The models themselves are `tabor_tangential::Friction::step`; this
+//! force) and `|F_n|` for Hertz, and the normal damping coefficient that the
+//! tangential damping `x_γ,t` multiplies: `2E*A a` of the Kuwabara-Kono force (seed
+//! 000 (5.66)) or the DEM damping law's (`ContactLaw::damping_coefficient`,
+//! LAMMPS's `damp_prefactor`). The models themselves are `tabor_tangential::Friction::step`; this
 //! module only converts between the C structs and them.
 
 use crate::law::{ContactLaw, TaborHistory};
@@ -29,6 +30,10 @@ pub const TABOR_TANGENTIAL_LINEAR_HISTORY: i32 = 1;
 pub const TABOR_TANGENTIAL_MINDLIN: i32 = 2;
 /// `tangential mindlin_rescale k_t x_γ,t μ`.
 pub const TABOR_TANGENTIAL_MINDLIN_RESCALE: i32 = 3;
+/// `tangential mindlin_deresiewicz k_t x_γ,t μ` (k_t = 8 G*, Pa): Mindlin-Deresiewicz
+/// micro-slip in Thornton (1991)'s incremental form (`tabor_tangential::Friction::step`),
+/// not a LAMMPS `pair granular` model.
+pub const TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ: i32 = 4;
 /// [`TaborFrictionParams::rolling_model`]: none.
 pub const TABOR_ROLLING_NONE: i32 = 0;
 /// `rolling sds k_roll γ_roll μ_roll`.
@@ -41,7 +46,7 @@ pub const TABOR_TWISTING_MARSHALL: i32 = 1;
 pub const TABOR_TWISTING_SDS: i32 = 2;
 
 /// Number of doubles in a [`TaborContactHistory`].
-pub const TABOR_CONTACT_HISTORY_LEN: usize = 10;
+pub const TABOR_CONTACT_HISTORY_LEN: usize = 16;
 
 /// Friction, rolling and twisting parameters, as LAMMPS's `pair_style granular`
 /// names them (SI units).
@@ -87,14 +92,24 @@ pub struct TaborContactHistory {
     pub contact: f64,
     /// The turning point (see [`TaborHistory::max_overlap`]) (m).
     pub max_overlap: f64,
-    /// Accumulated tangential displacement (m).
+    /// Accumulated tangential displacement (m); `mindlin_deresiewicz`: the
+    /// elastic tangential force T (N, the force on body i is −T).
     pub tangential: [f64; 3],
-    /// `mindlin_rescale`: the contact radius of the last update (m).
+    /// `mindlin_rescale`: the contact radius of the last update (m);
+    /// `mindlin_deresiewicz`: the Coulomb limit μ F_n0 of the last update (N).
     pub tangential_contact_radius: f64,
     /// Accumulated rolling displacement (m).
     pub rolling: [f64; 3],
     /// Accumulated twist angle (rad).
     pub twisting: f64,
+    /// `mindlin_deresiewicz`: the turning point T* (N) (Thornton 1991).
+    pub micro_slip_turning: [f64; 3],
+    /// `mindlin_deresiewicz`: the reloading turning point T** (N).
+    pub micro_slip_reversal: f64,
+    /// `mindlin_deresiewicz`: 0 loading, 1 unloading, 2 reloading.
+    pub micro_slip_mode: f64,
+    /// `mindlin_deresiewicz`: the no-slip stiffness k_t a of the last update (N/m).
+    pub micro_slip_spring: f64,
 }
 
 /// The geometry and motion of one contact at one time step (LAMMPS's
@@ -121,6 +136,9 @@ pub struct TaborContactState {
     /// 1: advance the friction displacements (a time step); 0: evaluate only
     /// (LAMMPS's setup force call and `single()`).
     pub update_history: i32,
+    /// Effective mass m* = m_i m_j/(m_i + m_j) (kg; m_i for a wall): the DEM
+    /// damping laws need it (`TABOR_DAMPING_*`), the others ignore it.
+    pub effective_mass: f64,
 }
 
 /// The forces and torques of one contact at one step.
@@ -172,11 +190,12 @@ pub fn friction_from_params(p: &TaborFrictionParams) -> Result<Option<Friction>>
         TABOR_TANGENTIAL_LINEAR_HISTORY => TangentialModel::LinearHistory,
         TABOR_TANGENTIAL_MINDLIN => TangentialModel::Mindlin,
         TABOR_TANGENTIAL_MINDLIN_RESCALE => TangentialModel::MindlinRescale,
+        TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ => TangentialModel::MindlinDeresiewicz,
         other => {
             return Err(Error::invalid(
                 "tangential_model",
                 f64::from(other),
-                "must be one of TABOR_TANGENTIAL_NONE, _LINEAR_HISTORY, _MINDLIN, _MINDLIN_RESCALE",
+                "must be one of TABOR_TANGENTIAL_NONE, _LINEAR_HISTORY, _MINDLIN, _MINDLIN_RESCALE, _MINDLIN_DERESIEWICZ",
             ))
         }
     };
@@ -279,9 +298,13 @@ impl ContactModel {
             contact: history.contact,
             max_overlap: history.max_overlap,
         };
-        let f = self
-            .law
-            .evaluate_scaled(&scales, state.overlap, -n.dot(&v), &mut normal)?;
+        let f = self.law.evaluate_with_mass(
+            &scales,
+            state.overlap,
+            -n.dot(&v),
+            state.effective_mass,
+            &mut normal,
+        )?;
         let mut out = TaborContactForces {
             normal_force: f.force,
             contact_radius: f.contact_radius,
@@ -299,6 +322,10 @@ impl ContactModel {
                 tangential_contact_radius: history.tangential_contact_radius,
                 rolling: history.rolling,
                 twisting: history.twisting,
+                micro_slip_turning: history.micro_slip_turning,
+                micro_slip_reversal: history.micro_slip_reversal,
+                micro_slip_mode: history.micro_slip_mode,
+                micro_slip_spring: history.micro_slip_spring,
             };
             let kinematics = ContactKinematics {
                 normal: n,
@@ -314,10 +341,9 @@ impl ContactModel {
                 elastic_force: f.elastic_force,
                 total_force: f.force,
                 pull_off_force: -self.law.pull_off_force_at(&scales),
-                damping_coefficient: 2.0
-                    * self.law.effective_modulus()
-                    * self.law.damping_time()
-                    * f.contact_radius,
+                damping_coefficient: self
+                    .law
+                    .damping_coefficient(state.effective_mass, f.contact_radius),
             };
             let c = friction.step(
                 &kinematics,
@@ -336,6 +362,10 @@ impl ContactModel {
             history.tangential_contact_radius = fh.tangential_contact_radius;
             history.rolling = fh.rolling;
             history.twisting = fh.twisting;
+            history.micro_slip_turning = fh.micro_slip_turning;
+            history.micro_slip_reversal = fh.micro_slip_reversal;
+            history.micro_slip_mode = fh.micro_slip_mode;
+            history.micro_slip_spring = fh.micro_slip_spring;
         }
         history.contact = normal.contact;
         history.max_overlap = normal.max_overlap;

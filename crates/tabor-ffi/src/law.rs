@@ -11,6 +11,7 @@ use tabor_jkr::{JkrForceLaw, JkrSphere, SeparationRule};
 use tabor_maugis::branch::{junction_factor, no_contact_pull_off_radius, no_contact_state};
 use tabor_maugis::{MaugisContact, MaugisDugdaleForceLaw, MaugisDugdaleImpact};
 use tabor_restitution::{validate, Error, Result};
+use tabor_viscoadhesive::{DampingModel, NormalDamping};
 
 /// Which elastic-adhesive law a [`ContactLaw`] follows.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -102,6 +103,8 @@ pub struct ContactLaw {
     kind: LawKind,
     effective_modulus: f64,
     damping_time: f64,
+    /// A DEM damping law of LAMMPS's `pair granular` instead of Kuwabara-Kono.
+    dem_damping: Option<NormalDamping>,
     /// The scales at the reference radius.
     reference: RadiusScales,
     /// F_n/R*, d_n/R*^(1/3), a_c/R*^(2/3): the scales at unit radius.
@@ -160,6 +163,7 @@ impl ContactLaw {
             kind: LawKind::Hertz,
             effective_modulus: e,
             damping_time: 0.0,
+            dem_damping: None,
             reference: RadiusScales {
                 effective_radius: r,
                 force: 1.0,
@@ -290,6 +294,35 @@ impl ContactLaw {
     pub fn with_damping(mut self, damping_time: f64) -> Result<Self> {
         self.damping_time = validate::non_negative("damping_time", damping_time)?;
         Ok(self)
+    }
+
+    /// Adds a DEM damping law of LAMMPS's `pair granular` (`damping viscoelastic |
+    /// tsuji | coeff_restitution`) with its value (η_n0 in 1/(m s), the damping
+    /// value, the restitution e), exactly `tabor_viscoadhesive::NormalDamping::dem`
+    /// (the library's definitions: `c = η_n0 m* a`, or `α(e) √(m* (4/3) E* a)` on the
+    /// law's own contact radius a, adhesive ones too). Replaces a Kuwabara-Kono time;
+    /// the force then needs the effective mass ([`ContactLaw::evaluate_with_mass`]).
+    pub fn with_dem_damping(mut self, model: DampingModel, value: f64) -> Result<Self> {
+        self.dem_damping = Some(NormalDamping::dem(model, value, self.effective_modulus)?);
+        self.damping_time = 0.0;
+        Ok(self)
+    }
+
+    /// The DEM damping law, if any ([`ContactLaw::with_dem_damping`]).
+    pub fn dem_damping(&self) -> Option<&NormalDamping> {
+        self.dem_damping.as_ref()
+    }
+
+    /// The normal damping coefficient `c` (N s/m) of `F_d = c δ̇` at contact radius
+    /// `contact_radius` (m) and effective mass `effective_mass` (kg; used by the DEM
+    /// laws only): `2 E* A a` (Kuwabara-Kono, seed 000 (5.66)) or the DEM law's
+    /// (`NormalDamping::coefficient`). LAMMPS's `damp_prefactor`, which the
+    /// tangential damping `x_γ,t` multiplies.
+    pub fn damping_coefficient(&self, effective_mass: f64, contact_radius: f64) -> f64 {
+        match &self.dem_damping {
+            Some(d) => d.coefficient(effective_mass, contact_radius),
+            None => 2.0 * self.effective_modulus * self.damping_time * contact_radius.max(0.0),
+        }
     }
 
     /// The elastic-adhesive law.
@@ -484,6 +517,29 @@ impl ContactLaw {
         overlap_rate: f64,
         history: &mut TaborHistory,
     ) -> Result<TaborForce> {
+        self.evaluate_with_mass(scales, overlap, overlap_rate, f64::NAN, history)
+    }
+
+    /// [`ContactLaw::evaluate_scaled`] with the effective mass m* (kg) of the
+    /// contact, which a DEM damping law needs (an error names `effective_mass`
+    /// when it is not finite and > 0 there; ignored otherwise). A DEM damping law
+    /// acts unclipped on every law, Hertz too: the contact lasts until δ = 0 with a
+    /// tensile force at its end, as LAMMPS's `pair granular` without
+    /// `limit_damping` and the library's damped force law
+    /// (`tabor_viscoadhesive::ViscousDamping`); Kuwabara-Kono damping keeps the
+    /// Hertz clip.
+    #[inline]
+    pub fn evaluate_with_mass(
+        &self,
+        scales: &RadiusScales,
+        overlap: f64,
+        overlap_rate: f64,
+        effective_mass: f64,
+        history: &mut TaborHistory,
+    ) -> Result<TaborForce> {
+        if self.dem_damping.is_some() {
+            validate::positive("effective_mass", effective_mass)?;
+        }
         if !overlap.is_finite() || !overlap_rate.is_finite() {
             return Err(Error::invalid(
                 "overlap",
@@ -516,15 +572,22 @@ impl ContactLaw {
             history.max_overlap = overlap;
         }
         let (f, a) = self.branch(scales, overlap)?;
-        let damping = tabor_visco::kuwabara_kono::viscous_force(
-            self.effective_modulus * self.damping_time,
-            a,
-            overlap_rate,
-        );
-        let mut force = f + damping;
-        if hertz && force < 0.0 {
-            force = 0.0;
-        }
+        let force = match &self.dem_damping {
+            Some(d) => f + d.force(effective_mass, a, overlap_rate),
+            None => {
+                let damping = tabor_visco::kuwabara_kono::viscous_force(
+                    self.effective_modulus * self.damping_time,
+                    a,
+                    overlap_rate,
+                );
+                let force = f + damping;
+                if hertz && force < 0.0 {
+                    0.0
+                } else {
+                    force
+                }
+            }
+        };
         Ok(TaborForce {
             force,
             elastic_force: f,

@@ -8,7 +8,10 @@
 //!   (eqs. (5.33)-(5.34)),
 //! - Maugis-Dugdale at any Tabor parameter Λ along the impact path of seed 000
 //!   section 5.3.2 (jump-in at δ = −h (5.40), snap-off at the path's minimum depth),
-//! - optional Kuwabara-Kono viscous damping F_d = 2E*A a δ̇ (seed 000 (5.66)).
+//! - optional Kuwabara-Kono viscous damping F_d = 2E*A a δ̇ (seed 000 (5.66)), or a
+//!   DEM damping law of LAMMPS's `pair granular` (`viscoelastic`, `tsuji`,
+//!   `coeff_restitution`; `TABOR_DAMPING_*`), exactly
+//!   `tabor_viscoadhesive::NormalDamping`, with adhesion too.
 //!
 //! A law is created once per pair of particle types ([`tabor_law_new`]); each time
 //! step a contact calls [`tabor_law_evaluate_at`] with its effective radius R*, its
@@ -24,7 +27,7 @@
 //! With friction: [`tabor_contact_new`] takes the normal law's parameters and the
 //! friction, rolling and twisting parameters of LAMMPS's `pair_style granular`
 //! ([`TaborFrictionParams`]); [`tabor_contact_step`] advances one contact by one
-//! time step ([`TaborContactState`] in, [`TaborContactHistory`] of 10 doubles kept,
+//! time step ([`TaborContactState`] in, [`TaborContactHistory`] of 16 doubles kept,
 //! [`TaborContactForces`] out: the force and both torques). The friction models
 //! are `tabor-tangential`'s (module [`contact`]).
 //!
@@ -40,8 +43,9 @@ pub mod table;
 pub use contact::{
     friction_from_params, ContactModel, TaborContactForces, TaborContactHistory, TaborContactState,
     TaborFrictionParams, TABOR_CONTACT_HISTORY_LEN, TABOR_ROLLING_NONE, TABOR_ROLLING_SDS,
-    TABOR_TANGENTIAL_LINEAR_HISTORY, TABOR_TANGENTIAL_MINDLIN, TABOR_TANGENTIAL_MINDLIN_RESCALE,
-    TABOR_TANGENTIAL_NONE, TABOR_TWISTING_MARSHALL, TABOR_TWISTING_NONE, TABOR_TWISTING_SDS,
+    TABOR_TANGENTIAL_LINEAR_HISTORY, TABOR_TANGENTIAL_MINDLIN,
+    TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ, TABOR_TANGENTIAL_MINDLIN_RESCALE, TABOR_TANGENTIAL_NONE,
+    TABOR_TWISTING_MARSHALL, TABOR_TWISTING_NONE, TABOR_TWISTING_SDS,
 };
 pub use law::{ContactLaw, LawKind, RadiusScales, TaborForce, TaborHistory};
 
@@ -49,6 +53,7 @@ use std::cell::RefCell;
 use std::ffi::{c_char, CStr};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use tabor_jkr::SeparationRule;
+use tabor_viscoadhesive::DampingModel;
 
 /// Success.
 pub const TABOR_OK: i32 = 0;
@@ -70,6 +75,20 @@ pub const TABOR_MODEL_JKR_LOAD_CONTROLLED: i32 = 2;
 /// [`TaborLawParams::model`]: Maugis-Dugdale at Tabor parameter Λ (section 5.3.2).
 pub const TABOR_MODEL_MAUGIS_DUGDALE: i32 = 3;
 
+/// [`TaborLawParams::damping_model`]: Kuwabara-Kono with the dissipative time
+/// [`TaborLawParams::damping_time`] (0: no damping), seed 000 (5.66).
+pub const TABOR_DAMPING_KUWABARA_KONO: i32 = 0;
+/// LAMMPS `damping viscoelastic`: `F_d = η_n0 m* a δ̇`, η_n0 =
+/// [`TaborLawParams::damping_value`] (1/(m s)); `tabor_viscoadhesive::NormalDamping`.
+pub const TABOR_DAMPING_VISCOELASTIC: i32 = 1;
+/// LAMMPS `damping tsuji`: `F_d = α(e) √(m* (4/3) E* a) δ̇`, α by Tsuji's polynomial of
+/// e = [`TaborLawParams::damping_value`] (Marshall 2009, eq. 53).
+pub const TABOR_DAMPING_TSUJI: i32 = 2;
+/// LAMMPS `damping coeff_restitution`: `F_d = α(e) √(m* (4/3) E* a) δ̇`,
+/// `α = −√5 ln e/√(π² + ln² e)`, e = [`TaborLawParams::damping_value`] (the nominal
+/// restitution exactly for Hertz; with adhesion on the adhesive contact radius).
+pub const TABOR_DAMPING_COEFF_RESTITUTION: i32 = 3;
+
 /// Number of doubles in a [`TaborHistory`].
 pub const TABOR_HISTORY_LEN: usize = 2;
 
@@ -88,8 +107,14 @@ pub struct TaborLawParams {
     pub work_of_adhesion: f64,
     /// Tabor parameter Λ (Maugis-Dugdale only; the range is h = d_n/Λ).
     pub tabor_parameter: f64,
-    /// Kuwabara-Kono dissipative time A (s), ≥ 0 (0: no damping), seed 000 (5.66).
+    /// Kuwabara-Kono dissipative time A (s), ≥ 0 (0: no damping), seed 000 (5.66);
+    /// must be 0 with a DEM damping law.
     pub damping_time: f64,
+    /// One of `TABOR_DAMPING_*` (0, Kuwabara-Kono, for a zero-initialized struct).
+    pub damping_model: i32,
+    /// The DEM damping law's value: η_n0 (1/(m s)) for viscoelastic, e in (0, 1]
+    /// for tsuji and coeff_restitution.
+    pub damping_value: f64,
 }
 
 /// What a law tells about itself.
@@ -230,7 +255,26 @@ pub fn law_from_params(p: &TaborLawParams) -> tabor_restitution::Result<ContactL
             ))
         }
     };
-    law.with_damping(p.damping_time)
+    let law = law.with_damping(p.damping_time)?;
+    let model = match p.damping_model {
+        TABOR_DAMPING_KUWABARA_KONO => return Ok(law),
+        TABOR_DAMPING_VISCOELASTIC => DampingModel::Viscoelastic,
+        TABOR_DAMPING_TSUJI => DampingModel::Tsuji,
+        TABOR_DAMPING_COEFF_RESTITUTION => DampingModel::CoeffRestitution,
+        other => return Err(tabor_restitution::Error::invalid(
+            "damping_model",
+            f64::from(other),
+            "must be one of TABOR_DAMPING_KUWABARA_KONO, _VISCOELASTIC, _TSUJI, _COEFF_RESTITUTION",
+        )),
+    };
+    if p.damping_time != 0.0 {
+        return Err(tabor_restitution::Error::invalid(
+            "damping_time",
+            p.damping_time,
+            "a Kuwabara-Kono time and a DEM damping law exclude each other: give one",
+        ));
+    }
+    law.with_dem_damping(model, p.damping_value)
 }
 
 /// Creates a contact law; on success `*out` owns it (free with [`tabor_law_free`]).

@@ -21,6 +21,8 @@ fn contact(friction: TaborFrictionParams) -> *mut TaborContact {
         work_of_adhesion: W,
         tabor_parameter: 0.0,
         damping_time: 0.0,
+        damping_model: TABOR_DAMPING_KUWABARA_KONO,
+        damping_value: 0.0,
     };
     let mut c = std::ptr::null_mut();
     assert_eq!(
@@ -134,6 +136,7 @@ fn swapping_the_bodies_reverses_forces_and_histories() {
         angular_velocity_j: [-3e2, 1e3, 4e3],
         time_step: 1e-10,
         update_history: 1,
+        effective_mass: 1e-15,
     };
     let b = TaborContactState {
         normal: n.map(|x| -x),
@@ -173,6 +176,8 @@ fn bad_friction_and_states_are_status_codes() {
         work_of_adhesion: 0.0,
         tabor_parameter: 0.0,
         damping_time: 0.0,
+        damping_model: TABOR_DAMPING_KUWABARA_KONO,
+        damping_value: 0.0,
     };
     let mut c = std::ptr::null_mut();
     for f in [
@@ -222,5 +227,66 @@ fn bad_friction_and_states_are_status_codes() {
         TABOR_ERR_INVALID
     );
     assert_eq!(h, TaborContactHistory::default());
+    unsafe { tabor_contact_free(c) };
+}
+
+/// `TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ` through the ABI: the history is 16
+/// doubles; at constant JKR load a steady slip follows Mindlin's monotonic
+/// loading curve `T = L(1 − (1 − 2 k s/(3L))^{3/2})` (k = 8 G* a, L = μ F_n0,
+/// Mindlin & Deresiewicz 1953) to the explicit step's error, where `mindlin`'s
+/// spring would reach `k s`.
+#[test]
+fn micro_slip_through_the_abi() {
+    assert_eq!(
+        std::mem::size_of::<TaborContactHistory>(),
+        8 * TABOR_CONTACT_HISTORY_LEN
+    );
+    let c = contact(TaborFrictionParams {
+        tangential_model: TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ,
+        tangential_stiffness: 8.0 * G,
+        friction_coefficient: MU,
+        ..TaborFrictionParams::default()
+    });
+    let r = 1e-6;
+    let a = 0.12 * r;
+    let (delta, f_n) = jkr(a, r);
+    let limit = MU * (f_n + 3.0 * PI * W * r);
+    let k = 8.0 * G * a;
+    let steps = 20000;
+    let dt = 1e-10;
+    // to 0.7 of the slip distance 3L/(2k) to sliding
+    let vt = 0.7 * 1.5 * limit / k / (steps as f64 * dt);
+    let state = TaborContactState {
+        normal: [1.0, 0.0, 0.0],
+        overlap: delta,
+        radius_i: 2.0 * r,
+        radius_j: 2.0 * r,
+        relative_velocity: [0.0, vt, 0.0],
+        time_step: dt,
+        update_history: 1,
+        ..TaborContactState::default()
+    };
+    let mut h = TaborContactHistory::default();
+    // the first call forms the contact: its limit jumps from 0 (all slides)
+    step(
+        c,
+        &TaborContactState {
+            relative_velocity: [0.0; 3],
+            ..state
+        },
+        &mut h,
+    );
+    let mut f = TaborContactForces::default();
+    for _ in 0..steps {
+        f = step(c, &state, &mut h);
+    }
+    let s = vt * dt * steps as f64;
+    let exact = limit * (1.0 - (1.0 - 2.0 * k * s / (3.0 * limit)).powf(1.5));
+    assert!(
+        (-f.force[1] - exact).abs() < 2e-4 * limit,
+        "{} vs {exact}",
+        -f.force[1]
+    );
+    assert!(-f.force[1] < 0.9 * k * s);
     unsafe { tabor_contact_free(c) };
 }

@@ -81,7 +81,7 @@ pub fn export(scene: &Scene, speed: Option<f64>) -> Result<Export, ExportError> 
     };
     let verification = verify(&s, &model, scope, v_ref, (sticking, lammps_sticking))?;
     limits.extend(verification.limits);
-    let friction = scene_friction(scene)?;
+    let friction = scene_friction(scene, false)?;
     let friction_kw = friction.as_ref().map(|f| {
         f.lammps_keywords(
             s.geometry == crate::report::Geometry::Pair

@@ -24,21 +24,28 @@ pub(crate) fn null_stiffness_fits(scene: &Scene, f: &Friction, e: f64, nu: f64) 
         .is_some_and(|f| f.tangential_stiffness.is_some());
     let mindlin = matches!(
         f.tangential.model,
-        TangentialModel::Mindlin | TangentialModel::MindlinRescale
+        TangentialModel::Mindlin
+            | TangentialModel::MindlinRescale
+            | TangentialModel::MindlinDeresiewicz
     );
     let lammps = 8.0 * e / (4.0 * (1.0 + nu) * (2.0 - nu));
     !given && mindlin && (lammps / f.tangential.stiffness - 1.0).abs() <= 1e-9
 }
 
-/// The scene's validated friction, `None` without a `[friction]` section.
-/// Mindlin-Deresiewicz micro-slip is refused: none of LAMMPS's `pair granular`
-/// tangential models has it, and `pair_style tabor` does not take it yet.
-pub(crate) fn scene_friction(scene: &Scene) -> Result<Option<Friction>, ExportError> {
+/// The scene's validated friction, `None` without a `[friction]` section, for
+/// `pair granular` (`plugin` false) or `pair_style tabor` (`plugin` true).
+/// Mindlin-Deresiewicz micro-slip is refused for `pair granular`, none of whose
+/// tangential models has it; `pair_style tabor` takes it
+/// (`tangential mindlin_deresiewicz`, Thornton 1991's incremental form of
+/// `tabor_tangential::Friction::step`).
+pub(crate) fn scene_friction(scene: &Scene, plugin: bool) -> Result<Option<Friction>, ExportError> {
     let friction = scene.friction().map_err(model_err)?;
-    if friction.is_some_and(|f| f.tangential.model == TangentialModel::MindlinDeresiewicz) {
+    if !plugin
+        && friction.is_some_and(|f| f.tangential.model == TangentialModel::MindlinDeresiewicz)
+    {
         return Err(ExportError::Unrepresentable {
             effect: "tangential = \"mindlin_deresiewicz\"".into(),
-            reason: "no LAMMPS tangential model has Mindlin-Deresiewicz micro-slip (pair granular's mindlin is a no-slip spring on the total displacement) and pair_style tabor does not take it yet; export the scene with tangential = \"mindlin\" for LAMMPS's nearest model".into(),
+            reason: "no tangential model of LAMMPS's pair granular has Mindlin-Deresiewicz micro-slip (its mindlin is a no-slip spring on the total displacement); export with --plugin for pair_style tabor's tangential mindlin_deresiewicz, or with tangential = \"mindlin\" for pair granular's nearest model".into(),
         });
     }
     Ok(friction)

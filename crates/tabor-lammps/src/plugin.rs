@@ -195,12 +195,6 @@ pub fn export_plugin(
             format!("gradation exponent k = {k}: the plugin's laws are homogeneous-half-space laws (Hertz, JKR, Maugis-Dugdale), and tabor's graded JKR (5.47)-(5.51) is not in the C ABI"),
         ));
     }
-    if let Some(d) = scene.damping {
-        return Err(refuse(
-            "a DEM damping law",
-            format!("[damping] ({}): pair_style tabor does not take a damping keyword yet (issue 30 item 4); use tabor export lammps without --plugin (pair granular damping; without adhesion for tsuji and coeff_restitution, which LAMMPS refuses with jkr)", d.describe()),
-        ));
-    }
     if let Some(sy) = scene.yield_stress() {
         return Err(refuse(
             "plasticity",
@@ -284,9 +278,17 @@ pub fn export_plugin(
     if let Some(a) = a_time {
         coeff += &format!(" damping {}", fmt(a));
     }
+    // a DEM damping law: pair granular's model name, its value after it
+    // (tabor_viscoadhesive::NormalDamping, the library's definitions)
+    let dem_damping = scene
+        .damping
+        .and_then(|d| d.model().map(|m| (m, d.value(), d.describe())));
+    if let Some((m, value, _)) = &dem_damping {
+        coeff += &format!(" damping {m} {}", fmt(*value));
+    }
     // the scene's [friction] with pair granular's keywords (k_t NULL: the plugin
     // computes 8 G* from E* and `poisson nu`, for two bodies of one material)
-    let friction = scene_friction(scene)?;
+    let friction = scene_friction(scene, true)?;
     let friction_kw = friction.as_ref().map(|f| {
         let nu = scene.sphere.material.poisson_ratio();
         let null = null_stiffness_fits(scene, f, 2.0 * e_star * (1.0 - nu * nu), nu);
@@ -335,6 +337,11 @@ pub fn export_plugin(
             ""
         }
     )];
+    if let Some((_, _, d)) = &dem_damping {
+        reproduces.push(format!(
+            "the scene's [damping], {d}: the library's definition (tabor_viscoadhesive::NormalDamping, LAMMPS pair granular's for Hertz) on the law's own contact radius, adhesive laws too (where pair granular refuses tsuji and coeff_restitution), unclipped as pair granular without limit_damping"
+        ));
+    }
     if adhesion.is_some() {
         reproduces.push(format!(
             "the pull-off force {:.6e} N (most tensile force of the law; measured within 1e-7 in LAMMPS), the jump-in at overlap {:.6e} m and the snap-off at {:.6e} m",

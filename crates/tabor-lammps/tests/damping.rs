@@ -91,12 +91,28 @@ fn coeff_restitution_with_adhesion_is_refused_as_lammps_does() {
     );
 }
 
-/// The plugin does not take a damping keyword yet: its export says so.
+/// `tabor export lammps --plugin`: `damping <model> <value>` for `pair_style
+/// tabor`, with adhesion too (where `pair granular` refuses `tsuji` and
+/// `coeff_restitution`).
 #[test]
-fn the_plugin_export_refuses_damping_for_now() {
+fn the_plugin_export_writes_damping() {
     let s = scene("[damping]\nmodel = \"coeff_restitution\"\nrestitution = 0.5\n");
-    let Err(ExportError::Unrepresentable { effect, .. }) = export_plugin(&s, "x.so", None) else {
-        panic!("exported");
-    };
-    assert!(effect.contains("damping"), "{effect}");
+    let x = export_plugin(&s, "x.so", None).unwrap();
+    let f = x.fragment();
+    assert!(
+        f.contains("pair_coeff * * hertz ")
+            && f.contains(" damping coeff_restitution 5.0000000000e-1"),
+        "{f}"
+    );
+    assert!(x.reproduces.iter().any(|r| r.contains("[damping]")));
+    let s = scene(
+        "[adhesion]\nwork_of_adhesion = 0.05\n[damping]\nmodel = \"tsuji\"\ncoefficient = 0.7\n",
+    );
+    let x = export_plugin(&s, "x.so", None).unwrap();
+    let f = x.fragment();
+    assert!(f.contains(" damping tsuji 7.0000000000e-1"), "{f}");
+    assert!(matches!(
+        export(&s, None),
+        Err(ExportError::Unrepresentable { .. })
+    ));
 }

@@ -116,3 +116,30 @@ fn no_friction_section_keeps_the_frictionless_line() {
         .contains(" tangential linear_nohistory 0.0 0.0 damping "));
     assert!(x.does_not_reproduce.iter().any(|l| l.effect == "friction"));
 }
+
+/// `tangential = "mindlin_deresiewicz"`: `pair_style tabor` takes it (Thornton's
+/// incremental form), `pair granular` has no such model and the export says so.
+#[test]
+fn micro_slip_goes_to_the_plugin_only() {
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/silica_oblique.toml");
+    let text = std::fs::read_to_string(path).unwrap().replace(
+        "tangential = \"mindlin\"",
+        "tangential = \"mindlin_deresiewicz\"",
+    );
+    let s = Scene::from_str(&text, Format::Toml).expect("scene");
+    let e = export(&s, None).expect_err("pair granular has no micro-slip");
+    let msg = e.to_string();
+    assert!(
+        msg.contains("mindlin_deresiewicz") && msg.contains("--plugin"),
+        "{msg}"
+    );
+    let plug = export_plugin(&s, "/x/taborplugin.so", None).expect("plugin");
+    let pl = coeff_line(&plug.fragment());
+    assert!(
+        pl.ends_with(
+            " poisson 0.17 tangential mindlin_deresiewicz NULL 0 0.3 rolling sds 50 0 0.1 twisting marshall"
+        ),
+        "{pl}"
+    );
+}

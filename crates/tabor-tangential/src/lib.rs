@@ -18,6 +18,7 @@
 //!
 //! Sources: the crate README.
 
+mod micro_slip;
 mod model;
 pub mod oblique;
 pub mod step;

@@ -10,6 +10,7 @@
 //! `j` to `i`; `relative_velocity = v_i − v_j`; the returned tangential force acts
 //! on `i` (and its negative on `j`); torques are returned for both bodies.
 
+use crate::micro_slip;
 use crate::model::{critical_force, Friction, TangentialModel, Twisting};
 use nalgebra::Vector3;
 
@@ -128,23 +129,39 @@ impl NormalResponse {
 
 /// The history of one contact, carried from step to step: zero when the contact
 /// forms, discarded when it breaks. `#[repr(C)]` and all doubles, so that a DEM
-/// engine can keep it in its per-pair history arrays (8 doubles; LAMMPS's own
+/// engine can keep it in its per-pair history arrays (13 doubles; LAMMPS's own
 /// `pair granular` keeps 3 (+1 for `mindlin_rescale`) + 3 + 3).
 ///
 /// When the roles of `i` and `j` are swapped (LAMMPS `newton` bookkeeping), the
-/// vectors change sign and `tangential_contact_radius` does not (LAMMPS's
+/// vectors change sign and the scalars do not (LAMMPS's
 /// `transfer_history_factor`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ContactHistory {
-    /// Accumulated tangential displacement ξ (m), in the tangent plane.
+    /// Accumulated tangential displacement ξ (m), in the tangent plane; for
+    /// `mindlin_deresiewicz` the elastic tangential force `T` (N; the force on
+    /// body `i` is `−T`), Thornton (1991)'s incremental state
+    /// (`crate::micro_slip` docs).
     pub tangential: [f64; 3],
-    /// `mindlin_rescale`: the contact radius of the last update (m).
+    /// `mindlin_rescale`: the contact radius of the last update (m);
+    /// `mindlin_deresiewicz`: the Coulomb limit `μ F_n0` of the last update (N).
     pub tangential_contact_radius: f64,
     /// Accumulated rolling displacement (m), in the tangent plane.
     pub rolling: [f64; 3],
     /// Accumulated twist angle (rad).
     pub twisting: f64,
+    /// `mindlin_deresiewicz`: the turning point `T*` (N), the force at the last
+    /// reversal of the loading (its direction the axis of the loop); zero while
+    /// loading. Mindlin & Deresiewicz (1953), Thornton (1991).
+    pub micro_slip_turning: [f64; 3],
+    /// `mindlin_deresiewicz`: the turning point `T**` (N) of reloading, the
+    /// component along `T*` of the force at the reversal of an unloading.
+    pub micro_slip_reversal: f64,
+    /// `mindlin_deresiewicz`: 0 loading, 1 unloading from `T*`, 2 reloading from
+    /// `T**` (Thornton 1991).
+    pub micro_slip_mode: f64,
+    /// `mindlin_deresiewicz`: the no-slip stiffness `k_t a` of the last update (N/m).
+    pub micro_slip_spring: f64,
 }
 
 /// The tangential force and the torques of one contact at one step.
@@ -192,6 +209,10 @@ impl Friction {
     ///    of [`crate::Tangential::spring`]; beyond `μ F_n0` the force is scaled to
     ///    the limit and ξ reset to the elastic part of the scaled force;
     ///    `mindlin_rescale` first scales ξ by `a/a_old` when the contact shrinks;
+    ///    `mindlin_deresiewicz` (not a LAMMPS model) advances the elastic force
+    ///    `T` instead by Thornton (1991)'s incremental Mindlin-Deresiewicz form
+    ///    (`k_t a θ Δs ± ΔL(1 − θ)`, `L = μ F_n0`, module `micro_slip`), capped at
+    ///    `L`, and adds the damping `−x_γ,t η_n v_tr`, the sum again capped at `L`;
     /// 2. rolling `sds` (`gran_sub_mod_rolling.cpp`): the same on the rolling
     ///    displacement with `k_roll`, `γ_roll`, `μ_roll F_n0`;
     /// 3. twisting (`gran_sub_mod_twisting.cpp`): `M = −k θ − γ ω_tw`, limited to
@@ -220,6 +241,30 @@ impl Friction {
         let vtr = kinematics.sliding_velocity();
 
         // 1. tangential
+        if t.model == TangentialModel::MindlinDeresiewicz {
+            let (fs, sliding) = if update_history {
+                let sliding = micro_slip::advance(history, &n, vtr * time_step, k, limit);
+                (-Vector3::from(history.tangential), sliding)
+            } else {
+                let t = rotate_into_plane(Vector3::from(history.tangential), &n);
+                (-t, t.norm() >= limit)
+            };
+            let damping_force = -vtr * damp;
+            let mut total = fs + damping_force;
+            let magnitude = total.norm();
+            if magnitude > limit && magnitude > 0.0 {
+                total *= limit / magnitude;
+            }
+            return self.finish(
+                kinematics,
+                normal,
+                time_step,
+                update_history,
+                history,
+                total,
+                sliding || magnitude > limit,
+            );
+        }
         let mut xi = Vector3::from(history.tangential);
         if t.model == TangentialModel::MindlinRescale && a < history.tangential_contact_radius {
             xi *= a / history.tangential_contact_radius;
@@ -248,7 +293,35 @@ impl Friction {
             }
         }
         history.tangential = xi.into();
+        self.finish(
+            kinematics,
+            normal,
+            time_step,
+            update_history,
+            history,
+            fs,
+            sliding,
+        )
+    }
 
+    /// Steps 2-4 of [`Friction::step`] (rolling, twisting, torques) after the
+    /// tangential force `fs` on body `i`.
+    #[allow(clippy::too_many_arguments)]
+    fn finish(
+        &self,
+        kinematics: &ContactKinematics,
+        normal: &NormalResponse,
+        time_step: f64,
+        update_history: bool,
+        history: &mut ContactHistory,
+        fs: Vector3<f64>,
+        sliding: bool,
+    ) -> ContactForces {
+        let n = kinematics.normal;
+        let a = normal.contact_radius;
+        let fn0 = normal.critical_force();
+        let t = &self.tangential;
+        let damp = t.damping_ratio * normal.damping_coefficient;
         let (arm_i, arm_j) = kinematics.torque_arms();
         let n_cross_fs = n.cross(&fs);
         let mut torque_i = -n_cross_fs * arm_i;

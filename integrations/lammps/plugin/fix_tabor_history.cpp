@@ -125,13 +125,43 @@ int FixTaborHistory::pack_restart(int i, double *buf)
   return m;
 }
 
+/* A record written by an older build may hold fewer doubles per contact: the
+   layout of TaborContactHistory only ever grew at its end (2 doubles before
+   friction, 10 before mindlin_deresiewicz, 16 now), so the old values are the
+   leading part of the new ones and the rest starts at zero, which is what a
+   contact of the older models has there. A record with more doubles per contact
+   than this build knows is refused. */
 void FixTaborHistory::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  int size = static_cast<int>(extra[nlocal][m]);
   m++;
-  unpack_exchange(nlocal, &extra[nlocal][m]);
+  const double *buf = &extra[nlocal][m];
+  int n = static_cast<int>(buf[0]);
+  int stored = n > 0 ? (size - 2) / n - 1 : dnum;
+  if (n > 0 && (size - 2) != n * (1 + stored))
+    error->one(FLERR, "fix tabor/history: a restart record of {} values cannot hold {} contacts", size, n);
+  if (stored == dnum) {
+    unpack_exchange(nlocal, const_cast<double *>(buf));
+    return;
+  }
+  if (stored > dnum)
+    error->one(FLERR,
+               "fix tabor/history: the restart file holds {} doubles per contact, this build of pair tabor "
+               "knows {}: it was written by a newer tabor; read it with that build",
+               stored, dnum);
+  while (n > capacity) grow_capacity();
+  npartner[nlocal] = n;
+  tagint *p = partner + (bigint) nlocal * capacity;
+  double *v = values + (bigint) nlocal * capacity * dnum;
+  int k0 = 1;
+  for (int k = 0; k < n; k++) {
+    p[k] = (tagint) ubuf(buf[k0++]).i;
+    for (int d = 0; d < dnum; d++) v[k * dnum + d] = d < stored ? buf[k0 + d] : 0.0;
+    k0 += stored;
+  }
 }
 
 int FixTaborHistory::size_restart(int i)

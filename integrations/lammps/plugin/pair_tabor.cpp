@@ -76,7 +76,8 @@ void PairTabor::settings(int narg, char ** /*arg*/)
   if (narg != 0) error->all(FLERR, "Illegal pair_style tabor command: it takes no arguments");
 }
 
-/* pair_coeff I J MODEL PARAMETERS [poisson nu] [damping A]
+/* pair_coeff I J MODEL PARAMETERS [poisson nu]
+              [damping A | damping viscoelastic eta_n0 | damping tsuji e | damping coeff_restitution e]
               [tangential TMODEL k_t|NULL x_gamma mu] [rolling sds k_roll gamma_roll mu_roll]
               [twisting marshall | twisting sds k_tw gamma_tw mu_tw]
    MODEL PARAMETERS: hertz E* | jkr/fixed-grip E* w | jkr/load-controlled E* w |
@@ -85,8 +86,16 @@ void PairTabor::settings(int narg, char ** /*arg*/)
    Lambda: Tabor parameter (held fixed for every effective radius: the Dugdale
    range h = d_n(R*)/Lambda grows as R*^(1/3)), A: Kuwabara-Kono dissipative time
    (s); the normal damping coefficient the tangential x_gamma multiplies is 2 E* A a.
+   damping viscoelastic|tsuji|coeff_restitution: pair granular's damping models
+   (c = eta_n0 m* a, or alpha(e) sqrt(m* (4/3) E* a) with Tsuji's polynomial or
+   alpha = -sqrt(5) ln e / sqrt(pi^2 + ln^2 e)), the value after the name; on every
+   normal model, jkr/* and maugis too (with a the law's own contact radius), where
+   pair granular refuses tsuji and coeff_restitution; they act unclipped (the contact
+   lasts until the law separates), as pair granular without limit_damping.
    tangential, rolling, twisting: the keywords and parameters of pair_style granular
-   (TMODEL linear_history, mindlin, mindlin_rescale; k_t NULL for the Mindlin models
+   (TMODEL linear_history, mindlin, mindlin_rescale, and tabor's mindlin_deresiewicz:
+   Mindlin-Deresiewicz micro-slip in Thornton (1991)'s incremental form, its turning
+   points kept in the contact's history; k_t NULL for the Mindlin models
    means 8 G* with G* = E* (1 - nu) / (2 (2 - nu)), the value pair granular computes
    for two bodies of one material, which needs `poisson nu`).
    Every error is reported on all ranks (error->all). */
@@ -138,7 +147,26 @@ void PairTabor::coeff(int narg, char **arg)
   while (iarg < narg) {
     std::string key = arg[iarg++];
     if (key == "damping") {
-      p.damping_time = number("damping time A");
+      // damping A (Kuwabara-Kono time), or pair granular's damping models with
+      // their value after the name (pair granular reads it from the normal
+      // model's damping slot, which tabor's normal models do not have)
+      std::string what = iarg < narg ? arg[iarg] : "";
+      if (what == "viscoelastic" || what == "tsuji" || what == "coeff_restitution") {
+        iarg++;
+        p.damping_model = what == "viscoelastic" ? TABOR_DAMPING_VISCOELASTIC
+            : what == "tsuji"                    ? TABOR_DAMPING_TSUJI
+                                                 : TABOR_DAMPING_COEFF_RESTITUTION;
+        p.damping_value = number(what == "viscoelastic" ? "damping viscoelastic eta_n0"
+                                     : what == "tsuji"  ? "damping tsuji value e"
+                                                        : "damping coeff_restitution e");
+        p.damping_time = 0.0;
+      } else if (what == "velocity" || what == "mass_velocity") {
+        error->all(FLERR, "pair tabor: damping {} is not available (viscoelastic, tsuji, coeff_restitution, or a "
+                   "Kuwabara-Kono time A)", what);
+      } else {
+        p.damping_model = TABOR_DAMPING_KUWABARA_KONO;
+        p.damping_time = number("damping time A (or viscoelastic|tsuji|coeff_restitution VALUE)");
+      }
     } else if (key == "poisson") {
       poisson = number("Poisson ratio");
       have_poisson = true;
@@ -149,8 +177,12 @@ void PairTabor::coeff(int narg, char **arg)
       if (t == "linear_history") fr.tangential_model = TABOR_TANGENTIAL_LINEAR_HISTORY;
       else if (t == "mindlin") fr.tangential_model = TABOR_TANGENTIAL_MINDLIN;
       else if (t == "mindlin_rescale") fr.tangential_model = TABOR_TANGENTIAL_MINDLIN_RESCALE;
+      else if (t == "mindlin_deresiewicz") fr.tangential_model = TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ;
       else
-        error->all(FLERR, "pair tabor: unknown tangential model {} (linear_history, mindlin, mindlin_rescale)", t);
+        error->all(FLERR,
+                   "pair tabor: unknown tangential model {} (linear_history, mindlin, mindlin_rescale, "
+                   "mindlin_deresiewicz)",
+                   t);
       if (iarg < narg && strcmp(arg[iarg], "NULL") == 0) {
         if (fr.tangential_model == TABOR_TANGENTIAL_LINEAR_HISTORY)
           error->all(FLERR, "pair tabor: tangential linear_history needs a stiffness k_t (N/m), not NULL");
@@ -187,7 +219,9 @@ void PairTabor::coeff(int narg, char **arg)
   if (stiffness_null) {
     if (!have_poisson)
       error->all(FLERR, "pair tabor: tangential {} NULL needs `poisson nu` (k_t = 8 G*, G* = E* (1 - nu) / (2 (2 - nu)))",
-                 fr.tangential_model == TABOR_TANGENTIAL_MINDLIN ? "mindlin" : "mindlin_rescale");
+                 fr.tangential_model == TABOR_TANGENTIAL_MINDLIN           ? "mindlin"
+                     : fr.tangential_model == TABOR_TANGENTIAL_MINDLIN_RESCALE ? "mindlin_rescale"
+                                                                               : "mindlin_deresiewicz");
     fr.tangential_stiffness = 8.0 * p.effective_modulus * (1.0 - poisson) / (2.0 * (2.0 - poisson));
   }
   if ((fr.rolling_model != TABOR_ROLLING_NONE || fr.twisting_model != TABOR_TWISTING_NONE) &&
@@ -303,6 +337,8 @@ int PairTabor::evaluate(int i, int j, int update_history, TaborContactForces &ou
   s.radius_i = radius[a];
   s.radius_j = radius[b];
   s.time_step = update->dt;
+  double *rmass = atom->rmass;
+  s.effective_mass = rmass[a] * rmass[b] / (rmass[a] + rmass[b]);
   s.update_history = update_history > 0 ? 1 : 0;
   TaborContactHistory h{};
   if (stored) std::memcpy(&h, stored, sizeof(h));
