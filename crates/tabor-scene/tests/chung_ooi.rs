@@ -328,18 +328,16 @@ fn test_4_micro_slip_follows_kharaz_at_every_measured_angle() {
     }
 }
 
-/// Test 4 against the paper's DEM solution (alumina and aluminium alloy):
-/// where the contact slides throughout ([`slides_throughout`], above 33°) every
-/// tangential model gives the same rebound, and the paper's curves lie on
-/// tabor's within their reading (0.3° of angle times the slope, 0.005 in the
-/// ratio, 5 rad/s) plus the e_n = 0.98 of the paper's DEM against tabor's
-/// elastic 1 (sliding: Δ(v_t'/v_t) = 0.02 μ/tan α, ΔR ω' = 1 % of R ω').
-/// Below it the paper's DEM is a tangential spring without micro-slip: at 5°
-/// its ratio (0.948 alumina, 0.899 alloy) is tabor's `mindlin` (0.956, 0.90)
-/// and not micro-slip's (0.74): asserted within 0.05 of `mindlin` and more
-/// than 0.1 from `mindlin_deresiewicz`.
+/// Test 4 against the paper's DEM solution (alumina and aluminium alloy) at 5°:
+/// below the sliding line the paper's DEM is a tangential spring without
+/// micro-slip: its ratio (0.948 alumina, 0.899 alloy, the paper's figures) is
+/// tabor's `mindlin` (0.943, 0.902) and not micro-slip's (0.739, 0.704): asserted
+/// within 0.05 of `mindlin` and more than 0.1 from `mindlin_deresiewicz`. (The
+/// comparison of the paper's DEM curves on the sliding line is not here: their
+/// digitization was not kept; there every Coulomb model is the closed form
+/// [`sliding`], which the experiment's test checks.)
 #[test]
-fn test_4_the_papers_dem_is_the_sliding_line_and_a_no_slip_spring() {
+fn test_4_the_papers_dem_is_a_no_slip_spring() {
     let v = V4;
     for (file, series) in [
         ("test4_alumina.toml", "paper_dem_alumina"),
@@ -347,37 +345,6 @@ fn test_4_the_papers_dem_is_the_sliding_line_and_a_no_slip_spring() {
     ] {
         let mds = scene(file, "mindlin_deresiewicz");
         let mindlin = scene(file, "mindlin");
-        for (quantity, q, reading) in [
-            (
-                "tangential_restitution",
-                centre as fn(&Rebound) -> f64,
-                0.005,
-            ),
-            ("angular_velocity", spin, 5.0),
-        ] {
-            for (alpha, paper) in reference(TEST4, series, quantity) {
-                if !slides_throughout(alpha) {
-                    continue;
-                }
-                let tan = alpha.to_radians().tan();
-                let got = q(&rebound(&mds, v, alpha));
-                let same = q(&rebound(&mindlin, v, alpha));
-                let en = if quantity == "angular_velocity" {
-                    0.01 * got.abs()
-                } else {
-                    0.02 * 0.092 / tan
-                };
-                let allowed = allowed(&mds, v, alpha, q, reading + en, 0.3);
-                eprintln!(
-                    "test 4 {series} {quantity} {alpha:5.2}°: tabor {got:9.4} (mindlin {same:9.4}), paper {paper:9.4}, ≤ {allowed:.4}"
-                );
-                assert!((got - same).abs() < 1e-6 * got.abs().max(1.0), "{alpha}");
-                assert!(
-                    (got - paper).abs() <= allowed,
-                    "{series} {quantity} {alpha}"
-                );
-            }
-        }
         let (alpha, paper) = reference(TEST4, series, "tangential_restitution")[0];
         let no_slip = centre(&rebound(&mindlin, v, alpha));
         let micro = centre(&rebound(&mds, v, alpha));

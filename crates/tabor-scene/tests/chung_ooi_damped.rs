@@ -15,11 +15,6 @@ fn dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/chung_ooi")
 }
 
-/// Rows `(x, value)` of `series` and `quantity` in `test6_reference.csv`.
-fn reference(series: &str, quantity: &str) -> Vec<(f64, f64)> {
-    reference_in("test6_reference.csv", series, quantity)
-}
-
 /// Rows `(x, value)` of `series` and `quantity` in a reference file.
 fn reference_in(file: &str, series: &str, quantity: &str) -> Vec<(f64, f64)> {
     let text = std::fs::read_to_string(dir().join(file)).unwrap();
@@ -170,11 +165,12 @@ fn test_6_sliding_is_friction_on_the_damped_normal_force() {
         ("test6_al_alloy.toml", "paper_dem_al_alloy"),
         ("test6_nylon.toml", "paper_dem_nylon"),
     ] {
-        for (x, paper) in reference(series, "beta") {
+        // the sliding regime x ≤ 1 and beyond it (where nothing is asserted)
+        for x in [0.176, 0.3, 0.5, 0.75, 1.0, 3.0] {
             let omega = chi_mu * vn / (x * r);
             for model in ["mindlin_deresiewicz", "mindlin"] {
                 let beta = test6(file, model, omega).0;
-                eprintln!("test 6 {series} β x = {x:6.3}: {model} {beta:7.4}, paper {paper:7.4}");
+                eprintln!("test 6 {series} β x = {x:6.3}: {model} {beta:7.4}");
                 if x <= 1.0 {
                     let (lo, hi) = (-1.0 + x, -1.0 + ratio * x);
                     assert!(
@@ -184,11 +180,11 @@ fn test_6_sliding_is_friction_on_the_damped_normal_force() {
                 }
             }
         }
-        for (tan, paper) in reference(series, "recoil") {
+        for tan in [1.0, 2.0, 4.0, 5.7, 8.0] {
             let omega = tan * vn / r;
             for model in ["mindlin_deresiewicz", "mindlin"] {
                 let recoil = test6(file, model, omega).1;
-                eprintln!("test 6 {series} recoil tan θ = {tan:6.3}: {model} {recoil:7.4}, paper {paper:7.4}");
+                eprintln!("test 6 {series} recoil tan θ = {tan:6.3}: {model} {recoil:7.4}");
                 if chi_mu / tan <= 1.0 {
                     let (lo, hi) = ((tan - ratio * chi_mu) / e, (tan - chi_mu) / e);
                     assert!(
