@@ -18,33 +18,44 @@ pub fn sweep<F>(
 where
     F: Fn() + Sync,
 {
-    if parameter == SweepParameter::Speed {
-        // one scene: its models and its sticking velocity are built once
-        // a long sweep of a coupled viscous-adhesive scene answers from a
-        // certified speed table (tabor_viscoadhesive::table)
-        let batch = match scene.speed_batch(values) {
-            Ok(b) => b,
-            Err(e) => return values.iter().map(|_| Err(e.clone())).collect(),
-        };
-        return values
+    // one scene: its models and its sticking velocity are built once; a long
+    // sweep of a coupled viscous-adhesive scene answers from a certified speed
+    // table (tabor_viscoadhesive::table)
+    let batch = (parameter == SweepParameter::Speed).then(|| scene.speed_batch(values));
+    outcomes(scene, parameter, batch.as_ref(), values, &on_point)
+}
+
+/// The outcomes at `values` in parallel: from the speed `batch` for a speed sweep,
+/// else from the scene with each value of `parameter` (the one evaluation of
+/// [`sweep`] and [`sweep_streamed`]).
+fn outcomes<F>(
+    scene: &Scene,
+    parameter: SweepParameter,
+    batch: Option<&Result<crate::scene::SpeedBatch<'_>, SceneError>>,
+    values: &[f64],
+    on_point: &F,
+) -> Vec<Result<Outcome, SceneError>>
+where
+    F: Fn() + Sync,
+{
+    let point = |result| {
+        on_point();
+        result
+    };
+    match batch {
+        Some(Ok(b)) => values.par_iter().map(|&v| point(b.outcome_at(v))).collect(),
+        Some(Err(e)) => values.iter().map(|_| Err(e.clone())).collect(),
+        None => values
             .par_iter()
-            .map(|&v| {
-                let result = batch.outcome_at(v);
-                on_point();
-                result
+            .map(|&value| {
+                point(
+                    scene
+                        .with_parameter(parameter, value)
+                        .and_then(|s| s.outcome()),
+                )
             })
-            .collect();
+            .collect(),
     }
-    values
-        .par_iter()
-        .map(|&value| {
-            let result = scene
-                .with_parameter(parameter, value)
-                .and_then(|s| s.outcome());
-            on_point();
-            result
-        })
-        .collect()
 }
 
 /// [`sweep`] over the values of a [`Spacing`], in chunks of `chunk` points: each
@@ -80,27 +91,7 @@ where
     });
     for start in (0..n).step_by(chunk) {
         let values = spacing.values(start..(start + chunk).min(n));
-        let results: Vec<Result<Outcome, SceneError>> = match &batch {
-            Some(Ok(b)) => values
-                .par_iter()
-                .map(|&v| {
-                    let result = b.outcome_at(v);
-                    on_point();
-                    result
-                })
-                .collect(),
-            Some(Err(e)) => values.iter().map(|_| Err(e.clone())).collect(),
-            None => values
-                .par_iter()
-                .map(|&value| {
-                    let result = scene
-                        .with_parameter(parameter, value)
-                        .and_then(|s| s.outcome());
-                    on_point();
-                    result
-                })
-                .collect(),
-        };
+        let results = outcomes(scene, parameter, batch.as_ref(), &values, &on_point);
         sink(&values, results)?;
     }
     Ok(())
