@@ -18,6 +18,7 @@
 //!
 //! Sources: the crate README.
 
+mod history;
 mod micro_slip;
 mod model;
 pub mod oblique;

@@ -62,7 +62,7 @@
 //! current tangent plane every step, keeping their lengths (as LAMMPS turns its
 //! stored displacement).
 
-use crate::step::{rotate_into_plane, ContactHistory};
+use crate::history::{rotate_into_plane, ContactHistory};
 use nalgebra::Vector3;
 
 /// `micro_slip_mode` of a contact loading (virgin, or with its memory wiped).
