@@ -145,23 +145,22 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
                 "energy loss            {:e} J of {:e} J",
                 o.energy_loss, o.kinetic_energy
             )?;
-            let micro_slip = [("micro-slip", l.micro_slip)];
-            // micro-slip only where the model has it (mindlin_deresiewicz)
-            let micro_slip = &micro_slip[..usize::from(l.micro_slip != 0.0)];
-            for (name, value) in [
+            let mechanisms = [
                 ("normal adhesion", l.normal_adhesion),
                 ("normal damping", l.normal_damping),
                 ("sliding friction", l.sliding_friction),
-            ]
-            .into_iter()
-            .chain(micro_slip.iter().copied())
-            .chain([
+                ("micro-slip", l.micro_slip),
                 ("tangential damping", l.tangential_damping),
                 ("tangential spring", l.tangential_spring),
                 ("rolling", l.rolling),
                 ("twisting", l.twisting),
                 ("torque arm", l.torque_arm),
-            ]) {
+            ];
+            // micro-slip only where the model has it (mindlin_deresiewicz)
+            for (name, value) in mechanisms
+                .into_iter()
+                .filter(|(name, value)| *name != "micro-slip" || *value != 0.0)
+            {
                 writeln!(out, "  {name:<20} {value:e} J")?;
             }
             writeln!(out, "energy bookkeeping     {:.1e}", o.energy_error)?;

@@ -83,37 +83,35 @@ const SWEEP_CHUNK: usize = 4096;
 /// `FILE.partial` and renamed when the sweep succeeds; standard output streams.
 struct CsvOut {
     writer: csv::Writer<Box<dyn Write>>,
-    path: Option<PathBuf>,
+    /// `--out FILE` and `FILE.partial`, the file written until the sweep succeeds.
+    files: Option<(PathBuf, PathBuf)>,
 }
 
 impl CsvOut {
     fn new(path: Option<&Path>) -> Result<Self, String> {
-        let partial = path.map(|p| {
-            let mut name = p.as_os_str().to_owned();
-            name.push(".partial");
-            PathBuf::from(name)
+        let files = path.map(|p| {
+            let mut partial = p.as_os_str().to_owned();
+            partial.push(".partial");
+            (p.to_path_buf(), PathBuf::from(partial))
         });
         Ok(CsvOut {
-            writer: csv::Writer::from_writer(csv_target(partial.as_deref())?),
-            path: path.map(Path::to_path_buf),
-        })
-    }
-
-    fn partial(&self) -> Option<PathBuf> {
-        self.path.as_ref().map(|p| {
-            let mut name = p.as_os_str().to_owned();
-            name.push(".partial");
-            PathBuf::from(name)
+            writer: csv::Writer::from_writer(csv_target(
+                files.as_ref().map(|(_, partial)| partial.as_path()),
+            )?),
+            files,
         })
     }
 
     /// Flushes and moves the file into place.
     fn finish(mut self, points: usize) -> Outcome {
-        let fail = csv_failure(self.path.as_deref());
-        self.writer.flush().map_err(|e| fail(e.into()))?;
-        if let (Some(p), Some(tmp)) = (self.path.clone(), self.partial()) {
+        {
+            let fail = csv_failure(self.files.as_ref().map(|(p, _)| p.as_path()));
+            self.writer.flush().map_err(|e| fail(e.into()))?;
+        }
+        if let Some((p, partial)) = self.files {
             drop(self.writer);
-            std::fs::rename(&tmp, &p).map_err(|e| format!("cannot write {}: {e}", p.display()))?;
+            std::fs::rename(&partial, &p)
+                .map_err(|e| format!("cannot write {}: {e}", p.display()))?;
             eprintln!("wrote {points} points to {}", p.display());
         }
         Ok(())
@@ -121,9 +119,9 @@ impl CsvOut {
 
     /// Removes the partial file of a failed sweep.
     fn abandon(self) {
-        if let Some(tmp) = self.partial() {
+        if let Some((_, partial)) = self.files {
             drop(self.writer);
-            let _ = std::fs::remove_file(tmp);
+            let _ = std::fs::remove_file(partial);
         }
     }
 }
