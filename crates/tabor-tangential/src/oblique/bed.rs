@@ -204,16 +204,21 @@ impl MicroSlipBed {
         if needed > self.w.len() {
             self.grow(needed);
         }
-        self.w.iter_mut().for_each(|w| *w = Vector3::zeros());
-        self.in_frame.iter_mut().for_each(|f| *f = false);
-        self.explicit.clear();
+        self.unstrain();
         self.explicit
             .extend((0..self.w.len()).take_while(|&i| (i as f64) * self.dz < a * a));
-        self.clear_frame();
         self.s0 = *s;
         self.n0 = *n;
         self.a0_sq = a * a;
         self.phi0 = 0.0;
+    }
+
+    /// Every spring unstrained and outside the frame, the frame empty.
+    fn unstrain(&mut self) {
+        self.w.iter_mut().for_each(|w| *w = Vector3::zeros());
+        self.in_frame.iter_mut().for_each(|f| *f = false);
+        self.explicit.clear();
+        self.clear_frame();
     }
 
     fn clear_frame(&mut self) {
@@ -374,7 +379,9 @@ impl MicroSlipBed {
         // the step's change, for the budget
         let limits = (p.phi - self.phi0).abs() * self.a0_sq + p.phi * (p.a2 - self.a0_sq).abs();
         let change = p.ds.norm() + limits;
-        if holds {
+        // a frame that no longer holds is rebuilt from the springs just mapped
+        // (every one in contact, in order)
+        let fresh = if holds {
             for &i in &self.explicit {
                 self.w[i] = Vector3::zeros();
             }
@@ -390,16 +397,10 @@ impl MicroSlipBed {
             }
             self.sigma += p.ds;
             self.path += p.ds.norm();
+            None
         } else {
-            for v in self.w.iter_mut() {
-                *v = Vector3::zeros();
-            }
-            self.in_frame.iter_mut().for_each(|f| *f = false);
-            self.clear_frame();
-            for (i, w) in updated {
-                self.w[i] = w;
-            }
-        }
+            Some(updated.into_iter().map(|(_, w)| w).collect())
+        };
         self.s0 = *s;
         self.n0 = *n;
         self.a0_sq = p.a2;
@@ -407,22 +408,23 @@ impl MicroSlipBed {
         let spent = self.path
             + (p.phi - self.phi_r).abs() * self.a_r_sq
             + p.phi * (p.a2 - self.a_r_sq).abs();
-        if !holds || self.sum_c == 0.0 || 2.0 * spent > self.budget {
-            self.rebuild(&p, FRAME_STEPS * change);
+        let budget = FRAME_STEPS * change;
+        match fresh {
+            Some(actual) => self.rebuild(&p, budget, actual),
+            None if self.sum_c == 0.0 || 2.0 * spent > self.budget => {
+                let inside = ((p.a2 / self.dz).ceil() as usize).min(self.w.len());
+                let actual = (0..inside).map(|i| self.committed(i)).collect();
+                self.rebuild(&p, budget, actual);
+            }
+            None => {}
         }
     }
 
-    /// Puts every spring whose slack exceeds `budget` (and whose cell above is in
-    /// contact) into a new frame.
-    fn rebuild(&mut self, p: &Probe, budget: f64) {
-        let inside = ((p.a2 / self.dz).ceil() as usize).min(self.w.len());
-        let actual: Vec<Vector3<f64>> = (0..inside).map(|i| self.committed(i)).collect();
-        for v in self.w.iter_mut() {
-            *v = Vector3::zeros();
-        }
-        self.in_frame.iter_mut().for_each(|f| *f = false);
-        self.clear_frame();
-        self.explicit.clear();
+    /// Sets the springs in contact to `actual` (from the centre outwards; the rest
+    /// unstrained) and puts every one whose slack exceeds `budget` (and whose cell
+    /// above is in contact) into a new frame.
+    fn rebuild(&mut self, p: &Probe, budget: f64, actual: Vec<Vector3<f64>>) {
+        self.unstrain();
         self.budget = budget;
         self.phi_r = p.phi;
         self.a_r_sq = p.a2;

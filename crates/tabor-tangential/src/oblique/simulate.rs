@@ -243,11 +243,7 @@ impl ObliqueImpact {
             time,
             length,
             force,
-            bed: None,
-        };
-        let setup = Setup {
             bed: self.micro_slip_bed(law, r_eff, length, v_n, nodes),
-            ..setup
         };
 
         // start on the undisturbed path at the law's start overlap
