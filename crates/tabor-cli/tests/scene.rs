@@ -380,3 +380,58 @@ fn trajectory_json_says_which_model_it_simulates() {
     let d = v["restitution"].as_f64().unwrap() - v["restitution_analytic"].as_f64().unwrap();
     assert!(d.abs() < 1e-5, "{v}");
 }
+
+#[test]
+fn grazing_impacts_answer_in_the_turned_line_of_centres_or_are_refused() {
+    // issue 33: at 89.999999° the normal branch used to end while the bodies still
+    // approached, reported as a rebound with normal_restitution −8.9e6: refused now,
+    // with the angle named
+    let out = tabor(&[
+        "impact",
+        &scene("silica_oblique.toml"),
+        "--angle",
+        "89.999999",
+        "--json",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    assert!(
+        err.contains("angle 89.999999") && err.contains("approach"),
+        "{err}"
+    );
+    // a rebound at 88° and 3 m/s: the line of centres turns by about a degree; the
+    // rebound quantities are read in it (physical range), and a warning says so
+    let v = json(&tabor(&[
+        "impact",
+        &scene("silica_oblique.toml"),
+        "--speed",
+        "3",
+        "--angle",
+        "88",
+        "--json",
+    ]));
+    assert_eq!(v["oblique"]["sticks"], false);
+    let e_n = v["normal_restitution"].as_f64().unwrap();
+    assert!(e_n > 0.0 && e_n <= 1.0, "{e_n}");
+    assert!(v["oblique"]["normal_turn"].as_f64().unwrap() > 1.0);
+    let codes: Vec<_> = v["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|w| w["code"].as_str().unwrap().to_owned())
+        .collect();
+    assert!(codes.contains(&"normal-turn".to_owned()), "{codes:?}");
+    // sticking: no rebound quantities, and the central and oblique decisions agree
+    let v = json(&tabor(&[
+        "impact",
+        &scene("silica_oblique.toml"),
+        "--angle",
+        "89.9",
+        "--json",
+    ]));
+    assert_eq!(v["oblique"]["sticks"], true);
+    assert_eq!(v["sticks"], true);
+    assert_eq!(v["normal_restitution"], 0.0);
+    assert!(v["rebound_angle"].is_null() && v["tangential_restitution"].is_null());
+}

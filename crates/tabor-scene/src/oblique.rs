@@ -38,6 +38,48 @@ struct ObliqueSummary<'a> {
     energy_error: f64,
     contact_time: f64,
     slip_switches: usize,
+    normal_turn: f64,
+}
+
+/// The turn of the line of centres (degrees) above which an oblique report warns
+/// that the bodies rolled round each other: the rebound quantities are then read
+/// in the final line of centres, far from the first-touch axes that the
+/// small-turn literature (Maw-Barber-Fawcett, Thornton) uses.
+pub const NORMAL_TURN_WARNING_DEGREES: f64 = 1.0;
+
+/// The warnings of an oblique outcome beside its central one: a sticking
+/// decision that differs from the central impact at the normal speed (code
+/// `oblique-sticking`), and a line of centres that turned by more than
+/// [`NORMAL_TURN_WARNING_DEGREES`] (code `normal-turn`).
+fn oblique_warnings(o: &ObliqueOutcome, central: &crate::Outcome) -> Vec<Warning> {
+    let mut warnings = Vec::new();
+    if o.sticks != central.sticks {
+        let (oblique, normal) = if o.sticks {
+            ("sticks", "rebounds")
+        } else {
+            ("separates", "sticks")
+        };
+        warnings.push(Warning {
+            code: "oblique-sticking",
+            message: format!(
+                "the oblique simulation {oblique}, while the central impact at the normal speed \
+                 v cos α (the fields restitution, sticks, energy_loss) {normal}: the tangential \
+                 motion decides (see oblique.sticks and normal_restitution)"
+            ),
+        });
+    }
+    if o.normal_turn > NORMAL_TURN_WARNING_DEGREES {
+        warnings.push(Warning {
+            code: "normal-turn",
+            message: format!(
+                "the line of centres turned by {:.3}° during the contact (the bodies rolled \
+                 round each other): normal_restitution, tangential_restitution and \
+                 rebound_angle are read in the final line of centres",
+                o.normal_turn
+            ),
+        });
+    }
+    warnings
 }
 
 impl Scene {
@@ -187,6 +229,7 @@ impl Scene {
         let o = self.oblique(speed, angle)?;
         let mut central = self.outcome_at(speed * angle.to_radians().cos())?;
         central.warnings.extend(self.oblique_accuracy_warning());
+        central.warnings.extend(oblique_warnings(&o, &central));
         let json = |e: serde_json::Error| SceneError::field("scene", e.to_string());
         let mut value = serde_json::to_value(&central).map_err(json)?;
         let extra = serde_json::to_value(ObliqueFields {
@@ -205,6 +248,7 @@ impl Scene {
                 energy_error: o.energy_error,
                 contact_time: o.contact_time,
                 slip_switches: o.slip_switches,
+                normal_turn: o.normal_turn,
             },
         })
         .map_err(json)?;

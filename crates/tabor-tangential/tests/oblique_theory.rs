@@ -285,3 +285,42 @@ fn stick_limit_matches_an_independent_integration() {
         assert!(out.energy_error < 1e-8, "{}", out.energy_error);
     }
 }
+
+#[test]
+fn grazing_frictionless_pair_rebounds_mirrored_about_the_turned_line_of_centres() {
+    // Two smooth elastic spheres interact by a central conservative force: the
+    // relative orbit is symmetric about its apse line, so the separation velocity
+    // mirrors the approach velocity about the line of centres at separation,
+    // whatever that line turned through. In the final line of centres e_n = 1,
+    // e_t = −1 and the rebound angle equals the impact angle, exactly; in the
+    // first-touch axes they would not (the check below shows the turn matters).
+    let e_star = E_Y / (2.0 * (1.0 - NU * NU));
+    let sphere = Body::solid_sphere(R, RHO).unwrap();
+    let imp = ObliqueImpact {
+        sphere,
+        target: sphere,
+        normal: NormalContact::ELASTIC,
+        friction: None,
+        sphere_spin: [0.0; 3],
+        target_spin: [0.0; 3],
+    };
+    let mut law = ElasticContact::hertz(e_star, R / 2.0).unwrap();
+    for &angle in &[80.0, 88.0, 89.5] {
+        let out = imp.simulate(&mut law, 1.0, angle, &settings()).unwrap();
+        assert!(out.normal_turn > 0.1, "{angle}: turn {}", out.normal_turn);
+        assert_relative_eq!(out.normal_restitution, 1.0, max_relative = 1e-7);
+        assert_relative_eq!(
+            out.tangential_restitution.unwrap(),
+            -1.0,
+            max_relative = 1e-9
+        );
+        assert_relative_eq!(out.rebound_angle.unwrap(), angle, max_relative = 1e-9);
+        // the first-touch axes: the relative velocity after, u = v_i − v_j
+        let u_x = out.after.sphere.velocity[0] - out.after.target.velocity[0];
+        let first_touch = -u_x / (angle.to_radians().cos());
+        assert!(
+            (first_touch - 1.0).abs() > 1e-2,
+            "{angle}: the first-touch axes give {first_touch}"
+        );
+    }
+}

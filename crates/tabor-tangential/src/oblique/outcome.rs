@@ -37,11 +37,13 @@ pub struct ObliqueOutcome {
     /// Impact angle α (degrees) between the relative velocity and the line of
     /// centres.
     pub angle: f64,
-    /// Normal restitution `−u'_x / u_x` of the relative velocity (frame axes); 0
-    /// when the bodies stick.
+    /// Normal restitution `−u'_n / u_n` of the relative velocity, `u'_n` along
+    /// the line of centres at separation (for a flat, the fixed normal); 0 when
+    /// the bodies stick.
     pub normal_restitution: f64,
     /// Tangential restitution of the contact point, `−c'_y / c_y` with
-    /// `c = u_t − (R_i ω_i + R_j ω_j) × n` (n the normal at first touch); `None`
+    /// `c = u_t − (R_i ω_i + R_j ω_j) × n` (n the normal at first touch, and for
+    /// `c'` the normal at separation, turned back onto it); `None`
     /// when the contact point does not slide before the impact (α = 0, no spin)
     /// or the bodies stick.
     pub tangential_restitution: Option<f64>,
@@ -50,6 +52,11 @@ pub struct ObliqueOutcome {
     pub rebound_angle: Option<f64>,
     /// True when the bodies stay together (the normal law's decision).
     pub sticks: bool,
+    /// The angle (degrees) through which the line of centres turned between
+    /// first touch and the end (separation or sticking); 0 for a flat. The
+    /// rebound quantities are read in the line of centres at the end, turned
+    /// back onto the first-touch axes.
+    pub normal_turn: f64,
     /// Velocities and spins after the impact (at the moment of sticking when they
     /// stick).
     pub after: AfterImpact,
@@ -129,6 +136,16 @@ impl<'a> Setup<'a> {
             )
         };
         let n0 = -Vector3::x();
+        // The rebound quantities are read in the frame of the line of centres at
+        // the end: for a pair that line turns while the bodies roll round each
+        // other (a grazing adhesive encounter turns it by tens of degrees), and the
+        // first-touch axes would mistake the turn for a normal velocity that never
+        // separated. The rotation taking the final normal onto the first one maps
+        // the final motion into the first-touch axes; a flat never turns.
+        let (n1, ..) = self.geometry(t, y);
+        let normal_turn = n1.dot(&n0).clamp(-1.0, 1.0).acos();
+        let to_first = nalgebra::Rotation3::rotation_between(&n1, &n0)
+            .unwrap_or_else(nalgebra::Rotation3::identity);
         let r_j = if self.flat {
             0.0
         } else {
@@ -145,16 +162,18 @@ impl<'a> Setup<'a> {
             Vector3::from(self.imp.target_spin)
         };
         let c0 = contact_point(&self.u0, &wi0, &wj0);
-        let c1 = contact_point(&u, &wi, &wj);
+        let u_end = to_first * u;
+        let c1 = contact_point(&u_end, &(to_first * wi), &(to_first * wj));
         Ok(ObliqueOutcome {
             law: law.name(),
             speed: self.v,
             angle,
             // bodies that stick do not rebound: no rebound quantities (the state
             // at the moment of sticking is in `after`)
-            normal_restitution: if sticks { 0.0 } else { -u[0] / self.u0[0] },
+            normal_restitution: if sticks { 0.0 } else { -u_end[0] / self.u0[0] },
             tangential_restitution: (c0 != 0.0 && !sticks).then(|| -c1 / c0),
-            rebound_angle: (!sticks).then(|| u[1].atan2(-u[0]).to_degrees()),
+            rebound_angle: (!sticks).then(|| u_end[1].atan2(-u_end[0]).to_degrees()),
+            normal_turn: normal_turn.to_degrees(),
             sticks,
             after: AfterImpact {
                 sphere: BodyMotion {
