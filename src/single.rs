@@ -59,8 +59,9 @@ impl Naming {
                 value,
                 requirement,
             } => format!(
-                "invalid {} = {value:e}: {requirement}",
-                self.parameter(parameter)
+                "invalid {} = {}: {requirement}",
+                self.parameter(parameter),
+                crate::numerics::readable::plain(value)
             ),
             other => other.to_string(),
         }
@@ -162,11 +163,11 @@ mod tests {
         let e = restitution::Error::invalid("effective_mass", -1.0, "must be > 0");
         assert_eq!(
             Error::from(e.clone()).render(Naming::Flags),
-            "invalid --mass = -1e0: must be > 0"
+            "invalid --mass = -1: must be > 0"
         );
         assert_eq!(
             Error::from(e).render(Naming::Keywords),
-            "invalid mass = -1e0: must be > 0"
+            "invalid mass = -1: must be > 0"
         );
     }
 }

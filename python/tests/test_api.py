@@ -88,25 +88,25 @@ def raises(match, f, *args, **kwargs):
 
 
 def test_loss_errors():
-    raises(r"invalid tabor_parameter = -1e0", tabor.maugis_dugdale_loss, -1.0)
+    raises(r"invalid tabor_parameter = -1", tabor.maugis_dugdale_loss, -1.0)
     raises(r"invalid tabor_parameter = NaN", tabor.maugis_dugdale_loss, float("nan"))
     raises(r"tabor_parameter = inf", tabor.maugis_dugdale_loss, float("inf"), fast=True)
-    m = raises(r"invalid tabor_parameter = 0e0.*\(at index 2\)", tabor.maugis_dugdale_loss, [1, 2, 0, -1])
+    m = raises(r"invalid tabor_parameter = 0.*\(at index 2\)", tabor.maugis_dugdale_loss, [1, 2, 0, -1])
     assert "index 3" not in m  # the first bad element
     raises(r"\(at index \(1, 0\)\)", tabor.maugis_dugdale_loss, [[1, 2], [-3, 4]])
-    raises(r"invalid tolerance = 1e0", tabor.maugis_dugdale_loss, 1.0, tolerance=1.0)
-    raises(r"tolerance = 0e0.*\(at index 1\)", tabor.maugis_dugdale_loss, 1.0, tolerance=[1e-8, 0.0])
+    raises(r"invalid tolerance = 1\b", tabor.maugis_dugdale_loss, 1.0, tolerance=1.0)
+    raises(r"tolerance = 0.*\(at index 1\)", tabor.maugis_dugdale_loss, 1.0, tolerance=[1e-8, 0.0])
     raises(r"do not broadcast", tabor.maugis_dugdale_loss, [1, 2], tolerance=[1e-8, 1e-9, 1e-10])
 
 
 def test_curve_and_conversion_errors():
     curve = tabor.maugis_dugdale_curve
-    raises(r"invalid maugis_parameter = -1e0", curve, maugis_parameter=-1.0, contact_radius=1.0)
+    raises(r"invalid maugis_parameter = -1", curve, maugis_parameter=-1.0, contact_radius=1.0)
     raises(r"invalid contact_radius = -5e-1", curve, maugis_parameter=1.0, contact_radius=-0.5)
     raises(r"contact_radius = NaN.*\(at index 1\)", curve, maugis_parameter=1.0, contact_radius=[1.0, np.nan])
-    raises(r"invalid maugis_parameter = 0e0", tabor.tabor_parameter_from_maugis, 0.0)
-    raises(r"invalid tabor_mu = -2e0", tabor.tabor_parameter_from_tabor_mu, -2.0)
-    raises(r"invalid tabor_parameter = -1e0", tabor.maugis_parameter_from_tabor, -1.0)
+    raises(r"invalid maugis_parameter = 0", tabor.tabor_parameter_from_maugis, 0.0)
+    raises(r"invalid tabor_mu = -2", tabor.tabor_parameter_from_tabor_mu, -2.0)
+    raises(r"invalid tabor_parameter = -1", tabor.maugis_parameter_from_tabor, -1.0)
 
 
 def test_scene_errors(tmp_path):
@@ -120,8 +120,8 @@ def test_scene_errors(tmp_path):
     raises(r"impact\.speed", no_speed.outcome)
     raises(r"speed", no_speed.trajectory)
     scene = tabor.Scene.from_path(SCENES / "silica.toml")
-    raises(r"speed = -1e0", scene.outcome, -1.0)
-    raises(r"speed = -1e0.*\(at index 2\)", scene.restitution, [0.1, 0.2, -1.0, -2.0])
+    raises(r"speed = -1", scene.outcome, -1.0)
+    raises(r"speed = -1.*\(at index 2\)", scene.restitution, [0.1, 0.2, -1.0, -2.0])
     raises(r"speed = NaN.*\(at index \(0, 1\)\)", scene.restitution, [[0.1, np.nan]])
     raises(r"invalid parameter = \"color\"", scene.sweep, "color", [1.0])
     raises(r"\(at index 1\)", scene.sweep, "sphere_radius", [1e-6, -1.0])
@@ -133,8 +133,8 @@ def test_scene_errors(tmp_path):
 def test_model_errors():
     base = dict(modulus=1e9, radius=1e-6, work_of_adhesion=0.05, mass=1e-14)
     raises(r"invalid modulus = -1e9", tabor.jkr, **{**base, "modulus": -1e9})
-    raises(r"invalid speed = -1e0", tabor.jkr, **base, speed=-1.0)
-    raises(r"invalid mass = 0e0.*\(at index 1\)", tabor.jkr, **{**base, "mass": [1e-14, 0.0]})
+    raises(r"invalid speed = -1", tabor.jkr, **base, speed=-1.0)
+    raises(r"invalid mass = 0.*\(at index 1\)", tabor.jkr, **{**base, "mass": [1e-14, 0.0]})
     raises(r"invalid separation = \"sideways\"", tabor.jkr, **base, separation="sideways")
     raises(r"invalid tolerance", tabor.jkr, **base, tolerance=0.9)
     pbase = dict(modulus=1e11, radius=1e-4, mass=1e-8, yield_stress=1e9, speed=1.0)
@@ -144,10 +144,10 @@ def test_model_errors():
     raises(r"invalid model = \"plasticine\"", tabor.plastic, model="plasticine", **pbase)
     raises(r"invalid plastic_model", tabor.plastic, model="superposition", work_of_adhesion=0.1,
            plastic_model="superposition", **pbase)
-    raises(r"invalid yield_stress = -1e0", tabor.plastic, model="thornton", **{**pbase, "yield_stress": -1.0})
+    raises(r"invalid yield_stress = -1", tabor.plastic, model="thornton", **{**pbase, "yield_stress": -1.0})
     raises(r"invalid model = \"jelly\"", tabor.visco, model="jelly")
     raises(r"missing damping_ratio", tabor.visco, model="kelvin-voigt-flat")
-    raises(r"damping_ratio = -1e0", tabor.visco, model="kelvin-voigt-flat", damping_ratio=-1.0)
+    raises(r"damping_ratio = -1", tabor.visco, model="kelvin-voigt-flat", damping_ratio=-1.0)
     raises(r"invalid restitution = 1.5", tabor.penalty, law="flores", restitution=1.5)
     raises(r"invalid law", tabor.penalty, law="springy", restitution=0.5)
     raises(r"invalid exponent", tabor.penalty, law="characteristic", restitution=0.5, exponent=2.0)
@@ -155,7 +155,7 @@ def test_model_errors():
            density=1000, mass=1.0)
     raises(r"give the sphere's density or mass", tabor.effective, youngs_modulus=1e9,
            poisson_ratio=0.3, radius=1e-6)
-    raises(r"invalid poisson_ratio = 6e-1", tabor.effective, youngs_modulus=1e9, poisson_ratio=0.6,
+    raises(r"invalid poisson_ratio = 0.6", tabor.effective, youngs_modulus=1e9, poisson_ratio=0.6,
            radius=1e-6, mass=1.0)
     raises(r"rigid_target", tabor.effective, youngs_modulus=1e9, poisson_ratio=0.3, radius=1e-6,
            mass=1.0, rigid_target=True, target_youngs_modulus=1e9)

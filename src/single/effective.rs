@@ -68,8 +68,9 @@ fn of_body(naming: Naming, target: bool) -> impl Fn(crate::restitution::Error) -
                 (_, p) => p,
             };
             Error::Input(format!(
-                "invalid {} = {value:e}: {requirement}",
-                naming.input(input)
+                "invalid {} = {}: {requirement}",
+                naming.input(input),
+                crate::numerics::readable::plain(value)
             ))
         }
         other => Error::Library(other),

@@ -14,6 +14,7 @@
 use serde::Serialize;
 use std::fmt;
 use std::io::{self, BufWriter, Stdout, Write};
+pub use tabor::numerics::readable::{human, meaningful_digits, READABLE_DIGITS};
 use tabor::single::Naming;
 
 /// The tabor version written into every output.
@@ -166,13 +167,13 @@ pub fn print_result<T: Serialize>(
     out.finish()
 }
 
-/// Prints `(name, value, unit)` rows aligned, each value in shortest round-trip
-/// form (`{:e}`).
+/// Prints `(name, value, unit)` rows aligned, each value for people
+/// ([`human`], [`READABLE_DIGITS`] significant digits; `--json` has every digit).
 pub fn print_table(out: &mut Out, rows: &[(&str, f64, &str)]) -> Outcome {
     let width = rows.iter().map(|r| r.0.len()).max().unwrap_or(0);
     for (name, value, unit) in rows {
-        let value = format!("{value:e}");
-        writeln!(out, "{name:<width$}  {value:<24} {unit}")?;
+        let value = human(*value, unit, READABLE_DIGITS);
+        writeln!(out, "{name:<width$}  {}", value.trim_end())?;
     }
     Ok(())
 }
@@ -181,12 +182,7 @@ pub fn print_table(out: &mut Out, rows: &[(&str, f64, &str)]) -> Outcome {
 /// (`0.505`) for magnitudes in [1e-5, 1e16), exponent form (`2.775e-19`)
 /// otherwise; either reads back as the same f64.
 pub fn number(value: f64) -> String {
-    let magnitude = value.abs();
-    if magnitude == 0.0 || (1e-5..1e16).contains(&magnitude) || !value.is_finite() {
-        format!("{value}")
-    } else {
-        format!("{value:e}")
-    }
+    tabor::numerics::readable::plain(value)
 }
 
 /// An optional number for a CSV field: empty when absent.

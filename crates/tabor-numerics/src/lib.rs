@@ -37,6 +37,7 @@ mod error;
 pub mod minimize;
 pub mod ode;
 pub mod quadrature;
+pub mod readable;
 pub mod root_finding;
 pub mod search;
 pub mod special;

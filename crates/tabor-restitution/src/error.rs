@@ -6,7 +6,7 @@ use thiserror::Error;
 #[derive(Clone, Debug, Error, PartialEq)]
 pub enum Error {
     /// A parameter is outside its physical or mathematical domain.
-    #[error("invalid {parameter} = {value:e}: {requirement}")]
+    #[error("invalid {parameter} = {}: {requirement}", tabor_numerics::readable::plain(*.value))]
     InvalidParameter {
         /// The parameter's name, as the public API spells it.
         parameter: &'static str,

@@ -131,7 +131,10 @@ pub(crate) fn in_field<'a>(
         let message = match &e {
             Error::InvalidParameter {
                 value, requirement, ..
-            } => format!("= {value:e}: {requirement}"),
+            } => format!(
+                "= {}: {requirement}",
+                tabor_numerics::readable::plain(*value)
+            ),
             other => other.to_string(),
         };
         SceneError {

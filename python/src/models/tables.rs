@@ -30,8 +30,9 @@ pub(super) fn library(e: Error) -> Failure {
             value,
             requirement,
         } => format!(
-            "invalid {} = {value:e}: {requirement}",
-            input_name(parameter)
+            "invalid {} = {}: {requirement}",
+            input_name(parameter),
+            tabor::numerics::readable::plain(value)
         ),
         other => other.to_string(),
     };

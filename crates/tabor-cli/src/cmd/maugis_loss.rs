@@ -90,7 +90,7 @@ impl Origin {
                     value,
                     requirement,
                 },
-            ) => format!("invalid {flag} = {value:e}: {requirement}"),
+            ) => format!("invalid {flag} = {}: {requirement}", number(value)),
             (
                 Origin::Converted(flag, given),
                 Error::InvalidParameter {
@@ -98,7 +98,11 @@ impl Origin {
                     value,
                     requirement,
                 },
-            ) => format!("invalid {flag} = {given:e}: gives Λ = {value:e}, which {requirement}"),
+            ) => format!(
+                "invalid {flag} = {}: gives Λ = {}, which {requirement}",
+                number(given),
+                number(value)
+            ),
             (_, other) => message(other),
         }
     }

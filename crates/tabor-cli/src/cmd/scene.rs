@@ -1,7 +1,9 @@
 //! The scene subcommands: `impact`, `sweep`, `sticking`, `trajectory`. A scene is a
 //! TOML or JSON file (format: `examples/scenes/README.md`).
 
-use crate::output::{number, print_json, stdout, Failure, Outcome, VERSION};
+use crate::output::{
+    human, meaningful_digits, number, print_json, stdout, Failure, Outcome, VERSION,
+};
 use serde::Serialize;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -117,33 +119,44 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
         }
         if let Some((central, o)) = oblique_at(&scene, &args.scene, speed, angle)? {
             let mut out = stdout();
+            let d = meaningful_digits(central.accuracy);
+            let h = |value: f64, unit: &str| human(value, unit, d);
+            let vector = |v: [f64; 3]| v.map(|x| h(x, "")).join(", ");
             writeln!(out, "scene                  {}", central.scene)?;
             writeln!(
                 out,
-                "impact speed           {speed:e} m/s at {angle} degrees"
+                "impact speed           {} at {} degrees",
+                h(speed, "m/s"),
+                h(angle, "")
             )?;
             writeln!(out, "normal law             {}", o.law)?;
-            writeln!(out, "normal restitution     {}", o.normal_restitution)?;
+            writeln!(
+                out,
+                "normal restitution     {}",
+                h(o.normal_restitution, "")
+            )?;
             match o.tangential_restitution {
-                Some(e) => writeln!(out, "tangential restitution {e} (contact point)")?,
+                Some(e) => writeln!(out, "tangential restitution {} (contact point)", h(e, ""))?,
                 None => writeln!(out, "tangential restitution - (no sliding before impact)")?,
             }
             match o.rebound_angle {
-                Some(a) => writeln!(out, "rebound angle          {a} degrees")?,
+                Some(a) => writeln!(out, "rebound angle          {} degrees", h(a, ""))?,
                 None => writeln!(out, "rebound angle          - (the bodies stick)")?,
             }
             writeln!(out, "sticks                 {}", o.sticks)?;
             let s = &o.after.sphere;
             writeln!(
                 out,
-                "sphere after           v = {:?} m/s, omega = {:?} rad/s (CoM frame)",
-                s.velocity, s.angular_velocity
+                "sphere after           v = [{}] m/s, omega = [{}] rad/s (CoM frame)",
+                vector(s.velocity),
+                vector(s.angular_velocity)
             )?;
             let l = &o.losses;
             writeln!(
                 out,
-                "energy loss            {:e} J of {:e} J",
-                o.energy_loss, o.kinetic_energy
+                "energy loss            {} of {}",
+                h(o.energy_loss, "J"),
+                h(o.kinetic_energy, "J")
             )?;
             let mechanisms = [
                 ("normal adhesion", l.normal_adhesion),
@@ -161,13 +174,14 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
                 .into_iter()
                 .filter(|(name, value)| *name != "micro-slip" || *value != 0.0)
             {
-                writeln!(out, "  {name:<20} {value:e} J")?;
+                writeln!(out, "  {name:<20} {}", h(value, "J"))?;
             }
             writeln!(out, "energy bookkeeping     {:.1e}", o.energy_error)?;
             writeln!(
                 out,
                 "central model          {} (restitution {} at the normal speed)",
-                central.model, central.restitution
+                central.model,
+                h(central.restitution, "")
             )?;
             for w in &central.warnings {
                 writeln!(out, "warning [{}]: {}", w.code, w.message)?;
@@ -185,26 +199,29 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
     }
     let o = &outcome;
     let mut out = stdout();
+    let d = meaningful_digits(o.accuracy);
+    let h = |value: f64, unit: &str| human(value, unit, d);
     writeln!(out, "scene             {}", o.scene)?;
-    writeln!(out, "impact speed      {:e} m/s", o.impact_speed)?;
-    writeln!(out, "restitution       {}", o.restitution)?;
+    writeln!(out, "impact speed      {}", h(o.impact_speed, "m/s"))?;
+    writeln!(out, "restitution       {}", h(o.restitution, ""))?;
     writeln!(out, "sticks            {}", o.sticks)?;
     let sticking_warning = o
         .warnings
         .iter()
         .any(|w| matches!(w.code, "sticks-up-to-limit" | "sticking-velocity-unknown"));
     match o.sticking_velocity {
-        Some(v) => writeln!(out, "sticking velocity {v:e} m/s")?,
+        Some(v) => writeln!(out, "sticking velocity {}", h(v, "m/s"))?,
         None if sticking_warning => writeln!(out, "sticking velocity none (see the warning)")?,
         None => writeln!(out, "sticking velocity none (the bodies never stick)")?,
     }
     writeln!(
         out,
-        "energy loss       {:e} J of {:e} J",
-        o.energy_loss, o.kinetic_energy
+        "energy loss       {} of {}",
+        h(o.energy_loss, "J"),
+        h(o.kinetic_energy, "J")
     )?;
     if let Some(l) = o.tabor_parameter {
-        writeln!(out, "Tabor parameter   {l:e}")?;
+        writeln!(out, "Tabor parameter   {}", h(l, ""))?;
     }
     writeln!(out, "model             {}", o.model)?;
     writeln!(out, "branch            {}", o.branch)?;
@@ -228,7 +245,7 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
     for e in &o.effects {
         let loss = e
             .energy_loss
-            .map_or(String::new(), |l| format!(" [{l:e} J]"));
+            .map_or(String::new(), |l| format!(" [{}]", h(l, "J")));
         writeln!(
             out,
             "  {:<16} {:<5} {}{loss}",
@@ -239,8 +256,10 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
     }
     writeln!(
         out,
-        "accuracy          {:.1e} (error estimate {:.1e} J, {} evaluations)",
-        o.accuracy, o.energy_loss_error, o.cost.evaluations
+        "accuracy          {:.1e} (error estimate {}, {} evaluations)",
+        o.accuracy,
+        human(o.energy_loss_error, "J", 2),
+        o.cost.evaluations
     )?;
     for w in &o.warnings {
         writeln!(out, "warning [{}]: {}", w.code, w.message)?;
@@ -309,11 +328,13 @@ pub fn sticking(args: &StickingArgs) -> Outcome {
         return print_json(&out);
     }
     let mut stdout = stdout();
+    let d = meaningful_digits(scene.accuracy);
     match (out.sticking_velocity, out.sticks_up_to) {
-        (Some(v), _) => writeln!(stdout, "sticking velocity {v:e} m/s")?,
+        (Some(v), _) => writeln!(stdout, "sticking velocity {}", human(v, "m/s", d))?,
         (None, Some(limit)) => writeln!(
             stdout,
-            "the bodies stick at every speed up to {limit:e} m/s ({}): no sticking velocity within the model's validity",
+            "the bodies stick at every speed up to {} ({}): no sticking velocity within the model's validity",
+            human(limit, "m/s", d),
             out.limit_reason.unwrap_or("validity limit")
         )?,
         (None, None) => writeln!(stdout, "the bodies never stick")?,
@@ -449,15 +470,20 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
         return print_json(&out);
     }
     let mut stdout = stdout();
+    let d = meaningful_digits(scene.accuracy);
     writeln!(stdout, "law                  {}", out.law)?;
     writeln!(
         stdout,
         "restitution          {} (simulated)",
-        out.restitution
+        human(out.restitution, "", d)
     )?;
-    writeln!(stdout, "restitution_analytic {}", out.restitution_analytic)?;
+    writeln!(
+        stdout,
+        "restitution_analytic {}",
+        human(out.restitution_analytic, "", d)
+    )?;
     match out.contact_time {
-        Some(t) => writeln!(stdout, "contact time         {t:e} s")?,
+        Some(t) => writeln!(stdout, "contact time         {}", human(t, "s", d))?,
         None => writeln!(stdout, "contact time         - (the bodies stick)")?,
     }
     writeln!(stdout, "energy bookkeeping   {:.1e}", out.energy_error)?;

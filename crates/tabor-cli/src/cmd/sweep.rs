@@ -68,10 +68,10 @@ fn range(text: &str, log: bool, flag: &str) -> Result<Spacing, String> {
 /// parameter and value first.
 fn point_error(parameter: SweepParameter, value: f64, e: impl std::fmt::Display) -> String {
     let message = e.to_string();
-    if message.contains(&format!("= {value:e}")) {
+    if message.contains(&format!("= {}", number(value))) {
         message
     } else {
-        format!("{} = {value:e}: {message}", parameter.name())
+        format!("{} = {}: {message}", parameter.name(), number(value))
     }
 }
 
