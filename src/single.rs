@@ -32,6 +32,11 @@ pub const INPUT_NAMES: &[(&str, &str)] = &[
     ("tabor_parameter_mu", "tabor_mu"),
 ];
 
+/// The Python keyword of the effective (contact) modulus E*: `contact_modulus`,
+/// the name of the Adhesion package's JKR solutions; the command line keeps
+/// `--modulus`.
+pub const PYTHON_CONTACT_MODULUS: &str = "contact_modulus";
+
 /// The input that gives the library parameter `parameter` ([`INPUT_NAMES`]).
 pub fn input_name(parameter: &str) -> &str {
     INPUT_NAMES
@@ -71,6 +76,9 @@ impl Naming {
     pub fn input(self, name: &str) -> String {
         match self {
             Naming::Flags => format!("--{}", name.replace('_', "-")),
+            // Python spells the effective modulus E* as the Adhesion package's
+            // JKR does: one name for the quantity across the package
+            Naming::Keywords if name == "modulus" => PYTHON_CONTACT_MODULUS.to_string(),
             Naming::Keywords => name.to_string(),
         }
     }

@@ -147,7 +147,7 @@ pub fn jkr_normalized_loss() -> f64 {
 /// The library's SI parameter names as the Python keywords spell them
 /// (Adhesion's vocabulary).
 const SI_NAMES: [(&str, &str); 2] = [
-    ("effective_modulus", "elastic_modulus"),
+    ("effective_modulus", "contact_modulus"),
     ("effective_radius", "radius"),
 ];
 
@@ -174,12 +174,12 @@ fn sphere(
 
 /// Maugis' λ from SI quantities (see `tabor.maugis_parameter`).
 #[pyfunction]
-#[pyo3(signature = (radius, elastic_modulus, work_of_adhesion, cohesive_stress, n, shape, errors, threads))]
+#[pyo3(signature = (radius, contact_modulus, work_of_adhesion, cohesive_stress, n, shape, errors, threads))]
 #[allow(clippy::too_many_arguments)]
 pub fn maugis_parameter<'py>(
     py: Python<'py>,
     radius: Arr<'py>,
-    elastic_modulus: Arr<'py>,
+    contact_modulus: Arr<'py>,
     work_of_adhesion: Arr<'py>,
     cohesive_stress: Arr<'py>,
     n: usize,
@@ -190,7 +190,7 @@ pub fn maugis_parameter<'py>(
     let c = call(n, &shape, errors, threads)?;
     let k = c.columns(&[
         ("radius", &radius),
-        ("elastic_modulus", &elastic_modulus),
+        ("contact_modulus", &contact_modulus),
         ("work_of_adhesion", &work_of_adhesion),
         ("cohesive_stress", &cohesive_stress),
     ])?;
@@ -238,14 +238,14 @@ fn si_point(
 /// SI force and penetration of `model` over contact radii (see
 /// `tabor.force_displacement`).
 #[pyfunction]
-#[pyo3(signature = (model, contact_radius, radius, elastic_modulus, work_of_adhesion, cohesive_stress, n, shape, errors, threads))]
+#[pyo3(signature = (model, contact_radius, radius, contact_modulus, work_of_adhesion, cohesive_stress, n, shape, errors, threads))]
 #[allow(clippy::too_many_arguments)]
 pub fn force_displacement<'py>(
     py: Python<'py>,
     model: &str,
     contact_radius: Arr<'py>,
     radius: Arr<'py>,
-    elastic_modulus: Arr<'py>,
+    contact_modulus: Arr<'py>,
     work_of_adhesion: Arr<'py>,
     cohesive_stress: Option<Arr<'py>>,
     n: usize,
@@ -260,7 +260,7 @@ pub fn force_displacement<'py>(
     let k = c.columns(&[
         ("contact_radius", &contact_radius),
         ("radius", &radius),
-        ("elastic_modulus", &elastic_modulus),
+        ("contact_modulus", &contact_modulus),
         ("work_of_adhesion", &work_of_adhesion),
     ])?;
     let stress = match &cohesive_stress {

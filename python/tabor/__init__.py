@@ -200,13 +200,30 @@ def maugis_dugdale_curve(*, contact_radius: Any, maugis_parameter: Any, errors: 
     return load, penetration
 
 
-def force_displacement(model: str, contact_radius: Any, *, radius: Any, elastic_modulus: Any,
+def _contact_modulus(function: str, contact_modulus: Any, extra: Dict[str, Any]) -> Any:
+    """``contact_modulus``, or the same quantity under a renamed keyword in
+    ``extra`` (``_core.RENAMED_KEYWORDS``, with a DeprecationWarning); any other
+    keyword in ``extra`` is a TypeError."""
+    given = _core.renamed(function, extra)
+    unknown = sorted(k for k in given if k != "contact_modulus")
+    if unknown:
+        raise TypeError(f"{function}() got an unexpected keyword argument '{unknown[0]}'")
+    if "contact_modulus" in given:
+        if contact_modulus is not None:
+            raise TypeError(f"{function}(): give contact_modulus once")
+        contact_modulus = given["contact_modulus"]
+    if contact_modulus is None:
+        raise TypeError(f"{function}() missing required argument: 'contact_modulus'")
+    return contact_modulus
+
+
+def force_displacement(model: str, contact_radius: Any, *, radius: Any, contact_modulus: Any = None,
                        work_of_adhesion: Any, cohesive_stress: Any = None, errors: str = _core.DEFAULT_ERRORS,
-                       threads: Optional[int] = None) -> Tuple[Any, Any]:
+                       threads: Optional[int] = None, **renamed: Any) -> Tuple[Any, Any]:
     """Force and penetration of an adhesive sphere-on-flat contact in SI units, at
     given contact radii, for ``model`` (the menu below, ``FORCE_DISPLACEMENT_MODELS``).
 
-    The parameters of ``Adhesion`` (``radius`` R, ``elastic_modulus`` the contact
+    The parameters of ``Adhesion`` (``radius`` R, ``contact_modulus`` the contact
     modulus E* = E/(1 − ν²) (for two bodies the effective modulus), K = 4E*/3,
     ``work_of_adhesion`` Δγ, ``cohesive_stress`` σ0 for Maugis-Dugdale only). JKR
     gives ``Adhesion.ReferenceSolutions.JKR.force`` and ``penetration``,
@@ -218,13 +235,14 @@ def force_displacement(model: str, contact_radius: Any, *, radius: Any, elastic_
 
     Models:
     """
+    contact_modulus = _contact_modulus("force_displacement", contact_modulus, renamed)
     model = _core.check_str("model", model)
     errors = _core.check_errors(errors)
     threads = _core.check_threads(threads)
-    b = _core.Batch({"contact_radius": contact_radius, "radius": radius, "elastic_modulus": elastic_modulus,
+    b = _core.Batch({"contact_radius": contact_radius, "radius": radius, "contact_modulus": contact_modulus,
                      "work_of_adhesion": work_of_adhesion, "cohesive_stress": cohesive_stress})
     force, penetration = b.outs(_tabor.force_displacement(
-        model, b["contact_radius"], b["radius"], b["elastic_modulus"], b["work_of_adhesion"],
+        model, b["contact_radius"], b["radius"], b["contact_modulus"], b["work_of_adhesion"],
         b["cohesive_stress"], b.n, b.shape_list, errors, threads))
     return force, penetration
 
@@ -239,18 +257,23 @@ force_displacement.__doc__ = (force_displacement.__doc__ or "") + "".join(
 SWEEP_PARAMETERS: Tuple[str, ...] = tuple(_tabor.SWEEP_PARAMETERS)
 
 
-def maugis_parameter(radius: Any, elastic_modulus: Any, work_of_adhesion: Any, cohesive_stress: Any, *,
-                     errors: str = _core.DEFAULT_ERRORS, threads: Optional[int] = None) -> Any:
+def maugis_parameter(radius: Any, contact_modulus: Any = None, work_of_adhesion: Any = None,
+                     cohesive_stress: Any = None, *, errors: str = _core.DEFAULT_ERRORS,
+                     threads: Optional[int] = None, **renamed: Any) -> Any:
     """Maugis' λ = 2σ0 / (πΔγK²/R)^(1/3), K = 4E*/3, from SI quantities: the
     arguments and meaning of ``Adhesion.ReferenceSolutions.MaugisDugdale.
     maugis_parameter(radius, elastic_modulus, work_of_adhesion, cohesive_stress)``
-    (``elastic_modulus`` is the contact modulus E*). Λ of Willert (2020) is
-    ``tabor_parameter_from_maugis(λ)``."""
+    (its ``elastic_modulus`` is the contact modulus E*, here ``contact_modulus``). Λ of
+    Willert (2020) is ``tabor_parameter_from_maugis(λ)``."""
+    contact_modulus = _contact_modulus("maugis_parameter", contact_modulus, renamed)
+    for name, value in (("work_of_adhesion", work_of_adhesion), ("cohesive_stress", cohesive_stress)):
+        if value is None:
+            raise TypeError(f"maugis_parameter() missing required argument: '{name}'")
     errors = _core.check_errors(errors)
     threads = _core.check_threads(threads)
-    b = _core.Batch({"radius": radius, "elastic_modulus": elastic_modulus, "work_of_adhesion": work_of_adhesion,
+    b = _core.Batch({"radius": radius, "contact_modulus": contact_modulus, "work_of_adhesion": work_of_adhesion,
                      "cohesive_stress": cohesive_stress})
-    (lam,) = b.outs(_tabor.maugis_parameter(b["radius"], b["elastic_modulus"], b["work_of_adhesion"],
+    (lam,) = b.outs(_tabor.maugis_parameter(b["radius"], b["contact_modulus"], b["work_of_adhesion"],
                                             b["cohesive_stress"], b.n, b.shape_list, errors, threads))
     return lam
 

@@ -254,6 +254,26 @@ COMMON = [
 ]
 
 
+#: Keywords renamed so that each quantity has one name across the package:
+#: old name -> the name to use (the old one still works, with a DeprecationWarning).
+RENAMED_KEYWORDS: Dict[str, str] = {"modulus": "contact_modulus", "elastic_modulus": "contact_modulus"}
+
+
+def renamed(function: str, kwargs: Dict[str, Any]) -> Dict[str, Any]:
+    """``kwargs`` with the renamed keywords (``RENAMED_KEYWORDS``) under their new
+    names, each use warned once as a DeprecationWarning; both names at once is a
+    TypeError."""
+    out = dict(kwargs)
+    for old, new in RENAMED_KEYWORDS.items():
+        if old in out:
+            if new in out:
+                raise TypeError(f"{function}(): give {new} (the old name {old} as well is ambiguous)")
+            warnings.warn(f"{function}(): {old}= is now {new}= (one name per quantity, as the Adhesion "
+                          "package names it)", DeprecationWarning, stacklevel=3)
+            out[new] = out.pop(old)
+    return out
+
+
 def model_function(name: str, summary: str, returns: str, schema: Dict[str, str]) -> Callable[..., Dict[str, Any]]:
     """A model function (``tabor.jkr``, …) built from its keyword table."""
     spec = _tabor.SPECS[name]
@@ -261,6 +281,7 @@ def model_function(name: str, summary: str, returns: str, schema: Dict[str, str]
     sig = signature(spec, COMMON)
 
     def function(**kwargs: Any) -> Dict[str, Any]:
+        kwargs = renamed(name, kwargs)
         try:
             bound = sig.bind(**kwargs)
         except TypeError as e:

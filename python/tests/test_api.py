@@ -25,7 +25,7 @@ def test_scalar_in_float_out():
     p, d = tabor.maugis_dugdale_curve(contact_radius=1.0, maugis_parameter=1.0)
     assert type(p) is float and type(d) is float
     assert type(tabor.tabor_parameter_from_maugis(1.0)) is float
-    out = tabor.jkr(modulus=1e9, radius=1e-6, work_of_adhesion=0.05, mass=1e-14, speed=1.0)
+    out = tabor.jkr(contact_modulus=1e9, radius=1e-6, work_of_adhesion=0.05, mass=1e-14, speed=1.0)
     assert type(out["restitution"]) is float and type(out["sticks"]) is bool and type(out["model"]) is str
     scene = tabor.Scene.from_path(SCENES / "silica.toml")
     assert type(scene.restitution(0.2)) is float
@@ -53,10 +53,10 @@ def test_broadcasting_over_every_argument():
         np.testing.assert_array_equal(d[i], di)
     tol = np.array([1e-6, 1e-12])
     assert tabor.maugis_dugdale_loss(lam, tolerance=tol).shape == (3, 2)
-    out = tabor.jkr(modulus=[[1e9], [2e9]], radius=1e-6, work_of_adhesion=[0.01, 0.02, 0.05],
+    out = tabor.jkr(contact_modulus=[[1e9], [2e9]], radius=1e-6, work_of_adhesion=[0.01, 0.02, 0.05],
                     mass=1e-14, speed=1.0)
     assert out["restitution"].shape == (2, 3) and out["sticks"].dtype == np.bool_
-    assert out["energy_loss"][1, 2] == tabor.jkr(modulus=2e9, radius=1e-6, work_of_adhesion=0.05,
+    assert out["energy_loss"][1, 2] == tabor.jkr(contact_modulus=2e9, radius=1e-6, work_of_adhesion=0.05,
                                                  mass=1e-14)["energy_loss"]
     e = tabor.effective(youngs_modulus=[1e9, 2e9], poisson_ratio=[[0.1], [0.2], [0.3]],
                         radius=1e-6, density=1000)
@@ -131,13 +131,13 @@ def test_scene_errors(tmp_path):
 
 
 def test_model_errors():
-    base = dict(modulus=1e9, radius=1e-6, work_of_adhesion=0.05, mass=1e-14)
-    raises(r"invalid modulus = -1e9", tabor.jkr, **{**base, "modulus": -1e9})
+    base = dict(contact_modulus=1e9, radius=1e-6, work_of_adhesion=0.05, mass=1e-14)
+    raises(r"invalid contact_modulus = -1e9", tabor.jkr, **{**base, "contact_modulus": -1e9})
     raises(r"invalid speed = -1", tabor.jkr, **base, speed=-1.0)
     raises(r"invalid mass = 0.*\(at index 1\)", tabor.jkr, **{**base, "mass": [1e-14, 0.0]})
     raises(r"invalid separation = \"sideways\"", tabor.jkr, **base, separation="sideways")
     raises(r"invalid tolerance", tabor.jkr, **base, tolerance=0.9)
-    pbase = dict(modulus=1e11, radius=1e-4, mass=1e-8, yield_stress=1e9, speed=1.0)
+    pbase = dict(contact_modulus=1e11, radius=1e-4, mass=1e-8, yield_stress=1e9, speed=1.0)
     raises(r"missing poisson_ratio", tabor.plastic, model="jackson-green", **pbase)
     raises(r"missing density", tabor.plastic, model="dimensionless-fit", **pbase)
     raises(r"missing work_of_adhesion", tabor.plastic, model="superposition", **pbase)
@@ -262,7 +262,7 @@ def test_menus_and_defaults_come_from_the_library():
                 getattr(tabor, function)(**numbers, **others, **{name: "nope"})
     assert tabor.FORCE_DISPLACEMENT_MODELS == ("jkr", "dmt", "maugis-dugdale")
     with pytest.raises(tabor.InputError, match='expected "jkr", "dmt" or "maugis-dugdale"'):
-        tabor.force_displacement("hertz", 1e-7, radius=1e-6, elastic_modulus=1e9, work_of_adhesion=0.05)
+        tabor.force_displacement("hertz", 1e-7, radius=1e-6, contact_modulus=1e9, work_of_adhesion=0.05)
     with pytest.raises(tabor.InputError, match='expected "raise" or "nan"'):
         tabor.jkr_normalized_loss() and tabor.maugis_dugdale_loss(1.0, errors="ignore")
 
@@ -296,3 +296,37 @@ def test_arrays_beyond_the_machine_are_refused_before_any_copy():
     with pytest.raises(tabor.InputError, match=r"at most"):
         tabor.maugis_dugdale_loss(np.broadcast_to(0.5, (10**5, 10**5)))
     assert time.perf_counter() - t0 < 1.0
+
+
+def test_one_name_per_quantity():
+    """issue 33: the contact modulus E* is ``contact_modulus`` everywhere (the
+    Adhesion package's JKR name); the old names still work, with a
+    DeprecationWarning, and give the same numbers."""
+    import inspect
+    import warnings
+
+    for f in (tabor.jkr, tabor.plastic, tabor.force_displacement, tabor.maugis_parameter):
+        names = set(inspect.signature(f).parameters)
+        assert "contact_modulus" in names, f.__name__
+        assert not names & {"modulus", "elastic_modulus"}, f.__name__
+    base = dict(radius=1e-6, work_of_adhesion=0.05, mass=1e-14, speed=1.0)
+    new = tabor.jkr(contact_modulus=1e9, **base)
+    with pytest.warns(DeprecationWarning, match=r"modulus= is now contact_modulus="):
+        old = tabor.jkr(modulus=1e9, **base)
+    assert old["restitution"] == new["restitution"]
+    with pytest.warns(DeprecationWarning, match=r"elastic_modulus= is now contact_modulus="):
+        lam_old = tabor.maugis_parameter(radius=1e-6, elastic_modulus=30e9, work_of_adhesion=0.05,
+                                         cohesive_stress=1e8)
+    lam = tabor.maugis_parameter(1e-6, 30e9, 0.05, 1e8)
+    assert lam_old == lam
+    with pytest.warns(DeprecationWarning):
+        f_old, _ = tabor.force_displacement("jkr", 1e-8, radius=1e-6, elastic_modulus=30e9, work_of_adhesion=0.05)
+    f_new, _ = tabor.force_displacement("jkr", 1e-8, radius=1e-6, contact_modulus=30e9, work_of_adhesion=0.05)
+    assert f_old == f_new
+    with pytest.raises(TypeError, match="ambiguous"):
+        tabor.jkr(modulus=1e9, contact_modulus=1e9, **base)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'modulu'"):
+        tabor.force_displacement("jkr", 1e-8, radius=1e-6, modulu=30e9, work_of_adhesion=0.05)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        tabor.jkr(contact_modulus=1e9, **base)

@@ -16,7 +16,7 @@ import pytest
 import tabor
 from conftest import SCENES
 
-JKR = dict(modulus=1e9, radius=1e-6, work_of_adhesion=0.05, mass=1e-14)
+JKR = dict(contact_modulus=1e9, radius=1e-6, work_of_adhesion=0.05, mass=1e-14)
 
 
 def test_exception_classes():
@@ -25,8 +25,8 @@ def test_exception_classes():
     assert issubclass(tabor.ConvergenceError, RuntimeError)
     with pytest.raises(tabor.InputError, match=r"invalid tabor_parameter = -1"):
         tabor.maugis_dugdale_loss(-1.0)
-    with pytest.raises(tabor.InputError, match=r"invalid modulus = -1e9"):
-        tabor.jkr(**{**JKR, "modulus": -1e9})
+    with pytest.raises(tabor.InputError, match=r"invalid contact_modulus = -1e9"):
+        tabor.jkr(**{**JKR, "contact_modulus": -1e9})
     # valid numbers outside the model: the Maugis-Dugdale branch at a tiny lambda
     with pytest.raises(tabor.ModelValidityError, match=r"maugis_parameter = 1e-30.*DMT"):
         tabor.maugis_dugdale_curve(contact_radius=1.0, maugis_parameter=1e-30)
@@ -51,7 +51,7 @@ def test_strict_booleans_and_strings():
     with pytest.raises(TypeError, match="separation must be a str"):
         tabor.jkr(**JKR, separation=1)
     with pytest.raises(TypeError, match="model must be a str"):
-        tabor.plastic(model=None, modulus=1e11, radius=1e-4, mass=1e-8, yield_stress=1e9, speed=1.0)
+        tabor.plastic(model=None, contact_modulus=1e11, radius=1e-4, mass=1e-8, yield_stress=1e9, speed=1.0)
     with pytest.raises(TypeError):
         tabor.jkr(**JKR, colour="red")  # an unknown keyword
     with pytest.raises(TypeError):
@@ -163,7 +163,7 @@ def test_result_tables_match_the_library():
 
     assert set(tabor.effective(youngs_modulus=1e9, poisson_ratio=0.3, radius=1e-6, density=1e3)) == set(_results.EFFECTIVE)
     assert set(tabor.jkr(**JKR, speed=1.0)) == set(_results.JKR)
-    base = dict(modulus=1e11, radius=1e-4, mass=1e-8, yield_stress=1e9, speed=1.0)
+    base = dict(contact_modulus=1e11, radius=1e-4, mass=1e-8, yield_stress=1e9, speed=1.0)
     assert set(tabor.plastic(model="dimensionless-fit", density=7800.0, **base)) == set(_results.PLASTIC)
     assert set(tabor.visco(model="standard-flat", modulus_ratio=2.0, viscous_parameter=0.5)) == set(_results.VISCO)
     assert set(tabor.penalty(law="flores", restitution=0.8)) == set(_results.PENALTY)

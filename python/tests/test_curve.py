@@ -108,7 +108,7 @@ R, E, W = 1e-6, 30e9, 0.05
 def test_jkr_si_curve_against_adhesion():
     jkr = _adhesion_module("JKR")
     a = np.geomspace(1e-10, 1e-6, 60)
-    force, pen = tabor.force_displacement("jkr", a, radius=R, elastic_modulus=E, work_of_adhesion=W)
+    force, pen = tabor.force_displacement("jkr", a, radius=R, contact_modulus=E, work_of_adhesion=W)
     ref_f = jkr.force(contact_radius=a, radius=R, contact_modulus=E, work_of_adhesion=W)
     ref_d = jkr.penetration(contact_radius=a, radius=R, contact_modulus=E, work_of_adhesion=W)
     np.testing.assert_allclose(force, ref_f, rtol=1e-8, atol=0)
@@ -127,7 +127,7 @@ def test_maugis_dugdale_si_curve_against_adhesion(lam):
     ref = np.array([_quiet(MD.load_and_displacement, x, R, E, W, sigma0) for x in a])
     ok = np.isfinite(ref).all(axis=1)
     assert ok.sum() >= 50
-    force, pen = tabor.force_displacement("maugis-dugdale", a, radius=R, elastic_modulus=E, work_of_adhesion=W,
+    force, pen = tabor.force_displacement("maugis-dugdale", a, radius=R, contact_modulus=E, work_of_adhesion=W,
                                           cohesive_stress=sigma0)
     np.testing.assert_allclose(force[ok], ref[ok, 0], rtol=1e-8, atol=0)
     scale = np.abs(ref[ok, 1]).max()
@@ -145,7 +145,7 @@ def _quiet(f, *args):
 
 def test_dmt_si_curve_closed_form_and_the_maugis_dugdale_limit():
     a = np.geomspace(1e-9, 1e-6, 20)
-    force, pen = tabor.force_displacement("dmt", a, radius=R, elastic_modulus=E, work_of_adhesion=W)
+    force, pen = tabor.force_displacement("dmt", a, radius=R, contact_modulus=E, work_of_adhesion=W)
     np.testing.assert_allclose(force, 4 * E * a**3 / (3 * R) - 2 * math.pi * W * R, rtol=1e-14)
     np.testing.assert_allclose(pen, a**2 / R, rtol=1e-14)
     # Maugis-Dugdale tends to DMT as lambda -> 0: the load like lambda, the
@@ -154,7 +154,7 @@ def test_dmt_si_curve_closed_form_and_the_maugis_dugdale_limit():
     errors = []
     for lam in (1e-4, 1e-6, 1e-8):
         sigma0 = lam / 2 * (math.pi * W * k**2 / R) ** (1 / 3)
-        f, d = tabor.force_displacement("maugis-dugdale", a, radius=R, elastic_modulus=E, work_of_adhesion=W,
+        f, d = tabor.force_displacement("maugis-dugdale", a, radius=R, contact_modulus=E, work_of_adhesion=W,
                                         cohesive_stress=sigma0)
         errors.append((np.max(np.abs(f - force)) / (2 * math.pi * W * R), np.max(np.abs(d - pen)) / np.max(pen)))
     for (f1, d1), (f2, d2) in zip(errors, errors[1:]):

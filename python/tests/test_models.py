@@ -25,7 +25,7 @@ def test_effective_closed_forms():
 def test_jkr_closed_forms():
     e, r, w, m = 1e9, 1e-6, 0.05, 1e-14
     v = np.array([0.1, 0.5, 1.0, 3.0])
-    out = tabor.jkr(modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v)
+    out = tabor.jkr(contact_modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v)
     loss = (1 + 864 ** (1 / 3)) / 10 * (r**4 * (math.pi * w) ** 5 / e**2) ** (1 / 3)  # (5.36)
     v_c = math.sqrt(2 * loss / m)  # (5.38)
     np.testing.assert_allclose(out["energy_loss"], loss, rtol=1e-13)
@@ -35,7 +35,7 @@ def test_jkr_closed_forms():
     np.testing.assert_array_equal(out["sticks"], v < v_c)
     # fixed grip separates at −(5/6)πΔγR, load control at −(3/2)πΔγR
     assert out["separation_force"][0] == pytest.approx(-5 / 6 * math.pi * w * r, rel=1e-12)
-    lc = tabor.jkr(modulus=e, radius=r, work_of_adhesion=w, mass=m, separation="load-controlled")
+    lc = tabor.jkr(contact_modulus=e, radius=r, work_of_adhesion=w, mass=m, separation="load-controlled")
     assert lc["separation_force"] == pytest.approx(-1.5 * math.pi * w * r, rel=1e-12)
     assert "restitution" not in lc
 
@@ -46,7 +46,7 @@ def test_jkr_over_a_grid_of_speeds_and_masses():
     e, r, w = 1e9, 1e-6, 0.05
     m = np.array([1e-14, 3e-14, 1e-14, 3e-14, 2e-14])[:, None]  # repeats, not consecutive
     v = np.geomspace(0.01, 30.0, 41)[None, :]
-    out = tabor.jkr(modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v)
+    out = tabor.jkr(contact_modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v)
     assert out["restitution"].shape == (5, 41)
     loss = (1 + 864 ** (1 / 3)) / 10 * (r**4 * (math.pi * w) ** 5 / e**2) ** (1 / 3)  # (5.36)
     v_c = np.sqrt(2 * loss / m)  # (5.38)
@@ -73,7 +73,7 @@ def test_jkr_over_many_sorted_speeds():
     call to rounding, and every element against (5.35)-(5.38) written out."""
     e, r, w, m = 1e9, 1e-6, 0.05, 1e-14
     v = np.geomspace(0.01, 30.0, 20_000)
-    out = tabor.jkr(modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v)
+    out = tabor.jkr(contact_modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v)
     loss = (1 + 864 ** (1 / 3)) / 10 * (r**4 * (math.pi * w) ** 5 / e**2) ** (1 / 3)  # (5.36)
     v_c = math.sqrt(2 * loss / m)  # (5.38)
     ref = np.sqrt(np.clip(1 - (v_c / v) ** 2, 0, None))  # (5.37)
@@ -86,7 +86,7 @@ def test_jkr_over_many_sorted_speeds():
     work = 1.2 * a**5 - 4 * a**3.5 + 2 * a**2 + offset
     assert np.all(np.abs(work - kinetic) / (kinetic + offset) < 1e-11)
     for i in (0, 1, 4095, 4096, 4097, 12_345, 19_999):  # cold starts, one element each
-        cold = tabor.jkr(modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v[i])
+        cold = tabor.jkr(contact_modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v[i])
         assert out["max_contact_radius"][i] == pytest.approx(cold["max_contact_radius"], rel=4 * np.finfo(float).eps)
         assert out["model"][i] == cold["model"] and out["branch"][i] == cold["branch"]
     assert out["model"].dtype == object and all(type(x) is str for x in out["model"][::997])
@@ -102,19 +102,19 @@ def test_jkr_over_speeds_with_invalid_points():
     m = np.array([1e-14, -1.0, 1e-14])[:, None]
     v = np.array([[0.5, -2.0, 1.0]])
     with pytest.warns(tabor.InvalidPointsWarning, match=r"5 of 9 points invalid.*\(at index \(0, 1\)\)"):
-        out = tabor.jkr(modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v, errors="nan")
+        out = tabor.jkr(contact_modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v, errors="nan")
     valid = np.array([[True, False, True], [False] * 3, [True, False, True]])
     np.testing.assert_array_equal(out["valid"], valid)
     assert np.isnan(out["restitution"][~valid]).all() and (out["evaluations"][~valid] == -1).all()
     assert (out["model"][~valid] == None).all() and (out["model"][valid] != None).all()  # noqa: E711
-    assert out["restitution"][2, 2] == tabor.jkr(modulus=e, radius=r, work_of_adhesion=w, mass=1e-14,
+    assert out["restitution"][2, 2] == tabor.jkr(contact_modulus=e, radius=r, work_of_adhesion=w, mass=1e-14,
                                                   speed=1.0)["restitution"]
     with pytest.raises(tabor.InputError, match=r"invalid speed = -2.*\(at index \(0, 1\)\)"):
-        tabor.jkr(modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v)
+        tabor.jkr(contact_modulus=e, radius=r, work_of_adhesion=w, mass=m, speed=v)
 
 
 def test_jkr_matches_cli(cli):
-    py = tabor.jkr(modulus=1e9, radius=1e-6, work_of_adhesion=0.05, mass=1e-14, speed=0.7)
+    py = tabor.jkr(contact_modulus=1e9, radius=1e-6, work_of_adhesion=0.05, mass=1e-14, speed=0.7)
     ref = cli("jkr", "--modulus", "1e9", "--radius", "1e-6", "--work-of-adhesion", "0.05",
               "--mass", "1e-14", "--speed", "0.7", "--json")
     assert_matches_cli(py, ref)
@@ -133,7 +133,7 @@ def test_jkr_matches_cli(cli):
     ],
 )
 def test_plastic_matches_cli(cli, kwargs, flags):
-    base = dict(modulus=1e11, radius=1e-4, mass=1e-8, yield_stress=1e9, speed=1.0)
+    base = dict(contact_modulus=1e11, radius=1e-4, mass=1e-8, yield_stress=1e9, speed=1.0)
     py = tabor.plastic(**base, **kwargs)
     ref = cli("plastic", "--modulus", "1e11", "--radius", "1e-4", "--mass", "1e-8",
               "--yield-stress", "1e9", "--speed", "1", *flags, "--json")

@@ -206,7 +206,7 @@ def test_force_law_maugis_dugdale_loading_path():
     e, r, w = _silica_pair()
     sigma0 = w / 0.3e-9
     a = np.geomspace(2e-8, 1e-7, 30)
-    f, d = tabor.force_displacement("maugis-dugdale", a, radius=r, elastic_modulus=e, work_of_adhesion=w,
+    f, d = tabor.force_displacement("maugis-dugdale", a, radius=r, contact_modulus=e, work_of_adhesion=w,
                                     cohesive_stress=sigma0)
     scene = tabor.Scene.from_path(SCENES / "silica_maugis.toml")
     on_curve = d > 0

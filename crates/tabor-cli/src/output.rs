@@ -14,7 +14,7 @@
 use serde::Serialize;
 use std::fmt;
 use std::io::{self, BufWriter, Stdout, Write};
-pub use tabor::numerics::readable::{human, meaningful_digits, READABLE_DIGITS};
+pub use tabor::numerics::readable::{human, humanize, meaningful_digits, READABLE_DIGITS};
 use tabor::single::Naming;
 
 /// The tabor version written into every output.
@@ -162,7 +162,7 @@ pub fn print_result<T: Serialize>(
     }
     print_table(&mut out, rows)?;
     for w in warnings {
-        writeln!(out, "warning: {w}")?;
+        writeln!(out, "warning: {}", humanize(w, READABLE_DIGITS))?;
     }
     out.finish()
 }
@@ -178,9 +178,9 @@ pub fn print_table(out: &mut Out, rows: &[(&str, f64, &str)]) -> Outcome {
     Ok(())
 }
 
-/// A number for a CSV field, in shortest round-trip form: plain decimal
-/// (`0.505`) for magnitudes in [1e-5, 1e16), exponent form (`2.775e-19`)
-/// otherwise; either reads back as the same f64.
+/// A number for a CSV field, in shortest round-trip form
+/// (`tabor::numerics::readable::plain`: `0.505`, `2.775e-19`); it reads back as
+/// the same f64.
 pub fn number(value: f64) -> String {
     tabor::numerics::readable::plain(value)
 }

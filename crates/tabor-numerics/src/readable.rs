@@ -1,10 +1,12 @@
 //! Numbers for people: the human-readable form of the command line's reports and
 //! of the library's messages (warnings, reasons), rounded to the digits that mean
-//! something, with SI prefixes ([`human`], [`Readable`]); and the shortest
-//! round-trip form ([`plain`]) that error messages use to echo a value as given.
-//! JSON and CSV outputs keep every digit and do not use this module.
+//! something, with SI prefixes ([`human`], and [`humanize`] for the numbers in a
+//! library message); and the shortest round-trip form ([`plain`]) that error
+//! messages use to echo a value as given. The library's messages quote exact
+//! numbers in `{:e}` notation ([`exponent_numbers`] finds them); JSON and CSV
+//! outputs keep every digit.
 
-use std::fmt;
+use std::ops::Range;
 
 /// The significant digits of human-readable output: as many as the scene's
 /// `accuracy` (relative) makes meaningful, `⌈−log10 accuracy⌉`, between 3 and
@@ -80,26 +82,98 @@ pub fn human(value: f64, unit: &str, digits: usize) -> String {
 }
 
 /// The shortest form that reads back as the same `f64`, as a person writes it:
-/// a plain decimal for magnitudes in [10⁻⁵, 10¹⁶) (`-1`, `0.6`, `300`), the
-/// exponent form otherwise (`1e300`, `2.5e-7`). Error messages echo values so.
+/// the plain decimal (`-1`, `0.6`, `300`, `2650`, `0.001`) unless the exponent
+/// form is shorter by two characters or more (`1e9`, `5.4e10`, `1e-4`, `1e300`).
+/// Error messages echo values so, and the CSV outputs write them so.
 pub fn plain(value: f64) -> String {
-    let magnitude = value.abs();
-    if magnitude == 0.0 || (1e-5..1e16).contains(&magnitude) || !value.is_finite() {
-        format!("{value}")
+    if !value.is_finite() {
+        return format!("{value}");
+    }
+    let decimal = format!("{value}");
+    let exponent = format!("{value:e}");
+    if decimal.len() <= exponent.len() + 1 {
+        decimal
     } else {
-        format!("{value:e}")
+        exponent
     }
 }
 
-/// A value and its unit shown by [`human`] with [`READABLE_DIGITS`] digits in
-/// `{}`: `format!("{}", Readable(2.08e-17, "J"))` is `20.8 aJ`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Readable(pub f64, pub &'static str);
-
-impl fmt::Display for Readable {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&human(self.0, self.1, READABLE_DIGITS))
+/// The numbers written in Rust's `{:e}` notation in `text` (`1.25e-3`, `-4e0`: a
+/// token with an exponent, not inside a word), each as its byte range and value.
+/// The library's messages quote exact numbers so; [`humanize`] rounds them for
+/// people and the Python package stores them apart from their template.
+pub fn exponent_numbers(text: &str) -> Vec<(Range<usize>, f64)> {
+    let bytes = text.as_bytes();
+    let word = |b: u8| b.is_ascii_alphanumeric() || b == b'_' || b == b'.';
+    let digits_from = |mut j: usize| {
+        while j < bytes.len() && bytes[j].is_ascii_digit() {
+            j += 1;
+        }
+        j
+    };
+    let mut found = Vec::new();
+    let mut i = 0;
+    while i < bytes.len() {
+        let starts = (bytes[i].is_ascii_digit()
+            || (bytes[i] == b'-' && bytes.get(i + 1).is_some_and(u8::is_ascii_digit)))
+            && (i == 0 || !word(bytes[i - 1]));
+        if !starts {
+            i += 1;
+            continue;
+        }
+        let mut j = digits_from(i + 1);
+        if j + 1 < bytes.len() && bytes[j] == b'.' && bytes[j + 1].is_ascii_digit() {
+            j = digits_from(j + 1);
+        }
+        if j < bytes.len() && bytes[j] == b'e' {
+            let sign = usize::from(bytes.get(j + 1) == Some(&b'-'));
+            let k = digits_from(j + 1 + sign);
+            let ends = k == bytes.len() || !bytes[k].is_ascii_alphanumeric();
+            if k > j + 1 + sign && ends {
+                if let Ok(x) = text[i..k].parse::<f64>() {
+                    found.push((i..k, x));
+                    i = k;
+                    continue;
+                }
+            }
+        }
+        i = j;
     }
+    found
+}
+
+/// `text` (a library message: a warning, an effect's reason) with every number
+/// in `{:e}` notation shown by [`human`] with `digits` digits, the unit that
+/// follows it (` m/s`, ` J`, …) taking the SI prefix: `1.2617695852173827e-1 m/s`
+/// becomes `0.126177 m/s`, `2.08e-17 J` becomes `20.8 aJ`.
+pub fn humanize(text: &str, digits: usize) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut copied = 0;
+    for (range, value) in exponent_numbers(text) {
+        out.push_str(&text[copied..range.start]);
+        let rest = &text[range.end..];
+        let unit = rest.strip_prefix(' ').and_then(|r| {
+            PREFIXED_UNITS
+                .iter()
+                .filter(|u| {
+                    r.strip_prefix(**u)
+                        .is_some_and(|after| !after.starts_with(|c: char| c.is_alphanumeric()))
+                })
+                .max_by_key(|u| u.len())
+        });
+        match unit {
+            Some(unit) => {
+                out.push_str(&human(value, unit, digits));
+                copied = range.end + 1 + unit.len();
+            }
+            None => {
+                out.push_str(&human(value, "", digits));
+                copied = range.end;
+            }
+        }
+    }
+    out.push_str(&text[copied..]);
+    out
 }
 
 #[cfg(test)]
@@ -131,11 +205,41 @@ mod tests {
     }
 
     #[test]
+    fn messages_are_humanized_number_by_number() {
+        assert_eq!(
+            humanize(
+                "impact speed 1.2617695852173827e-1 m/s does not exceed 1.9449639560565972e0 m/s (5.111)",
+                6
+            ),
+            "impact speed 0.126177 m/s does not exceed 1.94496 m/s (5.111)"
+        );
+        assert_eq!(
+            humanize("loss 2.0810900231214864e-17 J, ratio -6.468e-3", 6),
+            "loss 20.8109 aJ, ratio -0.006468"
+        );
+        // a unit that is a prefix of a word is not a unit; a number inside a word is not a number
+        assert_eq!(
+            humanize("d = 1e-9 mm and x1e5 at 3e5 Pa s", 3),
+            "d = 1e-9 mm and x1e5 at 300 kPa s"
+        );
+        assert_eq!(humanize("no numbers (5.36)", 6), "no numbers (5.36)");
+        let found = exponent_numbers("a -4e0 b 1.25e-3}");
+        assert_eq!(found, vec![(2..6, -4.0), (9..16, 1.25e-3)]);
+    }
+
+    #[test]
     fn plain_numbers_round_trip_as_people_write_them() {
         assert_eq!(plain(-1.0), "-1");
         assert_eq!(plain(0.6), "0.6");
         assert_eq!(plain(1e300), "1e300");
         assert_eq!(plain(-3e-7), "-3e-7");
+        assert_eq!(plain(300.0), "300");
+        assert_eq!(plain(2650.0), "2650");
+        assert_eq!(plain(0.001), "0.001");
+        assert_eq!(plain(1e-4), "1e-4");
+        assert_eq!(plain(-1e9), "-1e9");
+        assert_eq!(plain(54e9), "5.4e10");
+        assert_eq!(plain(0.0), "0");
         for x in [
             0.1,
             1.0 / 3.0,
@@ -145,9 +249,5 @@ mod tests {
         ] {
             assert_eq!(plain(x).parse::<f64>().ok(), Some(x));
         }
-        assert_eq!(
-            format!("{}", Readable(2.0810900231214864e-17, "J")),
-            "20.8109 aJ"
-        );
     }
 }

@@ -4,7 +4,6 @@
 
 use crate::{validate, Result};
 use serde::Serialize;
-use tabor_numerics::readable::Readable;
 
 /// A validity warning attached to a result.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -37,11 +36,10 @@ impl QuasiStaticCheck {
         (!self.satisfied).then(|| Warning {
             code: "quasi-static",
             message: format!(
-                "impact speed is not small against the elastic wave speed {}: \
-                 (v0/v_el)^(3/5) = {}; energy radiated as elastic waves is neglected \
+                "impact speed is not small against the elastic wave speed {:.3e} m/s: \
+                 (v0/v_el)^(3/5) = {:.3e}; energy radiated as elastic waves is neglected \
                  (Willert 2020, eq. (5.4))",
-                Readable(self.wave_speed, "m/s"),
-                Readable(self.hunter_parameter, "")
+                self.wave_speed, self.hunter_parameter
             ),
         })
     }
@@ -99,10 +97,9 @@ impl ElasticLimitCheck {
         (!self.satisfied).then(|| Warning {
             code: "elastic-limit",
             message: format!(
-                "maximum contact pressure {} exceeds the yield onset 1.6 sigma_Y = {}: \
+                "maximum contact pressure {:.3e} Pa exceeds the yield onset 1.6 sigma_Y = {:.3e} Pa: \
                  the impact is not elastic (Willert 2020, eq. (5.13))",
-                Readable(self.max_pressure, "Pa"),
-                Readable(self.yield_pressure, "Pa")
+                self.max_pressure, self.yield_pressure
             ),
         })
     }

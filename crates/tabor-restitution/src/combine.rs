@@ -3,7 +3,6 @@
 
 use crate::validate::finite_output;
 use crate::{EnergyLoss, Error, ImpactModel, Result};
-use tabor_numerics::readable::Readable;
 use tabor_numerics::Cost;
 
 /// The superposition of several models of the same collision: the energy loss is
@@ -33,10 +32,8 @@ impl<M: ImpactModel> LossSum<M> {
                 return Err(Error::Model {
                     model: "loss sum",
                     message: format!(
-                        "parts have different effective masses: {} ({}) and {} ({})",
-                        Readable(m, "kg"),
+                        "parts have different effective masses: {m:e} kg ({}) and {mp:e} kg ({})",
                         first.name(),
-                        Readable(mp, "kg"),
                         p.name()
                     ),
                 });

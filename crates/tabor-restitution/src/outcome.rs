@@ -2,7 +2,6 @@ use crate::checks::Warning;
 use crate::model::ImpactModel;
 use crate::{validate, Error, Result};
 use serde::Serialize;
-use tabor_numerics::readable::Readable;
 use tabor_numerics::root_finding::{brent, RootTolerance};
 use tabor_numerics::Cost;
 
@@ -223,9 +222,8 @@ pub fn sticking_velocity<M: ImpactModel + ?Sized>(
                 return Err(Error::Model {
                     model: "sticking velocity",
                     message: format!(
-                        "{} sticks at every speed up to {}; no sticking velocity found",
-                        model.name(),
-                        Readable(lo, "m/s")
+                        "{} sticks at every speed up to {lo:e} m/s; no sticking velocity found",
+                        model.name()
                     ),
                 })
             }

@@ -5,7 +5,6 @@ use crate::combination::{Combination, EffectKind, Rule};
 use crate::error::SceneError;
 use crate::select::{is_superposed, Prepared, Selection, Sticking};
 use serde::Serialize;
-use tabor_numerics::readable::Readable;
 use tabor_numerics::Cost;
 use tabor_restitution::checks::{elastic_limit_check, quasi_static_check};
 use tabor_restitution::{restitution_from_loss, ImpactModel, Warning};
@@ -201,10 +200,8 @@ fn superposition_warning(prepared: &Prepared, selection: &Selection, speed: f64)
         Some((Ok(coupled), name)) if coupled > 0.0 => {
             let total = selection.evaluation.loss.joules;
             message.push_str(&format!(
-                "; against {name} at this speed its loss differs by {:+.3e} relative ({} vs {})",
-                total / coupled - 1.0,
-                Readable(total, "J"),
-                Readable(coupled, "J")
+                "; against {name} at this speed its loss differs by {:+.3e} relative ({total:e} J vs {coupled:e} J)",
+                total / coupled - 1.0
             ));
         }
         _ => message
@@ -256,8 +253,7 @@ impl Prepared<'_> {
                     warnings.push(Warning {
                         code: "sticks-up-to-limit",
                         message: format!(
-                            "sticks at every speed up to {} ({reason}): no sticking velocity within the model's validity",
-                            Readable(limit, "m/s")
+                            "sticks at every speed up to {limit:.6e} m/s ({reason}): no sticking velocity within the model's validity"
                         ),
                     });
                 }
@@ -269,10 +265,7 @@ impl Prepared<'_> {
                     warnings.push(Warning {
                         code: "restitution-not-monotone",
                         message: format!(
-                            "e(v) is not monotone: the bodies stick below {}, rebound just above it, stick again at {} and rebound above the sticking velocity {} (the upper edge of the sticking set)",
-                            Readable(lower, "m/s"),
-                            Readable(again, "m/s"),
-                            Readable(velocity, "m/s")
+                            "e(v) is not monotone: the bodies stick below {lower:.6e} m/s, rebound just above it, stick again at {again:.6e} m/s and rebound above the sticking velocity {velocity:.6e} m/s (the upper edge of the sticking set)"
                         ),
                     });
                 }
@@ -295,8 +288,7 @@ impl Prepared<'_> {
                     warnings.push(Warning {
                         code: "sticking-velocity-not-quasi-static",
                         message: format!(
-                            "the sticking velocity {} is not small against the elastic wave speed: {}",
-                            Readable(vc, "m/s"),
+                            "the sticking velocity {vc:e} m/s is not small against the elastic wave speed: {}",
                             w.message
                         ),
                     });

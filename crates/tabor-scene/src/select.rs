@@ -9,7 +9,6 @@ use crate::models::{Evaluation, Models};
 use serde::Serialize;
 use std::fmt;
 use std::sync::{Arc, OnceLock};
-use tabor_numerics::readable::Readable;
 use tabor_numerics::tolerance::STICKING_ACCURACY_FLOOR;
 use tabor_numerics::Cost;
 use tabor_restitution::{sticking_velocity, EnergyLoss, ImpactModel, SpeedLimit, StickingMethod};
@@ -194,9 +193,7 @@ impl<'a> Prepared<'a> {
                 dropped.push(Dropped {
                     effect: EffectKind::Plasticity,
                     reason: format!(
-                        "impact speed {} does not exceed the {name} {}: below it the contact stays elastic",
-                        Readable(speed, "m/s"),
-                        Readable(onset, "m/s")
+                        "impact speed {speed:e} m/s does not exceed the {name} {onset:e} m/s: below it the contact stays elastic"
                     ),
                 });
             }
@@ -219,8 +216,7 @@ impl<'a> Prepared<'a> {
                 dropped.push(Dropped {
                     effect,
                     reason: format!(
-                        "leaving it out changes the loss by {}, {:.3e} of the kinetic energy, below the requested accuracy {:e}",
-                        Readable(marginal, "J"),
+                        "leaving it out changes the loss by {marginal:e} J, {:e} of the kinetic energy, below the requested accuracy {:e}",
                         marginal.abs() / kinetic,
                         models.accuracy
                     ),

@@ -10,57 +10,21 @@ pub(super) fn templated(name: &str) -> bool {
 }
 
 /// `text` with each number in Rust's `{:e}` notation (`1.25e-3`, `-4e0`: a token
-/// with an exponent, not inside a word) replaced by `{}` and appended to
-/// `numbers`; braces already in the text doubled (so that Python's `str.format`
-/// with the numbers gives the text back, the numbers printed Python's way).
+/// with an exponent, not inside a word; `tabor::numerics::readable::exponent_numbers`)
+/// replaced by `{}` and appended to `numbers`; braces already in the text doubled
+/// (so that Python's `str.format` with the numbers gives the text back, the
+/// numbers printed Python's way).
 pub(super) fn split_numbers(text: &str, numbers: &mut Vec<f64>) -> String {
-    let bytes = text.as_bytes();
+    let escape = |t: &str| t.replace('{', "{{").replace('}', "}}");
     let mut out = String::with_capacity(text.len());
-    let mut i = 0;
     let mut copied = 0;
-    let word = |b: u8| b.is_ascii_alphanumeric() || b == b'_' || b == b'.';
-    while i < bytes.len() {
-        let starts = (bytes[i].is_ascii_digit()
-            || (bytes[i] == b'-' && bytes.get(i + 1).is_some_and(u8::is_ascii_digit)))
-            && (i == 0 || !word(bytes[i - 1]));
-        if starts {
-            let mut j = i + 1;
-            while j < bytes.len() && bytes[j].is_ascii_digit() {
-                j += 1;
-            }
-            if j + 1 < bytes.len() && bytes[j] == b'.' && bytes[j + 1].is_ascii_digit() {
-                j += 1;
-                while j < bytes.len() && bytes[j].is_ascii_digit() {
-                    j += 1;
-                }
-            }
-            if j < bytes.len() && bytes[j] == b'e' {
-                let mut k = j + 1;
-                if k < bytes.len() && bytes[k] == b'-' {
-                    k += 1;
-                }
-                let digits = k;
-                while k < bytes.len() && bytes[k].is_ascii_digit() {
-                    k += 1;
-                }
-                let ends = k == bytes.len() || !bytes[k].is_ascii_alphanumeric();
-                if k > digits && ends {
-                    if let Ok(x) = text[i..k].parse::<f64>() {
-                        out.push_str(&text[copied..i].replace('{', "{{").replace('}', "}}"));
-                        out.push_str("{}");
-                        numbers.push(x);
-                        copied = k;
-                        i = k;
-                        continue;
-                    }
-                }
-            }
-            i = j;
-            continue;
-        }
-        i += 1;
+    for (range, value) in tabor::numerics::readable::exponent_numbers(text) {
+        out.push_str(&escape(&text[copied..range.start]));
+        out.push_str("{}");
+        numbers.push(value);
+        copied = range.end;
     }
-    out.push_str(&text[copied..].replace('{', "{{").replace('}', "}}"));
+    out.push_str(&escape(&text[copied..]));
     out
 }
 

@@ -31,8 +31,8 @@ pub(super) fn library(e: Error) -> Failure {
             requirement,
         } => format!(
             "invalid {} = {}: {requirement}",
-            input_name(parameter),
-            tabor::numerics::readable::plain(value)
+            Naming::Keywords.input(input_name(parameter)),
+            tabor::numerics::readable::plain(*value)
         ),
         other => other.to_string(),
     };
@@ -175,7 +175,7 @@ pub static JKR: Model<JkrArgs, tabor::single::jkr::Jkr> = Model {
     name: "jkr",
     inputs: &[
         Input {
-            name: "modulus",
+            name: tabor::single::PYTHON_CONTACT_MODULUS,
             help: "effective modulus E* (Pa)",
             kind: Kind::Number {
                 default: None,
@@ -290,7 +290,7 @@ pub static PLASTIC: Model<PlasticArgs, tabor::single::plastic::Plastic> = Model 
     name: "plastic",
     inputs: &[
         Input { name: "model", help: "the elasto-plastic model; jackson-green needs poisson_ratio, dimensionless-fit density, adhesive-interpolation work_of_adhesion or adhesion_parameter, superposition work_of_adhesion", kind: Kind::Choice { menu: menu::<PlasticModel>, default: None, set: |a, k| { a.model = k.parse()?; Ok(()) } } },
-        Input { name: "modulus", help: "effective modulus E* (Pa)", kind: Kind::Number { default: None, set: |a, x| a.modulus = x } },
+        Input { name: tabor::single::PYTHON_CONTACT_MODULUS, help: "effective modulus E* (Pa)", kind: Kind::Number { default: None, set: |a, x| a.modulus = x } },
         Input { name: "radius", help: "effective radius R (m)", kind: Kind::Number { default: None, set: |a, x| a.radius = x } },
         Input { name: "mass", help: "effective (reduced) mass m (kg)", kind: Kind::Number { default: None, set: |a, x| a.mass = x } },
         Input { name: "yield_stress", help: "yield stress σ_Y of the yielding body (Pa)", kind: Kind::Number { default: None, set: |a, x| a.yield_stress = x } },

@@ -2,7 +2,7 @@
 //! TOML or JSON file (format: `examples/scenes/README.md`).
 
 use crate::output::{
-    human, meaningful_digits, number, print_json, stdout, Failure, Outcome, VERSION,
+    human, humanize, meaningful_digits, number, print_json, stdout, Failure, Outcome, VERSION,
 };
 use serde::Serialize;
 use std::io::Write;
@@ -184,7 +184,7 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
                 h(central.restitution, "")
             )?;
             for w in &central.warnings {
-                writeln!(out, "warning [{}]: {}", w.code, w.message)?;
+                writeln!(out, "warning [{}]: {}", w.code, humanize(&w.message, d))?;
             }
             return out.finish();
         }
@@ -251,7 +251,7 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
             "  {:<16} {:<5} {}{loss}",
             e.name,
             if e.used { "used" } else { "skip" },
-            e.reason
+            humanize(&e.reason, d)
         )?;
     }
     writeln!(
@@ -262,7 +262,7 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
         o.cost.evaluations
     )?;
     for w in &o.warnings {
-        writeln!(out, "warning [{}]: {}", w.code, w.message)?;
+        writeln!(out, "warning [{}]: {}", w.code, humanize(&w.message, d))?;
     }
     out.finish()
 }
@@ -488,7 +488,7 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
     }
     writeln!(stdout, "energy bookkeeping   {:.1e}", out.energy_error)?;
     for w in &out.warnings {
-        writeln!(stdout, "warning [{}]: {}", w.code, w.message)?;
+        writeln!(stdout, "warning [{}]: {}", w.code, humanize(&w.message, d))?;
     }
     stdout.finish()
 }

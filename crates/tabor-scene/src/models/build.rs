@@ -8,7 +8,6 @@ use tabor_dynamics::SimulationSettings;
 use tabor_elastic::{ElasticContact, ElasticImpact};
 use tabor_jkr::{GradedSphere, JkrImpact, JkrSphere, SeparationRule};
 use tabor_maugis::{normalized_loss, MaugisContact, MaugisDugdaleImpact, LAMBDA_1};
-use tabor_numerics::readable::Readable;
 use tabor_numerics::tolerance::MODEL_ACCURACY_FLOOR;
 use tabor_plastic::{
     AdhesiveInterpolationImpact, AdhesivePlasticContact, DimensionlessFit, Interpolation,
@@ -187,9 +186,8 @@ impl Models {
                         SceneError::field(
                             "sphere.youngs_modulus",
                             format!(
-                                "with the target's, E* = {} and R = {}: {e}",
-                                Readable(scene.effective_modulus, "Pa"),
-                                Readable(scene.effective_radius, "m")
+                                "with the target's, E* = {:e} Pa and R = {:e} m: {e}",
+                                scene.effective_modulus, scene.effective_radius
                             ),
                         )
                     })?,
@@ -333,12 +331,7 @@ fn build_visco(scene: &Inputs) -> Result<Result<Option<Visco>, ViscoKind>, Scene
         } => (
             ViscoKind::StandardMedium,
             None,
-            format!(
-                "one Kelvin-Voigt body on an elastic one: a standard medium (5.75) with G_inf = {}, G1 = {}, eta = {} Pa s (correspondence principle)",
-                Readable(relaxed_modulus, "Pa"),
-                Readable(branch_modulus, "Pa"),
-                Readable(viscosity, "")
-            ),
+            format!("one Kelvin-Voigt body on an elastic one: a standard medium (5.75) with G_inf = {relaxed_modulus:e} Pa, G1 = {branch_modulus:e} Pa, eta = {viscosity:e} Pa s (correspondence principle)"),
         ),
         ViscoelasticContact::KelvinVoigt {
             shear_modulus,
@@ -347,11 +340,7 @@ fn build_visco(scene: &Inputs) -> Result<Result<Option<Visco>, ViscoKind>, Scene
             ViscoKind::KelvinVoigt,
             // E*(s) = 4 (G* + η* s)
             Some((4.0 * shear_modulus, 4.0 * viscosity)),
-            format!(
-                "two Kelvin-Voigt bodies with equal relaxation times: a Kelvin-Voigt contact (5.64) with G* = {}, eta* = {} Pa s (correspondence principle)",
-                Readable(shear_modulus, "Pa"),
-                Readable(viscosity, "")
-            ),
+            format!("two Kelvin-Voigt bodies with equal relaxation times: a Kelvin-Voigt contact (5.64) with G* = {shear_modulus:e} Pa, eta* = {viscosity:e} Pa s (correspondence principle)"),
         ),
     };
     // at the scene's accuracy, as every other model it builds (floored at
