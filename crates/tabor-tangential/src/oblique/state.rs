@@ -395,12 +395,25 @@ impl<'a> Setup<'a> {
                         + gamma * uhat.dot(&v_tr_dot)
                         - limit_dot;
                     out.slip_rate_t = g;
-                    out.dy[EN + 2] = if k > 0.0 {
-                        g.max(0.0) * on_surface / k
+                    // The spring's part of the limit force along û, `L − γ û·v`,
+                    // carries the sliding work (its force times the slip rate
+                    // g/k). Where the dashpot alone reaches the limit (that part
+                    // ≤ 0) the dashpot's force along û is capped at the limit
+                    // and spring and slider carry nothing along û: else the
+                    // spring part points against the force, and where it
+                    // vanishes more slowly than k (a Tsuji damping ∝ √a at a
+                    // damped Hertz separation, k ∝ a) the history (L û − γ v)/k
+                    // and the sliding work g·(L − γ û·v)/k diverge, as 1/δ.
+                    if on_surface >= 0.0 {
+                        out.dy[EN + 2] = if k > 0.0 {
+                            g.max(0.0) * on_surface / k
+                        } else {
+                            0.0
+                        };
+                        out.dy[EN + 3] = gamma * v_tr.norm_squared();
                     } else {
-                        0.0
-                    };
-                    out.dy[EN + 3] = gamma * v_tr.norm_squared();
+                        out.dy[EN + 3] = gamma * v_tr.norm_squared() + on_surface * uv;
+                    }
                 }
             }
         }
