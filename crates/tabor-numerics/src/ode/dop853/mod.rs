@@ -53,7 +53,9 @@ pub struct DormandPrince853<const N: usize> {
     cont: Option<[[f64; N]; 8]>,
 }
 
-/// `y + h Σ_j a[j] k[j]` over the first `stages` stages.
+/// `y + h Σ_j a[j] k[j]` over the first `stages` stages (the zero coefficients
+/// skipped). The sums run stage by stage over all components (vectorized), in
+/// the order of j for every component.
 fn stage_input<const N: usize>(
     y: &[f64; N],
     h: f64,
@@ -61,13 +63,17 @@ fn stage_input<const N: usize>(
     k: &Stages<N>,
     stages: usize,
 ) -> [f64; N] {
-    let mut out = *y;
-    for i in 0..N {
-        let mut s = 0.0;
-        for j in 0..stages {
-            s += a[j] * k[j][i];
+    let mut sum = [0.0; N];
+    for (&aj, kj) in a.iter().zip(k.iter()).take(stages) {
+        if aj != 0.0 {
+            for (s, &kji) in sum.iter_mut().zip(kj.iter()) {
+                *s += aj * kji;
+            }
         }
-        out[i] += h * s;
+    }
+    let mut out = *y;
+    for (o, s) in out.iter_mut().zip(sum.iter()) {
+        *o += h * s;
     }
     out
 }
@@ -174,17 +180,20 @@ impl<const N: usize> DormandPrince853<N> {
     /// the root-mean-square norm over the error scales, times `|h|`.
     fn error_norm(&self, h: f64, k: &Stages<N>, y_new: &[f64; N]) -> f64 {
         let y = &self.core.y;
+        // Σ_j E5[j] k[j] and Σ_j B[j] k[j] stage by stage over all components
+        let (mut e5, mut high) = ([0.0; N], [0.0; N]);
+        for j in 0..STAGES {
+            let (ej, bj, kj) = (E5[j], B[j], &k[j]);
+            for i in 0..N {
+                e5[i] += ej * kj[i];
+                high[i] += bj * kj[i];
+            }
+        }
         let (mut err5, mut err3) = (0.0, 0.0);
         for i in 0..N {
             let sk = self.core.scale(y[i], y_new[i]);
-            let mut e5 = 0.0;
-            let mut high = 0.0;
-            for j in 0..STAGES {
-                e5 += E5[j] * k[j][i];
-                high += B[j] * k[j][i];
-            }
-            let e3 = high - BHH[0] * k[0][i] - BHH[1] * k[8][i] - BHH[2] * k[11][i];
-            err5 += (e5 / sk).powi(2);
+            let e3 = high[i] - BHH[0] * k[0][i] - BHH[1] * k[8][i] - BHH[2] * k[11][i];
+            err5 += (e5[i] / sk).powi(2);
             err3 += (e3 / sk).powi(2);
         }
         let mut deno = err5 + 0.01 * err3;
