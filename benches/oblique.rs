@@ -67,6 +67,12 @@ fn oblique(c: &mut Criterion) {
                     .normal_restitution
             })
         });
+    }
+    g.finish();
+    // micro-slip costs ~100 ms an impact: ten samples
+    let mut g = c.benchmark_group("oblique_impact_micro_slip");
+    g.sample_size(10);
+    for angle in [10.0, 40.0, 80.0] {
         g.bench_function(format!("mindlin_deresiewicz {angle}°"), |b| {
             b.iter(|| {
                 micro_slip
