@@ -139,7 +139,7 @@ impl<const N: usize> DormandPrince853<N> {
             let y = self.core.y;
             let mut bad = None;
             for s in 1..STAGES {
-                let ys = stage_input(&y, h, &A[s], &k, s);
+                let ys = stage_input(&y, h, &A[s], k, s);
                 let ts = if s == STAGES - 1 { t_new } else { t + C[s] * h };
                 k[s] = self.core.eval(f, ts, &ys);
                 if let Some(v) = first_non_finite(&k[s]) {
@@ -147,7 +147,7 @@ impl<const N: usize> DormandPrince853<N> {
                     break;
                 }
             }
-            let y_new = stage_input(&y, h, &B_ROW, &k, STAGES);
+            let y_new = stage_input(&y, h, &B_ROW, k, STAGES);
             if let Some(v) = bad.or_else(|| first_non_finite(&y_new)) {
                 // A trial step into a region where f is not finite: shrink and retry.
                 non_finite.get_or_insert((t + h, v));
