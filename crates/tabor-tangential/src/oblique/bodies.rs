@@ -86,7 +86,7 @@ impl NormalContact {
     /// 0 where a ≤ 0): the prefactor of LAMMPS's damping models (seed 000
     /// eq. (5.72) with β = 1/2 of the overlap for `viscoelastic`, 1/4 for Tsuji).
     pub fn damping_at(&self, a: f64) -> f64 {
-        if a > 0.0 {
+        if a > 0.0 && self.damping != 0.0 {
             self.damping * a.powf(self.damping_exponent)
         } else {
             0.0
@@ -96,7 +96,7 @@ impl NormalContact {
     /// Its rate `β c a^(β−1) ȧ` (N s/m per s) at contact radius `a` (m) changing at
     /// `a_dot` (m/s); 0 where a ≤ 0.
     pub fn damping_rate(&self, a: f64, a_dot: f64) -> f64 {
-        if a > 0.0 {
+        if a > 0.0 && self.damping != 0.0 {
             self.damping_exponent * self.damping * a.powf(self.damping_exponent - 1.0) * a_dot
         } else {
             0.0

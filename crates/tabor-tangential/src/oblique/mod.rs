@@ -18,7 +18,9 @@
 //!   `mindlin` with damping proportional to a, `γ̇ − k̇γ/k = 0`).
 //!
 //! The switches are events located on the dense output of
-//! [`tabor_numerics::ode`] (Dormand-Prince 5(4)): stick → slip where `L − |T|`
+//! [`tabor_numerics::ode`] (DOP853, as the central simulated impact; Dormand-Prince
+//! 5(4) for `mindlin_deresiewicz`, whose spring bed is only piecewise smooth within
+//! a step): stick → slip where `L − |T|`
 //! falls to 0, slip → stick where `û·Ṫ_stick − L̇` (the rate at which the trial
 //! force would outgrow the limit) falls to 0. There ξ is reset to the elastic part
 //! of the limit force, `(L û − γ v)/k`, as LAMMPS does at every sliding step. The
@@ -46,6 +48,12 @@
 //! its stick force capped at the limit. The energy bookkeeping is exact either way
 //! (the work of the forces that act).
 //!
+//! The normal law is evaluated on its branch curve where it has one
+//! ([`tabor_dynamics::BranchCurve`], as the central simulated impact integrates
+//! it: one solve for the JKR root or the Maugis-Dugdale angle per overlap, the
+//! slopes of force and contact radius as differences along the curve), and the
+//! last point is kept for the event values and mode switches at the same state.
+//!
 //! # Energy
 //!
 //! The work of every mechanism is integrated with the motion ([`EnergyLosses`]):
@@ -53,7 +61,12 @@
 //! damping, the tangential spring (the work stored in it and released when the
 //! contact breaks, plus what `mindlin`'s radius-dependent stiffness creates or
 //! destroys), rolling, twisting and the torque-arm convention. `energy_error` is
-//! the mismatch between the change of kinetic energy and their sum.
+//! the mismatch between the change of kinetic energy and their sum. In slip the
+//! dashpot's force along the slip direction is capped at the limit: where the
+//! dashpot alone reaches it (`γ û·v ≥ L`) spring and slider carry nothing along
+//! `û` (else LAMMPS's history `(L û − γ v)/k` points against the force, and with
+//! a Tsuji damping `∝ √a` beside `k ∝ a` it and the sliding work diverge at a
+//! Hertz separation).
 //!
 //! # Frame (that of the `impact --angle` outputs)
 //!
@@ -77,6 +90,7 @@ mod elements;
 mod energy;
 mod limits;
 mod modes;
+mod normal;
 mod outcome;
 mod simulate;
 mod state;

@@ -10,16 +10,12 @@ use nalgebra::Vector3;
 use tabor_dynamics::ForceLaw;
 use tabor_restitution::Result;
 
+/// The contact quantities of [`Setup::contact`]: (a, F_n0, v_tr, v_rl, ω_tw, n).
+pub(super) type Contact = (f64, f64, Vector3<f64>, Vector3<f64>, f64, Vector3<f64>);
+
 impl<'a> Setup<'a> {
-    /// Contact quantities at SI state `y`: (a, γ_t, k_t-spring, limit, F_n0, v_tr,
-    /// v_rl, ω_tw) for the mode switches.
-    #[allow(clippy::type_complexity)]
-    pub(super) fn contact(
-        &self,
-        law: &dyn ForceLaw,
-        t: f64,
-        y: &[f64; N],
-    ) -> Result<(f64, f64, Vector3<f64>, Vector3<f64>, f64, Vector3<f64>)> {
+    /// Contact quantities at SI state `y` for the mode switches ([`Contact`]).
+    pub(super) fn contact(&self, law: &dyn ForceLaw, t: f64, y: &[f64; N]) -> Result<Contact> {
         let (n, overlap, rate, _) = self.geometry(t, y);
         let u = v3(y, U);
         let wi = v3(y, WI);
@@ -28,8 +24,8 @@ impl<'a> Setup<'a> {
         } else {
             v3(y, WJ)
         };
-        let a = law.contact_radius(overlap, rate)?.max(0.0);
-        let f_el = law.force(overlap, rate)?;
+        let np = self.normal(law, overlap, rate, false)?;
+        let (a, f_el) = (np.radius, np.force);
         let c_n = self.imp.normal.damping_at(a);
         let fc = crate::critical_force(f_el, f_el + c_n * rate, self.imp.normal.pull_off_force);
         let r_j = if self.flat {
@@ -52,27 +48,42 @@ impl<'a> Setup<'a> {
         y: &[f64; N],
         slot: usize,
     ) -> Result<(Vector3<f64>, f64, f64, f64, Vector3<f64>)> {
-        let Some(fr) = &self.imp.friction else {
+        if self.imp.friction.is_none() {
             return Ok((Vector3::zeros(), 0.0, 0.0, 0.0, Vector3::zeros()));
+        }
+        Ok(self.element_of(&self.contact(law, t, y)?, y, slot))
+    }
+
+    /// [`Setup::element`] from the contact quantities `c` of [`Setup::contact`].
+    #[allow(clippy::type_complexity)]
+    fn element_of(
+        &self,
+        c: &Contact,
+        y: &[f64; N],
+        slot: usize,
+    ) -> (Vector3<f64>, f64, f64, f64, Vector3<f64>) {
+        let zero = (Vector3::zeros(), 0.0, 0.0, 0.0, Vector3::zeros());
+        let Some(fr) = &self.imp.friction else {
+            return zero;
         };
-        let (a, fc, v_tr, v_rl, _, _) = self.contact(law, t, y)?;
+        let (a, fc, v_tr, v_rl, _, _) = *c;
         let x = v3(y, slot);
         if slot == XT {
             let tg = &fr.tangential;
             let k = tg.spring(a);
             let gamma = tg.damping_ratio * self.imp.normal.damping_at(a);
-            Ok((x * k + v_tr * gamma, tg.coefficient * fc, gamma, k, v_tr))
+            (x * k + v_tr * gamma, tg.coefficient * fc, gamma, k, v_tr)
         } else {
             let Some(r) = &fr.rolling else {
-                return Ok((Vector3::zeros(), 0.0, 0.0, 0.0, Vector3::zeros()));
+                return zero;
             };
-            Ok((
+            (
                 x * r.stiffness + v_rl * r.damping,
                 r.coefficient * fc,
                 r.damping,
                 r.stiffness,
                 v_rl,
-            ))
+            )
         }
     }
 
@@ -113,15 +124,29 @@ impl<'a> Setup<'a> {
 
     /// The trial twisting torque `k θ + γ ω_tw` (N m).
     pub(super) fn twist_trial(&self, law: &dyn ForceLaw, t: f64, y: &[f64; N]) -> Result<f64> {
-        let Some(fr) = &self.imp.friction else {
+        if self
+            .imp
+            .friction
+            .as_ref()
+            .is_none_or(|f| f.twisting.is_none())
+        {
             return Ok(0.0);
+        }
+        Ok(self.twist_of(&self.contact(law, t, y)?, y).0)
+    }
+
+    /// The trial twisting torque and the limit (N m) from the contact quantities
+    /// `c` of [`Setup::contact`] (0, 0 without twisting).
+    fn twist_of(&self, c: &Contact, y: &[f64; N]) -> (f64, f64) {
+        let Some(fr) = &self.imp.friction else {
+            return (0.0, 0.0);
         };
         let Some(tw) = &fr.twisting else {
-            return Ok(0.0);
+            return (0.0, 0.0);
         };
-        let (a, fc, _, _, w_tw, _) = self.contact(law, t, y)?;
-        let (k, g, _) = twist_coefficients(tw, fr, a, self.imp.normal.damping_at(a), fc);
-        Ok(k * y[XW] + g * w_tw)
+        let (a, fc, _, _, w_tw, _) = *c;
+        let (k, g, l) = twist_coefficients(tw, fr, a, self.imp.normal.damping_at(a), fc);
+        (k * y[XW] + g * w_tw, l)
     }
 
     pub(super) fn leave_twist_slip(
@@ -270,47 +295,49 @@ impl<'a> Setup<'a> {
         } else {
             None
         };
-        match modes.tangential {
+        // the contact quantities, once, for the elements that stick
+        let sticking = |m: Mode, frozen: bool| m == Mode::Stick && !frozen;
+        let c = if (sticking(modes.tangential, modes.frozen[0]) && self.bed.is_none())
+            || (rolling && sticking(modes.rolling, modes.frozen[1]))
+            || (twisting && sticking(modes.twisting, modes.frozen[2]))
+        {
+            Some(self.contact(law, t, y)?)
+        } else {
+            None
+        };
+        match (modes.tangential, &c) {
             // micro-slip has no stick/slip switch of the whole contact
             _ if modes.frozen[0] || self.bed.is_some() => {}
-            Mode::Stick => {
-                let (trial, limit, ..) = self.element(law, t, y, XT)?;
+            (Mode::Stick, Some(c)) => {
+                let (trial, limit, ..) = self.element_of(c, y, XT);
                 g[2] = (limit - trial.norm()) / self.force;
             }
-            Mode::Slip => g[3] = ev.as_ref().map_or(f64::INFINITY, |e| e.slip_rate_t) / rate_unit,
+            (Mode::Stick, None) => {}
+            (Mode::Slip, _) => {
+                g[3] = ev.as_ref().map_or(f64::INFINITY, |e| e.slip_rate_t) / rate_unit
+            }
         }
         if rolling && !modes.frozen[1] {
-            match modes.rolling {
-                Mode::Stick => {
-                    let (trial, limit, ..) = self.element(law, t, y, XR)?;
+            match (modes.rolling, &c) {
+                (Mode::Stick, Some(c)) => {
+                    let (trial, limit, ..) = self.element_of(c, y, XR);
                     g[4] = (limit - trial.norm()) / self.force;
                 }
-                Mode::Slip => {
+                (Mode::Stick, None) => {}
+                (Mode::Slip, _) => {
                     g[5] = ev.as_ref().map_or(f64::INFINITY, |e| e.slip_rate_r) / rate_unit
                 }
             }
         }
         if twisting && !modes.frozen[2] {
             let torque_unit = self.force * self.length;
-            match modes.twisting {
-                Mode::Stick => {
-                    let m = self.twist_trial(law, t, y)?;
-                    let (a, fc, ..) = self.contact(law, t, y)?;
-                    let fr = self
-                        .imp
-                        .friction
-                        .as_ref()
-                        .ok_or_else(|| model_error("no friction".into()))?;
-                    let (_, _, l) = twist_coefficients(
-                        fr.twisting.as_ref().unwrap_or(&Twisting::Marshall),
-                        fr,
-                        a,
-                        self.imp.normal.damping_at(a),
-                        fc,
-                    );
+            match (modes.twisting, &c) {
+                (Mode::Stick, Some(c)) => {
+                    let (m, l) = self.twist_of(c, y);
                     g[6] = (l - m.abs()) / torque_unit;
                 }
-                Mode::Slip => {
+                (Mode::Stick, None) => {}
+                (Mode::Slip, _) => {
                     g[7] = ev.as_ref().map_or(f64::INFINITY, |e| e.slip_rate_w)
                         / (torque_unit / self.time)
                 }

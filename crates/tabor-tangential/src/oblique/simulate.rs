@@ -14,7 +14,9 @@ use nalgebra::Vector3;
 use std::cell::Cell;
 use std::cell::RefCell;
 use tabor_dynamics::{BranchChange, ForceLaw, SimulationSettings};
-use tabor_numerics::ode::{drive, DenseStepper, DormandPrince, EventDirection};
+use tabor_numerics::ode::{
+    drive_events, DenseStepper, DormandPrince, DormandPrince853, EventDirection, EventsIntegration,
+};
 use tabor_numerics::Cost;
 use tabor_restitution::{validate, Error, Result};
 
@@ -248,6 +250,7 @@ impl ObliqueImpact {
             length,
             force,
             bed: self.micro_slip_bed(law, r_eff, length, v_n, nodes),
+            normal_cache: Cell::new(None),
         };
 
         // start on the undisturbed path at the law's start overlap
@@ -331,7 +334,7 @@ impl ObliqueImpact {
                 }
             }
             match event {
-                Event::BranchEnd => match law.on_branch_end(overlap, rate)? {
+                Event::BranchEnd => match setup.hook(law.on_branch_end(overlap, rate))? {
                     BranchChange::Continue => {
                         if !modes.in_contact && law.in_contact() {
                             modes.in_contact = true;
@@ -365,11 +368,11 @@ impl ObliqueImpact {
                     other => break other,
                 },
                 Event::Turn => {
-                    let decision = if modes.loading {
-                        law.on_max_compression(overlap)?
+                    let decision = setup.hook(if modes.loading {
+                        law.on_max_compression(overlap)
                     } else {
-                        law.on_min_compression(overlap)?
-                    };
+                        law.on_min_compression(overlap)
+                    })?;
                     modes.loading = !modes.loading;
                     if decision != BranchChange::Continue {
                         break decision;
@@ -441,6 +444,13 @@ impl ObliqueImpact {
 }
 
 impl<'a> Setup<'a> {
+    /// The answer of a hook of the law, its last normal point forgotten (the hook
+    /// may have changed the branch).
+    fn hook<T>(&self, answer: Result<T>) -> Result<T> {
+        self.forget_normal();
+        answer
+    }
+
     /// Integrates from SI (t, y) to the first event.
     pub(super) fn segment(
         &self,
@@ -492,7 +502,7 @@ impl<'a> Setup<'a> {
             }
         };
         let g_failure: Cell<Option<Error>> = Cell::new(None);
-        let mut g = |s: f64, yn: &[f64; N]| -> f64 {
+        let g = |s: f64, yn: &[f64; N]| -> f64 {
             match self.event_values(law, s * self.time, &self.to_si(yn), modes) {
                 Ok(v) => v
                     .iter()
@@ -507,25 +517,28 @@ impl<'a> Setup<'a> {
         };
         let s_end = s0 + settings.max_duration;
         let numerics = |e| failure.take().unwrap_or(Error::Numerics(e));
-        let mut stepper =
-            DormandPrince::new(&mut rhs, s0, yn, s_end, settings.tolerance).map_err(numerics)?;
-        let run = drive(
-            &mut stepper,
-            &mut rhs,
-            &mut g,
-            EventDirection::Falling,
-            s_end,
-            &mut |stepper: &DormandPrince<N>, stop: f64| {
-                // micro-slip: the springs' state at the end of the accepted step
-                if self.bed.is_some() && modes.in_contact {
-                    let y = self.to_si(&stepper.dense(stop));
-                    if let Err(e) = self.commit_bed(law, stop * self.time, &y) {
-                        keep_first(&failure, e);
-                    }
+        let micro_slip = self.bed.is_some() && modes.in_contact;
+        // micro-slip: the springs' state at the end of every accepted step
+        let mut commit = |stop: f64, yn: &[f64; N]| {
+            if micro_slip {
+                if let Err(e) = self.commit_bed(law, stop * self.time, &self.to_si(yn)) {
+                    keep_first(&failure, e);
                 }
-            },
-        )
-        .map_err(numerics)?;
+            }
+        };
+        let mut events = |s: f64, yn: &[f64; N]| [g(s, yn)];
+        // the smooth models with DOP853 (as the central simulated impact), the
+        // spring bed, piecewise smooth within a step, with Dormand-Prince 5(4)
+        let run = if self.bed.is_some() {
+            let mut stepper = DormandPrince::new(&mut rhs, s0, yn, s_end, settings.tolerance)
+                .map_err(&numerics)?;
+            drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit)
+        } else {
+            let mut stepper = DormandPrince853::new(&mut rhs, s0, yn, s_end, settings.tolerance)
+                .map_err(&numerics)?;
+            drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit)
+        }
+        .map_err(&numerics)?;
         if let Some(e) = failure.take().or(g_failure.take()) {
             return Err(e);
         }
@@ -539,6 +552,9 @@ impl<'a> Setup<'a> {
         }
         let t_hit = sol.t * self.time;
         let y_hit = self.to_si(&sol.y);
+        if micro_slip {
+            self.commit_bed(law, t_hit, &y_hit)?;
+        }
         let mut gv = self.event_values(law, t_hit, &y_hit, modes)?;
         for (g, o) in gv.iter_mut().zip(offset.iter()) {
             *g += o;
@@ -561,6 +577,25 @@ impl<'a> Setup<'a> {
         ][which];
         Ok((event, t_hit, y_hit, sol.cost + run.event_cost))
     }
+}
+
+/// One run of [`drive_events`] to the falling zero of the event function `g`, the
+/// dense output prepared only on the step that contains it; `observer` sees the
+/// end of every other accepted step.
+fn drive_to_event<S, F, G, O>(
+    stepper: &mut S,
+    f: &mut F,
+    g: &mut G,
+    t_end: f64,
+    observer: &mut O,
+) -> tabor_numerics::Result<EventsIntegration<N>>
+where
+    S: DenseStepper<N>,
+    F: FnMut(f64, &[f64; N]) -> [f64; N],
+    G: FnMut(f64, &[f64; N]) -> [f64; 1],
+    O: FnMut(f64, &[f64; N]),
+{
+    drive_events(stepper, f, g, [EventDirection::Falling], t_end, observer)
 }
 
 impl ObliqueImpact {

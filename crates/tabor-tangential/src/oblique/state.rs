@@ -6,6 +6,7 @@ use super::bed::MicroSlipBed;
 use super::bodies::ObliqueImpact;
 use super::elements::*;
 use super::limits::*;
+use super::normal::NormalCache;
 use crate::model::{TangentialModel, Twisting};
 use nalgebra::Vector3;
 use std::cell::RefCell;
@@ -72,6 +73,8 @@ pub(super) struct Setup<'a> {
     /// The spring bed of `mindlin_deresiewicz` (micro-slip), committed after every
     /// accepted step; `None` for the other tangential models.
     pub(super) bed: Option<RefCell<MicroSlipBed>>,
+    /// The normal law at the last overlap asked for ([`Setup::normal`]).
+    pub(super) normal_cache: NormalCache,
 }
 
 /// Physical quantities at one state.
@@ -188,7 +191,6 @@ impl<'a> Setup<'a> {
         };
         let mut dy = [0.0; N];
         put(&mut dy, E, &(u - self.u0));
-        let f_el = law.force(overlap, rate)?;
         let mut out = Eval {
             dy,
             slip_rate_t: f64::INFINITY,
@@ -197,14 +199,14 @@ impl<'a> Setup<'a> {
         };
         if !modes.in_contact {
             // free flight (or the Maugis-Dugdale approach before jump-in)
+            let f_el = law.force(overlap, rate)?;
             put(&mut out.dy, U, &(n * (f_el / self.m_eff)));
             out.dy[EN] = f_el * rate;
             return Ok(out);
         }
-        let h = self.difference_step(law, overlap, rate)?;
-        let a_of = |d: f64| law.contact_radius(d, rate);
-        let (a, a_prime) = derivative(&a_of, overlap, h)?;
-        let a = a.max(0.0);
+        let np = self.normal(law, overlap, rate, true)?;
+        let (f_el, a) = (np.force, np.radius);
+        let (a_prime, f_prime) = np.slopes.unwrap_or((0.0, 0.0));
         let normal = &self.imp.normal;
         let c_n = normal.damping_at(a);
         let f_d = c_n * rate;
@@ -331,8 +333,6 @@ impl<'a> Setup<'a> {
 
         // rates of the quantities the slip conditions need
         let accel_normal = -n_dot.dot(&u) - n.dot(&u_dot); // δ̈
-        let f_of = |d: f64| law.force(d, rate);
-        let (_, f_prime) = derivative(&f_of, overlap, h)?;
         let a_dot = a_prime * rate;
         let c_n_dot = normal.damping_rate(a, a_dot);
         let fc_dot = {
@@ -395,12 +395,25 @@ impl<'a> Setup<'a> {
                         + gamma * uhat.dot(&v_tr_dot)
                         - limit_dot;
                     out.slip_rate_t = g;
-                    out.dy[EN + 2] = if k > 0.0 {
-                        g.max(0.0) * on_surface / k
+                    // The spring's part of the limit force along û, `L − γ û·v`,
+                    // carries the sliding work (its force times the slip rate
+                    // g/k). Where the dashpot alone reaches the limit (that part
+                    // ≤ 0) the dashpot's force along û is capped at the limit
+                    // and spring and slider carry nothing along û: else the
+                    // spring part points against the force, and where it
+                    // vanishes more slowly than k (a Tsuji damping ∝ √a at a
+                    // damped Hertz separation, k ∝ a) the history (L û − γ v)/k
+                    // and the sliding work g·(L − γ û·v)/k diverge, as 1/δ.
+                    if on_surface >= 0.0 {
+                        out.dy[EN + 2] = if k > 0.0 {
+                            g.max(0.0) * on_surface / k
+                        } else {
+                            0.0
+                        };
+                        out.dy[EN + 3] = gamma * v_tr.norm_squared();
                     } else {
-                        0.0
-                    };
-                    out.dy[EN + 3] = gamma * v_tr.norm_squared();
+                        out.dy[EN + 3] = gamma * v_tr.norm_squared() + on_surface * uv;
+                    }
                 }
             }
         }

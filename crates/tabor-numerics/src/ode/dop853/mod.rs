@@ -53,7 +53,9 @@ pub struct DormandPrince853<const N: usize> {
     cont: Option<[[f64; N]; 8]>,
 }
 
-/// `y + h Σ_j a[j] k[j]` over the first `stages` stages.
+/// `y + h Σ_j a[j] k[j]` over the first `stages` stages (the zero coefficients
+/// skipped). The sums run stage by stage over all components (vectorized), in
+/// the order of j for every component.
 fn stage_input<const N: usize>(
     y: &[f64; N],
     h: f64,
@@ -61,13 +63,17 @@ fn stage_input<const N: usize>(
     k: &Stages<N>,
     stages: usize,
 ) -> [f64; N] {
-    let mut out = *y;
-    for i in 0..N {
-        let mut s = 0.0;
-        for j in 0..stages {
-            s += a[j] * k[j][i];
+    let mut sum = [0.0; N];
+    for (&aj, kj) in a.iter().zip(k.iter()).take(stages) {
+        if aj != 0.0 {
+            for (s, &kji) in sum.iter_mut().zip(kj.iter()) {
+                *s += aj * kji;
+            }
         }
-        out[i] += h * s;
+    }
+    let mut out = *y;
+    for (o, s) in out.iter_mut().zip(sum.iter()) {
+        *o += h * s;
     }
     out
 }
@@ -120,8 +126,12 @@ impl<const N: usize> DormandPrince853<N> {
     {
         self.core.check_limit(t_limit)?;
         let mut non_finite: Option<(f64, f64)> = None;
-        let mut k: Stages<N> = [[0.0; N]; 16];
-        k[0] = self.k[12];
+        // the stages are written in place: the last step's dense output is not
+        // needed once a new step is tried (stage 0 is its stage 12, kept at 12
+        // until this step is accepted)
+        self.k[0] = self.k[12];
+        self.cont = None;
+        let k = &mut self.k;
         loop {
             let (h, last) = self.core.trial_step(t_limit, non_finite, &NAMES)?;
             let t = self.core.t;
@@ -129,7 +139,7 @@ impl<const N: usize> DormandPrince853<N> {
             let y = self.core.y;
             let mut bad = None;
             for s in 1..STAGES {
-                let ys = stage_input(&y, h, &A[s], &k, s);
+                let ys = stage_input(&y, h, &A[s], k, s);
                 let ts = if s == STAGES - 1 { t_new } else { t + C[s] * h };
                 k[s] = self.core.eval(f, ts, &ys);
                 if let Some(v) = first_non_finite(&k[s]) {
@@ -137,14 +147,14 @@ impl<const N: usize> DormandPrince853<N> {
                     break;
                 }
             }
-            let y_new = stage_input(&y, h, &B_ROW, &k, STAGES);
+            let y_new = stage_input(&y, h, &B_ROW, k, STAGES);
             if let Some(v) = bad.or_else(|| first_non_finite(&y_new)) {
                 // A trial step into a region where f is not finite: shrink and retry.
                 non_finite.get_or_insert((t + h, v));
                 self.core.reject(0.1 * h);
                 continue;
             }
-            let err = self.error_norm(h, &k, &y_new);
+            let err = error_norm(&self.core, h, k, &y_new);
             if !err.is_finite() {
                 self.core.reject(0.1 * h);
                 continue;
@@ -152,46 +162,20 @@ impl<const N: usize> DormandPrince853<N> {
             let fac11 = err.powf(1.0 / 8.0);
             let fac = (fac11 / SAFE).clamp(FAC_MIN, FAC_MAX);
             if err <= 1.0 {
-                k[12] = self.core.eval(f, t_new, &y_new);
-                if let Some(v) = first_non_finite(&k[12]) {
+                let last_stage = self.core.eval(f, t_new, &y_new);
+                if let Some(v) = first_non_finite(&last_stage) {
                     // f is not finite at the new point: shrink and retry.
                     non_finite.get_or_insert((t_new, v));
                     self.core.reject(0.1 * h);
                     continue;
                 }
-                self.k = k;
+                k[12] = last_stage;
                 self.y_old = y;
-                self.cont = None;
                 self.core.accept(h, t_new, y_new, h / fac);
                 return Ok(());
             }
             self.core.reject(h / fac);
         }
-    }
-
-    /// Hairer's error norm of `DOP853`: the fifth-order estimate `err5`, corrected
-    /// by the third-order one `err3` as `err5² / √(err5² + 0.01 err3²)`, both in
-    /// the root-mean-square norm over the error scales, times `|h|`.
-    fn error_norm(&self, h: f64, k: &Stages<N>, y_new: &[f64; N]) -> f64 {
-        let y = &self.core.y;
-        let (mut err5, mut err3) = (0.0, 0.0);
-        for i in 0..N {
-            let sk = self.core.scale(y[i], y_new[i]);
-            let mut e5 = 0.0;
-            let mut high = 0.0;
-            for j in 0..STAGES {
-                e5 += E5[j] * k[j][i];
-                high += B[j] * k[j][i];
-            }
-            let e3 = high - BHH[0] * k[0][i] - BHH[1] * k[8][i] - BHH[2] * k[11][i];
-            err5 += (e5 / sk).powi(2);
-            err3 += (e3 / sk).powi(2);
-        }
-        let mut deno = err5 + 0.01 * err3;
-        if deno <= 0.0 {
-            deno = 1.0;
-        }
-        h.abs() * err5 * (1.0 / (N.max(1) as f64 * deno)).sqrt()
     }
 
     /// Computes the continuous extension of the last accepted step (three more
@@ -272,6 +256,39 @@ impl<const N: usize> DormandPrince853<N> {
         }
         out
     }
+}
+
+/// Hairer's error norm of `DOP853`: the fifth-order estimate `err5`, corrected
+/// by the third-order one `err3` as `err5² / √(err5² + 0.01 err3²)`, both in
+/// the root-mean-square norm over the error scales, times `|h|`.
+fn error_norm<const N: usize>(
+    core: &StepperCore<N>,
+    h: f64,
+    k: &Stages<N>,
+    y_new: &[f64; N],
+) -> f64 {
+    let y = &core.y;
+    // Σ_j E5[j] k[j] and Σ_j B[j] k[j] stage by stage over all components
+    let (mut e5, mut high) = ([0.0; N], [0.0; N]);
+    for j in 0..STAGES {
+        let (ej, bj, kj) = (E5[j], B[j], &k[j]);
+        for i in 0..N {
+            e5[i] += ej * kj[i];
+            high[i] += bj * kj[i];
+        }
+    }
+    let (mut err5, mut err3) = (0.0, 0.0);
+    for i in 0..N {
+        let sk = core.scale(y[i], y_new[i]);
+        let e3 = high[i] - BHH[0] * k[0][i] - BHH[1] * k[8][i] - BHH[2] * k[11][i];
+        err5 += (e5[i] / sk).powi(2);
+        err3 += (e3 / sk).powi(2);
+    }
+    let mut deno = err5 + 0.01 * err3;
+    if deno <= 0.0 {
+        deno = 1.0;
+    }
+    h.abs() * err5 * (1.0 / (N.max(1) as f64 * deno)).sqrt()
 }
 
 /// The weights `B` as a row of the coupling matrix.
