@@ -25,9 +25,10 @@ plugin takes `maugis E* w range h` (issue 31, item 3), change the MODEL line bel
 (the one commented "one-line change") and the library's scenes to the range.
 
 DEP_WALL=granular runs LAMMPS's own `fix wall/gran granular jkr ...` with the same
-sub-models instead (JKR, not Maugis-Dugdale: for the timing of
+sub-models instead, DEP_WALL=tabor-jkr fix wall/tabor with `jkr/load-controlled`
+(the same law as granular's jkr: the like-for-like timing of
 integrations/lammps/time_wall.sh), DEP_WALL=none no wall at all (the baseline of
-that timing). DEP_STEPS overrides the number of steps. DEP_COMPARE_RANKS=1 also
+that timing: fix nve/sphere is in LAMMPS's Modify time too). DEP_STEPS overrides the number of steps. DEP_COMPARE_RANKS=1 also
 runs on 1 rank and compares the set of stuck grains (the CI run).
 """
 
@@ -71,6 +72,8 @@ MODEL = f"maugis {E_STAR!r} {W} {LAMBDA}"   # one-line change: f"maugis {E_STAR!
 COEFFS = f"{MODEL} poisson {NU} {FRICTION}"
 WALLS = {
     "tabor": f"fix plate all wall/tabor {COEFFS} zplane 0.0 NULL contacts",
+    "tabor-jkr": f"fix plate all wall/tabor jkr/load-controlled {E_STAR!r} {W} poisson {NU} {FRICTION} "
+                 "zplane 0.0 NULL contacts",
     "granular": f"fix plate all wall/gran granular jkr {E} 0 {NU} {W / 2} damping viscoelastic {FRICTION} "
                 "zplane 0.0 NULL contacts",
     "none": None,
@@ -205,7 +208,7 @@ def main():
                  f"{speed * math.cos(math.radians(ANGLE)):.5f} m/s), Maugis-Dugdale Lambda = {LAMBDA} (fixed for every "
                  f"radius) + {FRICTION}; wall: {WALL}; {RANKS} MPI rank(s), {steps} steps of {dt:.3e} s",
                  "timing (s): " + ", ".join(f"{k} {v:.3f}" for k, v in t.items())]
-        if WALL == "none":
+        if WALL not in ("tabor", "granular"):
             print("\n".join(lines))
             return 0
         stuck = {i for i, row in state.items() if row[3] == 1.0}

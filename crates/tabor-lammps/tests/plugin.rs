@@ -291,3 +291,22 @@ fn a_flat_target_is_the_wall_fix() {
     let pair = scene("integrations/lammps/scenes/maugis_case2.toml");
     assert!(export_plugin_wall(&pair, SO, None, Some("zplane 0 NULL")).is_err());
 }
+
+/// `--check` reads the wall line of the export without --plugin (LAMMPS's own
+/// `fix wall/gran granular`), and a `fix wall/tabor` line is answered with what
+/// it is (tabor's own law, which --check does not predict) instead of a parse error.
+#[test]
+fn check_reads_the_wall_gran_line_and_names_wall_tabor() {
+    let s = scene("integrations/lammps/scenes/maugis_wall.toml");
+    let x = tabor_lammps::export(&s, None).expect("export");
+    let line = x
+        .fragment()
+        .lines()
+        .find(|l| l.starts_with("fix ") && l.contains(" wall/gran granular "))
+        .expect("wall/gran line")
+        .to_string();
+    assert!(tabor_lammps::check(&s, &line, None, &[]).is_ok());
+    let e = tabor_lammps::parse_line("fix w all wall/tabor maugis 2.78e10 0.05 0.55 zplane 0.0 NULL")
+        .expect_err("refused");
+    assert!(e.to_string().contains("tabor's own force law"), "{e}");
+}
