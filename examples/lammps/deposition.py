@@ -99,10 +99,17 @@ def sticking_velocity(radius, tmp):
     return tabor_json("sticking", path)["sticking_velocity"]
 
 
+_RANGE_AT_R0 = []
+
+
 def interaction_range(radius):
-    """The reach of the law beyond touching at R* = radius (m): tabor-ffi's own
-    value (tabor_law_info), the gap at which a grain starts to feel the plate."""
-    return law_info(FFI, "maugis", E_STAR, radius, W, LAMBDA).interaction_range
+    """The reach of the law beyond touching at R* = radius (m), the gap at which a
+    grain starts to feel the plate: tabor-ffi's own value (tabor_law_info) at the
+    median radius, scaled as lengths of the law scale, R*^(1/3) (one table built,
+    not one per grain)."""
+    if not _RANGE_AT_R0:
+        _RANGE_AT_R0.append(law_info(FFI, "maugis", E_STAR, R0, W, LAMBDA).interaction_range)
+    return _RANGE_AT_R0[0] * (radius / R0) ** (1 / 3)
 
 
 def lmp_exe():

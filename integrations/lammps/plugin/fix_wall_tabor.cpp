@@ -23,7 +23,7 @@ static constexpr int NCOLS = 8;
 /* fix ID group wall/tabor MODEL ARGS [KEYWORDS] wallstyle args [wiggle|shear|contacts ...]
    fix ID group wall/tabor/region MODEL ARGS [KEYWORDS] regionID [contacts] */
 FixWallTabor::FixWallTabor(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), contact(nullptr), reach_unit(0.0), wallstyle(ZPLANE), lo(-BIG), hi(BIG),
+    Fix(lmp, narg, arg), contact(nullptr), reach_unit(0.0), rmax_seen(0.0), reach_max(0.0), wallstyle(ZPLANE), lo(-BIG), hi(BIG),
     cylradius(0.0), wiggle(0), wshear(0), axis(0), amplitude(0.0), period(0.0), omega_wiggle(0.0),
     vshear(0.0), time_origin(0), region(nullptr), nslot(1), ncontact(nullptr), walls(nullptr),
     history(nullptr), nmax_alloc(0)
@@ -211,13 +211,20 @@ void FixWallTabor::one_contact(int i, int wall, const double *del, const double 
   double *radius = atom->radius;
   double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
   double ri = radius[i];
-  // a stored contact is found whatever the gap; a new one only within reach
+  // a stored contact is found whatever the gap; a new one only within reach: the
+  // reach at the largest radius met on this rank bounds every atom's (the reach
+  // grows as R^(1/3)), so no cube root per atom and step; the law itself tells
+  // an atom between its own reach and the bound that it has no contact
   int *w = walls + (bigint) i * nslot;
   bool stored = false;
   for (int k = 0; k < ncontact[i]; k++) stored = stored || w[k] == wall;
   if (!stored) {
-    double reach = ri + (reach_unit > 0.0 ? reach_unit * cbrt(ri) : 0.0);
-    if (rsq >= reach * reach) return;
+    if (ri > rmax_seen) {
+      rmax_seen = ri;
+      reach_max = reach_unit > 0.0 ? reach_unit * cbrt(ri) : 0.0;
+    }
+    double cut = ri + reach_max;
+    if (rsq >= cut * cut) return;
   }
   double r = sqrt(rsq);
   if (r == 0.0) error->one(FLERR, "{}: the centre of atom {} lies on the wall", who, atom->tag[i]);
@@ -237,9 +244,11 @@ void FixWallTabor::one_contact(int i, int wall, const double *del, const double 
   s.time_step = update->dt;
   s.effective_mass = atom->rmass[i];
   s.update_history = update->setupflag ? 0 : 1;
+  // the stored doubles are the TaborContactHistory itself (16 doubles, repr(C)):
+  // advanced in place (tabor_contact_step leaves it unchanged on error)
+  static_assert(sizeof(TaborContactHistory) == HLEN * sizeof(double), "history layout");
   double *h = find_or_add(i, wall);
-  TaborContactHistory hist;
-  memcpy(&hist, h, sizeof(hist));
+  TaborContactHistory &hist = *reinterpret_cast<TaborContactHistory *>(h);
   TaborContactForces out;
   int status = tabor_contact_step(contact, &s, &hist, &out);
   if (status != TABOR_OK) {
@@ -251,7 +260,6 @@ void FixWallTabor::one_contact(int i, int wall, const double *del, const double 
     forget(i, wall);
     return;
   }
-  memcpy(h, &hist, sizeof(hist));
   double **f = atom->f;
   double **torque = atom->torque;
   for (int k = 0; k < 3; k++) {
@@ -292,7 +300,11 @@ void FixWallTabor::post_force(int /*vflag*/)
         ncontact[i] = 0;
         continue;
       }
-      double cutoff = radius[i] + (reach_unit > 0.0 ? reach_unit * cbrt(radius[i]) : 0.0);
+      if (radius[i] > rmax_seen) {
+        rmax_seen = radius[i];
+        reach_max = reach_unit > 0.0 ? reach_unit * cbrt(radius[i]) : 0.0;
+      }
+      double cutoff = radius[i] + reach_max;
       int nc = region->surface(x[i][0], x[i][1], x[i][2], cutoff);
       if (nc > nslot) error->one(FLERR, "{}: atom {} touches {} surfaces of region {} (at most {})", who,
                                  atom->tag[i], nc, idregion, nslot);

@@ -51,6 +51,8 @@ class FixWallTabor : public Fix {
   std::string who;    // "fix wall/tabor" or "fix wall/tabor/region"
   TaborContact *contact;
   double reach_unit;    // the law's interaction range at R* = 1 m (lengths scale as R*^(1/3))
+  double rmax_seen;     // the largest particle radius met on this rank
+  double reach_max;     // the interaction range at rmax_seen
   int wallstyle;
   double lo, hi, cylradius;
   int wiggle, wshear, axis;
