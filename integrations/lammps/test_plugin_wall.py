@@ -17,6 +17,10 @@
    and torques of a `run 0` just before write_restart and just after read_restart
    are identical (the histories came back); (b) the continued run against the
    straight run, measured the same way for fix wall/gran granular (LAMMPS's own).
+5. Wall motion (wiggle, shear) against fix wall/gran in the JKR limit;
+   wall/tabor/region on a face of a block against the plane, and in its corner
+   (two contacts at once, each with its history: a symmetric rebound); the
+   zcylinder against a plane (a flat for the law).
 4. MPI: particles sliding and stuck on the wall, drifting across the boundary of
    two sub-domains while in contact, on 1 and 2 ranks: the same final state (the
    wall force is per atom, so the same to the last bit when the histories travel
@@ -419,6 +423,80 @@ def mpi():
     return failures
 
 
+STYLES = [  # (label, wall/tabor tail, wall/gran tail, angle)
+    ("zplane, wiggle z", "zplane 0.0 NULL wiggle z 2e-9 3e-8", "zplane 0.0 NULL wiggle z 2e-9 3e-8", 30.0),
+    ("zplane, shear x", "zplane 0.0 NULL shear x 0.2", "zplane 0.0 NULL shear x 0.2", 30.0),
+    ("zplane, shear y", "zplane 0.0 NULL shear y -0.1", "zplane 0.0 NULL shear y -0.1", 60.0),
+]
+FACE = "region plate block -1e-4 1e-4 -1e-4 1e-4 0 1e-4"
+CORNER = f"region plate block -1e-4 {R!r} -1e-4 1e-4 0 1e-4"
+
+
+def styles():
+    """Wall motions against LAMMPS's own fix wall/gran in the JKR limit (the same
+    discrete scheme: round-off); wall/tabor/region on a face of a block against the
+    plane (the same contact: round-off) and in its corner (two contacts at once,
+    symmetric about the diagonal: the rebound must be too, within the time-step
+    tolerance, as the two contacts may start one step apart); the zcylinder against
+    a plane (a flat for the law: the same rebound). LAMMPS's own wall/gran/region
+    is printed beside its wall/gran plane, for information."""
+    failures = []
+    law = law_info(FFI, "jkr/load-controlled", E_STAR, R, W)
+    v = 0.3
+    dt = contact_time(v) / STEPS
+    reach = law.interaction_range
+    tol_v, tol_w = tolerances(v, law.pull_off_force)
+    load = f"plugin load \"{PLUGIN}\""
+    print(f"{'case':32} {'|du| tabor-gran':>15} {'|dw| tabor-gran':>15} {'|v| after':>10}")
+    for label, ours, theirs, angle in STYLES:
+        ut, wt, st = wall_collide([load, f"fix wall all wall/tabor {TABOR_JKR} {ours}"], v, dt, reach, angle)
+        ug, wg, sg = wall_collide([f"fix wall all wall/gran {GRANULAR_JKR} {theirs}"], v, dt, reach, angle)
+        du, dw = math.dist(ut, ug), math.dist(wt, wg)
+        print(f"{label:32} {du:15.2e} {dw:15.2e} {math.hypot(*ut):10.4f}")
+        if du > tol_v or dw > tol_w or st != sg:
+            failures.append(f"{label}: tabor vs wall/gran du {du:.2e} (tol {tol_v:.1e}), dw {dw:.2e} (tol {tol_w:.1e})")
+    plane = wall_collide([load, f"fix wall all wall/tabor {TABOR_JKR} zplane 0.0 NULL"], v, dt, reach, 30.0)
+    face = wall_collide([FACE, load, f"fix wall all wall/tabor/region {TABOR_JKR} plate"], v, dt, reach, 30.0)
+    du, dw = math.dist(plane[0], face[0]), math.dist(plane[1], face[1])
+    print(f"{'region, one face vs zplane':32} {du:15.2e} {dw:15.2e} {math.hypot(*face[0]):10.4f}")
+    if du > 1e-12 * v or dw > 1e-12 * v / R:
+        failures.append(f"region face vs plane: du {du:.2e}, dw {dw:.2e} (round-off expected)")
+    gp = wall_collide([f"fix wall all wall/gran {GRANULAR_JKR} zplane 0.0 NULL"], v, dt, reach, 30.0)
+    gr = wall_collide([FACE, f"fix wall all wall/gran/region {GRANULAR_JKR} region plate"], v, dt, reach, 30.0)
+    print(f"  (LAMMPS's own, same case: wall/gran/region vs its wall/gran plane: |du| {math.dist(gp[0], gr[0]):.2e} "
+          f"m/s, |dw| {math.dist(gp[1], gr[1]):.2e} rad/s; rebound normal speed {gr[0][2]:.6f} vs {gp[0][2]:.6f})")
+    u, w, sep = wall_collide([CORNER, load, f"fix wall all wall/tabor/region {TABOR_JKR} plate"], v, dt, reach, 45.0)
+    asym = abs(u[0] + u[2])
+    print(f"{'region corner: u_x + u_z, |w|':32} {asym:15.2e} {math.hypot(*w):15.2e} {math.hypot(*u):10.4f}")
+    # the two contacts may start one step apart (the start positions differ by
+    # rounding): the time-step tolerance
+    if asym > tol_v or math.hypot(*w) > tol_w or not (u[0] < 0 < u[2]) or not sep:
+        failures.append(f"region corner: u {u}, w {w}: not the symmetric rebound off both faces")
+    # zcylinder of radius 50 R about z through (0, 0): the sphere starts inside at
+    # (-(50 R - R - gap), 0, 0) moving in -x onto the wall: the same law as the plane
+    approach = 20 + math.ceil(reach / (v * dt))
+    s = approach * dt * v
+    rc = 50 * R
+    outs = []
+    for wall in (f"zcylinder {rc!r}", f"xplane {-rc!r} NULL"):
+        lmp = lmp_new()
+        try:
+            for c in ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
+                      f"region box block {-2 * rc} {2 * rc} {-2 * rc} {2 * rc} {-2 * rc} {2 * rc}", "create_box 1 box",
+                      f"create_atoms 1 single {-(rc - R - s)!r} 0 0", f"set atom 1 diameter {2 * R!r} density {RHO!r}",
+                      f"set atom 1 vx {-v!r} vy 0 vz 0", load,
+                      f"fix wall all wall/tabor {TABOR_JKR} {wall}", "fix integrate all nve/sphere", f"timestep {dt!r}",
+                      f"run {approach + 4 * int(contact_time(v) / dt)}"]:
+                lmp.command(c)
+            outs.append(lmp.extract_atom("v")[0][0] / v)
+        finally:
+            lmp.close()
+    print(f"zcylinder (radius 50 R) vs plane: e {outs[0]:.12f} vs {outs[1]:.12f}, |diff| {abs(outs[0] - outs[1]):.1e}")
+    if abs(outs[0] - outs[1]) > 1e-9 or not outs[0] > 0:
+        failures.append(f"zcylinder: e {outs[0]} vs plane {outs[1]}")
+    return failures
+
+
 def main():
     failures = []
     print("1. normal impacts on the wall against tabor impact (flat target)")
@@ -430,6 +508,8 @@ def main():
     failures += restart()
     print("4. 1 and 2 MPI ranks")
     failures += mpi()
+    print("5. wiggle, shear against fix wall/gran; region (one face, a corner); zcylinder")
+    failures += styles()
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))
         return 1
