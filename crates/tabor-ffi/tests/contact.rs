@@ -321,14 +321,26 @@ fn a_flat_wall_is_an_infinite_radius_j() {
     );
     let f = step(c, &state([0.0; 3]), &mut h1);
     let g = step(c, &state([1e4, -2e4, 3e4]), &mut h2);
-    assert!((f.normal_force / f_n - 1.0).abs() < 1e-7, "{} vs {f_n}", f.normal_force);
+    assert!(
+        (f.normal_force / f_n - 1.0).abs() < 1e-7,
+        "{} vs {f_n}",
+        f.normal_force
+    );
     assert!((f.contact_radius / a - 1.0).abs() < 1e-7);
     let ft = -8.0 * G * a * vt * dt;
-    assert!((f.force[0] / ft - 1.0).abs() < 1e-7, "{} vs {ft}", f.force[0]);
+    assert!(
+        (f.force[0] / ft - 1.0).abs() < 1e-7,
+        "{} vs {ft}",
+        f.force[0]
+    );
     // torque on i: R_i n × F_t with n = z, F_t along x: (0, R_i F_t, 0) up to sign
     // −(arm) n × F (the pair convention with arm R_i)
     let ty = -ri * f.force[0];
-    assert!((f.torque_i[1] / ty - 1.0).abs() < 1e-12, "{} vs {ty}", f.torque_i[1]);
+    assert!(
+        (f.torque_i[1] / ty - 1.0).abs() < 1e-12,
+        "{} vs {ty}",
+        f.torque_i[1]
+    );
     assert_eq!(f.torque_j, [0.0; 3]);
     assert_eq!(f.force, g.force);
     assert_eq!(h1, h2);
@@ -337,7 +349,10 @@ fn a_flat_wall_is_an_infinite_radius_j() {
         s.radius_j = bad;
         let mut out = TaborContactForces::default();
         let mut h = TaborContactHistory::default();
-        assert_eq!(unsafe { tabor_contact_step(c, &s, &mut h, &mut out) }, TABOR_ERR_INVALID);
+        assert_eq!(
+            unsafe { tabor_contact_step(c, &s, &mut h, &mut out) },
+            TABOR_ERR_INVALID
+        );
     }
     unsafe { tabor_contact_free(c) };
 }

@@ -197,7 +197,12 @@ pub fn export_plugin(
 }
 
 /// The wallstyles of `fix wall/tabor` and how many arguments each takes.
-const WALLSTYLES: [(&str, usize); 4] = [("xplane", 2), ("yplane", 2), ("zplane", 2), ("zcylinder", 1)];
+const WALLSTYLES: [(&str, usize); 4] = [
+    ("xplane", 2),
+    ("yplane", 2),
+    ("zplane", 2),
+    ("zcylinder", 1),
+];
 
 /// Checks a `--wall` value: a wallstyle of `fix wall/tabor` with its arguments
 /// (numbers, or NULL for a plane's missing side); returns it with single spaces.
@@ -205,18 +210,28 @@ fn wall_style(wall: &str) -> Result<String, ExportError> {
     let words: Vec<&str> = wall.split_whitespace().collect();
     let bad = |why: String| ExportError::Model(format!("--wall {wall:?}: {why}"));
     let Some((style, rest)) = words.split_first() else {
-        return Err(bad("empty: give a wallstyle and its arguments, e.g. zplane 0.0 NULL".into()));
+        return Err(bad(
+            "empty: give a wallstyle and its arguments, e.g. zplane 0.0 NULL".into(),
+        ));
     };
     let Some(&(_, n)) = WALLSTYLES.iter().find(|(w, _)| w == style) else {
-        return Err(bad(format!("unknown wallstyle {style} (xplane|yplane|zplane lo hi, zcylinder radius)")));
+        return Err(bad(format!(
+            "unknown wallstyle {style} (xplane|yplane|zplane lo hi, zcylinder radius)"
+        )));
     };
     if rest.len() != n {
-        return Err(bad(format!("{style} takes {n} argument(s), got {}", rest.len())));
+        return Err(bad(format!(
+            "{style} takes {n} argument(s), got {}",
+            rest.len()
+        )));
     }
     for a in rest {
         let null_ok = n == 2 && *a == "NULL";
         if !null_ok && a.parse::<f64>().map_or(true, |x| !x.is_finite()) {
-            return Err(bad(format!("{a} is not a number{}", if n == 2 { " or NULL" } else { "" })));
+            return Err(bad(format!(
+                "{a} is not a number{}",
+                if n == 2 { " or NULL" } else { "" }
+            )));
         }
     }
     if n == 2 && rest.iter().all(|a| *a == "NULL") {
@@ -435,7 +450,9 @@ pub fn export_plugin_wall(
         "Maugis-Dugdale keeps Lambda fixed for every effective radius of a polydisperse system (the range h = d_n(R*)/Lambda grows as R*^(1/3))".to_string(),
     ];
     if wall.is_none() {
-        limits.push("the neighbor skin must stay at least the interaction range (checked at run)".into());
+        limits.push(
+            "the neighbor skin must stay at least the interaction range (checked at run)".into(),
+        );
     } else {
         limits.push("other walls, and the contacts between the particles: the fragment is the sphere-wall contact only (add pair_style tabor for particle-particle contacts)".into());
     }
@@ -496,7 +513,9 @@ impl PluginExport {
                     "# tabor export lammps --plugin: scene \"{}\" (sphere-sphere: pair_style tabor, tabor's own force law)",
                     self.scene
                 ));
-                line("# Include after atom_style sphere / create_box (units si); newton on or off.");
+                line(
+                    "# Include after atom_style sphere / create_box (units si); newton on or off.",
+                );
             }
             Some(w) => {
                 line(&format!(

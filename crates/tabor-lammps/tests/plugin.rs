@@ -10,7 +10,8 @@ use std::f64::consts::PI;
 use std::path::PathBuf;
 use tabor_ffi::{ContactLaw, TaborHistory};
 use tabor_lammps::{
-    export_plugin, export_plugin_wall, plugin_load_command, ExportError, PluginModel, PLUGIN_RESTITUTION_ERROR,
+    export_plugin, export_plugin_wall, plugin_load_command, ExportError, PluginModel,
+    PLUGIN_RESTITUTION_ERROR,
 };
 use tabor_scene::Scene;
 
@@ -269,7 +270,10 @@ fn a_flat_target_is_the_wall_fix() {
         .expect("fix line");
     let words: Vec<&str> = line.split_whitespace().collect();
     assert_eq!(words[4], "maugis");
-    let n: Vec<f64> = words[5..8].iter().map(|w| w.parse().expect("number")).collect();
+    let n: Vec<f64> = words[5..8]
+        .iter()
+        .map(|w| w.parse().expect("number"))
+        .collect();
     assert!((n[0] / e_star - 1.0).abs() < 1e-10, "{} {e_star}", n[0]);
     assert!((n[1] / 0.05 - 1.0).abs() < 1e-10);
     assert!((n[2] / 0.55 - 1.0).abs() < 1e-10);
@@ -279,10 +283,20 @@ fn a_flat_target_is_the_wall_fix() {
     assert!(f.contains("# Include after atom_style sphere / create_box"));
     assert_eq!(x.wall.as_deref(), Some("zplane 0.0 NULL"));
     let y = export_plugin_wall(&s, SO, None, Some(" xplane  -1e-5 NULL")).expect("export");
-    assert!(y.fragment().lines().any(|l| l.ends_with(" xplane -1e-5 NULL")));
+    assert!(y
+        .fragment()
+        .lines()
+        .any(|l| l.ends_with(" xplane -1e-5 NULL")));
     let y = export_plugin_wall(&s, SO, None, Some("zcylinder 2e-4")).expect("export");
     assert!(y.fragment().lines().any(|l| l.ends_with(" zcylinder 2e-4")));
-    for bad in ["", "zplane 0", "zplane NULL NULL", "plane 0 1", "zcylinder x", "zplane 0 inf"] {
+    for bad in [
+        "",
+        "zplane 0",
+        "zplane NULL NULL",
+        "plane 0 1",
+        "zcylinder x",
+        "zplane 0 inf",
+    ] {
         match export_plugin_wall(&s, SO, None, Some(bad)) {
             Err(ExportError::Model(m)) => assert!(m.contains("--wall"), "{bad}: {m}"),
             other => panic!("{bad}: {other:?}"),
@@ -306,7 +320,8 @@ fn check_reads_the_wall_gran_line_and_names_wall_tabor() {
         .expect("wall/gran line")
         .to_string();
     assert!(tabor_lammps::check(&s, &line, None, &[]).is_ok());
-    let e = tabor_lammps::parse_line("fix w all wall/tabor maugis 2.78e10 0.05 0.55 zplane 0.0 NULL")
-        .expect_err("refused");
+    let e =
+        tabor_lammps::parse_line("fix w all wall/tabor maugis 2.78e10 0.05 0.55 zplane 0.0 NULL")
+            .expect_err("refused");
     assert!(e.to_string().contains("tabor's own force law"), "{e}");
 }

@@ -50,7 +50,12 @@ pub struct LammpsArgs {
     /// With --plugin and a flat target: the wall of `fix wall/tabor`, a wallstyle
     /// and its arguments ("xplane|yplane|zplane lo hi", NULL for no wall on that
     /// side, or "zcylinder radius"); default "zplane 0.0 NULL"
-    #[arg(long, value_name = "STYLE ARGS", requires = "plugin", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "STYLE ARGS",
+        requires = "plugin",
+        allow_hyphen_values = true
+    )]
     wall: Option<String>,
     /// A LAMMPS variable used in the --check line ($x, ${name}), as NAME=VALUE
     /// (repeatable)
@@ -137,8 +142,13 @@ pub fn run(args: &Args) -> Outcome {
         // an existing .so is written as an absolute path, so that the fragment
         // loads it from any working directory
         let plugin = std::fs::canonicalize(plugin).unwrap_or_else(|_| plugin.clone());
-        let x = export_plugin_wall(&scene, &plugin.to_string_lossy(), a.speed, a.wall.as_deref())
-            .map_err(|e| format!("{}: {e}", a.scene.display()))?;
+        let x = export_plugin_wall(
+            &scene,
+            &plugin.to_string_lossy(),
+            a.speed,
+            a.wall.as_deref(),
+        )
+        .map_err(|e| format!("{}: {e}", a.scene.display()))?;
         // also in the fragment (# WARNING) and the JSON; stderr so it is seen
         for w in &x.warnings {
             eprintln!("warning: {w}");
