@@ -497,6 +497,40 @@ def styles():
     return failures
 
 
+BAD = [  # (fix arguments after wall/tabor, a phrase the error must hold)
+    ("maugis 2.78e10 0.05 0.5", "missing the wallstyle"),
+    ("maugis 2.78e10 0.05 0.5 zplane 0", "missing hi"),
+    ("maugis 2.78e10 0.05 0.5 zplane 1 0", "lo 1 must be below hi 0"),
+    ("maugis 2.78e10 0.05 -1 zplane 0 NULL", "tabor_parameter"),
+    ("maugis 2.78e10 0.05 0.5 frob 1 zplane 0 NULL", "unknown keyword frob"),
+    ("maugis 2.78e10 0.05 0.5 zplane 0 NULL wiggle z 1 0", "period 0 must be > 0"),
+    ("maugis 2.78e10 0.05 0.5 zplane 0 NULL shear z 1", "shear along the wall's normal"),
+    ("hertz 2.78e10 zcylinder -1", "zcylinder radius -1"),
+    ("jkr/fixed-grip 2.78e10 0.05 tangential mindlin NULL 0 0.3 zplane 0 NULL", "needs `poisson nu`"),
+]
+
+
+def bad_input():
+    """Bad input stops LAMMPS with an error naming the parameter and value."""
+    failures = []
+    for args, phrase in BAD:
+        lmp = lmp_new()
+        try:
+            for c in ["units si", "atom_style sphere", "boundary f f f", "region box block -1 1 -1 1 -1 1",
+                      "create_box 1 box", f"plugin load \"{PLUGIN}\""]:
+                lmp.command(c)
+            try:
+                lmp.command(f"fix w all wall/tabor {args}")
+                failures.append(f"accepted: fix w all wall/tabor {args}")
+            except Exception as e:  # noqa: BLE001 (LAMMPS raises its own exception types)
+                if phrase not in str(e):
+                    failures.append(f"fix wall/tabor {args}: error {e!s} lacks {phrase!r}")
+        finally:
+            lmp.close()
+    print(f"  {len(BAD)} bad inputs refused with the parameter named" if not failures else "  bad inputs: FAILED")
+    return failures
+
+
 def main():
     failures = []
     print("1. normal impacts on the wall against tabor impact (flat target)")
@@ -510,6 +544,8 @@ def main():
     failures += mpi()
     print("5. wiggle, shear against fix wall/gran; region (one face, a corner); zcylinder")
     failures += styles()
+    print("6. bad input")
+    failures += bad_input()
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))
         return 1
