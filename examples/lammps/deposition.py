@@ -250,12 +250,16 @@ def main():
             slope = (n * sum(x * y for x, y in zip(xs, ys)) - sum(xs) * sum(ys)) / (n * sum(x * x for x in xs) - sum(xs) ** 2)
             icpt = (sum(ys) - slope * sum(xs)) / n
             worst = max(abs(math.exp(icpt + slope * x) / math.exp(y) - 1) for x, y in zip(xs, ys))
+            ratios = []
             for i, r in per_grain.items():
-                lib = vn < math.exp(icpt + slope * math.log(r))
-                mismatched += lib != (i in stuck)
+                v_s = math.exp(icpt + slope * math.log(r))
+                if (vn < v_s) != (i in stuck):
+                    mismatched += 1
+                    ratios.append(vn / v_s)
             lines.append(f"library's sticking velocity on the plate: v_s = {math.exp(icpt):.4e} R^{slope:.4f} "
                          f"(fit to the bin centres, worst {worst:.1e}); grains whose outcome differs from the "
-                         f"library's (v_n < v_s(R)): {mismatched} of {GRAINS} ({100 * mismatched / GRAINS:.2f} %)")
+                         f"library's (v_n < v_s(R)): {mismatched} of {GRAINS} ({100 * mismatched / GRAINS:.2f} %)"
+                         + (f", all with v_n/v_s(R) in [{min(ratios):.4f}, {max(ratios):.4f}]" if ratios else ""))
         if os.environ.get("DEP_COMPARE_RANKS") == "1" and RANKS != 1:
             other, _ = run_lammps(data, tmp, 1, dt, steps, "1")
             stuck1 = {i for i, row in other.items() if row[3] == 1.0}
