@@ -1,11 +1,13 @@
 """The LAMMPS doc pages of the plugin cannot go stale: every `.. code-block:: LAMMPS`
-example of doc/*.rst (pair_tabor.rst, fix_tabor_history.rst) runs in LAMMPS.
+example of doc/*.rst (pair_tabor.rst, fix_tabor_history.rst, fix_wall_tabor.rst) runs
+in LAMMPS.
 
 Each example block runs in a fresh LAMMPS instance after a small setup: SI units, a
 box, two silica spheres of radius 1 um (types 1 and 2) overlapping by 20 nm and
 sliding and spinning against each other, `plugin load` of the plugin (a block's own
 `plugin load NAME` line gets the path of TABOR_PLUGIN instead), the block's lines,
-then `run 0` (the force on a sphere must be nonzero: the pair acted) and 20 steps.
+then `run 0` (the force on a sphere must be nonzero: the pair, or the wall of
+fix_wall_tabor.rst's examples, acted) and 20 steps.
 A block that starts with `read_restart FILE` runs on its own: the restart file is
 written first from the setup with pair_style tabor and friction, after 20 steps, and
 the force after `run 0` on the restarted system must equal the force before writing

@@ -6,11 +6,14 @@
 # (oblique collisions with friction, rolling and twisting against pair granular and
 # tabor's library; mindlin_deresiewicz against the library's exact bed),
 # test_plugin_damping.py (damping viscoelastic|tsuji|coeff_restitution against
-# pair granular and, with adhesion, against tabor impact), test_plugin_cloud.py (a
+# pair granular and, with adhesion, against tabor impact), test_plugin_wall.py (fix
+# wall/tabor against tabor impact on a flat, fix wall/gran, restart, 1 vs 2 ranks,
+# the exported wall fragment), test_plugin_cloud.py (a
 # polydisperse cloud on 1 and 2 ranks, a restart in the middle), test_doc_examples.py
 # (every example line of the doc pages doc/pair_tabor.rst and doc/fix_tabor_history.rst),
 # then the MPI cloud example of examples/lammps with the
-# plugin (sticking fraction against tabor's prediction).
+# plugin (sticking fraction against tabor's prediction) and the deposition example
+# (300 grains on 2 ranks against 1 rank and the library's sticking velocities).
 # Exit status 0 only if everything passed.
 set -euo pipefail
 HERE="$(cd "$(dirname "$0")" && pwd)"
@@ -30,6 +33,10 @@ export PATH="$VENV/bin:$PATH"
 "$VENV/bin/python" "$HERE/test_doc_examples.py"  # every example of doc/*.rst runs in LAMMPS
 "$VENV/bin/python" "$HERE/test_plugin_friction.py"
 "$VENV/bin/python" "$HERE/test_plugin_damping.py"
+"$VENV/bin/python" "$HERE/test_plugin_wall.py"  # fix wall/tabor: flat-target impacts, wall/gran, restart, MPI
 "$VENV/bin/python" "$HERE/test_lammps.py" plugin_friction  # the exported --plugin fragment with [friction], oblique (export branch)
 "$VENV/bin/python" "$HERE/test_plugin_cloud.py"
 CLOUD_PLUGIN="$PLUGIN" CLOUD_OUT="$TARGET/lammps-cloud-plugin" bash "$ROOT/examples/lammps/run.sh"
+# the deposition example, small: 300 grains on 2 ranks, the same stuck set on 1 rank
+DEP_GRAINS=300 DEP_COMPARE_RANKS=1 DEP_OUT="$TARGET/lammps-deposition-ci" TABOR_PLUGIN="$PLUGIN" \
+  bash "$ROOT/examples/lammps/deposition.sh"

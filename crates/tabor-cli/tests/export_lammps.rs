@@ -145,16 +145,57 @@ fn plugin_fragment_json_and_refusals() {
     assert_eq!(listed, cmds);
     assert_eq!(v["model"], "maugis");
     assert_eq!(v["tabor_parameter"], 0.3);
-    // plasticity, a flat target: exit 2, one line
-    for scene in [
-        "examples/scenes/silica_maugis_plastic.toml",
-        "integrations/lammps/scenes/jkr_wall.toml",
+    // plasticity: exit 2, one line
+    let scene = "examples/scenes/silica_maugis_plastic.toml";
+    let o = tabor(&["export", "lammps", scene, "--plugin", so]);
+    assert_eq!(o.status.code(), Some(2), "{scene}");
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("pair_style tabor"), "{err}");
+}
+
+/// A flat target exports to the plugin's wall fix (zplane 0.0 NULL, or --wall);
+/// a bad --wall, or --wall for two spheres, is exit 2 with one line naming it.
+#[test]
+fn plugin_flat_target_is_the_wall_fix() {
+    let so = "/x/taborplugin.so";
+    let wall = "integrations/lammps/scenes/jkr_wall.toml";
+    let o = tabor(&["export", "lammps", wall, "--plugin", so]);
+    assert!(o.status.success());
+    let frag = String::from_utf8(o.stdout).unwrap();
+    let cmds: Vec<&str> = frag.lines().filter(|l| !l.starts_with('#')).collect();
+    assert_eq!(cmds[0], format!("plugin load \"{so}\""));
+    assert!(
+        cmds[1].starts_with("fix tabor_wall all wall/tabor jkr/fixed-grip "),
+        "{}",
+        cmds[1]
+    );
+    assert!(cmds[1].ends_with(" zplane 0.0 NULL"), "{}", cmds[1]);
+    let o = tabor(&[
+        "export",
+        "lammps",
+        wall,
+        "--plugin",
+        so,
+        "--wall",
+        "zplane NULL 5e-5",
+    ]);
+    assert!(o.status.success());
+    assert!(String::from_utf8(o.stdout)
+        .unwrap()
+        .contains(" zplane NULL 5e-5\n"));
+    for (scene, bad) in [
+        (wall, "zplane 0"),
+        (
+            "integrations/lammps/scenes/maugis_case1.toml",
+            "zplane 0 NULL",
+        ),
     ] {
-        let o = tabor(&["export", "lammps", scene, "--plugin", so]);
-        assert_eq!(o.status.code(), Some(2), "{scene}");
+        let o = tabor(&["export", "lammps", scene, "--plugin", so, "--wall", bad]);
+        assert_eq!(o.status.code(), Some(2), "{scene} {bad}");
         let err = String::from_utf8(o.stderr).unwrap();
         assert_eq!(err.lines().count(), 1, "{err}");
-        assert!(err.contains("pair_style tabor"), "{err}");
+        assert!(err.contains("--wall"), "{err}");
     }
 }
 

@@ -209,7 +209,9 @@ typedef struct TaborContactState {
   double overlap;
   // Radius of body i (m).
   double radius_i;
-  // Radius of body j (m).
+  // Radius of body j (m); `+∞` (C `INFINITY`) for a flat wall: the effective
+  // radius is then R_i, the torque arm R_i and ω_j is ignored (LAMMPS
+  // `fix wall/gran`'s flat wall; `tabor_tangential::ContactKinematics`).
   double radius_j;
   // v_i − v_j (m/s).
   double relative_velocity[3];

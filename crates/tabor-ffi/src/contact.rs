@@ -123,7 +123,9 @@ pub struct TaborContactState {
     pub overlap: f64,
     /// Radius of body i (m).
     pub radius_i: f64,
-    /// Radius of body j (m).
+    /// Radius of body j (m); `+∞` (C `INFINITY`) for a flat wall: the effective
+    /// radius is then R_i, the torque arm R_i and ω_j is ignored (LAMMPS
+    /// `fix wall/gran`'s flat wall; `tabor_tangential::ContactKinematics`).
     pub radius_j: f64,
     /// v_i − v_j (m/s).
     pub relative_velocity: [f64; 3],
@@ -267,7 +269,7 @@ impl ContactModel {
     }
 
     /// One time step of one contact: the normal force from the law at the
-    /// effective radius R_i R_j/(R_i + R_j), then (while the contact lasts) the
+    /// effective radius R_i R_j/(R_i + R_j) (R_i for a wall, R_j = +∞), then (while the contact lasts) the
     /// tangential force and the torques from `tabor_tangential::Friction::step`;
     /// `history` is advanced (the friction displacements only when
     /// `state.update_history` is 1) and zeroed when the contact breaks.
@@ -288,12 +290,22 @@ impl ContactModel {
             ));
         }
         let ri = validate::positive("radius_i", state.radius_i)?;
-        let rj = validate::positive("radius_j", state.radius_j)?;
+        // +∞: a flat wall (R* = R_i); otherwise finite and > 0
+        let rj = if state.radius_j == f64::INFINITY {
+            f64::INFINITY
+        } else {
+            validate::positive("radius_j", state.radius_j)?
+        };
         let v = vector("relative_velocity", state.relative_velocity)?;
         let wi = vector("angular_velocity_i", state.angular_velocity_i)?;
         let wj = vector("angular_velocity_j", state.angular_velocity_j)?;
         let dt = validate::non_negative("time_step", state.time_step)?;
-        let scales = self.law.scales(ri * rj / (ri + rj))?;
+        let effective_radius = if rj.is_infinite() {
+            ri
+        } else {
+            ri * rj / (ri + rj)
+        };
+        let scales = self.law.scales(effective_radius)?;
         let mut normal = TaborHistory {
             contact: history.contact,
             max_overlap: history.max_overlap,

@@ -290,3 +290,69 @@ fn micro_slip_through_the_abi() {
     assert!(-f.force[1] < 0.9 * k * s);
     unsafe { tabor_contact_free(c) };
 }
+
+/// A flat wall (`radius_j` = +∞, as `fix wall/tabor` passes it): the JKR force
+/// and contact radius at R* = R_i (the closed form above), the tangential spring
+/// 8 G* a, the torque arm R_i (LAMMPS `fix wall/gran`), ω_j ignored; a negative
+/// or NaN `radius_j` is still refused.
+#[test]
+fn a_flat_wall_is_an_infinite_radius_j() {
+    let c = contact(mindlin());
+    let ri = 1.3e-6;
+    let a = 0.12 * ri;
+    let (delta, f_n) = jkr(a, ri);
+    let dt = 1e-10;
+    let vt = 1e-3;
+    let state = |wj: [f64; 3]| TaborContactState {
+        normal: [0.0, 0.0, 1.0],
+        overlap: delta,
+        radius_i: ri,
+        radius_j: f64::INFINITY,
+        relative_velocity: [vt, 0.0, 0.0],
+        angular_velocity_j: wj,
+        time_step: dt,
+        update_history: 1,
+        effective_mass: 1e-14,
+        ..TaborContactState::default()
+    };
+    let (mut h1, mut h2) = (
+        TaborContactHistory::default(),
+        TaborContactHistory::default(),
+    );
+    let f = step(c, &state([0.0; 3]), &mut h1);
+    let g = step(c, &state([1e4, -2e4, 3e4]), &mut h2);
+    assert!(
+        (f.normal_force / f_n - 1.0).abs() < 1e-7,
+        "{} vs {f_n}",
+        f.normal_force
+    );
+    assert!((f.contact_radius / a - 1.0).abs() < 1e-7);
+    let ft = -8.0 * G * a * vt * dt;
+    assert!(
+        (f.force[0] / ft - 1.0).abs() < 1e-7,
+        "{} vs {ft}",
+        f.force[0]
+    );
+    // torque on i: R_i n × F_t with n = z, F_t along x: (0, R_i F_t, 0) up to sign
+    // −(arm) n × F (the pair convention with arm R_i)
+    let ty = -ri * f.force[0];
+    assert!(
+        (f.torque_i[1] / ty - 1.0).abs() < 1e-12,
+        "{} vs {ty}",
+        f.torque_i[1]
+    );
+    assert_eq!(f.torque_j, [0.0; 3]);
+    assert_eq!(f.force, g.force);
+    assert_eq!(h1, h2);
+    for bad in [-1.0, f64::NAN, f64::NEG_INFINITY, 0.0] {
+        let mut s = state([0.0; 3]);
+        s.radius_j = bad;
+        let mut out = TaborContactForces::default();
+        let mut h = TaborContactHistory::default();
+        assert_eq!(
+            unsafe { tabor_contact_step(c, &s, &mut h, &mut out) },
+            TABOR_ERR_INVALID
+        );
+    }
+    unsafe { tabor_contact_free(c) };
+}

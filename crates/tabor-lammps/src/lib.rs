@@ -11,7 +11,9 @@
 //! - [`export_plugin()`]: the fragment for `pair_style tabor` (the plugin of
 //!   `integrations/lammps/plugin`, tabor's own force laws through `tabor-ffi`):
 //!   `plugin load`, `pair_coeff * * maugis|jkr/…|hertz …`, the neighbor skin, and
-//!   what it reproduces ([`PluginExport::fragment`]);
+//!   what it reproduces ([`PluginExport::fragment`]); for a flat target the wall
+//!   fix `fix tabor_wall all wall/tabor … zplane 0.0 NULL` ([`export_plugin_wall()`]
+//!   takes another wall);
 //! - [`check()`]: the restitution LAMMPS will really produce for a user's
 //!   `pair_coeff` or `wall/gran` line (nominal versus achieved);
 //! - [`GranularModel`]: LAMMPS's normal force and damping laws as a
@@ -48,8 +50,8 @@ pub use law::{
 };
 pub use parse::{parse_line, substitute_variables, LineError, LineKind, ParsedLine};
 pub use plugin::{
-    export_plugin, plugin_load_command, PluginExport, PluginModel, PluginSpeed,
-    PLUGIN_RESTITUTION_ERROR, PLUGIN_TIME_STEP_FRACTION,
+    export_plugin, export_plugin_wall, plugin_load_command, PluginExport, PluginModel, PluginSpeed,
+    DEFAULT_WALL, PLUGIN_RESTITUTION_ERROR, PLUGIN_TIME_STEP_FRACTION,
 };
 pub use report::{
     time_step_error, Bodies, Claim, Export, ExportError, Geometry, Limit, Parameter, RangeEnd,

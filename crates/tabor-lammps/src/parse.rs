@@ -228,6 +228,14 @@ pub fn parse_line(line: &str) -> Result<ParsedLine, LineError> {
             (LineKind::PairCoeff, 3)
         }
         Some(&"fix") => {
+            if matches!(
+                tokens.get(3),
+                Some(&"wall/tabor") | Some(&"wall/tabor/region")
+            ) {
+                return Err(LineError(
+                    "fix wall/tabor is the plugin's wall with tabor's own force law: it reproduces `tabor impact` on a flat (tabor export lammps SCENE --plugin PATH writes it); --check predicts LAMMPS's own granular models (pair_coeff of pair_style granular, fix wall/gran)".into(),
+                ));
+            }
             if tokens.get(3) != Some(&"wall/gran") {
                 return Err(LineError(
                     "a fix line must be \"fix ID group wall/gran granular …\" (or a legacy hooke, hooke/history, hertz/history wall)".into(),

@@ -99,6 +99,10 @@ pub struct PluginExport {
     pub time_step: f64,
     /// tabor's restitution over two decades around the reference speed.
     pub restitution: Vec<PluginSpeed>,
+    /// The wall of a flat target: the wallstyle and its arguments of
+    /// `fix … wall/tabor` (`zplane 0.0 NULL` unless `--wall` says otherwise);
+    /// `None` for two spheres (`pair_style tabor`).
+    pub wall: Option<String>,
     /// The LAMMPS commands of the fragment.
     pub commands: Vec<String>,
     /// What the plugin reproduces.
@@ -171,18 +175,79 @@ fn damping_time(scene: &Scene, adhesive: bool) -> Result<Option<f64>, ExportErro
     }
 }
 
-/// Exports `scene` for `pair_style tabor`, loaded from `plugin` (the `.so` that
-/// `cargo xtask lammps-plugin` prints). `speed` (m/s) only centres the restitution
-/// table: the plugin's force law holds at every speed.
+/// The wall of [`export_plugin`] for a flat target: the plane z = 0 below the
+/// particles (`fix … wall/tabor … zplane 0.0 NULL`).
+pub const DEFAULT_WALL: &str = "zplane 0.0 NULL";
+
+/// Exports `scene` for the plugin loaded from `plugin` (the `.so` that
+/// `cargo xtask lammps-plugin` prints): `pair_style tabor` for two spheres,
+/// `fix tabor_wall all wall/tabor` on [`DEFAULT_WALL`] for a flat target.
+/// `speed` (m/s) only centres the restitution table: the plugin's force law holds
+/// at every speed.
 ///
-/// Errors: [`ExportError::Unrepresentable`] for a flat target (the plugin is a pair
-/// style), a graded medium, plasticity, a standard-medium or two-relaxation-time
-/// viscosity, and a Kelvin-Voigt viscosity without adhesion (see
-/// `crates/tabor-lammps/README.md`).
+/// Errors: [`ExportError::Unrepresentable`] for a graded medium, plasticity, a
+/// standard-medium or two-relaxation-time viscosity, and a Kelvin-Voigt viscosity
+/// without adhesion (see `crates/tabor-lammps/README.md`).
 pub fn export_plugin(
     scene: &Scene,
     plugin: &str,
     speed: Option<f64>,
+) -> Result<PluginExport, ExportError> {
+    export_plugin_wall(scene, plugin, speed, None)
+}
+
+/// The wallstyles of `fix wall/tabor` and how many arguments each takes.
+const WALLSTYLES: [(&str, usize); 4] = [
+    ("xplane", 2),
+    ("yplane", 2),
+    ("zplane", 2),
+    ("zcylinder", 1),
+];
+
+/// Checks a `--wall` value: a wallstyle of `fix wall/tabor` with its arguments
+/// (numbers, or NULL for a plane's missing side); returns it with single spaces.
+fn wall_style(wall: &str) -> Result<String, ExportError> {
+    let words: Vec<&str> = wall.split_whitespace().collect();
+    let bad = |why: String| ExportError::Model(format!("--wall {wall:?}: {why}"));
+    let Some((style, rest)) = words.split_first() else {
+        return Err(bad(
+            "empty: give a wallstyle and its arguments, e.g. zplane 0.0 NULL".into(),
+        ));
+    };
+    let Some(&(_, n)) = WALLSTYLES.iter().find(|(w, _)| w == style) else {
+        return Err(bad(format!(
+            "unknown wallstyle {style} (xplane|yplane|zplane lo hi, zcylinder radius)"
+        )));
+    };
+    if rest.len() != n {
+        return Err(bad(format!(
+            "{style} takes {n} argument(s), got {}",
+            rest.len()
+        )));
+    }
+    for a in rest {
+        let null_ok = n == 2 && *a == "NULL";
+        if !null_ok && a.parse::<f64>().map_or(true, |x| !x.is_finite()) {
+            return Err(bad(format!(
+                "{a} is not a number{}",
+                if n == 2 { " or NULL" } else { "" }
+            )));
+        }
+    }
+    if n == 2 && rest.iter().all(|a| *a == "NULL") {
+        return Err(bad("lo and hi cannot both be NULL".into()));
+    }
+    Ok(words.join(" "))
+}
+
+/// [`export_plugin`] with the wall of a flat target given (`wall`: a wallstyle and
+/// its arguments, as `--wall` takes them; `None`: [`DEFAULT_WALL`]). A wall given
+/// for two spheres is refused.
+pub fn export_plugin_wall(
+    scene: &Scene,
+    plugin: &str,
+    speed: Option<f64>,
+    wall: Option<&str>,
 ) -> Result<PluginExport, ExportError> {
     let geometry = if scene.target.radius.is_some() {
         Geometry::Pair
@@ -203,12 +268,15 @@ pub fn export_plugin(
     }
     let adhesion = scene.adhesion.as_ref().filter(|a| a.work_of_adhesion > 0.0);
     let a_time = damping_time(scene, adhesion.is_some())?;
-    if geometry == Geometry::Wall {
-        return Err(refuse(
-            "a flat target",
-            "pair_style tabor acts between spheres and has no wall (fix wall/gran) counterpart; use tabor export lammps without --plugin",
-        ));
-    }
+    let wall = match (geometry, wall) {
+        (Geometry::Wall, w) => Some(wall_style(w.unwrap_or(DEFAULT_WALL))?),
+        (Geometry::Pair, Some(w)) => {
+            return Err(ExportError::Model(format!(
+                "--wall {w:?}: the scene's target is a sphere (pair_style tabor); --wall is for a flat target"
+            )))
+        }
+        (Geometry::Pair, None) => None,
+    };
     let e_star = scene.effective_modulus;
     let r = scene.effective_radius;
     let m = scene.effective_mass;
@@ -268,7 +336,7 @@ pub fn export_plugin(
     // seed 000 (5.12): t_c = 2.868 (m*²/(R* E*² v))^(1/5)
     let contact_time = 2.868 * (m * m / (r * e_star * e_star * v_ref)).powf(0.2);
     let fmt = |x: f64| format!("{x:.10e}");
-    let mut coeff = format!("pair_coeff * * {} {}", model.keyword(), fmt(e_star));
+    let mut coeff = format!("{} {}", model.keyword(), fmt(e_star));
     if let Some(w) = w {
         coeff += &format!(" {}", fmt(w));
     }
@@ -307,14 +375,21 @@ pub fn export_plugin(
     }
     // every line is legal after create_box with LAMMPS's defaults: the fragment
     // does not change `newton` (the pair style works with either setting)
-    let commands = vec![
-        "comm_modify vel yes".to_string(),
-        plugin_load_command(plugin),
-        "pair_style tabor".to_string(),
-        coeff,
-        format!("neighbor {} bin", fmt(skin)),
-        "neigh_modify every 1 delay 0 check yes".to_string(),
-    ];
+    let commands = match &wall {
+        None => vec![
+            "comm_modify vel yes".to_string(),
+            plugin_load_command(plugin),
+            "pair_style tabor".to_string(),
+            format!("pair_coeff * * {coeff}"),
+            format!("neighbor {} bin", fmt(skin)),
+            "neigh_modify every 1 delay 0 check yes".to_string(),
+        ],
+        // the same MODEL ARGS [KEYWORDS] as pair_coeff (one parser in the plugin)
+        Some(w) => vec![
+            plugin_load_command(plugin),
+            format!("fix tabor_wall all wall/tabor {coeff} {w}"),
+        ],
+    };
     let law_name = match model {
         PluginModel::Hertz => "Hertz".to_string(),
         PluginModel::JkrFixedGrip => "JKR with the fixed-grip separation".to_string(),
@@ -325,7 +400,7 @@ pub fn export_plugin(
         ),
     };
     let mut reproduces = vec![format!(
-        "tabor's force law itself ({law_name}{}), so tabor's restitution at every speed{}: |e_LAMMPS - e_tabor| <= {PLUGIN_RESTITUTION_ERROR:.0e} at timestep <= Hertz contact time/20000 (measured <= 1.2e-4 in integrations/lammps/test_plugin.py)",
+        "tabor's force law itself ({law_name}{}), so tabor's restitution at every speed{}: |e_LAMMPS - e_tabor| <= {PLUGIN_RESTITUTION_ERROR:.0e} at timestep <= Hertz contact time/20000 ({})",
         if a_time.is_some() {
             " + Kuwabara-Kono damping 2 E* A a v_n with the law's contact radius: tabor's viscous-adhesive model of a Kelvin-Voigt contact, A = eta_c/E*"
         } else {
@@ -335,6 +410,11 @@ pub fn export_plugin(
             " and the sticking velocity"
         } else {
             ""
+        },
+        if wall.is_some() {
+            "measured <= 6.4e-4 already at contact time/5000 on the wall in integrations/lammps/test_plugin_wall.py"
+        } else {
+            "measured <= 1.2e-4 in integrations/lammps/test_plugin.py"
         }
     )];
     if let Some((_, _, d)) = &dem_damping {
@@ -362,11 +442,21 @@ pub fn export_plugin(
         } else {
             "tangential, rolling and twisting contact: the scene has no [friction], normal forces only (give a [friction] section for pair granular's sub-models)".to_string()
         },
-        "energy tally: the pair style tallies no energy (its contact histories are written to restart files; after read_restart include this fragment again)".to_string(),
-        "the neighbor skin must stay at least the interaction range (checked at run)".to_string(),
+        if wall.is_some() {
+            "energy tally: the wall fix tallies no energy (its contact histories are written to restart files; after read_restart include this fragment again, same fix ID)".to_string()
+        } else {
+            "energy tally: the pair style tallies no energy (its contact histories are written to restart files; after read_restart include this fragment again)".to_string()
+        },
         "Maugis-Dugdale keeps Lambda fixed for every effective radius of a polydisperse system (the range h = d_n(R*)/Lambda grows as R*^(1/3))".to_string(),
     ];
-    if range > 0.0 {
+    if wall.is_none() {
+        limits.push(
+            "the neighbor skin must stay at least the interaction range (checked at run)".into(),
+        );
+    } else {
+        limits.push("other walls, and the contacts between the particles: the fragment is the sphere-wall contact only (add pair_style tabor for particle-particle contacts)".into());
+    }
+    if range > 0.0 && wall.is_none() {
         limits.push(format!(
             "bodies created closer than the interaction range ({range:.4e} m beyond touching): they jump in where they start and miss the attraction's work; create grains at least that far apart"
         ));
@@ -394,6 +484,7 @@ pub fn export_plugin(
         contact_time,
         time_step: contact_time * PLUGIN_TIME_STEP_FRACTION,
         restitution,
+        wall,
         commands,
         reproduces,
         does_not_reproduce: limits,
@@ -416,11 +507,25 @@ impl PluginExport {
             s.push_str(t);
             s.push('\n');
         };
-        line(&format!(
-            "# tabor export lammps --plugin: scene \"{}\" (sphere-sphere: pair_style tabor, tabor's own force law)",
-            self.scene
-        ));
-        line("# Include after atom_style sphere / create_box (units si); newton on or off.");
+        match &self.wall {
+            None => {
+                line(&format!(
+                    "# tabor export lammps --plugin: scene \"{}\" (sphere-sphere: pair_style tabor, tabor's own force law)",
+                    self.scene
+                ));
+                line(
+                    "# Include after atom_style sphere / create_box (units si); newton on or off.",
+                );
+            }
+            Some(w) => {
+                line(&format!(
+                    "# tabor export lammps --plugin: scene \"{}\" (sphere on a flat: fix wall/tabor {w}, tabor's own force law)",
+                    self.scene
+                ));
+                line("# Include after atom_style sphere / create_box (units si), before the run; the wall acts on group all.");
+                line("# The wall is the flat target: R* = the particle's radius, m* = its mass, E* that of particle and wall.");
+            }
+        }
         for w in &self.warnings {
             line(&format!("# WARNING: {w}"));
         }
@@ -438,13 +543,17 @@ impl PluginExport {
             ))
         ));
         line(&format!(
-            "# bodies: R* = {:.6e} m, m* = {:.6e} kg; interaction range {:.6e} m (jump-in at overlap {:.6e} m, snap-off at {:.6e} m); neighbor skin {:.6e} m",
+            "# bodies: R* = {:.6e} m, m* = {:.6e} kg; interaction range {:.6e} m (jump-in at overlap {:.6e} m, snap-off at {:.6e} m){}",
             self.effective_radius,
             self.effective_mass,
             self.interaction_range,
             self.jump_in_overlap,
             self.snap_off_overlap,
-            self.neighbor_skin
+            if self.wall.is_some() {
+                String::new()
+            } else {
+                format!("; neighbor skin {:.6e} m", self.neighbor_skin)
+            }
         ));
         for r in &self.reproduces {
             line(&format!("# REPRODUCES: {r}"));

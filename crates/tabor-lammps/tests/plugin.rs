@@ -10,7 +10,8 @@ use std::f64::consts::PI;
 use std::path::PathBuf;
 use tabor_ffi::{ContactLaw, TaborHistory};
 use tabor_lammps::{
-    export_plugin, plugin_load_command, ExportError, PluginModel, PLUGIN_RESTITUTION_ERROR,
+    export_plugin, export_plugin_wall, plugin_load_command, ExportError, PluginModel,
+    PLUGIN_RESTITUTION_ERROR,
 };
 use tabor_scene::Scene;
 
@@ -243,7 +244,6 @@ fn refusals() {
             "examples/scenes/rubber_balls.toml",
             "a Kelvin-Voigt viscosity without adhesion",
         ),
-        ("integrations/lammps/scenes/jkr_wall.toml", "a flat target"),
     ] {
         match export_plugin(&scene(path), SO, None) {
             Err(ExportError::Unrepresentable { effect: e, .. }) => {
@@ -252,4 +252,76 @@ fn refusals() {
             other => panic!("{path}: {other:?}"),
         }
     }
+}
+
+/// A flat target: the wall fix with pair_coeff's MODEL ARGS, E* of sphere and wall
+/// (1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2 = 2(1 − ν²)/E for the silica wall), R* = R;
+/// the default wall zplane 0.0 NULL, another with --wall, bad walls refused, and
+/// --wall refused for two spheres.
+#[test]
+fn a_flat_target_is_the_wall_fix() {
+    let s = scene("integrations/lammps/scenes/maugis_wall.toml");
+    let x = export_plugin(&s, SO, None).expect("export");
+    let f = x.fragment();
+    let e_star = 54e9 / (2.0 * (1.0 - 0.17f64 * 0.17));
+    let line = f
+        .lines()
+        .find(|l| l.starts_with("fix tabor_wall all wall/tabor "))
+        .expect("fix line");
+    let words: Vec<&str> = line.split_whitespace().collect();
+    assert_eq!(words[4], "maugis");
+    let n: Vec<f64> = words[5..8]
+        .iter()
+        .map(|w| w.parse().expect("number"))
+        .collect();
+    assert!((n[0] / e_star - 1.0).abs() < 1e-10, "{} {e_star}", n[0]);
+    assert!((n[1] / 0.05 - 1.0).abs() < 1e-10);
+    assert!((n[2] / 0.55 - 1.0).abs() < 1e-10);
+    assert_eq!(&words[8..], ["zplane", "0.0", "NULL"]);
+    assert!((x.effective_radius / 1e-6 - 1.0).abs() < 1e-12);
+    assert!(!f.lines().any(|l| l.starts_with("pair_style")));
+    assert!(f.contains("# Include after atom_style sphere / create_box"));
+    assert_eq!(x.wall.as_deref(), Some("zplane 0.0 NULL"));
+    let y = export_plugin_wall(&s, SO, None, Some(" xplane  -1e-5 NULL")).expect("export");
+    assert!(y
+        .fragment()
+        .lines()
+        .any(|l| l.ends_with(" xplane -1e-5 NULL")));
+    let y = export_plugin_wall(&s, SO, None, Some("zcylinder 2e-4")).expect("export");
+    assert!(y.fragment().lines().any(|l| l.ends_with(" zcylinder 2e-4")));
+    for bad in [
+        "",
+        "zplane 0",
+        "zplane NULL NULL",
+        "plane 0 1",
+        "zcylinder x",
+        "zplane 0 inf",
+    ] {
+        match export_plugin_wall(&s, SO, None, Some(bad)) {
+            Err(ExportError::Model(m)) => assert!(m.contains("--wall"), "{bad}: {m}"),
+            other => panic!("{bad}: {other:?}"),
+        }
+    }
+    let pair = scene("integrations/lammps/scenes/maugis_case2.toml");
+    assert!(export_plugin_wall(&pair, SO, None, Some("zplane 0 NULL")).is_err());
+}
+
+/// `--check` reads the wall line of the export without --plugin (LAMMPS's own
+/// `fix wall/gran granular`), and a `fix wall/tabor` line is answered with what
+/// it is (tabor's own law, which --check does not predict) instead of a parse error.
+#[test]
+fn check_reads_the_wall_gran_line_and_names_wall_tabor() {
+    let s = scene("integrations/lammps/scenes/maugis_wall.toml");
+    let x = tabor_lammps::export(&s, None).expect("export");
+    let line = x
+        .fragment()
+        .lines()
+        .find(|l| l.starts_with("fix ") && l.contains(" wall/gran granular "))
+        .expect("wall/gran line")
+        .to_string();
+    assert!(tabor_lammps::check(&s, &line, None, &[]).is_ok());
+    let e =
+        tabor_lammps::parse_line("fix w all wall/tabor maugis 2.78e10 0.05 0.55 zplane 0.0 NULL")
+            .expect_err("refused");
+    assert!(e.to_string().contains("tabor's own force law"), "{e}");
 }

@@ -5,7 +5,7 @@
 use crate::output::{json_text, print_json, stdout, Outcome};
 use std::io::Write;
 use std::path::PathBuf;
-use tabor::lammps::{check, export, export_plugin, Check};
+use tabor::lammps::{check, export, export_plugin_wall, Check};
 use tabor::scene::Scene;
 
 /// Arguments of `tabor export`.
@@ -24,7 +24,7 @@ enum Target {
 /// Arguments of `tabor export lammps`.
 #[derive(clap::Args)]
 #[command(
-    after_help = "Examples:\n  tabor export lammps examples/scenes/silica.toml --out silica.lmp\n  tabor export lammps examples/scenes/silica_maugis.toml --plugin target/lammps-plugin/taborplugin.so\n  tabor export lammps examples/scenes/silica.toml --check 'pair_coeff * * hertz/material 54e9 0.5 0.17 damping tsuji' --speed 0.2"
+    after_help = "Examples:\n  tabor export lammps examples/scenes/silica.toml --out silica.lmp\n  tabor export lammps examples/scenes/silica_maugis.toml --plugin target/lammps-plugin/taborplugin.so\n  tabor export lammps integrations/lammps/scenes/jkr_wall.toml --plugin target/lammps-plugin/taborplugin.so --wall 'zplane NULL 5e-5'\n  tabor export lammps examples/scenes/silica.toml --check 'pair_coeff * * hertz/material 54e9 0.5 0.17 damping tsuji' --speed 0.2"
 )]
 pub struct LammpsArgs {
     /// The scene file (.toml or .json)
@@ -47,6 +47,16 @@ pub struct LammpsArgs {
     /// exists): tabor's own force law
     #[arg(long, value_name = "PATH")]
     plugin: Option<PathBuf>,
+    /// With --plugin and a flat target: the wall of `fix wall/tabor`, a wallstyle
+    /// and its arguments ("xplane|yplane|zplane lo hi", NULL for no wall on that
+    /// side, or "zcylinder radius"); default "zplane 0.0 NULL"
+    #[arg(
+        long,
+        value_name = "STYLE ARGS",
+        requires = "plugin",
+        allow_hyphen_values = true
+    )]
+    wall: Option<String>,
     /// A LAMMPS variable used in the --check line ($x, ${name}), as NAME=VALUE
     /// (repeatable)
     #[arg(long = "var", value_name = "NAME=VALUE", value_parser = parse_var, requires = "check")]
@@ -132,8 +142,13 @@ pub fn run(args: &Args) -> Outcome {
         // an existing .so is written as an absolute path, so that the fragment
         // loads it from any working directory
         let plugin = std::fs::canonicalize(plugin).unwrap_or_else(|_| plugin.clone());
-        let x = export_plugin(&scene, &plugin.to_string_lossy(), a.speed)
-            .map_err(|e| format!("{}: {e}", a.scene.display()))?;
+        let x = export_plugin_wall(
+            &scene,
+            &plugin.to_string_lossy(),
+            a.speed,
+            a.wall.as_deref(),
+        )
+        .map_err(|e| format!("{}: {e}", a.scene.display()))?;
         // also in the fragment (# WARNING) and the JSON; stderr so it is seen
         for w in &x.warnings {
             eprintln!("warning: {w}");

@@ -1,0 +1,491 @@
+#include "fix_wall_tabor.h"
+
+#include "atom.h"
+#include "domain.h"
+#include "error.h"
+#include "memory.h"
+#include "region.h"
+#include "tabor_coeff.h"
+#include "update.h"
+#include "utils.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static constexpr int HLEN = TABOR_CONTACT_HISTORY_LEN;
+static constexpr double BIG = 1.0e20;
+// the per-atom output of `contacts`: touching flag, force (3), torque (3), contact radius
+static constexpr int NCOLS = 8;
+
+/* fix ID group wall/tabor MODEL ARGS [KEYWORDS] wallstyle args [wiggle|shear|contacts ...]
+   fix ID group wall/tabor/region MODEL ARGS [KEYWORDS] regionID [contacts] */
+FixWallTabor::FixWallTabor(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), contact(nullptr), reach_unit(0.0), rmax_seen(0.0), reach_max(0.0), wallstyle(ZPLANE), lo(-BIG), hi(BIG),
+    cylradius(0.0), wiggle(0), wshear(0), axis(0), amplitude(0.0), period(0.0), omega_wiggle(0.0),
+    vshear(0.0), time_origin(0), region(nullptr), nslot(1), ncontact(nullptr), walls(nullptr),
+    history(nullptr), nmax_alloc(0)
+{
+  bool is_region = strcmp(style, "wall/tabor/region") == 0;
+  who = is_region ? "fix wall/tabor/region" : "fix wall/tabor";
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+    error->all(FLERR, "{} requires atom attributes radius, rmass, omega, torque (atom_style sphere)", who);
+
+  TaborCoeff coeff;
+  int iarg;
+  if (is_region) {
+    // the region ID follows the coefficients; `contacts` may follow it
+    int last = narg;
+    if (last > 4 && strcmp(arg[last - 1], "contacts") == 0) {
+      peratom_flag = 1;
+      last--;
+    }
+    if (last < 5) error->all(FLERR, "Illegal {} command: fix ID group {} MODEL ARGS [KEYWORDS] regionID", who, style);
+    iarg = tabor_parse_coeff(lmp, who, last - 1, arg, 3, {}, coeff);
+    idregion = arg[last - 1];
+    region = domain->get_region_by_id(idregion);
+    if (!region) error->all(FLERR, "{}: region {} does not exist", who, idregion);
+    wallstyle = REGION;
+    nslot = region->tmax;
+    if (nslot < 1) error->all(FLERR, "{}: region {} has no surface to touch (tmax {})", who, idregion, nslot);
+    iarg = narg;
+  } else {
+    iarg = tabor_parse_coeff(lmp, who, narg, arg, 3, {"xplane", "yplane", "zplane", "zcylinder"}, coeff);
+    if (iarg >= narg)
+      error->all(FLERR, "{}: missing the wallstyle (xplane|yplane|zplane lo hi, or zcylinder radius)", who);
+    std::string ws = arg[iarg++];
+    auto bound = [&](const char *name, double none) {
+      if (iarg >= narg) error->all(FLERR, "{} {}: missing {}", who, ws, name);
+      if (strcmp(arg[iarg], "NULL") == 0) {
+        iarg++;
+        return none;
+      }
+      return utils::numeric(FLERR, arg[iarg++], false, lmp);
+    };
+    if (ws == "zcylinder") {
+      wallstyle = ZCYLINDER;
+      if (iarg >= narg) error->all(FLERR, "{} zcylinder: missing the radius", who);
+      cylradius = utils::numeric(FLERR, arg[iarg++], false, lmp);
+      if (!(cylradius > 0.0)) error->all(FLERR, "{}: zcylinder radius {} must be > 0", who, cylradius);
+    } else {
+      wallstyle = ws == "xplane" ? XPLANE : ws == "yplane" ? YPLANE : ZPLANE;
+      lo = bound("lo", -BIG);
+      hi = bound("hi", BIG);
+      if (lo == -BIG && hi == BIG) error->all(FLERR, "{} {}: lo and hi cannot both be NULL", who, ws);
+      if (!(lo < hi)) error->all(FLERR, "{} {}: lo {} must be below hi {}", who, ws, lo, hi);
+    }
+    auto dim = [&](const char *key) {
+      if (iarg >= narg) error->all(FLERR, "{} {}: missing the dimension (x, y or z)", who, key);
+      std::string d = arg[iarg++];
+      if (d == "x") return 0;
+      if (d == "y") return 1;
+      if (d == "z") return 2;
+      error->all(FLERR, "{} {}: dimension {} is not x, y or z", who, key, d);
+      return -1;
+    };
+    while (iarg < narg) {
+      std::string key = arg[iarg++];
+      if (key == "wiggle") {
+        axis = dim("wiggle");
+        if (iarg + 2 > narg) error->all(FLERR, "{} wiggle: dim amplitude period", who);
+        amplitude = utils::numeric(FLERR, arg[iarg++], false, lmp);
+        period = utils::numeric(FLERR, arg[iarg++], false, lmp);
+        if (!(period > 0.0)) error->all(FLERR, "{} wiggle: period {} must be > 0", who, period);
+        wiggle = 1;
+      } else if (key == "shear") {
+        axis = dim("shear");
+        if (iarg >= narg) error->all(FLERR, "{} shear: dim vshear", who);
+        vshear = utils::numeric(FLERR, arg[iarg++], false, lmp);
+        wshear = 1;
+      } else if (key == "contacts") {
+        peratom_flag = 1;
+      } else {
+        error->all(FLERR, "{}: unknown keyword {} (wiggle, shear, contacts)", who, key);
+      }
+    }
+    const int periodic[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
+    if (wallstyle <= ZPLANE && periodic[wallstyle])
+      error->all(FLERR, "{}: cannot use a wall in a periodic dimension ({})", who, ws);
+    if (wallstyle == ZCYLINDER && (periodic[0] || periodic[1]))
+      error->all(FLERR, "{}: cannot use zcylinder with x or y periodic", who);
+    if (wiggle && wshear) error->all(FLERR, "{}: cannot both wiggle and shear", who);
+    if (wiggle && wallstyle == ZCYLINDER && axis != 2)
+      error->all(FLERR, "{}: a zcylinder wiggles only along z", who);
+    if (wshear && wallstyle <= ZPLANE && axis == wallstyle)
+      error->all(FLERR, "{}: shear along the wall's normal ({}) is not a shear", who, ws);
+    if (wiggle) omega_wiggle = 2.0 * M_PI / period;
+  }
+  (void) iarg;
+
+  int status = tabor_contact_new(&coeff.params, &coeff.friction, &contact);
+  if (status != TABOR_OK) tabor_fail_all(lmp, who, status, "coefficients");
+  TaborLawInfo info;
+  status = tabor_contact_info_at(contact, 1.0, &info);
+  if (status != TABOR_OK) tabor_fail_all(lmp, who, status, "interaction range");
+  reach_unit = info.interaction_range;
+
+  if (peratom_flag) {
+    size_peratom_cols = NCOLS;
+    peratom_freq = 1;
+  }
+  create_attribute = 1;
+  restart_peratom = 1;
+  maxexchange = 1 + nslot * (1 + HLEN) + (peratom_flag ? NCOLS : 0);
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < nmax_alloc; i++) set_arrays(i);
+  time_origin = update->ntimestep;
+}
+
+FixWallTabor::~FixWallTabor()
+{
+  if (copymode) return;
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  tabor_contact_free(contact);
+  memory->destroy(ncontact);
+  memory->sfree(walls);
+  memory->sfree(history);
+  memory->destroy(array_atom);
+}
+
+int FixWallTabor::setmask()
+{
+  return POST_FORCE;
+}
+
+void FixWallTabor::init()
+{
+  if (wallstyle == REGION) {
+    Region *now = domain->get_region_by_id(idregion);
+    if (!now) error->all(FLERR, "{}: region {} does not exist", who, idregion);
+    if (now != region || now->tmax != nslot)
+      error->all(FLERR, "{}: region {} was redefined since the fix was created; unfix and fix again", who,
+                 idregion);
+  }
+}
+
+void FixWallTabor::setup(int vflag)
+{
+  post_force(vflag);
+}
+
+void FixWallTabor::reset_dt() {}
+
+/* the stored history of atom i with wall `wall`, added (zeroed) when absent */
+double *FixWallTabor::find_or_add(int i, int wall)
+{
+  int *w = walls + (bigint) i * nslot;
+  for (int k = 0; k < ncontact[i]; k++)
+    if (w[k] == wall) return history_of(i, k);
+  if (ncontact[i] >= nslot)
+    error->one(FLERR, "{}: atom {} touches more than {} walls at once", who, atom->tag[i], nslot);
+  int k = ncontact[i]++;
+  w[k] = wall;
+  double *h = history_of(i, k);
+  for (int d = 0; d < HLEN; d++) h[d] = 0.0;
+  return h;
+}
+
+void FixWallTabor::forget(int i, int wall)
+{
+  int *w = walls + (bigint) i * nslot;
+  for (int k = 0; k < ncontact[i]; k++)
+    if (w[k] == wall) {
+      int last = --ncontact[i];
+      if (k != last) {
+        w[k] = w[last];
+        memcpy(history_of(i, k), history_of(i, last), sizeof(double) * HLEN);
+      }
+      return;
+    }
+}
+
+/* one contact of atom i with wall `wall`: del is the vector from the wall's
+   nearest point to the particle's centre, vwall the wall's velocity there */
+void FixWallTabor::one_contact(int i, int wall, const double *del, const double *vwall, double **out_rows)
+{
+  double *radius = atom->radius;
+  double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+  double ri = radius[i];
+  // a stored contact is found whatever the gap; a new one only within reach: the
+  // reach at the largest radius met on this rank bounds every atom's (the reach
+  // grows as R^(1/3)), so no cube root per atom and step; the law itself tells
+  // an atom between its own reach and the bound that it has no contact
+  int *w = walls + (bigint) i * nslot;
+  bool stored = false;
+  for (int k = 0; k < ncontact[i]; k++) stored = stored || w[k] == wall;
+  if (!stored) {
+    if (ri > rmax_seen) {
+      rmax_seen = ri;
+      reach_max = reach_unit > 0.0 ? reach_unit * cbrt(ri) : 0.0;
+    }
+    double cut = ri + reach_max;
+    if (rsq >= cut * cut) return;
+  }
+  double r = sqrt(rsq);
+  if (r == 0.0) error->one(FLERR, "{}: the centre of atom {} lies on the wall", who, atom->tag[i]);
+  double rinv = 1.0 / r;
+  double **v = atom->v;
+  double **omega = atom->omega;
+  TaborContactState s;
+  for (int k = 0; k < 3; k++) {
+    s.normal[k] = del[k] * rinv;
+    s.relative_velocity[k] = v[i][k] - vwall[k];
+    s.angular_velocity_i[k] = omega[i][k];
+    s.angular_velocity_j[k] = 0.0;
+  }
+  s.overlap = ri - r;
+  s.radius_i = ri;
+  s.radius_j = INFINITY;    // a flat wall: R* = R_i, torque arm R_i
+  s.time_step = update->dt;
+  s.effective_mass = atom->rmass[i];
+  s.update_history = update->setupflag ? 0 : 1;
+  // the stored doubles are the TaborContactHistory itself (16 doubles, repr(C)):
+  // advanced in place (tabor_contact_step leaves it unchanged on error)
+  static_assert(sizeof(TaborContactHistory) == HLEN * sizeof(double), "history layout");
+  double *h = find_or_add(i, wall);
+  TaborContactHistory &hist = *reinterpret_cast<TaborContactHistory *>(h);
+  TaborContactForces out;
+  int status = tabor_contact_step(contact, &s, &hist, &out);
+  if (status != TABOR_OK) {
+    char buf[512];
+    tabor_last_error(buf, sizeof(buf));
+    error->one(FLERR, "{}: tabor_contact_step (status {}) for atom {}: {}", who, status, atom->tag[i], buf);
+  }
+  if (hist.contact == 0.0) {
+    forget(i, wall);
+    return;
+  }
+  double **f = atom->f;
+  double **torque = atom->torque;
+  for (int k = 0; k < 3; k++) {
+    f[i][k] += out.force[k];
+    torque[i][k] += out.torque_i[k];
+  }
+  if (out_rows) {
+    double *row = out_rows[i];
+    row[0] = 1.0;
+    for (int k = 0; k < 3; k++) {
+      row[1 + k] += out.force[k];
+      row[4 + k] += out.torque_i[k];
+    }
+    row[7] = MAX(row[7], out.contact_radius);
+  }
+}
+
+void FixWallTabor::post_force(int /*vflag*/)
+{
+  double **x = atom->x;
+  int *mask = atom->mask;
+  int nlocal = atom->nlocal;
+  if (peratom_flag)
+    for (int i = 0; i < nlocal; i++)
+      for (int m = 0; m < NCOLS; m++) array_atom[i][m] = 0.0;
+  double **rows = peratom_flag ? array_atom : nullptr;
+
+  if (wallstyle == REGION) {
+    int dynamic = region->dynamic_check();
+    if (dynamic) {
+      region->prematch();
+      region->set_velocity();
+    }
+    double *radius = atom->radius;
+    for (int i = 0; i < nlocal; i++) {
+      if (!(mask[i] & groupbit)) continue;
+      if (!region->match(x[i][0], x[i][1], x[i][2])) {
+        ncontact[i] = 0;
+        continue;
+      }
+      if (radius[i] > rmax_seen) {
+        rmax_seen = radius[i];
+        reach_max = reach_unit > 0.0 ? reach_unit * cbrt(radius[i]) : 0.0;
+      }
+      double cutoff = radius[i] + reach_max;
+      int nc = region->surface(x[i][0], x[i][1], x[i][2], cutoff);
+      if (nc > nslot) error->one(FLERR, "{}: atom {} touches {} surfaces of region {} (at most {})", who,
+                                 atom->tag[i], nc, idregion, nslot);
+      // a contact whose surface is no longer within reach has separated
+      for (int k = ncontact[i] - 1; k >= 0; k--) {
+        int wk = walls[(bigint) i * nslot + k];
+        bool seen = false;
+        for (int c = 0; c < nc; c++) seen = seen || region->contact[c].iwall == wk;
+        if (!seen) forget(i, wk);
+      }
+      for (int c = 0; c < nc; c++) {
+        double del[3] = {region->contact[c].delx, region->contact[c].dely, region->contact[c].delz};
+        double vwall[3] = {0.0, 0.0, 0.0};
+        if (dynamic) region->velocity_contact(vwall, x[i], c);
+        one_contact(i, region->contact[c].iwall, del, vwall, rows);
+      }
+    }
+    return;
+  }
+
+  double wlo = lo, whi = hi;
+  double vwall[3] = {0.0, 0.0, 0.0};
+  if (wiggle) {
+    double phase = omega_wiggle * (update->ntimestep - time_origin) * update->dt;
+    if (wallstyle == axis) {
+      wlo = lo + amplitude - amplitude * cos(phase);
+      whi = hi + amplitude - amplitude * cos(phase);
+    }
+    vwall[axis] = amplitude * omega_wiggle * sin(phase);
+  } else if (wshear) {
+    vwall[axis] = vshear;
+  }
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double del[3] = {0.0, 0.0, 0.0};
+    double vw[3] = {vwall[0], vwall[1], vwall[2]};
+    int wall = 0;
+    if (wallstyle <= ZPLANE) {
+      // the nearer of the two walls (fix wall/gran's rule); wall 0 lo, 1 hi
+      double below = x[i][wallstyle] - wlo, above = whi - x[i][wallstyle];
+      if (below < above) {
+        del[wallstyle] = below;
+      } else {
+        del[wallstyle] = -above;
+        wall = 1;
+      }
+    } else {
+      double rxy = sqrt(x[i][0] * x[i][0] + x[i][1] * x[i][1]);
+      if (rxy == 0.0) {
+        if (ncontact[i]) forget(i, 0);
+        continue;    // on the axis: no nearest point (and far from the wall)
+      }
+      double scale = (rxy - cylradius) / rxy;
+      del[0] = scale * x[i][0];
+      del[1] = scale * x[i][1];
+      if (wshear && axis != 2) {
+        // a cylinder turning about z with surface speed vshear
+        vw[0] = vshear * x[i][1] / rxy;
+        vw[1] = -vshear * x[i][0] / rxy;
+        vw[2] = 0.0;
+      }
+    }
+    // a contact kept with the other wall of a plane pair has separated
+    if (ncontact[i] && walls[(bigint) i * nslot] != wall) ncontact[i] = 0;
+    one_contact(i, wall, del, vw, rows);
+  }
+}
+
+void FixWallTabor::grow_arrays(int nmax)
+{
+  memory->grow(ncontact, nmax, "wall/tabor:ncontact");
+  walls = (int *) memory->srealloc(walls, sizeof(int) * (bigint) nmax * nslot, "wall/tabor:walls");
+  history = (double *) memory->srealloc(history, sizeof(double) * (bigint) nmax * nslot * HLEN,
+                                        "wall/tabor:history");
+  if (peratom_flag) memory->grow(array_atom, nmax, NCOLS, "wall/tabor:array_atom");
+  for (int i = nmax_alloc; i < nmax; i++) set_arrays(i);
+  nmax_alloc = nmax;
+}
+
+void FixWallTabor::copy_arrays(int i, int j, int /*delflag*/)
+{
+  ncontact[j] = ncontact[i];
+  memcpy(walls + (bigint) j * nslot, walls + (bigint) i * nslot, sizeof(int) * ncontact[i]);
+  memcpy(history_of(j, 0), history_of(i, 0), sizeof(double) * HLEN * ncontact[i]);
+  if (peratom_flag)
+    for (int m = 0; m < NCOLS; m++) array_atom[j][m] = array_atom[i][m];
+}
+
+void FixWallTabor::set_arrays(int i)
+{
+  ncontact[i] = 0;
+  if (peratom_flag)
+    for (int m = 0; m < NCOLS; m++) array_atom[i][m] = 0.0;
+}
+
+/* [ncontact, (wall, HLEN doubles) * ncontact, (NCOLS outputs with contacts)] */
+int FixWallTabor::pack_exchange(int i, double *buf)
+{
+  int m = 0;
+  buf[m++] = ncontact[i];
+  for (int k = 0; k < ncontact[i]; k++) {
+    buf[m++] = walls[(bigint) i * nslot + k];
+    const double *h = history_of(i, k);
+    for (int d = 0; d < HLEN; d++) buf[m++] = h[d];
+  }
+  if (peratom_flag)
+    for (int c = 0; c < NCOLS; c++) buf[m++] = array_atom[i][c];
+  return m;
+}
+
+int FixWallTabor::unpack_exchange(int nlocal, double *buf)
+{
+  int m = 0;
+  int n = static_cast<int>(buf[m++]);
+  if (n > nslot) error->one(FLERR, "{}: an atom arrived with {} wall contacts (at most {})", who, n, nslot);
+  ncontact[nlocal] = n;
+  for (int k = 0; k < n; k++) {
+    walls[(bigint) nlocal * nslot + k] = static_cast<int>(buf[m++]);
+    double *h = history_of(nlocal, k);
+    for (int d = 0; d < HLEN; d++) h[d] = buf[m++];
+  }
+  if (peratom_flag)
+    for (int c = 0; c < NCOLS; c++) array_atom[nlocal][c] = buf[m++];
+  return m;
+}
+
+/* restart record per atom: [size, HLEN, ncontact, (wall, HLEN doubles) * ncontact];
+   buf[0] counts every value including itself (LAMMPS's convention); HLEN is
+   written so that a file from a build with a shorter history is read (zeros for
+   the values it lacks, as fix tabor/history does) and one from a longer is refused */
+int FixWallTabor::pack_restart(int i, double *buf)
+{
+  int m = 1;
+  buf[m++] = HLEN;
+  buf[m++] = ncontact[i];
+  for (int k = 0; k < ncontact[i]; k++) {
+    buf[m++] = walls[(bigint) i * nslot + k];
+    const double *h = history_of(i, k);
+    for (int d = 0; d < HLEN; d++) buf[m++] = h[d];
+  }
+  buf[0] = m;
+  return m;
+}
+
+void FixWallTabor::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  const double *buf = &extra[nlocal][m];
+  int size = static_cast<int>(buf[0]);
+  int width = static_cast<int>(buf[1]);
+  int n = static_cast<int>(buf[2]);
+  if (width > HLEN)
+    error->one(FLERR, "{}: the restart file holds {} doubles per wall contact, this build knows {}: it was "
+               "written by a newer tabor", who, width, HLEN);
+  if (n > nslot || size != 3 + n * (1 + width))
+    error->one(FLERR, "{}: a restart record of {} values cannot hold {} wall contacts", who, size, n);
+  ncontact[nlocal] = n;
+  int k0 = 3;
+  for (int k = 0; k < n; k++) {
+    walls[(bigint) nlocal * nslot + k] = static_cast<int>(buf[k0++]);
+    double *h = history_of(nlocal, k);
+    for (int d = 0; d < HLEN; d++) h[d] = d < width ? buf[k0 + d] : 0.0;
+    k0 += width;
+  }
+}
+
+int FixWallTabor::size_restart(int i)
+{
+  return 3 + ncontact[i] * (1 + HLEN);
+}
+
+int FixWallTabor::maxsize_restart()
+{
+  return 3 + nslot * (1 + HLEN);
+}
+
+double FixWallTabor::memory_usage()
+{
+  double bytes = (double) nmax_alloc * (sizeof(int) + nslot * (sizeof(int) + sizeof(double) * HLEN));
+  if (peratom_flag) bytes += (double) nmax_alloc * NCOLS * sizeof(double);
+  return bytes;
+}

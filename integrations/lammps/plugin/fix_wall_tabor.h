@@ -1,0 +1,80 @@
+/* fix wall/tabor and fix wall/tabor/region: tabor's contact laws (the models and
+   keywords of pair_coeff of pair_style tabor, parsed by tabor_parse_coeff) between
+   each particle of the group and a wall, with fix wall/gran's conventions:
+
+     fix ID group wall/tabor MODEL ARGS [KEYWORDS] wallstyle args [keyword value ...]
+       wallstyle: xplane|yplane|zplane lo hi (NULL: no wall there) | zcylinder radius
+       keywords: wiggle dim amplitude period | shear dim vshear | contacts
+     fix ID group wall/tabor/region MODEL ARGS [KEYWORDS] regionID [contacts]
+
+   The wall is a flat half-space: R* = the particle's radius (the contact step is
+   called with radius_j = +inf), E* the effective modulus of particle and wall,
+   m* the particle's mass, torque arm R_i (fix wall/gran's). Every wall contact
+   keeps the full history of tabor_contact_step (normal turning point, tangential,
+   rolling and twisting displacements, micro-slip state): per atom up to `nslot`
+   contacts (1 for a plane pair or a cylinder, the region's maximum number of
+   surfaces touched at once for a region), each tagged with the wall it touches,
+   carried with the atom between MPI ranks and written to restart files. */
+#ifndef TABOR_FIX_WALL_TABOR_H
+#define TABOR_FIX_WALL_TABOR_H
+
+#include "fix.h"
+#include "tabor_ffi.h"
+
+#include <string>
+
+namespace LAMMPS_NS {
+
+class FixWallTabor : public Fix {
+ public:
+  FixWallTabor(class LAMMPS *, int, char **);
+  ~FixWallTabor() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void post_force(int) override;
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  double memory_usage() override;
+  void reset_dt() override;
+
+ private:
+  enum WallStyle { XPLANE = 0, YPLANE = 1, ZPLANE = 2, ZCYLINDER, REGION };
+  std::string who;    // "fix wall/tabor" or "fix wall/tabor/region"
+  TaborContact *contact;
+  double reach_unit;    // the law's interaction range at R* = 1 m (lengths scale as R*^(1/3))
+  double rmax_seen;     // the largest particle radius met on this rank
+  double reach_max;     // the interaction range at rmax_seen
+  int wallstyle;
+  double lo, hi, cylradius;
+  int wiggle, wshear, axis;
+  double amplitude, period, omega_wiggle, vshear;
+  bigint time_origin;
+  std::string idregion;
+  class Region *region;
+
+  // per-atom contacts: ncontact[i] of nslot slots, each the wall's id and the
+  // contact's TABOR_CONTACT_HISTORY_LEN doubles
+  int nslot;
+  int *ncontact;
+  int *walls;          // nmax * nslot
+  double *history;     // nmax * nslot * HLEN
+  int nmax_alloc;
+
+  double *history_of(int i, int k) { return history + ((bigint) i * nslot + k) * TABOR_CONTACT_HISTORY_LEN; }
+  double *find_or_add(int i, int wall);
+  void forget(int i, int wall);
+  void one_contact(int i, int wall, const double *del, const double *vwall, double **contacts_out);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
