@@ -373,8 +373,8 @@ impl ContactLaw {
         out.kind = crate::law::LawKind::MaugisDugdaleRange(h);
         out.per_contact = Some((h, shared_table()));
         out.exact = crate::law::Exact::PerContact;
-        // the reference radius's Λ must lie in the table's domain
-        out.local_at(&out.reference)?;
+        // a contact's Λ is checked against the table's domain when it is met
+        // ([`ContactLaw::prepare_radii`], or its first evaluation)
         Ok(out)
     }
 

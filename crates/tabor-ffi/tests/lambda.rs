@@ -196,19 +196,25 @@ fn the_stress_form_is_the_range_form_and_bad_input_is_refused_by_name() {
             },
             "tabor_parameter",
         ),
-        (
-            // Λ = d_n/h = 1e-7 at this radius: outside the table's domain
-            TaborLawParams {
-                dugdale_range: 1e-2,
-                ..base
-            },
-            "tabor_parameter",
-        ),
     ];
     for (p, name) in cases {
         let e = law_from_params(&p).expect_err("refused").to_string();
         assert!(e.contains(name), "{e} should name {name}");
     }
+    // Λ = d_n/h ≈ 1e-7 at R* = 1 µm with h = 1 cm: outside the table's domain,
+    // refused when the radii are prepared (LAMMPS: at init, on all ranks)
+    let far = ContactLaw::maugis_dugdale_range(E, 1e-6, W, 1e-2).unwrap();
+    let e = far
+        .prepare_radii(1e-6, 1e-6)
+        .expect_err("refused")
+        .to_string();
+    assert!(e.contains("tabor_parameter"), "{e}");
+    let mut out = TaborForce::default();
+    let s = far.scales(1e-6).unwrap();
+    assert!(far
+        .evaluate_scaled(&s, 0.0, 0.0, &mut TaborHistory::default())
+        .map(|f| out = f)
+        .is_err());
 }
 
 #[test]

@@ -13,7 +13,9 @@
 #include "utils.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <string>
 
 using namespace LAMMPS_NS;
@@ -140,7 +142,13 @@ void PairTabor::coeff(int narg, char **arg)
   }
   p.effective_modulus = number("E*");
   if (p.model != TABOR_MODEL_HERTZ) p.work_of_adhesion = number("w");
-  if (p.model == TABOR_MODEL_MAUGIS_DUGDALE) p.tabor_parameter = number("Lambda");
+  // maugis E* w Lambda, or maugis E* w range h | stress s0 (a Lambda per contact)
+  bool have_lambda = false;
+  if (p.model == TABOR_MODEL_MAUGIS_DUGDALE && !(iarg < narg && (strcmp(arg[iarg], "range") == 0 ||
+                                                                 strcmp(arg[iarg], "stress") == 0))) {
+    p.tabor_parameter = number("Lambda (or range h | stress s0)");
+    have_lambda = true;
+  }
   double poisson = 0.0;
   bool have_poisson = false;
   bool stiffness_null = false;
@@ -212,8 +220,27 @@ void PairTabor::coeff(int narg, char **arg)
       } else {
         error->all(FLERR, "pair tabor: unknown twisting model {} (marshall, sds)", t);
       }
+    } else if (key == "range" || key == "stress") {
+      // ---- per-contact Lambda (maugis only): the material constant h (m) or s0 (Pa);
+      // each contact's Lambda = d_n(R*)/h, h = w/s0, follows from its own R* (tabor-ffi)
+      if (p.model != TABOR_MODEL_MAUGIS_DUGDALE)
+        error->all(FLERR, "pair tabor: keyword {} belongs to maugis, not {}", key, model);
+      if (have_lambda)
+        error->all(FLERR, "pair tabor maugis: {} and a fixed Lambda {} exclude each other (give one)", key,
+                   p.tabor_parameter);
+      if (p.dugdale_range != 0.0 || p.cohesive_stress != 0.0)
+        error->all(FLERR, "pair tabor maugis: give one of range and stress (s0 h = w), not both or twice");
+      std::string text = word(key == "range" ? "range h (m)" : "stress s0 (Pa)");
+      char *end = nullptr;
+      double value = strtod(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0' || !std::isfinite(value) || value <= 0.0)
+        error->all(FLERR, "pair tabor maugis: {} {} must be a finite number > 0 ({})", key, text,
+                   key == "range" ? "m" : "Pa");
+      (key == "range" ? p.dugdale_range : p.cohesive_stress) = value;
+      // ---- end per-contact Lambda
     } else {
-      error->all(FLERR, "pair tabor: unknown keyword {} (poisson, damping, tangential, rolling, twisting)", key);
+      error->all(FLERR, "pair tabor: unknown keyword {} (poisson, damping, tangential, rolling, twisting, "
+                 "range, stress)", key);
     }
   }
   if (stiffness_null) {
@@ -283,6 +310,11 @@ void PairTabor::init_style()
   std::vector<double> local(n + 1, 0.0);
   for (int i = 0; i < atom->nlocal; i++) local[atom->type[i]] = MAX(local[atom->type[i]], atom->radius[i]);
   MPI_Allreduce(local.data(), maxrad, n + 1, MPI_DOUBLE, MPI_MAX, world);
+  // and the smallest (the per-contact Lambda table covers [R*min, R*max])
+  std::vector<double> small(n + 1, std::numeric_limits<double>::infinity());
+  for (int i = 0; i < atom->nlocal; i++) small[atom->type[i]] = MIN(small[atom->type[i]], atom->radius[i]);
+  minrad.assign(n + 1, std::numeric_limits<double>::infinity());
+  MPI_Allreduce(small.data(), minrad.data(), n + 1, MPI_DOUBLE, MPI_MIN, world);
 }
 
 double PairTabor::init_one(int i, int j)
@@ -292,11 +324,12 @@ double PairTabor::init_one(int i, int j)
   double ri = maxrad[i], rj = maxrad[j];
   c.reach = 0.0;
   if (ri <= 0.0 || rj <= 0.0) return 0.0;
-  // the largest effective radius has the largest interaction range (∝ R*^(1/3))
-  TaborLawInfo info;
-  int status = tabor_contact_info_at(c.contact, ri * rj / (ri + rj), &info);
+  // the largest interaction range over the pair's effective radii (at the largest
+  // for a fixed Lambda, ∝ R*^(1/3)); a per-contact Lambda law builds its table
+  // for [R*min, R*max] now, on every rank alike (contacts outside still work)
+  double si = MIN(minrad[i], ri), sj = MIN(minrad[j], rj);
+  int status = tabor_contact_prepare(c.contact, si * sj / (si + sj), ri * rj / (ri + rj), &c.reach);
   if (status != TABOR_OK) fail_all(status, "init");
-  c.reach = info.interaction_range;
   if (neighbor->skin < c.reach)
     error->all(FLERR, "pair tabor: neighbor skin {} is below the interaction range {} of types {} {}",
                neighbor->skin, c.reach, i, j);
