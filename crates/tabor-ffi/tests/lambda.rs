@@ -19,14 +19,17 @@ fn q() -> f64 {
     (LAMBDA_2 / LAMBDA_1).ln() / f64::from(TABOR_LAMBDA_CASE_2_INTERVALS)
 }
 
-/// The stated accuracy of the table (module docs, pair_tabor.rst): |ΔF̂| ≤ 1e-6
-/// F_n (relative where |F| > F_n), |Δâ| ≤ 1e-6 a_c at the same distance above the snap-off, |ΔF/F| ≤ 1e-7
-/// beyond the adhesive part, |Δd̂₀| ≤ 1e-7 d_n, |ΔF̂_pull-off| ≤ 1e-8 F_n; in case 3
-/// within 2 % of Λ2 (where the snap-off moves from the no-contact to the contact
-/// branch and d̂₀(Λ) is not smooth) |ΔF̂| ≤ 5e-5, |Δâ| ≤ 1e-4, |Δd̂₀| ≤ 5e-6.
+/// The stated accuracy of the table (module docs, pair_tabor.rst), measured by
+/// `examples/lambda_table.rs` midway between every pair of nodes: |ΔF̂| ≤ 1e-6 F_n
+/// (relative where |F| > F_n), |Δâ| ≤ 1e-6 a_c at the same distance above the
+/// snap-off, |ΔF/F| ≤ 1e-7 beyond the adhesive part, |Δd̂₀| ≤ 1e-7 d_n,
+/// |ΔF̂_pull-off| ≤ 1e-8 F_n; within 0.58 < Λ < 0.75 around Λ2 ≈ 0.6435 (where the
+/// snap-off moves from the no-contact to the contact branch and the branch is not
+/// a smooth function of Λ) |ΔF̂| ≤ 5e-5, |Δâ| ≤ 5e-5, |Δd̂₀| ≤ 5e-6 (measured
+/// at most 2.6e-5, 2.6e-5, 1.8e-6, just above Λ2).
 fn stated(lambda: f64) -> [f64; 5] {
-    if lambda > LAMBDA_2 && lambda < 1.02 * LAMBDA_2 {
-        [5e-5, 1e-4, 1e-7, 5e-6, 1e-8]
+    if lambda > 0.58 && lambda < 0.75 {
+        [5e-5, 5e-5, 1e-7, 5e-6, 1e-8]
     } else {
         [1e-6, 1e-6, 1e-7, 1e-7, 1e-8]
     }
@@ -37,7 +40,7 @@ fn the_table_over_lambda_matches_the_exact_law_between_the_nodes() {
     let t = shared_table();
     // midway between nodes (the extremum of the interpolation error) in each case,
     // and on either side of Λ1 and Λ2
-    let mut lambdas = vec![0.05, 0.2, 0.3, 0.5, 0.55, 0.6, 0.8, 1.0, 1.3, 3.0, 20.0];
+    let mut lambdas = vec![0.05, 0.2, 0.3, 0.5, 0.55, 0.6, 0.7, 0.8, 1.0, 1.3, 3.0, 20.0];
     lambdas.extend([
         LAMBDA_1 * 0.999,
         LAMBDA_1 * 1.001,
