@@ -27,7 +27,7 @@
 //! ([`LambdaTable::measure_error`]; tests/lambda.rs, examples/lambda_table.rs):
 //! midway between nodes |ΔF̂| ≤ 1e-6 F_n (relative where |F| > F_n), |Δâ| ≤ 1e-6
 //! a_c, |Δd̂₀| ≤ 1e-7 d_n, except for 0.58 < Λ < 0.75 around Λ2, where the branch
-//! is not a smooth function of Λ: there |ΔF̂|, |Δâ| ≤ 3e-5 and |Δd̂₀| ≤ 2e-6.
+//! is not a smooth function of Λ: there |ΔF̂| ≤ 3e-5, |Δâ| ≤ 7e-5, |Δd̂₀| ≤ 2e-6.
 //! A node takes 165 kB and about 5 ms to build (release); a factor 10 in R* (2.15
 //! in Λ) needs 47 nodes, 7.7 MB, about 0.4 s, once per process (every pair of
 //! types shares them).
