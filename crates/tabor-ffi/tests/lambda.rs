@@ -40,7 +40,9 @@ fn the_table_over_lambda_matches_the_exact_law_between_the_nodes() {
     let t = shared_table();
     // midway between nodes (the extremum of the interpolation error) in each case,
     // and on either side of Λ1 and Λ2
-    let mut lambdas = vec![0.05, 0.2, 0.3, 0.5, 0.55, 0.6, 0.7, 0.8, 1.0, 1.3, 3.0, 20.0];
+    let mut lambdas = vec![
+        0.05, 0.2, 0.3, 0.5, 0.55, 0.6, 0.7, 0.8, 1.0, 1.3, 3.0, 20.0,
+    ];
     lambdas.extend([
         LAMBDA_1 * 0.999,
         LAMBDA_1 * 1.001,

@@ -48,8 +48,8 @@ pub use law::{
 };
 pub use parse::{parse_line, substitute_variables, LineError, LineKind, ParsedLine};
 pub use plugin::{
-    export_plugin, plugin_load_command, PluginExport, PluginModel, PluginSpeed,
-    PLUGIN_RESTITUTION_ERROR, PLUGIN_TIME_STEP_FRACTION,
+    export_plugin, export_plugin_with, plugin_load_command, PluginExport, PluginModel,
+    PluginOptions, PluginSpeed, PLUGIN_RESTITUTION_ERROR, PLUGIN_TIME_STEP_FRACTION,
 };
 pub use report::{
     time_step_error, Bodies, Claim, Export, ExportError, Geometry, Limit, Parameter, RangeEnd,

@@ -253,3 +253,47 @@ fn refusals() {
         }
     }
 }
+
+#[test]
+fn per_contact_lambda_writes_the_range_form() {
+    use tabor_lammps::{export_plugin_with, PluginOptions};
+    let on = PluginOptions {
+        per_contact_lambda: true,
+    };
+    // the scene gives the range 0.3 nm: written back to 10 digits
+    let s = scene("examples/scenes/silica_maugis.toml");
+    let x = export_plugin_with(&s, SO, None, on).expect("export");
+    let f = x.fragment();
+    let line = f.lines().find(|l| l.starts_with("pair_coeff")).unwrap();
+    let words: Vec<&str> = line.split_whitespace().collect();
+    assert_eq!(words[3..5].len(), 2);
+    assert_eq!(words[6], "range", "{line}");
+    let h: f64 = words[7].parse().unwrap();
+    assert!((h / 0.3e-9 - 1.0).abs() < 1e-10, "{h}");
+    assert_eq!(x.dugdale_range, Some(h));
+    // by hand: Λ = d_n/h, d_n = (9π w R*²/(8E*))^(2/3)/(3R*) at R* = 0.5 µm
+    let e_star = 54e9 / (2.0 * (1.0 - 0.17f64 * 0.17));
+    let r = 0.5e-6;
+    let d_n = (9.0 * PI * 0.05 * r * r / (8.0 * e_star)).powf(2.0 / 3.0) / (3.0 * r);
+    assert!((x.tabor_parameter.unwrap() / (d_n / 0.3e-9) - 1.0).abs() < 1e-12);
+    assert!(f.contains("held fixed: each contact's Lambda = d_n(R*)/h"));
+    // a scene given by Λ: h = d_n/Λ, so the scene's own pair gets exactly its Λ
+    let s2 = scene("integrations/lammps/scenes/maugis_case2.toml");
+    let x2 = export_plugin_with(&s2, SO, None, on).expect("export");
+    let law = ContactLaw::maugis_dugdale_range(e_star, r, 0.05, x2.dugdale_range.unwrap()).unwrap();
+    let l = law.tabor_parameter_at(&law.scales(r).unwrap()).unwrap();
+    assert!((l / 0.55 - 1.0).abs() < 1e-12, "{l}");
+    // the fixed form is unchanged without the option
+    let plain = export_plugin(&s, SO, None).unwrap();
+    assert_eq!(plain.dugdale_range, None);
+    let plain_coeff = plain.fragment();
+    let plain_coeff = plain_coeff
+        .lines()
+        .find(|l| l.starts_with("pair_coeff"))
+        .unwrap();
+    assert_eq!(plain_coeff.split_whitespace().count(), 7, "{plain_coeff}");
+    assert!(plain.fragment().contains("--per-contact-lambda writes"));
+    // not Maugis-Dugdale: refused by name
+    let e = export_plugin_with(&scene("examples/scenes/silica.toml"), SO, None, on).unwrap_err();
+    assert!(e.to_string().contains("per-contact"), "{e}");
+}

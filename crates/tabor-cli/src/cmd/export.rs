@@ -5,7 +5,7 @@
 use crate::output::{json_text, print_json, stdout, Outcome};
 use std::io::Write;
 use std::path::PathBuf;
-use tabor::lammps::{check, export, export_plugin, Check};
+use tabor::lammps::{check, export, export_plugin_with, Check, PluginOptions};
 use tabor::scene::Scene;
 
 /// Arguments of `tabor export`.
@@ -24,7 +24,7 @@ enum Target {
 /// Arguments of `tabor export lammps`.
 #[derive(clap::Args)]
 #[command(
-    after_help = "Examples:\n  tabor export lammps examples/scenes/silica.toml --out silica.lmp\n  tabor export lammps examples/scenes/silica_maugis.toml --plugin target/lammps-plugin/taborplugin.so\n  tabor export lammps examples/scenes/silica.toml --check 'pair_coeff * * hertz/material 54e9 0.5 0.17 damping tsuji' --speed 0.2"
+    after_help = "Examples:\n  tabor export lammps examples/scenes/silica.toml --out silica.lmp\n  tabor export lammps examples/scenes/silica_maugis.toml --plugin target/lammps-plugin/taborplugin.so\n  tabor export lammps examples/scenes/silica_maugis.toml --plugin target/lammps-plugin/taborplugin.so --per-contact-lambda\n  tabor export lammps examples/scenes/silica.toml --check 'pair_coeff * * hertz/material 54e9 0.5 0.17 damping tsuji' --speed 0.2"
 )]
 pub struct LammpsArgs {
     /// The scene file (.toml or .json)
@@ -47,6 +47,11 @@ pub struct LammpsArgs {
     /// exists): tabor's own force law
     #[arg(long, value_name = "PATH")]
     plugin: Option<PathBuf>,
+    /// With --plugin, a Maugis-Dugdale scene: write `maugis E* w range h` (the
+    /// Dugdale range held fixed, each contact's Tabor parameter from its own size,
+    /// Lambda = d_n(R*)/h) instead of one Lambda for every size
+    #[arg(long, requires = "plugin")]
+    per_contact_lambda: bool,
     /// A LAMMPS variable used in the --check line ($x, ${name}), as NAME=VALUE
     /// (repeatable)
     #[arg(long = "var", value_name = "NAME=VALUE", value_parser = parse_var, requires = "check")]
@@ -132,7 +137,10 @@ pub fn run(args: &Args) -> Outcome {
         // an existing .so is written as an absolute path, so that the fragment
         // loads it from any working directory
         let plugin = std::fs::canonicalize(plugin).unwrap_or_else(|_| plugin.clone());
-        let x = export_plugin(&scene, &plugin.to_string_lossy(), a.speed)
+        let options = PluginOptions {
+            per_contact_lambda: a.per_contact_lambda,
+        };
+        let x = export_plugin_with(&scene, &plugin.to_string_lossy(), a.speed, options)
             .map_err(|e| format!("{}: {e}", a.scene.display()))?;
         // also in the fragment (# WARNING) and the JSON; stderr so it is seen
         for w in &x.warnings {
