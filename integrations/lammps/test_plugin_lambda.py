@@ -95,14 +95,14 @@ def contact_time(r1, r2, speed):
     return 2.87 * (m_star ** 2 / (r_star * E_STAR ** 2 * speed)) ** 0.2
 
 
-def run(coeff, r1, r2, speed, steps, max_contact_times=20):
+def run(coeff, r1, r2, speed, steps, max_contact_times=20, h=H):
     """One central collision of spheres r1, r2 (centre-of-mass frame) under
     `coeff`, at dt = t_c/steps; the spheres start a whole number of steps outside
     the interaction range (the larger of h and the snap-off gap, tabor_ffi), so the
     contact forms at the jump-in as from afar. Returns the restitution (0: stuck
     after max_contact_times contact times)."""
     r_star = r1 * r2 / (r1 + r2)
-    reach = law_info(FFI, "maugis", E_STAR, r_star, W, depth_scale(r_star) / H).interaction_range
+    reach = law_info(FFI, "maugis", E_STAR, r_star, W, depth_scale(r_star) / h).interaction_range
     tc = contact_time(r1, r2, speed)
     dt = tc / steps
     gap0 = reach + 20 * speed * dt
@@ -249,8 +249,39 @@ def stress_is_range():
     return [] if abs(a - b) <= 1e-12 else [f"stress form {b} vs range form {a}"]
 
 
+def exported():
+    """The pair_coeff line of `tabor export lammps examples/scenes/silica_maugis.toml
+    --plugin PATH --per-contact-lambda` (range 0.3 nm) run in LAMMPS for the scene's
+    1 um spheres and for spheres 10x larger (Lambda 0.30 and 0.65), against
+    `tabor impact` of the scene with those radii, same tolerance as above."""
+    failures = []
+    root = os.path.dirname(os.path.dirname(HERE))
+    path = os.path.join(root, "examples/scenes/silica_maugis.toml")
+    frag = subprocess.run([TABOR, "export", "lammps", path, "--plugin", PLUGIN, "--per-contact-lambda"],
+                          check=True, capture_output=True, text=True).stdout
+    coeff = next(line for line in frag.splitlines() if line.startswith("pair_coeff"))
+    h = float(coeff.split()[-1])
+    print(f"exported: {coeff}")
+    for r in (1e-6, 1e-5):
+        spath = scene(r, r, f"range = {h!r}")
+        try:
+            v = 3.0 * sticking_speed(spath)
+            o = tabor(spath, v)
+        finally:
+            os.unlink(spath)
+        fine = run(coeff, r, r, v, 10000, h=h)
+        coarse = run(coeff, r, r, v, 5000, h=h)
+        tol = 2.0 * abs(coarse - fine) + FLOOR
+        print(f"  R {r:.1e} Lambda {o['tabor_parameter']:.4f} v {v:.4f}: e tabor {o['restitution']:.6f} "
+              f"LAMMPS {fine:.6f} |diff| {abs(fine - o['restitution']):.2e} tol {tol:.2e}")
+        if abs(fine - o["restitution"]) > tol:
+            failures.append(f"exported fragment at R {r}: e {fine} vs tabor {o['restitution']}")
+    return failures
+
+
 def main():
     failures = collisions()
+    failures += exported()
     print("bad input:")
     failures += bad_input()
     failures += stress_is_range()
