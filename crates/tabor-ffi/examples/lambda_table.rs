@@ -24,7 +24,7 @@ fn main() {
     let lam = |r: f64| law.tabor_parameter_at(&law.scales(r).unwrap()).unwrap();
     let (l0, l1) = (lam(r_min), lam(r_max));
     let t = Instant::now();
-    let fixed = ContactLaw::maugis_dugdale(e, r_min, w, l0).unwrap();
+    let _fixed = ContactLaw::maugis_dugdale(e, r_min, w, l0).unwrap();
     let one = t.elapsed();
     let t = Instant::now();
     let built = law.prepare_radii(r_min, r_max).unwrap();
@@ -39,7 +39,40 @@ fn main() {
         all.as_secs_f64() / one.as_secs_f64(),
         one.as_secs_f64() * 1e3
     );
-    let _ = fixed;
+    // per-contact evaluation cost against the fixed-Λ law (same run, same
+    // contacts: a loading-unloading sweep at 64 radii across the cloud)
+    let radii: Vec<f64> = (0..64)
+        .map(|i| r_min * ratio.powf(f64::from(i) / 63.0))
+        .collect();
+    let fixed_laws: Vec<ContactLaw> = radii
+        .iter()
+        .map(|&r| ContactLaw::maugis_dugdale(e, r, w, lam(r)).unwrap())
+        .collect();
+    let sweep = |per: bool| {
+        let t = Instant::now();
+        let mut acc = 0.0;
+        for _ in 0..20 {
+            for (k, &r) in radii.iter().enumerate() {
+                let l = if per { &law } else { &fixed_laws[k] };
+                let s = l.scales(r).unwrap();
+                let mut h = tabor_ffi::TaborHistory::default();
+                for i in 0..2000 {
+                    let x = f64::from(if i < 1000 { i } else { 2000 - i }) / 1000.0;
+                    let d = -1.2e-10 + x * 3e-9;
+                    acc += l.evaluate_scaled(&s, d, 0.0, &mut h).unwrap().force;
+                }
+            }
+        }
+        (t.elapsed().as_secs_f64(), acc)
+    };
+    let (t_fixed, a) = sweep(false);
+    let (t_per, b) = sweep(true);
+    println!(
+        "evaluation: per-contact {:.1} ns, fixed Lambda {:.1} ns per call: ratio {:.2} (checksums {a:.6e} {b:.6e})",
+        t_per / 2.56e6 * 1e9,
+        t_fixed / 2.56e6 * 1e9,
+        t_per / t_fixed
+    );
     let q = (LAMBDA_2 / LAMBDA_1).ln() / f64::from(TABOR_LAMBDA_CASE_2_INTERVALS);
     println!(
         "Lambda (midway between nodes): |dF|/F_n, |da|/a_c, |dF/F| Hertz, |d d0|/d_n, |dF_po|/F_n"
