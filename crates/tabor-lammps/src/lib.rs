@@ -23,6 +23,9 @@
 //! (the pipeline); `law`, `impact`; `parse`, `check`; `plugin`.
 //! Derivations and sources: `crates/tabor-lammps/README.md`; the claims are
 //! verified by running LAMMPS in `integrations/lammps`.
+//!
+//! - [`check_plugin()`]: `--check` of a `pair_style tabor` line (`maugis … range h`
+//!   too): the restitution the plugin's own law gives the scene's bodies.
 
 mod calibrate;
 mod check;
@@ -33,6 +36,7 @@ mod impact;
 mod law;
 mod parse;
 mod plugin;
+mod plugin_check;
 mod report;
 mod verify;
 
@@ -51,6 +55,7 @@ pub use plugin::{
     export_plugin, export_plugin_with, plugin_load_command, PluginExport, PluginModel,
     PluginOptions, PluginSpeed, PLUGIN_RESTITUTION_ERROR, PLUGIN_TIME_STEP_FRACTION,
 };
+pub use plugin_check::{check_plugin, is_plugin_line, PluginCheck, PluginCheckPoint};
 pub use report::{
     time_step_error, Bodies, Claim, Export, ExportError, Geometry, Limit, Parameter, RangeEnd,
     Scope, SpeedComparison, CALIBRATED_RELATIVE_ERROR, LOSS_STEP_ERROR, REPRODUCES,

@@ -297,3 +297,60 @@ fn per_contact_lambda_writes_the_range_form() {
     let e = export_plugin_with(&scene("examples/scenes/silica.toml"), SO, None, on).unwrap_err();
     assert!(e.to_string().contains("per-contact"), "{e}");
 }
+
+#[test]
+fn check_reads_the_exported_range_form() {
+    use tabor_lammps::{check_plugin, export_plugin_with, is_plugin_line, PluginOptions};
+    let s = scene("examples/scenes/silica_maugis.toml");
+    let on = PluginOptions {
+        per_contact_lambda: true,
+    };
+    let frag = export_plugin_with(&s, SO, None, on).unwrap().fragment();
+    let line = frag.lines().find(|l| l.starts_with("pair_coeff")).unwrap();
+    assert!(is_plugin_line(line));
+    assert!(!is_plugin_line(
+        "pair_coeff * * hertz/material 54e9 0.5 0.17"
+    ));
+    let c = check_plugin(&s, line, None, &[]).unwrap();
+    // the scene's own Λ (range 0.3 nm at R* = 0.5 µm), by hand as above
+    let e_star = 54e9 / (2.0 * (1.0 - 0.17f64 * 0.17));
+    let r = 0.5e-6;
+    let d_n = (9.0 * PI * 0.05 * r * r / (8.0 * e_star)).powf(2.0 / 3.0) / (3.0 * r);
+    assert!((c.tabor_parameter.unwrap() / (d_n / 0.3e-9) - 1.0).abs() < 1e-9);
+    // the plugin's law integrated at t_c/20000 against tabor's restitution: the
+    // bound the plugin is verified to in LAMMPS
+    assert!(c.decade.len() >= 5);
+    for p in &c.decade {
+        let t = p.tabor.unwrap();
+        assert!((p.lammps - t).abs() <= PLUGIN_RESTITUTION_ERROR, "{p:?}");
+    }
+    // stress s0 = w/h: the same law; a fixed Λ at the contact's Λ: the same within
+    // the table over Λ's error (a restitution moves far less than 1e-5 here)
+    let stress = line.replace(
+        "range 3.0000000000e-10",
+        &format!("stress {:e}", 0.05 / 0.3e-9),
+    );
+    let c2 = check_plugin(&s, &stress, None, &[]).unwrap();
+    assert!((c2.at_speed.lammps - c.at_speed.lammps).abs() < 1e-12);
+    let fixed = line.replace(
+        "range 3.0000000000e-10",
+        &format!("{:e}", c.tabor_parameter.unwrap()),
+    );
+    let c3 = check_plugin(&s, &fixed, None, &[]).unwrap();
+    assert_eq!(c3.dugdale_range, None);
+    assert!((c3.at_speed.lammps - c.at_speed.lammps).abs() < 1e-5);
+    // bad input named
+    for (bad, name) in [
+        (
+            line.replace("range 3.0000000000e-10", "range -1e-9"),
+            "range",
+        ),
+        (
+            line.replace("range 3.0000000000e-10", "0.3 range 3e-10"),
+            "tabor_parameter",
+        ),
+    ] {
+        let e = check_plugin(&s, &bad, None, &[]).unwrap_err().to_string();
+        assert!(e.contains(name), "{e}");
+    }
+}

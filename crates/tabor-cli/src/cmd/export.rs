@@ -5,7 +5,10 @@
 use crate::output::{json_text, print_json, stdout, Outcome};
 use std::io::Write;
 use std::path::PathBuf;
-use tabor::lammps::{check, export, export_plugin_with, Check, PluginOptions};
+use tabor::lammps::{
+    check, check_plugin, export, export_plugin_with, is_plugin_line, Check, PluginCheck,
+    PluginOptions,
+};
 use tabor::scene::Scene;
 
 /// Arguments of `tabor export`.
@@ -39,7 +42,9 @@ pub struct LammpsArgs {
     #[arg(long)]
     json: bool,
     /// Predict the restitution LAMMPS produces for this pair_coeff or
-    /// "fix ... wall/gran granular ..." line, with the scene's bodies
+    /// "fix ... wall/gran granular ..." line, with the scene's bodies; a
+    /// pair_style tabor line (maugis ... [range h | stress s0], jkr/fixed-grip,
+    /// jkr/load-controlled) is run through the plugin's own force law
     #[arg(long, value_name = "LINE", conflicts_with = "plugin")]
     check: Option<String>,
     /// Write the fragment for pair_style tabor (the plugin built by
@@ -121,10 +126,58 @@ fn check_report(c: &Check) -> String {
     s
 }
 
+fn plugin_check_report(c: &PluginCheck) -> String {
+    let mut s = String::new();
+    s.push_str(&format!("line                {}\n", c.line));
+    s.push_str(&format!(
+        "model               pair_style tabor {}{}\n",
+        c.model.keyword(),
+        c.dugdale_range.map_or(String::new(), |h| format!(
+            " at the fixed range h = {h:.6e} m (each contact's Lambda = d_n(R*)/h)"
+        ))
+    ));
+    if let Some(l) = c.tabor_parameter {
+        s.push_str(&format!(
+            "Lambda              {l:.6e} for the scene's contact\n"
+        ));
+    }
+    s.push_str(&format!(
+        "bodies              R* = {:.6e} m, m* = {:.6e} kg\n",
+        c.effective_radius, c.effective_mass
+    ));
+    let p = &c.at_speed;
+    s.push_str(&format!(
+        "achieved            {:.6} at {:.4e} m/s (LAMMPS at timestep <= contact time/20000: +- {:.0e})\n",
+        p.lammps, p.speed, c.time_step_error
+    ));
+    s.push_str("speed (m/s)   LAMMPS     tabor\n");
+    for p in &c.decade {
+        s.push_str(&format!(
+            "{:.4e}    {:.6}   {}\n",
+            p.speed,
+            p.lammps,
+            p.tabor.map_or("-".into(), |t| format!("{t:.6}"))
+        ));
+    }
+    for n in &c.notes {
+        s.push_str(&format!("note: {n}\n"));
+    }
+    s
+}
+
 /// Runs `tabor export`.
 pub fn run(args: &Args) -> Outcome {
     let Target::Lammps(a) = &args.target;
     let scene = Scene::from_path(&a.scene).map_err(|e| format!("{}: {e}", a.scene.display()))?;
+    if let Some(line) = a.check.as_deref().filter(|l| is_plugin_line(l)) {
+        // a pair_style tabor line: the plugin's own law for the scene's bodies
+        let c = check_plugin(&scene, line, a.speed, &a.vars)
+            .map_err(|e| format!("{}: {e}", a.scene.display()))?;
+        if a.json {
+            return print_json(&c);
+        }
+        return emit(&plugin_check_report(&c));
+    }
     if let Some(line) = &a.check {
         let c = check(&scene, line, a.speed, &a.vars)
             .map_err(|e| format!("{}: {e}", a.scene.display()))?;
