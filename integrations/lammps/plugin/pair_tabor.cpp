@@ -268,11 +268,13 @@ void PairTabor::init_style()
 
   // the history fix: recreated after read_restart with the same ID and style,
   // LAMMPS hands it the histories stored in the restart file
+  // the doubles per contact: the micro-slip bed only where a pair coefficient
+  // uses mindlin_deresiewicz (tabor_contact_history_len)
+  history_width = TABOR_CONTACT_HISTORY_BASE_LEN;
+  for (auto &c : coeffs)
+    if (c.set && c.contact) history_width = MAX(history_width, (int) tabor_contact_history_len(c.contact));
   fix_history = dynamic_cast<FixTaborHistory *>(modify->get_fix_by_id(HISTORY_ID));
-  if (fix_history && fix_history->width() != history_width) {
-    modify->delete_fix(HISTORY_ID);
-    fix_history = nullptr;
-  }
+  if (fix_history) fix_history->set_width(history_width);
   if (!fix_history)
     fix_history = dynamic_cast<FixTaborHistory *>(
         modify->add_fix(fmt::format("{} all tabor/history {}", HISTORY_ID, history_width)));
@@ -341,7 +343,7 @@ int PairTabor::evaluate(int i, int j, int update_history, TaborContactForces &ou
   s.effective_mass = rmass[a] * rmass[b] / (rmass[a] + rmass[b]);
   s.update_history = update_history > 0 ? 1 : 0;
   TaborContactHistory h{};
-  if (stored) std::memcpy(&h, stored, sizeof(h));
+  if (stored) std::memcpy(&h, stored, sizeof(double) * history_width);
   int status = tabor_contact_step(c.contact, &s, &h, &out);
   if (status != TABOR_OK) fail_one(status, "tabor_contact_step");
   if (update_history >= 0 && (stored || h.contact != 0.0)) {
