@@ -252,7 +252,7 @@ pub fn advance(
 pub fn stored_energy(bed: &[f64], k_line: f64, a: f64) -> f64 {
     let nodes = (bed.len() - HEAD) / 2;
     let dz = bed[3];
-    if dz <= 0.0 || !(a > 0.0) {
+    if dz <= 0.0 || a.is_nan() || a <= 0.0 {
         return 0.0;
     }
     let w = &bed[HEAD..];
