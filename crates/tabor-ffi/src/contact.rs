@@ -274,6 +274,48 @@ fn vector(name: &'static str, v: [f64; 3]) -> Result<Vector3<f64>> {
     Ok(Vector3::from(v))
 }
 
+// The friction part of a TaborContactHistory is laid out as a ContactHistory
+// (both `#[repr(C)]`, all doubles), after the two doubles of the normal law.
+const FRICTION_OFFSET: usize = std::mem::offset_of!(TaborContactHistory, tangential);
+const _: () = {
+    use std::mem::{offset_of, size_of};
+    assert!(FRICTION_OFFSET == 2 * size_of::<f64>());
+    assert!(size_of::<TaborContactHistory>() == FRICTION_OFFSET + size_of::<ContactHistory>());
+    assert!(offset_of!(ContactHistory, tangential) == 0);
+    assert!(
+        offset_of!(TaborContactHistory, tangential_contact_radius) - FRICTION_OFFSET
+            == offset_of!(ContactHistory, tangential_contact_radius)
+    );
+    assert!(
+        offset_of!(TaborContactHistory, rolling) - FRICTION_OFFSET
+            == offset_of!(ContactHistory, rolling)
+    );
+    assert!(
+        offset_of!(TaborContactHistory, twisting) - FRICTION_OFFSET
+            == offset_of!(ContactHistory, twisting)
+    );
+    assert!(
+        offset_of!(TaborContactHistory, micro_slip) - FRICTION_OFFSET
+            == offset_of!(ContactHistory, micro_slip)
+    );
+};
+
+/// The friction models' part of `history`, in place (no copy of the micro-slip
+/// bed: it is most of the history).
+fn friction_history(history: &mut TaborContactHistory) -> &mut ContactHistory {
+    // SAFETY: the compile-time assertions above: from FRICTION_OFFSET on, a
+    // TaborContactHistory has exactly the fields of a ContactHistory at the same
+    // offsets (all f64: same alignment, every bit pattern valid); the pointer
+    // comes from the whole `&mut TaborContactHistory`, whose borrow the result
+    // keeps.
+    unsafe {
+        &mut *(history as *mut TaborContactHistory)
+            .cast::<u8>()
+            .add(FRICTION_OFFSET)
+            .cast::<ContactHistory>()
+    }
+}
+
 impl ContactModel {
     /// A normal law and its friction (`None`: normal forces only).
     pub fn new(law: ContactLaw, friction: Option<Friction>) -> Self {
@@ -353,13 +395,7 @@ impl ContactModel {
         }
         let mut total = n * f.force;
         if let Some(friction) = &self.friction {
-            let mut fh = ContactHistory {
-                tangential: history.tangential,
-                tangential_contact_radius: history.tangential_contact_radius,
-                rolling: history.rolling,
-                twisting: history.twisting,
-                micro_slip: history.micro_slip,
-            };
+            let fh = friction_history(history);
             let kinematics = ContactKinematics {
                 normal: n,
                 overlap: state.overlap,
@@ -378,24 +414,13 @@ impl ContactModel {
                     .law
                     .damping_coefficient(state.effective_mass, f.contact_radius),
             };
-            let c = friction.step(
-                &kinematics,
-                &response,
-                dt,
-                state.update_history != 0,
-                &mut fh,
-            );
+            let c = friction.step(&kinematics, &response, dt, state.update_history != 0, fh);
             total += c.tangential_force;
             out.torque_i = c.torque_i.into();
             out.torque_j = c.torque_j.into();
             out.tangential_force = c.tangential_force.norm();
             out.critical_force = c.critical_force;
             out.sliding = i32::from(c.sliding);
-            history.tangential = fh.tangential;
-            history.tangential_contact_radius = fh.tangential_contact_radius;
-            history.rolling = fh.rolling;
-            history.twisting = fh.twisting;
-            history.micro_slip = fh.micro_slip;
         }
         history.contact = normal.contact;
         history.max_overlap = normal.max_overlap;

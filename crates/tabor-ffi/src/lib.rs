@@ -483,7 +483,18 @@ pub unsafe extern "C" fn tabor_contact_step(
         // SAFETY: valid per the contract
         let (model, state, history, out) =
             unsafe { (&(*contact).0, &*state, &mut *history, &mut *out) };
-        advance(history, out, |h| model.step(state, h))
+        // in place: ContactModel::step leaves the history unchanged on error (it
+        // fails only before it writes), so no copy of it is needed
+        match model.step(state, history) {
+            Ok(o) => {
+                *out = o;
+                TABOR_OK
+            }
+            Err(e) => {
+                *out = TaborContactForces::default();
+                status_of(&e)
+            }
+        }
     })
 }
 

@@ -65,30 +65,53 @@ pub const fn bed_len(springs: usize) -> usize {
     HEAD + 2 * springs
 }
 
-/// `√i` for the node indices of the default bed and one beyond (the unit-spacing
-/// integration weights scale with `√Δz`).
-fn roots() -> &'static [f64] {
-    static ROOTS: OnceLock<Vec<f64>> = OnceLock::new();
-    ROOTS.get_or_init(|| (0..=4 * SPRINGS + 2).map(|i| (i as f64).sqrt()).collect())
+/// The nodes whose unit-spacing weights are tabulated (beds of up to this many
+/// nodes read them from the table; larger ones compute them).
+const TABLE: usize = 1024;
+
+/// Per node `i` of a bed of unit spacing, its full weight in `∫ w z^{−1/2} dz`
+/// (the cells `[i − 1, i]` and `[i, i + 1]`, [`cell`]); the weights scale with
+/// `√Δz`.
+fn table() -> &'static [f64] {
+    static WEIGHTS: OnceLock<Vec<f64>> = OnceLock::new();
+    WEIGHTS.get_or_init(|| (0..TABLE).map(full_weight).collect())
 }
 
 fn root(i: usize) -> f64 {
-    roots().get(i).copied().unwrap_or_else(|| (i as f64).sqrt())
+    (i as f64).sqrt()
+}
+
+fn full_weight(i: usize) -> f64 {
+    let below = if i > 0 {
+        cell(root(i - 1), root(i)).1
+    } else {
+        0.0
+    };
+    below + cell(root(i), root(i + 1)).0
+}
+
+/// The weight of the outermost node `i` in contact (unit spacing) with the edge
+/// at `√(a²/Δz) = ra`: the cell below plus the edge cell `[i, ra²]`, where `w`
+/// falls linearly to 0.
+fn edge_weight(i: usize, ra: f64) -> f64 {
+    let below = if i > 0 {
+        cell(root(i - 1), root(i)).1
+    } else {
+        0.0
+    };
+    below + cell(root(i), ra).0
 }
 
 /// `∫_p^q (q − z)/(q − p) z^{−1/2} dz` and `∫_p^q (z − p)/(q − p) z^{−1/2} dz`
 /// from `√p`, `√q`: the weights of the values at `p` and at `q` of a function
 /// linear in `z` on `[p, q]`.
 fn cell(rp: f64, rq: f64) -> (f64, f64) {
-    let d = rq - rp;
     let s = rq + rp;
     if s <= 0.0 {
         return (0.0, 0.0);
     }
-    (
-        2.0 / 3.0 * d * (2.0 * rq + rp) / s,
-        2.0 / 3.0 * d * (rq + 2.0 * rp) / s,
-    )
+    let f = 2.0 / 3.0 * (rq - rp) / s;
+    (f * (2.0 * rq + rp), f * (rq + 2.0 * rp))
 }
 
 /// Zeroes the bed (no contact, or no limit).
@@ -202,14 +225,19 @@ pub fn advance(
     let phi = 0.75 * limit / (a2 * a * k_line);
     let scale = dz.sqrt();
     let ra = a2.sqrt() / scale;
-    // the nodes in contact: z_i < a²
-    let inside = ((a2 / dz).ceil() as usize).min(nodes);
+    // the nodes in contact: z_i < a²; the last of them borders the edge
+    let inside = ((a2 / dz).ceil() as usize).clamp(1, nodes);
+    let last = inside - 1;
+    let growth = if a2 > a0_sq { 1.0 / (a2 - a0_sq) } else { 0.0 };
+    let table = table();
     let (mut su, mut sv) = (0.0, 0.0);
     let mut slipping = 0;
     for i in 0..inside {
         let z = i as f64 * dz;
-        let share = if z >= a0_sq && a2 > a0_sq {
-            (a2 - z) / (a2 - a0_sq)
+        // a node the contact reached during the step takes the part of Δs
+        // after a² (linear along the step) passed it
+        let share = if z >= a0_sq && growth > 0.0 {
+            (a2 - z) * growth
         } else {
             1.0
         };
@@ -225,14 +253,11 @@ pub fn advance(
         w[2 * i] = u;
         w[2 * i + 1] = v;
         // the weight of node i in ∫ w z^{−1/2} dz (unit spacing, times √Δz)
-        let ri = root(i);
-        let below = if i > 0 { cell(root(i - 1), ri).1 } else { 0.0 };
-        let above = if i + 1 < inside || (i + 1) as f64 * dz <= a2 {
-            cell(ri, root(i + 1)).0
+        let c = if i < last {
+            table.get(i).copied().unwrap_or_else(|| full_weight(i))
         } else {
-            cell(ri, ra).0
+            edge_weight(i, ra)
         };
-        let c = below + above;
         su += u * c;
         sv += v * c;
     }
@@ -257,18 +282,16 @@ pub fn stored_energy(bed: &[f64], k_line: f64, a: f64) -> f64 {
     }
     let w = &bed[HEAD..];
     let a2 = a * a;
-    let inside = ((a2 / dz).ceil() as usize).min(nodes);
+    let inside = ((a2 / dz).ceil() as usize).clamp(1, nodes);
     let ra = a2.sqrt() / dz.sqrt();
     let mut sum = 0.0;
     for i in 0..inside {
-        let ri = root(i);
-        let below = if i > 0 { cell(root(i - 1), ri).1 } else { 0.0 };
-        let above = if (i + 1) as f64 * dz <= a2 {
-            cell(ri, root(i + 1)).0
+        let c = if i + 1 < inside {
+            full_weight(i)
         } else {
-            cell(ri, ra).0
+            edge_weight(i, ra)
         };
-        sum += (w[2 * i] * w[2 * i] + w[2 * i + 1] * w[2 * i + 1]) * (below + above);
+        sum += (w[2 * i] * w[2 * i] + w[2 * i + 1] * w[2 * i + 1]) * c;
     }
     0.5 * k_line * dz.sqrt() * sum
 }

@@ -342,13 +342,23 @@ int PairTabor::evaluate(int i, int j, int update_history, TaborContactForces &ou
   double *rmass = atom->rmass;
   s.effective_mass = rmass[a] * rmass[b] / (rmass[a] + rmass[b]);
   s.update_history = update_history > 0 ? 1 : 0;
-  TaborContactHistory h{};
-  if (stored) std::memcpy(&h, stored, sizeof(double) * history_width);
-  int status = tabor_contact_step(c.contact, &s, &h, &out);
+  // a stored history of the full width is stepped where it lies (the micro-slip
+  // bed is most of it); a narrower one, or none, in a zero-padded copy; single()
+  // (update_history < 0) must not change it: always a copy
+  TaborContactHistory local;
+  TaborContactHistory *h = &local;
+  if (stored && update_history >= 0 && history_width == TABOR_CONTACT_HISTORY_LEN) {
+    h = reinterpret_cast<TaborContactHistory *>(stored);
+  } else {
+    std::memset(&local, 0, sizeof(local));
+    if (stored) std::memcpy(&local, stored, sizeof(double) * history_width);
+  }
+  int status = tabor_contact_step(c.contact, &s, h, &out);
   if (status != TABOR_OK) fail_one(status, "tabor_contact_step");
-  if (update_history >= 0 && (stored || h.contact != 0.0)) {
-    fix_history->store(i, tag[j], reinterpret_cast<double *>(&h));
-    if (j < atom->nlocal) fix_history->store(j, tag[i], reinterpret_cast<double *>(&h));
+  if (update_history >= 0 && (stored || h->contact != 0.0)) {
+    // j first: storing for i may remove the entry h points into (contact broken)
+    if (j < atom->nlocal) fix_history->store(j, tag[i], reinterpret_cast<double *>(h));
+    fix_history->store(i, tag[j], reinterpret_cast<double *>(h));
   }
   return 1;
 }
