@@ -281,7 +281,7 @@ DEM = os.environ.get("OBLIQUE_DEM", os.path.join(os.path.dirname(LIBRARY), "obli
 
 
 def micro_slip_same_form():
-    """The plugin's `mindlin_deresiewicz` against the same incremental form run
+    """The plugin's `mindlin_deresiewicz` against the same spring bed run
     outside LAMMPS (example `oblique_dem`: ContactModel::step, the code the plugin
     calls, in LAMMPS's nve/sphere scheme from collide_oblique's start): Hertz
     (steel, MBF's Psi) and JKR (silica, 5 to 80 degrees, 0.3 and 1 m/s). The same

@@ -27,7 +27,8 @@
 //! With friction: [`tabor_contact_new`] takes the normal law's parameters and the
 //! friction, rolling and twisting parameters of LAMMPS's `pair_style granular`
 //! ([`TaborFrictionParams`]); [`tabor_contact_step`] advances one contact by one
-//! time step ([`TaborContactState`] in, [`TaborContactHistory`] of 16 doubles kept,
+//! time step ([`TaborContactState`] in, [`TaborContactHistory`] of 79 doubles kept, of
+//! which contacts without `mindlin_deresiewicz` use the first 10,
 //! [`TaborContactForces`] out: the force and both torques). The friction models
 //! are `tabor-tangential`'s (module [`contact`]).
 //!
