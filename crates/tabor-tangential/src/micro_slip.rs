@@ -24,8 +24,10 @@
 //! so that `a²` spans three quarters of the nodes; where the contact outgrows
 //! the last node, every second node is dropped (`Δz` doubles); where it shrinks
 //! below half of them, a node is put midway between every two (`Δz` halves: the
-//! profile is unchanged, it is linear between nodes). So between half and all
-//! of the [`SPRINGS`] nodes are in contact at every step after the first.
+//! profile is unchanged, it is linear between nodes; a contact that hovers there
+//! and is refined and coarsened in turn keeps its nodes, the midpoints dropped
+//! are the ones refining added). So between half and all of the [`SPRINGS`]
+//! nodes are in contact at every step after the first.
 //!
 //! **The step** (the return map of the library's bed): over a step with
 //! tangential displacement `Δs`, every node in contact becomes `w + Δs`, a node
@@ -261,7 +263,10 @@ pub fn advance(
         su += u * c;
         sv += v * c;
     }
-    for x in &mut w[2 * inside..] {
+    // the nodes the contact left are released (one more: a refinement may have
+    // put a midpoint just beyond the last edge); those beyond were already
+    let before = ((a0_sq / dz).ceil() as usize + 1).clamp(inside, nodes);
+    for x in &mut w[2 * inside..2 * before] {
         *x = 0.0;
     }
     let t = (e1 * su + e2 * sv) * (k_line * scale);

@@ -324,6 +324,15 @@ int PairTabor::evaluate(int i, int j, int update_history, TaborContactForces &ou
   double *stored = fix_history->find(i, tag[j]);
   double reach = radsum + c.reach;
   if (!stored && rsq >= reach * reach) return 0;
+  // a history of many cache lines (the micro-slip bed): fetch all of them, and
+  // those of the copy on j, at once rather than one miss after another
+  if (stored && history_width > 16) {
+    double *other = j < atom->nlocal ? fix_history->find(j, tag[i]) : nullptr;
+    for (int k = 0; k < history_width; k += 8) {
+      __builtin_prefetch(stored + k, 1);
+      if (other) __builtin_prefetch(other + k, 1);
+    }
+  }
   double r = sqrt(rsq);
   double rinv = 1.0 / r;
   double **v = atom->v;
