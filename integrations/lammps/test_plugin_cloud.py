@@ -22,6 +22,10 @@ slide and roll within a few hundred steps.
    deviation is round-off amplified by the many-body dynamics, so only its order
    of magnitude is meaningful): the plugin's must stay within 10 times pair
    granular's.
+3. History width: switching the pair coefficients from `mindlin` (10 doubles a
+   contact) to `mindlin_deresiewicz` (79) between runs, and reading a restart file
+   of the narrower layout with the wider, keeps every contact and its normal
+   force.
 
 Environment: TABOR_PLUGIN, LAMMPS_VENV; CLOUD_GRAINS, CLOUD_STEPS (default 600).
 """
@@ -223,6 +227,32 @@ def main():
                     failures.append(f"restart: contacts lost or gained ({len(set(cb) ^ set(ca))})")
                 if worst > 1e-12:
                     failures.append(f"restart: a tangential force changed by {worst:.1e} (springs must keep their stretch)")
+        # 3. the history width changes with the pair coefficients (10 doubles a
+        # contact, 79 with mindlin_deresiewicz): in one process (fix tabor/history
+        # widened in place) and through a restart file of the narrower layout
+        # (read with the bed zero); every contact is kept, with its normal force
+        md_coeff = next(l for l in PAIRS["tabor_md"] if l.startswith("pair_coeff"))
+        before = os.path.join(tmp, "width.before")
+        after = os.path.join(tmp, "width.after")
+        restart = os.path.join(tmp, "width.restart")
+        lammps([*HEAD, f"read_data {data}", *setup_lines("tabor"), *CONTACTS, f"run {half}",
+                *dump_contacts(before), f"write_restart {restart}", md_coeff, *dump_contacts(after)],
+               tmp, 1, "width.inplace")
+        cb, ca = read_contacts(before), read_contacts(after)
+        same_normal = all(ca[k][0] == cb[k][0] for k in cb if k in ca)
+        print(f"  width 10 -> 79 in place: {len(cb)} contacts before, {len(ca)} after "
+              f"(same set: {set(cb) == set(ca)}, same normal forces: {same_normal})")
+        if set(cb) != set(ca) or not same_normal:
+            failures.append("width change in place: contacts or normal forces lost")
+        reread = os.path.join(tmp, "width.reread")
+        lammps([f"read_restart {restart}", *setup_lines("tabor_md"), *CONTACTS, *dump_contacts(reread)],
+               tmp, 1, "width.restart")
+        cr = read_contacts(reread)
+        same_normal = all(cr[k][0] == cb[k][0] for k in cb if k in cr)
+        print(f"  restart of width 10 read with width 79: {len(cr)} contacts "
+              f"(same set: {set(cb) == set(cr)}, same normal forces: {same_normal})")
+        if set(cb) != set(cr) or not same_normal:
+            failures.append("restart of the narrower layout: contacts or normal forces lost")
         for pair in ("tabor", "tabor_md"):
             if devs[pair] > 10 * devs["granular"] + 1e-12:
                 failures.append(f"restart: the plugin's ({pair}) continued run deviates by {devs[pair]:.1e} R0, "
