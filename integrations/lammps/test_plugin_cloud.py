@@ -9,10 +9,11 @@ along x, 5 nm apart, with random velocities, so thousands of contacts form, stic
 slide and roll within a few hundred steps.
 
 1. MPI: the same run on 1 and on 2 ranks ends with the same set of contacts
-   (pairs in contact) and the same positions to round-off (printed).
+   (pairs in contact) and the same positions to round-off (printed); also with
+   `tangential mindlin_deresiewicz` (its spring bed in every contact's history).
 2. Restart: run STEPS/2, write_restart, read_restart in a new LAMMPS process,
    include the same pair lines again, run STEPS/2; against one straight run of
-   STEPS. (a) Every contact keeps its state across the restart: the contact list
+   STEPS (the plugin without and with micro-slip). (a) Every contact keeps its state across the restart: the contact list
    with each contact's normal and tangential force (compute pair/local, the
    plugin's single() reading the stored history) is the same just before
    write_restart and just after read_restart. (b) The continued run's deviation
@@ -21,6 +22,10 @@ slide and roll within a few hundred steps.
    deviation is round-off amplified by the many-body dynamics, so only its order
    of magnitude is meaningful): the plugin's must stay within 10 times pair
    granular's.
+3. History width: switching the pair coefficients from `mindlin` (10 doubles a
+   contact) to `mindlin_deresiewicz` (79) between runs, and reading a restart file
+   of the narrower layout with the wider, keeps every contact and its normal
+   force.
 
 Environment: TABOR_PLUGIN, LAMMPS_VENV; CLOUD_GRAINS, CLOUD_STEPS (default 600).
 """
@@ -52,6 +57,9 @@ PAIRS = {
     "granular": ["pair_style granular",
                  f"pair_coeff * * jkr {E} 0 {NU} {W / 2} damping viscoelastic {FRICTION}"],
 }
+# the plugin with micro-slip: the spring bed of every contact (79 doubles of history)
+# must move between ranks and through restart files as the shorter history does
+PAIRS["tabor_md"] = [l.replace("tangential mindlin ", "tangential mindlin_deresiewicz ") for l in PAIRS["tabor"]]
 
 
 def lmp_exe():
@@ -171,28 +179,30 @@ def main():
         print(f"{GRAINS} grains, radii {min(radii):.3e}..{max(radii):.3e} m (all distinct), "
               f"time step {time_step():.3e} s, {STEPS} steps")
         states, contacts = {}, {}
-        # 1. the plugin on 1 and 2 ranks
-        for ranks in (1, 2):
-            dump = os.path.join(tmp, f"tabor.{ranks}.dump")
-            cdump = os.path.join(tmp, f"tabor.{ranks}.contacts")
-            log = lammps([*HEAD, f"read_data {data}", *setup_lines("tabor"), *CONTACTS,
-                          f"run {STEPS}", FINAL.format(dump=dump), *dump_contacts(cdump)],
-                         tmp, ranks, f"tabor{ranks}")
-            states[ranks] = read_state(dump)
-            contacts[ranks] = read_contacts(cdump)
-            pair_time = next(float(s.split("|")[2]) for s in log.splitlines() if s.startswith("Pair "))
-            print(f"  tabor, {ranks} rank(s): {len(contacts[ranks])} contacts at the end, Pair time {pair_time:.2f} s")
-        same = set(contacts[1]) == set(contacts[2])
-        dev = deviation(states[1], states[2])
-        print(f"  1 vs 2 ranks: same contacts {same}, largest position difference {dev:.1e} R0")
-        if not same:
-            diff = set(contacts[1]) ^ set(contacts[2])
-            failures.append(f"1 vs 2 ranks: {len(diff)} contacts differ")
-        if len(contacts[1]) < GRAINS // 10:
-            failures.append(f"only {len(contacts[1])} contacts formed: the cloud does not test contacts")
+        # 1. the plugin on 1 and 2 ranks (without and with micro-slip)
+        for pair in ("tabor", "tabor_md"):
+            for ranks in (1, 2):
+                dump = os.path.join(tmp, f"{pair}.{ranks}.dump")
+                cdump = os.path.join(tmp, f"{pair}.{ranks}.contacts")
+                log = lammps([*HEAD, f"read_data {data}", *setup_lines(pair), *CONTACTS,
+                              f"run {STEPS}", FINAL.format(dump=dump), *dump_contacts(cdump)],
+                             tmp, ranks, f"{pair}{ranks}")
+                states[ranks] = read_state(dump)
+                contacts[ranks] = read_contacts(cdump)
+                pair_time = next(float(s.split("|")[2]) for s in log.splitlines() if s.startswith("Pair "))
+                print(f"  {pair}, {ranks} rank(s): {len(contacts[ranks])} contacts at the end, "
+                      f"Pair time {pair_time:.2f} s")
+            same = set(contacts[1]) == set(contacts[2])
+            dev = deviation(states[1], states[2])
+            print(f"  {pair} 1 vs 2 ranks: same contacts {same}, largest position difference {dev:.1e} R0")
+            if not same:
+                diff = set(contacts[1]) ^ set(contacts[2])
+                failures.append(f"{pair} 1 vs 2 ranks: {len(diff)} contacts differ")
+            if len(contacts[1]) < GRAINS // 10:
+                failures.append(f"{pair}: only {len(contacts[1])} contacts formed: the cloud does not test contacts")
         # 2. restart, plugin and pair granular the same way
         devs = {}
-        for pair in ("tabor", "granular"):
+        for pair in ("tabor", "tabor_md", "granular"):
             straight = os.path.join(tmp, f"{pair}.straight.dump")
             lammps([*HEAD, f"read_data {data}", *setup_lines(pair), f"run {STEPS}",
                     FINAL.format(dump=straight)], tmp, 1, f"{pair}.straight")
@@ -212,14 +222,41 @@ def main():
             print(f"  {pair:8} restart at step {half}: {len(cb)} contacts before, {len(ca)} after "
                   f"(same set: {kept}; largest relative change of a tangential force {worst:.1e}); "
                   f"continued vs straight run: largest position difference {devs[pair]:.1e} R0")
-            if pair == "tabor":
+            if pair != "granular":
                 if not kept:
                     failures.append(f"restart: contacts lost or gained ({len(set(cb) ^ set(ca))})")
                 if worst > 1e-12:
                     failures.append(f"restart: a tangential force changed by {worst:.1e} (springs must keep their stretch)")
-        if devs["tabor"] > 10 * devs["granular"] + 1e-12:
-            failures.append(f"restart: the plugin's continued run deviates by {devs['tabor']:.1e} R0, "
-                            f"over 10 times pair granular's {devs['granular']:.1e} R0")
+        # 3. the history width changes with the pair coefficients (10 doubles a
+        # contact, 79 with mindlin_deresiewicz): in one process (fix tabor/history
+        # widened in place) and through a restart file of the narrower layout
+        # (read with the bed zero); every contact is kept, with its normal force
+        md_coeff = next(l for l in PAIRS["tabor_md"] if l.startswith("pair_coeff"))
+        before = os.path.join(tmp, "width.before")
+        after = os.path.join(tmp, "width.after")
+        restart = os.path.join(tmp, "width.restart")
+        lammps([*HEAD, f"read_data {data}", *setup_lines("tabor"), *CONTACTS, f"run {half}",
+                *dump_contacts(before), f"write_restart {restart}", md_coeff, *dump_contacts(after)],
+               tmp, 1, "width.inplace")
+        cb, ca = read_contacts(before), read_contacts(after)
+        same_normal = all(ca[k][0] == cb[k][0] for k in cb if k in ca)
+        print(f"  width 10 -> 79 in place: {len(cb)} contacts before, {len(ca)} after "
+              f"(same set: {set(cb) == set(ca)}, same normal forces: {same_normal})")
+        if set(cb) != set(ca) or not same_normal:
+            failures.append("width change in place: contacts or normal forces lost")
+        reread = os.path.join(tmp, "width.reread")
+        lammps([f"read_restart {restart}", *setup_lines("tabor_md"), *CONTACTS, *dump_contacts(reread)],
+               tmp, 1, "width.restart")
+        cr = read_contacts(reread)
+        same_normal = all(cr[k][0] == cb[k][0] for k in cb if k in cr)
+        print(f"  restart of width 10 read with width 79: {len(cr)} contacts "
+              f"(same set: {set(cb) == set(cr)}, same normal forces: {same_normal})")
+        if set(cb) != set(cr) or not same_normal:
+            failures.append("restart of the narrower layout: contacts or normal forces lost")
+        for pair in ("tabor", "tabor_md"):
+            if devs[pair] > 10 * devs["granular"] + 1e-12:
+                failures.append(f"restart: the plugin's ({pair}) continued run deviates by {devs[pair]:.1e} R0, "
+                                f"over 10 times pair granular's {devs['granular']:.1e} R0")
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))
         return 1

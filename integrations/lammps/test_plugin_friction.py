@@ -29,10 +29,12 @@ of the scale v, v/R if it adds up linearly), with a factor 100 for its
 amplification where a stick/slip or snap-off decision changes by one step:
 SAME_SCHEME = 1e-9 of the scale.
 
-3. `tangential mindlin_deresiewicz`: against the library's exact spring bed (Hertz,
-   MBF's Psi, within the time-step tolerance plus the incremental form's measured
-   gap) and against the same incremental form run outside LAMMPS (example
-   `oblique_dem`, Hertz and JKR, round-off).
+3. `tangential mindlin_deresiewicz` (the per-contact spring bed of 32 springs):
+   against the library's 1024-node spring bed over Maw, Barber & Fawcett's
+   Psi = 0.1 to 10, Hertz (steel) and JKR (silica), within the time-step tolerance
+   alone (the bed's own error, at most 4e-4 in beta, is measured in
+   crates/tabor-tangential/tests/micro_slip_step.rs to lie below a tenth of it),
+   and against the same form run outside LAMMPS (example `oblique_dem`, round-off).
 
 Needs TABOR_PLUGIN, TABOR_FFI_LIB, OBLIQUE_LIBRARY, OBLIQUE_DEM (the example binaries), LAMMPS_VENV,
 LD_LIBRARY_PATH=<venv>/lib.
@@ -200,71 +202,78 @@ def maugis_against_library(lam=0.5):
 # Maw, Barber & Fawcett's steel (nu = 0.3), two equal spheres: the same chi = 3.5 as
 # MBF's sphere on a flat, hence the same tangential restitution beta(Psi)
 ST_R, ST_RHO, ST_E, ST_NU, ST_MU = 1e-3, 7800.0, 200e9, 0.3, 0.3
-ST_E_STAR = ST_E / (2 * (1 - ST_NU ** 2))
-ST_KAPPA = 2 * (1 - ST_NU) / (2 - ST_NU)
-CHI = 3.5
-# The largest gap in beta between the incremental form of Friction::step (the
-# plugin's) and the library's exact spring bed, by band of Psi: (Psi up to, gap),
-# GAP_BANDS of crates/tabor-tangential/tests/micro_slip_step.rs, which asserts them
-MICRO_SLIP_GAP_BANDS = [(1.7, 0.17), (3.5, 0.06), (math.inf, 3e-3)]
+MBF_PSI = [0.1, 0.3, 0.6, 1.0, 1.5, 2.5, 3.5, 5.0, 8.0, 10.0]
+
+
+def kappa(nu):
+    """k_t/k_n = 4 G*/E* = 2 (1 - nu)/(2 - nu), one material."""
+    return 2 * (1 - nu) / (2 - nu)
 
 
 def micro_slip_against_library():
-    """`tangential mindlin_deresiewicz` in the plugin (Thornton's incremental form)
-    against the library's exact spring bed (oblique_library ... mindlin_deresiewicz),
-    Hertz, two steel spheres at MBF's Psi = kappa tan(a)/mu from 0.1 to 10.
+    """`tangential mindlin_deresiewicz` in the plugin (the per-contact spring bed,
+    32 springs) against the library's 1024-node bed (oblique_library ...
+    mindlin_deresiewicz), collision by collision over MBF's Psi = kappa tan(a)/mu
+    from 0.1 to 10: Hertz (two steel spheres, 1 m/s) and JKR (two silica spheres,
+    `jkr/load-controlled`, 0.3 and 1 m/s; Thornton & Yin's limit mu F_n0 over the
+    JKR contact radius in both).
 
-    Tolerance: the time-step one (EVENTS impulses dt F/m*, as above) plus the model
-    gap: the two forms differ in beta by at most the band's gap g (measured and
-    asserted in Rust against the exact bed), and a change d(beta) of the contact
-    point's slip v_t0 d(beta) is an impulse m* v_t0 d(beta)/chi, which moves u_y by
-    g v_t0/chi and each spin by g v_t0 m* R/(chi I). The normal velocity u_x gets
-    the time-step tolerance only (the tangential force does not act on it but by
-    the line of centres' turn, ~(u_t dt_contact/R)^2)."""
+    Tolerance: the time-step one only (EVENTS impulses dt F_scale/m*, F_scale the
+    largest Hertz force plus twice the pull-off force; spins dt mu R F_scale/I),
+    no model gap: the two beds differ by at most 4e-4 in beta over this range
+    (micro_slip_step.rs, where that is asserted below a tenth of the time-step
+    tolerance), which moves u_y by 4e-4 v_t0/chi, well inside it."""
     failures = []
-    r_star, m = ST_R / 2, ST_RHO * 4 / 3 * math.pi * ST_R ** 3
-    m_star, inertia = m / 2, 0.4 * m * ST_R ** 2
-    v = 1.0
-    psis = [0.1, 0.3, 0.6, 1.0, 1.5, 2.5, 3.5, 5.0, 8.0, 10.0]
-    angles = [math.degrees(math.atan(p * ST_MU / ST_KAPPA)) for p in psis]
-    text = "".join(f"{ST_R} {ST_RHO} {ST_E} {ST_NU} 0 hertz 0 {v} {a!r} 0 {ST_MU} 0 0 mindlin_deresiewicz\n"
-                   for a in angles)
+    cases = [("hertz", ST_R, ST_RHO, ST_E, ST_NU, 0.0, ST_MU, 1.0, psi) for psi in MBF_PSI]
+    cases += [("jkr", R, RHO, E, NU, W, MU, v, psi) for v in (0.3, 1.0) for psi in MBF_PSI]
+    print("mindlin_deresiewicz: plugin (32-spring bed) vs library (1024-node bed); "
+          "beta = -(u_y + R (w1 + w2))/v_t0")
+    print(f"{'law':5} {'v':>4} {'Psi':>5} {'angle':>6} {'beta plugin':>11} {'beta lib':>9} {'|du_x|':>8} "
+          f"{'|du_y|':>8} {'tol':>8} {'|dw|':>8} {'tol':>8}")
+    text = "".join(f"{r} {rho} {e} {nu} {w} {model} 0 {v} {math.degrees(math.atan(psi * mu / kappa(nu)))!r} "
+                   f"0 {mu} 0 0 mindlin_deresiewicz\n" for model, r, rho, e, nu, w, mu, v, psi in cases)
     out = subprocess.run([LIBRARY], input=text, check=True, capture_output=True, text=True).stdout
     lib = [tuple(float(x) for x in line.split()) for line in out.splitlines()]
-    t_c = 2.87 * (m_star ** 2 / (r_star * ST_E_STAR ** 2 * v)) ** 0.2
-    dt = t_c / STEPS_PER_CONTACT
-    dmax = (15 * m_star * v * v / (16 * ST_E_STAR * math.sqrt(r_star))) ** 0.4
-    f_scale = 4 / 3 * ST_E_STAR * math.sqrt(r_star) * dmax ** 1.5
-    tol_v = EVENTS * dt * f_scale / m_star
-    tol_w = EVENTS * dt * ST_MU * ST_R * f_scale / inertia
-    bodies = {"sphere_radius": ST_R, "sphere_density": ST_RHO, "target_radius": ST_R, "target_density": ST_RHO}
-    coeff = [f"plugin load \"{PLUGIN}\"", "pair_style tabor",
-             f"pair_coeff * * hertz {ST_E_STAR!r} poisson {ST_NU} tangential mindlin_deresiewicz NULL 0 {ST_MU}"]
-    print("mindlin_deresiewicz (steel, Hertz): plugin (incremental) vs library (exact bed); "
-          "beta = -(u_y + R (w1 + w2))/v_t0")
-    print(f"{'Psi':>5} {'angle':>6} {'beta plugin':>11} {'beta lib':>9} {'|du_x|':>8} {'tol':>8} "
-          f"{'|du_y|':>8} {'tol':>8} {'|dw|':>8} {'tol':>8}")
-    for psi, a, ref in zip(psis, angles, lib):
-        o = collide_oblique(coeff, bodies, v, a, dt, 1e-3 * ST_R, 12 * STEPS_PER_CONTACT)
+    worst = {}
+    for (model, r, rho, e, nu, w, mu, v, psi), ref in zip(cases, lib):
+        e_star, r_star = e / (2 * (1 - nu * nu)), r / 2
+        m = rho * 4 / 3 * math.pi * r ** 3
+        m_star, inertia = m / 2, 0.4 * m * r * r
+        t_c = 2.87 * (m_star ** 2 / (r_star * e_star ** 2 * v)) ** 0.2
+        dt = t_c / STEPS_PER_CONTACT
+        dmax = (15 * m_star * v * v / (16 * e_star * math.sqrt(r_star))) ** 0.4
+        pull = 1.5 * math.pi * w * r_star
+        f_scale = 4 / 3 * e_star * math.sqrt(r_star) * dmax ** 1.5 + 2 * pull
+        tol_v = EVENTS * dt * f_scale / m_star
+        tol_w = EVENTS * dt * mu * r * f_scale / inertia
+        a = math.degrees(math.atan(psi * mu / kappa(nu)))
+        normal = f"jkr/load-controlled {e_star!r} {w}" if model == "jkr" else f"hertz {e_star!r}"
+        coeff = [f"plugin load \"{PLUGIN}\"", "pair_style tabor",
+                 f"pair_coeff * * {normal} poisson {nu} tangential mindlin_deresiewicz NULL 0 {mu}"]
+        bodies = {"sphere_radius": r, "sphere_density": rho, "target_radius": r, "target_density": rho}
+        reach = REACH if model == "jkr" else 1e-3 * r
+        o = collide_oblique(coeff, bodies, v, a, dt, reach, 12 * STEPS_PER_CONTACT)
         s_, t_ = o["sphere"], o["target"]
         p = (s_["velocity"][0] - t_["velocity"][0], s_["velocity"][1] - t_["velocity"][1],
              s_["angular_velocity"][2], t_["angular_velocity"][2])
         vt0 = v * math.sin(math.radians(a))
-        gap = next(g for top, g in MICRO_SLIP_GAP_BANDS if psi <= top)
-        tv_y = tol_v + gap * vt0 / CHI
-        tw = tol_w + gap * vt0 / CHI * m_star * ST_R / inertia
-        beta = [-(x[1] + ST_R * (x[2] + x[3])) / vt0 for x in (p, ref)]
+        beta = [-(x[1] + r * (x[2] + x[3])) / vt0 for x in (p, ref)]
         dux, duy = abs(p[0] - ref[0]), abs(p[1] - ref[1])
         dw = max(abs(p[2] - ref[2]), abs(p[3] - ref[3]))
-        print(f"{psi:5.2f} {a:6.2f} {beta[0]:+11.4f} {beta[1]:+9.4f} {dux:8.1e} {tol_v:8.1e} "
-              f"{duy:8.1e} {tv_y:8.1e} {dw:8.1e} {tw:8.1e}")
-        if not o["separated"]:
-            failures.append(f"mindlin_deresiewicz Psi {psi}: the spheres did not separate")
-        if not all(math.isfinite(x) for x in p):
-            failures.append(f"mindlin_deresiewicz Psi {psi}: not finite {p}")
-        elif dux > tol_v or duy > tv_y or dw > tw:
-            failures.append(f"mindlin_deresiewicz Psi {psi}: du_x {dux:.2e} (tol {tol_v:.2e}), du_y {duy:.2e} "
-                            f"(tol {tv_y:.2e}), dw {dw:.2e} (tol {tw:.2e})")
+        print(f"{model:5} {v:4.2f} {psi:5.2f} {a:6.2f} {beta[0]:+11.5f} {beta[1]:+9.5f} {dux:8.1e} "
+              f"{duy:8.1e} {tol_v:8.1e} {dw:8.1e} {tol_w:8.1e}")
+        key = model
+        worst[key] = max(worst.get(key, 0.0), dux / tol_v, duy / tol_v, dw / tol_w)
+        if bool(ref[4]) == o["separated"]:
+            failures.append(f"mindlin_deresiewicz {model} v {v} Psi {psi}: library sticks={bool(ref[4])}, "
+                            f"plugin separated={o['separated']}")
+        elif not all(math.isfinite(x) for x in p):
+            failures.append(f"mindlin_deresiewicz {model} v {v} Psi {psi}: not finite {p}")
+        elif dux > tol_v or duy > tol_v or dw > tol_w:
+            failures.append(f"mindlin_deresiewicz {model} v {v} Psi {psi}: du_x {dux:.2e}, du_y {duy:.2e} "
+                            f"(tol {tol_v:.2e}), dw {dw:.2e} (tol {tol_w:.2e})")
+    for key, x in worst.items():
+        print(f"  {key}: largest difference {x:.2f} of the time-step tolerance")
     return failures
 
 
@@ -272,19 +281,18 @@ DEM = os.environ.get("OBLIQUE_DEM", os.path.join(os.path.dirname(LIBRARY), "obli
 
 
 def micro_slip_same_form():
-    """The plugin's `mindlin_deresiewicz` against the same incremental form run
+    """The plugin's `mindlin_deresiewicz` against the same spring bed run
     outside LAMMPS (example `oblique_dem`: ContactModel::step, the code the plugin
     calls, in LAMMPS's nve/sphere scheme from collide_oblique's start): Hertz
     (steel, MBF's Psi) and JKR (silica, 5 to 80 degrees, 0.3 and 1 m/s). The same
     scheme and the same force code: the time-step tolerance (EVENTS dt F/m*) bounds
     them, and beyond it round-off of the same scheme, SAME_SCHEME (measured: 1e-16
-    in velocity, 1e-10 rad/s of spins ~1e4 rad/s). The JKR rows also print the gap to the library's exact bed,
-    not asserted: no published curve bounds it with adhesion (Hertz: the bands above)."""
+    in velocity, 1e-10 rad/s of spins ~1e4 rad/s)."""
     failures = []
-    steel = [("hertz", ST_R, ST_RHO, ST_E, ST_NU, 0.0, 1.0, math.degrees(math.atan(p * ST_MU / ST_KAPPA)), ST_MU)
+    steel = [("hertz", ST_R, ST_RHO, ST_E, ST_NU, 0.0, 1.0, math.degrees(math.atan(p * ST_MU / kappa(ST_NU))), ST_MU)
              for p in (0.1, 0.6, 1.5, 3.5, 8.0)]
     silica = [("jkr", R, RHO, E, NU, W, v, a, MU) for v in (0.3, 1.0) for a in (5, 20, 45, 80)]
-    print("mindlin_deresiewicz: plugin vs the same form outside LAMMPS (oblique_dem); JKR also vs the exact bed")
+    print("mindlin_deresiewicz: plugin vs the same form outside LAMMPS (oblique_dem)")
     rows = []
     for model, r, rho, e, nu, w, v, a, mu in steel + silica:
         e_star, r_star = e / (2 * (1 - nu * nu)), r / 2
@@ -315,14 +323,8 @@ def micro_slip_same_form():
         dw = max(abs(p[2] - ref[2]), abs(p[3] - ref[3]))
         vt0 = v * math.sin(math.radians(a))
         beta = -(p[1] + r * (p[2] + p[3])) / vt0
-        extra = ""
-        if model == "jkr":
-            lib_in = f"{r} {rho} {e} {nu} {w} jkr 0 {v} {a} 0 {mu} 0 0 mindlin_deresiewicz\n"
-            lib = [float(x) for x in subprocess.run([LIBRARY], input=lib_in, check=True, capture_output=True,
-                                                     text=True).stdout.split()]
-            extra = f" beta exact bed {-(lib[1] + r * (lib[2] + lib[3])) / vt0:+.4f} (sticks {int(lib[4])})"
         print(f"  {model:5} v {v:4.2f} angle {a:6.2f}: beta {beta:+.4f} separated {p[4]}; |du| {du:.1e} "
-              f"(tol {tol_v:.1e}), |dw| {dw:.1e} (tol {tol_w:.1e}){extra}")
+              f"(tol {tol_v:.1e}), |dw| {dw:.1e} (tol {tol_w:.1e})")
         if not all(math.isfinite(x) for x in p[:4]):
             failures.append(f"same form {model} v {v} angle {a}: not finite")
         elif du > tol_v or dw > tol_w or bool(ref[4]) != p[4]:

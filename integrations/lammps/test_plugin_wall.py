@@ -24,7 +24,18 @@
 4. MPI: particles sliding and stuck on the wall, drifting across the boundary of
    two sub-domains while in contact, on 1 and 2 ranks: the same final state (the
    wall force is per atom, so the same to the last bit when the histories travel
-   with the atoms).
+   with the atoms); also with `tangential mindlin_deresiewicz` (79 doubles a contact).
+7. `tangential mindlin_deresiewicz` (the 32-spring bed of the plugin) against
+   `tabor impact --angle` on a flat whose [friction] has tangential =
+   "mindlin_deresiewicz" (the library's 1024-node bed), JKR, 0.3 and 1 m/s, angles
+   spanning MBF's Psi = kappa tan(a)/mu = 0.3 to 8, within the time-step tolerance
+   alone (the beds differ by at most 4e-4 in beta over Psi 0.1-10,
+   crates/tabor-tangential/tests/micro_slip_step.rs: 4e-4 v_t0, below a tenth of
+   tol_v here). The restart of 3 runs with it too (the bed written and read back in
+   the middle of partial slip: 0 < |F_t| < mu F_n0), and a restart record of the
+   other width: the 10 doubles of a mindlin contact read by a mindlin_deresiewicz
+   wall keep every contact and its normal force; a 79-double record with a
+   stretched bed read by a mindlin wall is refused with a clear error.
 
 Tolerances, from the time step dt = t_c/STEPS (t_c the Hertz contact time, seed 000
 (5.12)), as test_plugin_friction.py derives them: velocity Verlet is exact to
@@ -73,6 +84,7 @@ FRICTION = f"tangential mindlin NULL 0 {MU} rolling sds {K_ROLL} 0 {MU_ROLL} twi
 TABOR_JKR = f"jkr/load-controlled {E_STAR!r} {W} poisson {NU} {FRICTION}"
 # LAMMPS's own: jkr E eta_n0 nu gamma (gamma = w/2), wall of the particle's material
 GRANULAR_JKR = f"granular jkr {E} 0 {NU} {W / 2} damping viscoelastic {FRICTION}"
+TABOR_MD = f"jkr/load-controlled {E_STAR!r} {W} poisson {NU} tangential mindlin_deresiewicz NULL 0 {MU}"
 
 
 def plugin_wall(coeffs, extra=""):
@@ -288,6 +300,47 @@ def oblique():
     return failures
 
 
+def micro_slip_wall():
+    """`tangential mindlin_deresiewicz` on the wall against `tabor impact --angle` on
+    a flat with the library's micro-slip bed (docstring, item 7). Tolerances: the
+    time-step ones, EVENTS dt F_scale/m and EVENTS dt mu R F_scale/I (no rolling or
+    twisting here)."""
+    failures = []
+    law = law_info(FFI, "jkr/load-controlled", E_STAR, R, W)
+    s = scene("jkr_wall", separation="load-controlled")
+    s["friction"] = {"coefficient": MU, "tangential": "mindlin_deresiewicz"}
+    path = write_toml(s)
+    kappa = 2 * (1 - NU) / (2 - NU)
+    print(f"{'v':>5} {'Psi':>4} {'angle':>6} {'beta wall':>9} {'beta lib':>9} {'|du|':>8} {'tol v':>8} {'|dw|':>8} {'tol w':>8}")
+    worst = 0.0
+    try:
+        for v in (0.3, 1.0):
+            dt = contact_time(v) / STEPS
+            fs = f_scale(v, law.pull_off_force)
+            tol_v, tol_w = EVENTS * dt * fs / MASS, EVENTS * dt * MU * R * fs / INERTIA
+            for psi in (0.3, 1.0, 2.5, 8.0):
+                a = math.degrees(math.atan(psi * MU / kappa))
+                o = tabor_json(["impact", path, "--speed", repr(v), "--angle", repr(a)])
+                after = o["after"]["sphere"]
+                u, w, sep = wall_collide(plugin_wall(TABOR_MD), v, dt, law.interaction_range, a)
+                ut, wt = [-u[2], u[0], -u[1]], [-w[2], w[0], -w[1]]   # LAMMPS -> tabor's frame
+                du, dw = math.dist(ut, after["velocity"]), math.dist(wt, after["angular_velocity"])
+                vt0 = v * math.sin(math.radians(a))
+                # tangential restitution of the contact point (tabor's frame: tangent y, normal x)
+                beta = [-(x[1] + R * y[2]) / vt0 for x, y in ((ut, wt), (after["velocity"], after["angular_velocity"]))]
+                print(f"{v:5.2f} {psi:4.1f} {a:6.2f} {beta[0]:+9.5f} {beta[1]:+9.5f} {du:8.1e} {tol_v:8.1e} {dw:8.1e} {tol_w:8.1e}")
+                worst = max(worst, du / tol_v, dw / tol_w)
+                if o["sticks"] or not sep:
+                    failures.append(f"micro-slip wall v {v} Psi {psi}: sticks (tabor {o['sticks']}, LAMMPS {not sep})")
+                elif du > tol_v or dw > tol_w:
+                    failures.append(f"micro-slip wall v {v} Psi {psi}: du {du:.2e} (tol {tol_v:.1e}), "
+                                    f"dw {dw:.2e} (tol {tol_w:.1e})")
+    finally:
+        os.unlink(path)
+    print(f"  largest difference {worst:.2f} of the time-step tolerance")
+    return failures
+
+
 def lmp_exe():
     return glob.glob(os.path.join(VENV, "lib", "python3*", "site-packages", "lammps", "lmp"))[0]
 
@@ -354,9 +407,11 @@ def restart():
         region_box = f"region plate block {-span - 10 * R!r} {span + 10 * R!r} {-10 * R!r} {10 * R!r} 0 {20 * R!r}"
         region_fix = f"fix wall all wall/tabor/region {TABOR_JKR} plate contacts"
         load = f"plugin load \"{PLUGIN}\""
+        md = plugin_wall(TABOR_MD, "contacts")
         for kind, wall, reread in (("tabor", plugin_wall(TABOR_JKR, "contacts"), plugin_wall(TABOR_JKR, "contacts")),
                                    ("granular", granular_wall("contacts"), granular_wall("contacts")),
-                                   ("region", [region_box, load, region_fix], [region_box, load, region_fix])):
+                                   ("region", [region_box, load, region_fix], [region_box, load, region_fix]),
+                                   ("slip", md, md), ("widened", plugin_wall(TABOR_JKR, "contacts"), md)):
             straight = os.path.join(tmp, f"{kind}.straight")
             run_lmp([*setup_lines(wall, 3, 5, span), f"run {steps}", DUMP.format(p=straight)], tmp, f"{kind}.s")
             rst = os.path.join(tmp, f"{kind}.restart")
@@ -375,6 +430,20 @@ def restart():
             # the test needs springs stretched: sliding atoms with a tangential force
             sheared = sum(1 for row in b.values() if abs(row[1]) + abs(row[2]) > 0.0)
             touching = sum(1 for row in a.values() if row[0] == 1.0)
+            if kind == "widened":
+                # mindlin's 10 doubles read by the 79-double wall: the contacts and normal forces stay
+                kept = touching == len(a) and all(a[i][3] == b[i][3] for i in a)
+                print(f"  widened : 10-double records read by a mindlin_deresiewicz wall: {touching} of {len(a)} "
+                      f"contacts kept, normal forces identical: {kept}")
+                failures += [] if kept else ["restart widened: contacts or normal forces lost"]
+                continue
+            if kind == "slip":
+                f_po = abs(law_info(FFI, "jkr/load-controlled", E_STAR, R, W).pull_off_force)
+                ratios = [math.hypot(r[1], r[2]) / (MU * (r[3] + 2 * f_po)) for r in b.values()]
+                partial = sum(1 for x in ratios if 0.0 < x < 0.99)
+                print(f"  slip    : |F_t|/(mu F_n0) at write_restart {' '.join(f'{x:.2f}' for x in ratios)}")
+                if partial < 5:
+                    failures.append(f"restart slip: only {partial} contacts in partial slip at write_restart")
             s, c = read_dump(straight), read_dump(cont)
             devs[kind] = max(max(abs(s[i][k] - c[i][k]) / R for k in range(3)) for i in s)
             stuck_after = sum(1 for i in c if c[i][2] - R < 0.01 * R)
@@ -390,11 +459,21 @@ def restart():
                     failures.append(f"restart: {touching} touching after read_restart, {stuck_after} on the wall at "
                                     f"the end, of {len(a)}")
         print(f"  restart deviation: fix wall/tabor {devs['tabor']:.2e} R, wall/tabor/region {devs['region']:.2e} R, "
-              f"fix wall/gran {devs['granular']:.2e} R")
-        if max(devs["tabor"], devs["region"]) > max(devs["granular"], 1e-15):
+              f"mindlin_deresiewicz {devs['slip']:.2e} R, fix wall/gran {devs['granular']:.2e} R")
+        if max(devs["tabor"], devs["region"], devs["slip"]) > max(devs["granular"], 1e-15):
             failures.append(f"restart: fix wall/tabor's continued run deviates by {devs['tabor']:.2e} R "
-                            f"(region {devs['region']:.2e} R), "
+                            f"(region {devs['region']:.2e} R, mindlin_deresiewicz {devs['slip']:.2e} R), "
                             f"more than fix wall/gran's {devs['granular']:.2e} R")
+        # the stretched beds of the slip run read by a wall without micro-slip: refused
+        inp = os.path.join(tmp, "in.narrowed")
+        with open(inp, "w") as f:
+            f.write("\n".join([f"read_restart {os.path.join(tmp, 'slip.restart')}", *plugin_wall(TABOR_JKR), "run 0"]))
+        p = subprocess.run([os.path.join(VENV, "bin", "mpirun"), "-np", "1", lmp_exe(), "-in", inp, "-log", "none",
+                            "-nocite"], cwd=tmp, capture_output=True, text=True)
+        err = [line for line in (p.stdout + p.stderr).splitlines() if "ERROR" in line]
+        print(f"  narrowed: 79-double records read by a mindlin wall: exit {p.returncode}, {err[0] if err else 'no error'}")
+        if p.returncode == 0 or not err or "79 doubles per wall contact" not in err[0]:
+            failures.append(f"restart narrowed: not refused with a clear error ({err})")
     return failures
 
 
@@ -411,13 +490,17 @@ def mpi():
     n = n_stuck + n_sliding
     with tempfile.TemporaryDirectory(prefix="tabor-wall-mpi-") as tmp:
         out, builds = {}, 0
-        for ranks in (1, 2):
+        for ranks, coeffs in ((1, TABOR_JKR), (2, TABOR_JKR), ("1md", TABOR_MD), ("2md", TABOR_MD)):
             p = os.path.join(tmp, f"mpi.{ranks}")
-            log = run_lmp([*setup_lines(plugin_wall(TABOR_JKR), n_stuck, n_sliding, span, "2 1 1" if ranks == 2 else None,
+            np_ = int(str(ranks)[0])
+            log = run_lmp([*setup_lines(plugin_wall(coeffs), n_stuck, n_sliding, span, "2 1 1" if np_ == 2 else None,
                                  0.002 * R),
-                     "run 10000", DUMP.format(p=p)], tmp, f"mpi{ranks}", ranks)
+                     "run 10000", DUMP.format(p=p)], tmp, f"mpi{ranks}", np_)
             out[ranks] = read_dump(p)
             builds = int(re.search(r"Neighbor list builds = (\d+)", log).group(1))
+        dev_md = max(max(abs(out["1md"][i][k] - out["2md"][i][k]) for k in range(9)) for i in out[1])
+        print(f"  mindlin_deresiewicz: 1 vs 2 ranks largest difference {dev_md:.1e}")
+        failures += [f"MPI mindlin_deresiewicz: 1 and 2 ranks differ by {dev_md:.1e}"] if dev_md != 0.0 else []
         dev = max(max(abs(out[1][i][k] - out[2][i][k]) for k in range(9)) for i in out[1])
         x0 = {i + 1: -span + 2 * span * (i + 0.5) / n for i in range(n)}
         crossed = sum(1 for i in out[1] if (out[1][i][0] > 0) != (x0[i] > 0))
@@ -554,6 +637,8 @@ def main():
     failures += styles()
     print("6. bad input")
     failures += bad_input()
+    print("7. tangential mindlin_deresiewicz on the wall against tabor impact --angle (the library's bed)")
+    failures += micro_slip_wall()
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))
         return 1

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # LAMMPS timing of pair_style tabor with friction against pair_style granular (jkr +
 # mindlin + sds + marshall) on a polydisperse cloud (time_plugin.py): builds the plugin, prints the times
-# and the ratio plugin/granular (target <= 1.5). No assertion: wall-clock times
+# and the ratios plugin/granular (target <= 1.5) and plugin with tangential mindlin_deresiewicz/granular
+# with mindlin (target <= 1.0), all in the same run. No assertion: wall-clock times
 # depend on the machine. Environment: TIMING_GRAINS, TIMING_STEPS, TIMING_REPEATS, TIMING_RANKS.
 set -euo pipefail
 HERE="$(cd "$(dirname "$0")" && pwd)"

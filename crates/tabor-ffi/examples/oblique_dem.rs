@@ -5,8 +5,8 @@
 //! (half kick, drift, forces at the half-step velocities, half kick; a setup
 //! force call that does not advance the friction history): the same-form
 //! reference of `test_plugin_friction.py` for `tangential mindlin_deresiewicz`,
-//! which checks that the plugin carries the incremental form's history (turning
-//! points, frames, storage) as `tabor_tangential::Friction::step` defines it.
+//! which checks that the plugin carries the micro-slip bed's history (springs,
+//! basis, spacing, storage) as `tabor_tangential::Friction::step` defines it.
 //!
 //! stdin, one case a line: `R rho E nu w model lambda speed angle mu dt steps reach`
 //! (SI units, model `hertz`, `jkr` (load-controlled) or `maugis`, `steps` the whole

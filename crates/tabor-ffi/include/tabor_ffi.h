@@ -69,8 +69,9 @@
 #define TABOR_TANGENTIAL_MINDLIN_RESCALE 3
 
 // `tangential mindlin_deresiewicz k_t x_γ,t μ` (k_t = 8 G*, Pa): Mindlin-Deresiewicz
-// micro-slip in Thornton (1991)'s incremental form (`tabor_tangential::Friction::step`),
-// not a LAMMPS `pair granular` model.
+// micro-slip on a compact spring bed of the method of dimensionality reduction
+// (`tabor_tangential::micro_slip`, `tabor_tangential::Friction::step`), not a
+// LAMMPS `pair granular` model.
 #define TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ 4
 
 // [`TaborFrictionParams::rolling_model`]: none.
@@ -88,8 +89,18 @@
 // `twisting sds k_twist γ_twist μ_twist`.
 #define TABOR_TWISTING_SDS 2
 
+// Number of doubles of the micro-slip bed of `mindlin_deresiewicz`
+// ([`TaborContactHistory::micro_slip`]; `tabor_tangential::micro_slip::BED_LEN`:
+// 5 + 2 × 32 springs).
+#define TABOR_MICRO_SLIP_LEN 69
+
 // Number of doubles in a [`TaborContactHistory`].
-#define TABOR_CONTACT_HISTORY_LEN 16
+#define TABOR_CONTACT_HISTORY_LEN (10 + TABOR_MICRO_SLIP_LEN)
+
+// Number of leading doubles of a [`TaborContactHistory`] that a contact
+// without `mindlin_deresiewicz` uses (the rest, the micro-slip bed, stays zero):
+// an engine may keep only these for such contacts ([`ContactModel::history_len`]).
+#define TABOR_CONTACT_HISTORY_BASE_LEN 10
 
 // Intervals of the node grid in ln Λ between the case boundaries Λ1 and Λ2
 // (q = ln(Λ2/Λ1)/18 ≈ 0.0199: 116 nodes per decade of Λ).
@@ -256,23 +267,20 @@ typedef struct TaborContactHistory {
   // The turning point (see [`TaborHistory::max_overlap`]) (m).
   double max_overlap;
   // Accumulated tangential displacement (m); `mindlin_deresiewicz`: the
-  // elastic tangential force T (N, the force on body i is −T).
+  // elastic tangential force T of the bed (N, the force on body i is −T).
   double tangential[3];
-  // `mindlin_rescale`: the contact radius of the last update (m);
-  // `mindlin_deresiewicz`: the Coulomb limit μ F_n0 of the last update (N).
+  // `mindlin_rescale`: the contact radius of the last update (m).
   double tangential_contact_radius;
   // Accumulated rolling displacement (m).
   double rolling[3];
   // Accumulated twist angle (rad).
   double twisting;
-  // `mindlin_deresiewicz`: the turning point T* (N) (Thornton 1991).
-  double micro_slip_turning[3];
-  // `mindlin_deresiewicz`: the reloading turning point T** (N).
-  double micro_slip_reversal;
-  // `mindlin_deresiewicz`: 0 loading, 1 unloading, 2 reloading.
-  double micro_slip_mode;
-  // `mindlin_deresiewicz`: the no-slip stiffness k_t a of the last update (N/m).
-  double micro_slip_spring;
+  // `mindlin_deresiewicz`: the compact spring bed (`tabor_tangential::micro_slip`:
+  // the basis vector e₁ of the tangent plane, the node spacing, the last squared
+  // contact radius, and two components per spring in (e₁, n × e₁); swapping i
+  // and j changes the sign of e₁ and of every second component); zero for
+  // every other model.
+  double micro_slip[TABOR_MICRO_SLIP_LEN];
 } TaborContactHistory;
 
 // The forces and torques of one contact at one step.
@@ -388,6 +396,16 @@ int32_t tabor_contact_step(const struct TaborContact *contact,
                            const struct TaborContactState *state,
                            struct TaborContactHistory *history,
                            struct TaborContactForces *out);
+
+// The number of leading doubles of a [`TaborContactHistory`] that the contact
+// model uses ([`ContactModel::history_len`]: `TABOR_CONTACT_HISTORY_LEN` with
+// `mindlin_deresiewicz`, else `TABOR_CONTACT_HISTORY_BASE_LEN`); an engine may
+// store only these and zero the rest before [`tabor_contact_step`]. 0 for a
+// null pointer.
+//
+// # Safety
+// `contact` null or from [`tabor_contact_new`].
+size_t tabor_contact_history_len(const struct TaborContact *contact);
 
 // The normal law's info ([`tabor_law_info_at`]) of a contact model at effective
 // radius `effective_radius` (m).

@@ -31,8 +31,9 @@ pub const TABOR_TANGENTIAL_MINDLIN: i32 = 2;
 /// `tangential mindlin_rescale k_t x_γ,t μ`.
 pub const TABOR_TANGENTIAL_MINDLIN_RESCALE: i32 = 3;
 /// `tangential mindlin_deresiewicz k_t x_γ,t μ` (k_t = 8 G*, Pa): Mindlin-Deresiewicz
-/// micro-slip in Thornton (1991)'s incremental form (`tabor_tangential::Friction::step`),
-/// not a LAMMPS `pair granular` model.
+/// micro-slip on a compact spring bed of the method of dimensionality reduction
+/// (`tabor_tangential::micro_slip`, `tabor_tangential::Friction::step`), not a
+/// LAMMPS `pair granular` model.
 pub const TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ: i32 = 4;
 /// [`TaborFrictionParams::rolling_model`]: none.
 pub const TABOR_ROLLING_NONE: i32 = 0;
@@ -45,8 +46,20 @@ pub const TABOR_TWISTING_MARSHALL: i32 = 1;
 /// `twisting sds k_twist γ_twist μ_twist`.
 pub const TABOR_TWISTING_SDS: i32 = 2;
 
+/// Number of doubles of the micro-slip bed of `mindlin_deresiewicz`
+/// ([`TaborContactHistory::micro_slip`]; `tabor_tangential::micro_slip::BED_LEN`:
+/// 5 + 2 × 32 springs).
+pub const TABOR_MICRO_SLIP_LEN: usize = 69;
+
+const _: () = assert!(TABOR_MICRO_SLIP_LEN == tabor_tangential::micro_slip::BED_LEN);
+
 /// Number of doubles in a [`TaborContactHistory`].
-pub const TABOR_CONTACT_HISTORY_LEN: usize = 16;
+pub const TABOR_CONTACT_HISTORY_LEN: usize = 10 + TABOR_MICRO_SLIP_LEN;
+
+/// Number of leading doubles of a [`TaborContactHistory`] that a contact
+/// without `mindlin_deresiewicz` uses (the rest, the micro-slip bed, stays zero):
+/// an engine may keep only these for such contacts ([`ContactModel::history_len`]).
+pub const TABOR_CONTACT_HISTORY_BASE_LEN: usize = 10;
 
 /// Friction, rolling and twisting parameters, as LAMMPS's `pair_style granular`
 /// names them (SI units).
@@ -86,30 +99,41 @@ pub struct TaborFrictionParams {
 /// to zero when the contact breaks. The vectors are in the frame of the call:
 /// body i first (swap i and j and they change sign).
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TaborContactHistory {
     /// 1 from jump-in to snap-off (see [`TaborHistory::contact`]).
     pub contact: f64,
     /// The turning point (see [`TaborHistory::max_overlap`]) (m).
     pub max_overlap: f64,
     /// Accumulated tangential displacement (m); `mindlin_deresiewicz`: the
-    /// elastic tangential force T (N, the force on body i is −T).
+    /// elastic tangential force T of the bed (N, the force on body i is −T).
     pub tangential: [f64; 3],
-    /// `mindlin_rescale`: the contact radius of the last update (m);
-    /// `mindlin_deresiewicz`: the Coulomb limit μ F_n0 of the last update (N).
+    /// `mindlin_rescale`: the contact radius of the last update (m).
     pub tangential_contact_radius: f64,
     /// Accumulated rolling displacement (m).
     pub rolling: [f64; 3],
     /// Accumulated twist angle (rad).
     pub twisting: f64,
-    /// `mindlin_deresiewicz`: the turning point T* (N) (Thornton 1991).
-    pub micro_slip_turning: [f64; 3],
-    /// `mindlin_deresiewicz`: the reloading turning point T** (N).
-    pub micro_slip_reversal: f64,
-    /// `mindlin_deresiewicz`: 0 loading, 1 unloading, 2 reloading.
-    pub micro_slip_mode: f64,
-    /// `mindlin_deresiewicz`: the no-slip stiffness k_t a of the last update (N/m).
-    pub micro_slip_spring: f64,
+    /// `mindlin_deresiewicz`: the compact spring bed (`tabor_tangential::micro_slip`:
+    /// the basis vector e₁ of the tangent plane, the node spacing, the last squared
+    /// contact radius, and two components per spring in (e₁, n × e₁); swapping i
+    /// and j changes the sign of e₁ and of every second component); zero for
+    /// every other model.
+    pub micro_slip: [f64; TABOR_MICRO_SLIP_LEN],
+}
+
+impl Default for TaborContactHistory {
+    fn default() -> Self {
+        TaborContactHistory {
+            contact: 0.0,
+            max_overlap: 0.0,
+            tangential: [0.0; 3],
+            tangential_contact_radius: 0.0,
+            rolling: [0.0; 3],
+            twisting: 0.0,
+            micro_slip: [0.0; TABOR_MICRO_SLIP_LEN],
+        }
+    }
 }
 
 /// The geometry and motion of one contact at one time step (LAMMPS's
@@ -252,6 +276,48 @@ fn vector(name: &'static str, v: [f64; 3]) -> Result<Vector3<f64>> {
     Ok(Vector3::from(v))
 }
 
+// The friction part of a TaborContactHistory is laid out as a ContactHistory
+// (both `#[repr(C)]`, all doubles), after the two doubles of the normal law.
+const FRICTION_OFFSET: usize = std::mem::offset_of!(TaborContactHistory, tangential);
+const _: () = {
+    use std::mem::{offset_of, size_of};
+    assert!(FRICTION_OFFSET == 2 * size_of::<f64>());
+    assert!(size_of::<TaborContactHistory>() == FRICTION_OFFSET + size_of::<ContactHistory>());
+    assert!(offset_of!(ContactHistory, tangential) == 0);
+    assert!(
+        offset_of!(TaborContactHistory, tangential_contact_radius) - FRICTION_OFFSET
+            == offset_of!(ContactHistory, tangential_contact_radius)
+    );
+    assert!(
+        offset_of!(TaborContactHistory, rolling) - FRICTION_OFFSET
+            == offset_of!(ContactHistory, rolling)
+    );
+    assert!(
+        offset_of!(TaborContactHistory, twisting) - FRICTION_OFFSET
+            == offset_of!(ContactHistory, twisting)
+    );
+    assert!(
+        offset_of!(TaborContactHistory, micro_slip) - FRICTION_OFFSET
+            == offset_of!(ContactHistory, micro_slip)
+    );
+};
+
+/// The friction models' part of `history`, in place (no copy of the micro-slip
+/// bed: it is most of the history).
+fn friction_history(history: &mut TaborContactHistory) -> &mut ContactHistory {
+    // SAFETY: the compile-time assertions above: from FRICTION_OFFSET on, a
+    // TaborContactHistory has exactly the fields of a ContactHistory at the same
+    // offsets (all f64: same alignment, every bit pattern valid); the pointer
+    // comes from the whole `&mut TaborContactHistory`, whose borrow the result
+    // keeps.
+    unsafe {
+        &mut *(history as *mut TaborContactHistory)
+            .cast::<u8>()
+            .add(FRICTION_OFFSET)
+            .cast::<ContactHistory>()
+    }
+}
+
 impl ContactModel {
     /// A normal law and its friction (`None`: normal forces only).
     pub fn new(law: ContactLaw, friction: Option<Friction>) -> Self {
@@ -266,6 +332,18 @@ impl ContactModel {
     /// The friction, if any.
     pub fn friction(&self) -> Option<&Friction> {
         self.friction.as_ref()
+    }
+
+    /// The leading doubles of a [`TaborContactHistory`] this model uses:
+    /// [`TABOR_CONTACT_HISTORY_LEN`] with `mindlin_deresiewicz`, else
+    /// [`TABOR_CONTACT_HISTORY_BASE_LEN`] (the micro-slip bed stays zero).
+    pub fn history_len(&self) -> usize {
+        match &self.friction {
+            Some(f) if f.tangential.model == TangentialModel::MindlinDeresiewicz => {
+                TABOR_CONTACT_HISTORY_LEN
+            }
+            _ => TABOR_CONTACT_HISTORY_BASE_LEN,
+        }
     }
 
     /// One time step of one contact: the normal force from the law at the
@@ -329,16 +407,7 @@ impl ContactModel {
         }
         let mut total = n * f.force;
         if let Some(friction) = &self.friction {
-            let mut fh = ContactHistory {
-                tangential: history.tangential,
-                tangential_contact_radius: history.tangential_contact_radius,
-                rolling: history.rolling,
-                twisting: history.twisting,
-                micro_slip_turning: history.micro_slip_turning,
-                micro_slip_reversal: history.micro_slip_reversal,
-                micro_slip_mode: history.micro_slip_mode,
-                micro_slip_spring: history.micro_slip_spring,
-            };
+            let fh = friction_history(history);
             let kinematics = ContactKinematics {
                 normal: n,
                 overlap: state.overlap,
@@ -357,27 +426,13 @@ impl ContactModel {
                     .law
                     .damping_coefficient(state.effective_mass, f.contact_radius),
             };
-            let c = friction.step(
-                &kinematics,
-                &response,
-                dt,
-                state.update_history != 0,
-                &mut fh,
-            );
+            let c = friction.step(&kinematics, &response, dt, state.update_history != 0, fh);
             total += c.tangential_force;
             out.torque_i = c.torque_i.into();
             out.torque_j = c.torque_j.into();
             out.tangential_force = c.tangential_force.norm();
             out.critical_force = c.critical_force;
             out.sliding = i32::from(c.sliding);
-            history.tangential = fh.tangential;
-            history.tangential_contact_radius = fh.tangential_contact_radius;
-            history.rolling = fh.rolling;
-            history.twisting = fh.twisting;
-            history.micro_slip_turning = fh.micro_slip_turning;
-            history.micro_slip_reversal = fh.micro_slip_reversal;
-            history.micro_slip_mode = fh.micro_slip_mode;
-            history.micro_slip_spring = fh.micro_slip_spring;
         }
         history.contact = normal.contact;
         history.max_overlap = normal.max_overlap;

@@ -30,7 +30,8 @@
 //! With friction: [`tabor_contact_new`] takes the normal law's parameters and the
 //! friction, rolling and twisting parameters of LAMMPS's `pair_style granular`
 //! ([`TaborFrictionParams`]); [`tabor_contact_step`] advances one contact by one
-//! time step ([`TaborContactState`] in, [`TaborContactHistory`] of 16 doubles kept,
+//! time step ([`TaborContactState`] in, [`TaborContactHistory`] of 79 doubles kept, of
+//! which contacts without `mindlin_deresiewicz` use the first 10,
 //! [`TaborContactForces`] out: the force and both torques). The friction models
 //! are `tabor-tangential`'s (module [`contact`]).
 //!
@@ -47,10 +48,11 @@ pub mod table;
 
 pub use contact::{
     friction_from_params, ContactModel, TaborContactForces, TaborContactHistory, TaborContactState,
-    TaborFrictionParams, TABOR_CONTACT_HISTORY_LEN, TABOR_ROLLING_NONE, TABOR_ROLLING_SDS,
-    TABOR_TANGENTIAL_LINEAR_HISTORY, TABOR_TANGENTIAL_MINDLIN,
-    TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ, TABOR_TANGENTIAL_MINDLIN_RESCALE, TABOR_TANGENTIAL_NONE,
-    TABOR_TWISTING_MARSHALL, TABOR_TWISTING_NONE, TABOR_TWISTING_SDS,
+    TaborFrictionParams, TABOR_CONTACT_HISTORY_BASE_LEN, TABOR_CONTACT_HISTORY_LEN,
+    TABOR_MICRO_SLIP_LEN, TABOR_ROLLING_NONE, TABOR_ROLLING_SDS, TABOR_TANGENTIAL_LINEAR_HISTORY,
+    TABOR_TANGENTIAL_MINDLIN, TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ,
+    TABOR_TANGENTIAL_MINDLIN_RESCALE, TABOR_TANGENTIAL_NONE, TABOR_TWISTING_MARSHALL,
+    TABOR_TWISTING_NONE, TABOR_TWISTING_SDS,
 };
 pub use law::{ContactLaw, LawKind, RadiusScales, TaborForce, TaborHistory};
 
@@ -512,8 +514,36 @@ pub unsafe extern "C" fn tabor_contact_step(
         // SAFETY: valid per the contract
         let (model, state, history, out) =
             unsafe { (&(*contact).0, &*state, &mut *history, &mut *out) };
-        advance(history, out, |h| model.step(state, h))
+        // in place: ContactModel::step leaves the history unchanged on error (it
+        // fails only before it writes), so no copy of it is needed
+        match model.step(state, history) {
+            Ok(o) => {
+                *out = o;
+                TABOR_OK
+            }
+            Err(e) => {
+                *out = TaborContactForces::default();
+                status_of(&e)
+            }
+        }
     })
+}
+
+/// The number of leading doubles of a [`TaborContactHistory`] that the contact
+/// model uses ([`ContactModel::history_len`]: `TABOR_CONTACT_HISTORY_LEN` with
+/// `mindlin_deresiewicz`, else `TABOR_CONTACT_HISTORY_BASE_LEN`); an engine may
+/// store only these and zero the rest before [`tabor_contact_step`]. 0 for a
+/// null pointer.
+///
+/// # Safety
+/// `contact` null or from [`tabor_contact_new`].
+#[no_mangle]
+pub unsafe extern "C" fn tabor_contact_history_len(contact: *const TaborContact) -> usize {
+    if contact.is_null() {
+        return 0;
+    }
+    // SAFETY: valid per the contract
+    unsafe { (*contact).0.history_len() }
 }
 
 /// The normal law's info ([`tabor_law_info_at`]) of a contact model at effective

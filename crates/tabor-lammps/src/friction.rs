@@ -36,7 +36,7 @@ pub(crate) fn null_stiffness_fits(scene: &Scene, f: &Friction, e: f64, nu: f64) 
 /// `pair granular` (`plugin` false) or `pair_style tabor` (`plugin` true).
 /// Mindlin-Deresiewicz micro-slip is refused for `pair granular`, none of whose
 /// tangential models has it; `pair_style tabor` takes it
-/// (`tangential mindlin_deresiewicz`, Thornton 1991's incremental form of
+/// (`tangential mindlin_deresiewicz`, the per-contact spring bed of
 /// `tabor_tangential::Friction::step`).
 pub(crate) fn scene_friction(scene: &Scene, plugin: bool) -> Result<Option<Friction>, ExportError> {
     let friction = scene.friction().map_err(model_err)?;

@@ -117,8 +117,8 @@ fn no_friction_section_keeps_the_frictionless_line() {
     assert!(x.does_not_reproduce.iter().any(|l| l.effect == "friction"));
 }
 
-/// `tangential = "mindlin_deresiewicz"`: `pair_style tabor` takes it (Thornton's
-/// incremental form), `pair granular` has no such model and the export says so.
+/// `tangential = "mindlin_deresiewicz"`: `pair_style tabor` takes it (its
+/// per-contact spring bed), `pair granular` has no such model and the export says so.
 #[test]
 fn micro_slip_goes_to_the_plugin_only() {
     let path =

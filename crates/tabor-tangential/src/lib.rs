@@ -19,7 +19,7 @@
 //! Sources: the crate README.
 
 mod history;
-mod micro_slip;
+pub mod micro_slip;
 mod model;
 pub mod oblique;
 pub mod step;

@@ -1,221 +1,302 @@
-//! The incremental Mindlin-Deresiewicz form of [`crate::Friction::step`] for
-//! `tangential mindlin_deresiewicz`: the per-contact history a DEM engine can keep
-//! (six doubles beside the tangential force), where the oblique impact
-//! ([`crate::oblique`]) integrates the exact spring bed of the method of
-//! dimensionality reduction.
+//! The per-contact form of `tangential mindlin_deresiewicz` that a DEM engine
+//! keeps ([`crate::Friction::step`], the LAMMPS plugin): a compact spring bed of
+//! the method of dimensionality reduction, the same bed the oblique impact
+//! integrates ([`crate::oblique`], 1024 nodes), with [`SPRINGS`] nodes in a
+//! history of [`BED_LEN`] doubles.
 //!
-//! **The form** (Thornton 1991, Powder Technol. 65:153, eqs. for `θ`; Thornton &
-//! Yin 1991; the no-slip rule of Thornton 1991 and Di Renzo & Di Maio 2005, Chem.
-//! Eng. Sci. 60:1303): the elastic tangential force `T` (the force on body `i` is
-//! `−T`) advances over a step by
+//! **The bed** (Popov & Heß 2015; module docs of `crate::oblique`'s bed): springs
+//! of tangential stiffness `k' = k_t/2` per unit length at `−a ≤ x ≤ a`, each
+//! with the Coulomb limit of its share of the normal load,
+//! `q(x) = μ F_n0 · 3(a² − x²)/(4a³)` (exact for Hertz, Thornton & Yin's rule
+//! for the adhesive laws: `F_n0 = F_n + 2 F_pull-off` spread over the law's own
+//! contact radius). A spring's elastic displacement `w` (a vector in the tangent
+//! plane) is capped at `φ (a² − z)`, `z = x²`, `φ = 3 μ F_n0/(4 a³ k')`; a spring
+//! enters the contact unstrained where `a²` passes it and leaves it where `a²`
+//! falls below it. The elastic tangential force is `T = k' ∫₀^{a²} w z^{−1/2} dz`
+//! (the force on body `i` is `−T`).
 //!
-//! ```text
-//! ΔT = k_t a θ Δs ± ΔL (1 − θ) ê,          L = μ F_n0 (the Coulomb limit)
-//! ```
+//! **The nodes.** `w` is kept at nodes uniform in `z`, `z_i = i Δz`, linear in
+//! `z` between them and zero at the edge `z = a²`; the integral is exact for that
+//! interpolation and a slipping zone (`w` on its cap, linear in `z`) is
+//! represented exactly: the error is that of the stick zone's profile between
+//! nodes and falls as `Δz²` (measured against the library's 1024-node bed in
+//! `tests/micro_slip_step.rs`). The spacing follows the contact: set at onset
+//! so that `a²` spans three quarters of the nodes; where the contact outgrows
+//! the last node, every second node is dropped (`Δz` doubles); where it shrinks
+//! below half of them, a node is put midway between every two (`Δz` halves: the
+//! profile is unchanged, it is linear between nodes; a contact that hovers there
+//! and is refined and coarsened in turn keeps its nodes, the midpoints dropped
+//! are the ones refining added). So between half and all of the [`SPRINGS`]
+//! nodes are in contact at every step after the first.
 //!
-//! with `Δs = v_tr dt` the step's tangential displacement, `ê` the axis of the
-//! loading history and, by the state of that history (Mindlin & Deresiewicz 1953),
+//! **The step** (the return map of the library's bed): over a step with
+//! tangential displacement `Δs`, every node in contact becomes `w + Δs`, a node
+//! the growing contact reached during the step only the part of `Δs` after `a²`
+//! (linear along the step) passed it, and is then projected onto the disc of its
+//! cap (the radial return: exact along a straight path in one dimension; in the
+//! plane its error in the direction of a turning slip vanishes with the step).
+//! Each spring dissipates `cap · |slip|` ≥ 0 (tested: the work of the bed never
+//! falls below its stored energy).
 //!
-//! | state | θ³ | sign |
-//! |---|---|---|
-//! | loading (virgin, or after the memory is wiped) | `1 − (T + ΔL)/L` | + |
-//! | unloading from the turning point `T*` | `1 − (T* − T + 2ΔL)/(2L)` | − |
-//! | reloading from the turning point `T**` | `1 − (T − T** + 2ΔL)/(2L)` | + |
+//! **The frame.** The displacements are stored as components in an orthonormal
+//! basis `(e₁, n × e₁)` of the tangent plane; each step `e₁` is projected into
+//! the current tangent plane and normalized (to first order the rotation taking
+//! the old normal to the new one, as LAMMPS turns its stored displacement).
 //!
-//! (`T`, `T*`, `T**` the components along `ê`), clamped to `0 ≤ θ ≤ 1`; the turning
-//! points follow the limit (`T* += ΔL`, `T** −= ΔL`). Where the contact shrinks
-//! (`a < a_old`), `T`, `T*` and `T**` are first scaled by `a/a_old`: the springs
-//! leaving the contact take their share of the force (Thornton & Yin 1991's
-//! unloading correction, the rule of LAMMPS's `mindlin_rescale`). Where the limit grows faster
-//! than the stick force (`k_t a |Δs| ≤ ΔL`) nothing slips, `θ = 1` (Mindlin &
-//! Deresiewicz: `|dT| ≤ μ dN`). Unloading that reaches `−T*`, and reloading that
-//! reaches `T*`, wipe the memory (loading again); a reversal during reloading
-//! starts a new unloading from the current force (the nested loop of the exact
-//! theory is not kept). At `|T| = L` the contact slides and the memory is wiped.
-//!
-//! **Where it is the exact bed to first order.** For Hertz the limit density of the
-//! MDR bed (`crate::oblique`, `q(x) = μ F_n0 · 3(a² − x²)/(4a³)`) gives each spring
-//! a cap `φ (a² − x²)` with `φ = 3L/(4a³k')` constant; after monotonic loading the
-//! bed sticks inside `x < b` and slips in the annulus, and `T/L = 1 − (b/a)³`.
-//! A step then adds `k_t b Δs` from the stick zone and `ΔL (1 − b/a)` from the
-//! annulus riding on its growing caps: the loading row with `θ = b/a`. The
-//! unloading and reloading rows are the same argument for the reversed annulus
-//! (half the force range, twice the limit). What the form does not know is the
-//! profile of a history that is not one of these (a stick phase under growing
-//! load, `k_t a|Δs| ≤ ΔL`, leaves the new edge springs strained less than a slip
-//! annulus would): `θ` is inferred from `T` as if the profile were the monotonic
-//! one, and a shrinking contact releases a uniform share `Δa/a` of the stick force
-//! where the bed releases the strains its edge springs actually carry. The
-//! resulting difference from the exact bed over Maw, Barber & Fawcett's range of
-//! angles is measured in `tests/micro_slip_step.rs`: the tangential restitution
-//! β differs by up to 0.16 at Ψ < 1.7 (the bed's no-slip limit −0.21, this form's
-//! −0.36: the profile a stick phase leaves is not known to it), by less than 0.06
-//! up to Ψ = 3.5, and by less than 3e-3 from Ψ = 5 to the gross-sliding line, where
-//! both are exact (Coulomb). Without the unloading correction the small-Ψ gap is
-//! 0.48 (β → −0.75). With adhesion (JKR, the Thornton-Yin limit) the gap is larger
-//! where the contact sticks most (silica spheres at 0.3 m/s: β −0.08 against the
-//! bed's +0.25 at 5°; `integrations/lammps/test_plugin_friction.py` prints it).
-//!
-//! **In three dimensions** the axis `ê` is the direction of `T` while loading and
-//! of `T*` while unloading or reloading; the whole `Δs` (also its part across the
-//! axis) meets the stiffness `k_t a θ`. The stored vectors are turned into the
-//! current tangent plane every step, keeping their lengths (as LAMMPS turns its
-//! stored displacement).
+//! **Layout** of the [`BED_LEN`] doubles: `e₁` (3), `Δz` (m², 0 for a fresh
+//! contact), `a²` of the last step (m²), then the two components of `w` (m) of
+//! every node from the centre outwards.
 
-use crate::history::{rotate_into_plane, ContactHistory};
 use nalgebra::Vector3;
+use std::sync::OnceLock;
 
-/// `micro_slip_mode` of a contact loading (virgin, or with its memory wiped).
-pub const LOADING: f64 = 0.0;
-/// `micro_slip_mode` of a contact unloading from its turning point `T*`.
-pub const UNLOADING: f64 = 1.0;
-/// `micro_slip_mode` of a contact reloading from its turning point `T**`.
-pub const RELOADING: f64 = 2.0;
+/// The number of nodes of the per-contact spring bed. Chosen from the measured
+/// error against the library's 1024-node bed (`tests/micro_slip_step.rs`):
+/// the tangential restitution of Maw, Barber & Fawcett's impact within the
+/// bound stated there, below the time-step error of a DEM step of `t_c/4000`.
+pub const SPRINGS: usize = 32;
 
-/// `(1 − x)^(1/3)` clamped to `[0, 1]`: Thornton's θ from `x` (the used fraction
-/// of the limit).
-fn theta(x: f64) -> f64 {
-    if x.is_nan() {
-        return 0.0;
-    }
-    (1.0 - x).clamp(0.0, 1.0).cbrt()
+/// The doubles of the per-contact bed of [`SPRINGS`] nodes (module docs:
+/// layout).
+pub const BED_LEN: usize = bed_len(SPRINGS);
+
+const HEAD: usize = 5;
+
+/// The doubles of a bed of `springs` nodes: a header of 5, two per node.
+pub const fn bed_len(springs: usize) -> usize {
+    HEAD + 2 * springs
 }
 
-fn unit(v: &Vector3<f64>) -> Option<Vector3<f64>> {
-    let n = v.norm();
-    (n > 0.0).then(|| v / n)
+/// The nodes whose unit-spacing weights are tabulated (beds of up to this many
+/// nodes read them from the table; larger ones compute them).
+const TABLE: usize = 1024;
+
+/// Per node `i` of a bed of unit spacing, its full weight in `∫ w z^{−1/2} dz`
+/// (the cells `[i − 1, i]` and `[i, i + 1]`, [`cell`]); the weights scale with
+/// `√Δz`.
+fn table() -> &'static [f64] {
+    static WEIGHTS: OnceLock<Vec<f64>> = OnceLock::new();
+    WEIGHTS.get_or_init(|| (0..TABLE).map(full_weight).collect())
 }
 
-/// Advances the Mindlin-Deresiewicz history `h` by the step's tangential
-/// displacement `ds` (m) in the plane normal to `n`, with the no-slip stiffness
-/// `k0 = k_t a` (N/m) and the Coulomb limit `limit = μ F_n0` (N) of this step.
-/// On return `h.tangential` holds the elastic force `T` (N; the force on body `i`
-/// is `−T`), `|T| ≤ limit`; `h.tangential_contact_radius` holds `limit` (the next
-/// step's `L_old`). Returns true when the contact slides (`|T| = L`).
-/// Thornton (1991); module docs.
-pub(crate) fn advance(
-    h: &mut ContactHistory,
-    n: &Vector3<f64>,
-    ds: Vector3<f64>,
-    k0: f64,
-    limit: f64,
-) -> bool {
-    let limit = if limit.is_finite() {
-        limit.max(0.0)
+fn root(i: usize) -> f64 {
+    (i as f64).sqrt()
+}
+
+fn full_weight(i: usize) -> f64 {
+    let below = if i > 0 {
+        cell(root(i - 1), root(i)).1
     } else {
         0.0
     };
-    let old_limit = h.tangential_contact_radius;
-    h.tangential_contact_radius = limit;
-    if k0.is_nan() || k0 <= 0.0 || limit == 0.0 {
-        // no contact area (the no-contact branch of Maugis-Dugdale) or no
-        // limit: every spring of the bed is released
-        wipe(h);
-        h.tangential = [0.0; 3];
-        h.micro_slip_spring = 0.0;
-        return false;
-    }
-    let dl = limit - old_limit;
-    let mut t = rotate_into_plane(Vector3::from(h.tangential), n);
-    let mut star = rotate_into_plane(Vector3::from(h.micro_slip_turning), n);
-    let old_k = h.micro_slip_spring;
-    h.micro_slip_spring = k0;
-    if k0 < old_k {
-        // the contact shrinks: the springs leaving it take their share of the
-        // force (Thornton & Yin 1991's unloading correction, LAMMPS's
-        // mindlin_rescale), the turning points with it
-        let r = k0 / old_k;
-        t *= r;
-        star *= r;
-        h.micro_slip_reversal *= r;
-    }
-    let ds = ds - n * n.dot(&ds);
-    let mut mode = h.micro_slip_mode;
-    let stick = k0 * ds.norm() <= dl;
-    if mode == LOADING {
-        match unit(&t).or_else(|| unit(&ds)) {
-            Some(e) if stick || ds.dot(&e) >= 0.0 || t.norm() == 0.0 => {
-                t += loading_step(t.norm(), &e, ds, dl, k0, limit, stick);
-            }
-            Some(_) => {
-                // a reversal: T* is the force reached
-                star = t;
-                mode = UNLOADING;
-            }
-            None => {}
-        }
-    }
-    if mode != LOADING {
-        let mut e = unit(&star).unwrap_or_else(Vector3::zeros);
-        let p = ds.dot(&e);
-        if !stick && mode == UNLOADING && p > 0.0 {
-            h.micro_slip_reversal = t.dot(&e);
-            mode = RELOADING;
-        } else if !stick && mode == RELOADING && p < 0.0 {
-            // a reversal while reloading: a new unloading from here (on the
-            // force's own axis; the outer loop is forgotten)
-            star = t;
-            e = unit(&star).unwrap_or_else(Vector3::zeros);
-            mode = UNLOADING;
-        }
-        let top = star.norm();
-        let along = t.dot(&e);
-        if stick {
-            t += ds * k0;
-        } else if mode == UNLOADING {
-            let th = theta((top - along + 2.0 * dl) / (2.0 * limit));
-            t += ds * (k0 * th) - e * (dl * (1.0 - th));
-        } else {
-            let th = theta((along - h.micro_slip_reversal + 2.0 * dl) / (2.0 * limit));
-            t += ds * (k0 * th) + e * (dl * (1.0 - th));
-        }
-        // the turning points follow the limit
-        let top = top + dl;
-        h.micro_slip_reversal -= dl;
-        let along = t.dot(&e);
-        if top <= 0.0 || (mode == UNLOADING && along <= -top) || (mode == RELOADING && along >= top)
-        {
-            mode = LOADING;
-        }
-        star = e * top.max(0.0);
-    }
-    let size = t.norm();
-    let sliding = size >= limit;
-    if sliding {
-        t *= limit / size;
-        mode = LOADING;
-    }
-    h.tangential = t.into();
-    if mode == LOADING {
-        wipe(h);
+    below + cell(root(i), root(i + 1)).0
+}
+
+/// The weight of the outermost node `i` in contact (unit spacing) with the edge
+/// at `√(a²/Δz) = ra`: the cell below plus the edge cell `[i, ra²]`, where `w`
+/// falls linearly to 0.
+fn edge_weight(i: usize, ra: f64) -> f64 {
+    let below = if i > 0 {
+        cell(root(i - 1), root(i)).1
     } else {
-        h.micro_slip_mode = mode;
-        h.micro_slip_turning = star.into();
-    }
-    sliding
+        0.0
+    };
+    below + cell(root(i), ra).0
 }
 
-/// The loading row: `k_t a θ Δs + ΔL (1 − θ) ê` with `θ³ = 1 − (T + ΔL)/L`, or
-/// `k_t a Δs` where nothing slips (`stick`).
-fn loading_step(
-    along: f64,
-    e: &Vector3<f64>,
-    ds: Vector3<f64>,
-    dl: f64,
-    k0: f64,
+/// `∫_p^q (q − z)/(q − p) z^{−1/2} dz` and `∫_p^q (z − p)/(q − p) z^{−1/2} dz`
+/// from `√p`, `√q`: the weights of the values at `p` and at `q` of a function
+/// linear in `z` on `[p, q]`.
+fn cell(rp: f64, rq: f64) -> (f64, f64) {
+    let s = rq + rp;
+    if s <= 0.0 {
+        return (0.0, 0.0);
+    }
+    let f = 2.0 / 3.0 * (rq - rp) / s;
+    (f * (2.0 * rq + rp), f * (rq + 2.0 * rp))
+}
+
+/// Zeroes the bed (no contact, or no limit).
+pub fn wipe(bed: &mut [f64]) {
+    bed.iter_mut().for_each(|x| *x = 0.0);
+}
+
+/// A unit vector in the plane normal to `n` (the direction of `hint` there if it
+/// has one, else the axis least aligned with `n` projected).
+fn basis(n: &Vector3<f64>, hint: &Vector3<f64>) -> Vector3<f64> {
+    let p = hint - n * n.dot(hint);
+    let size = p.norm();
+    if size > 1e-6 * hint.norm() && size > 0.0 {
+        return p / size;
+    }
+    let axis = if n.x.abs() <= n.y.abs() && n.x.abs() <= n.z.abs() {
+        Vector3::x()
+    } else if n.y.abs() <= n.z.abs() {
+        Vector3::y()
+    } else {
+        Vector3::z()
+    };
+    let p = axis - n * n.dot(&axis);
+    p / p.norm()
+}
+
+/// Doubles the spacing: node `i` takes the value of node `2i`.
+fn coarsen(w: &mut [f64], nodes: usize) {
+    for i in 0..nodes {
+        let (u, v) = if 2 * i < nodes {
+            (w[4 * i], w[4 * i + 1])
+        } else {
+            (0.0, 0.0)
+        };
+        w[2 * i] = u;
+        w[2 * i + 1] = v;
+    }
+}
+
+/// Halves the spacing: the piecewise-linear profile sampled at the midpoints too.
+fn refine(w: &mut [f64], nodes: usize) {
+    for i in (0..nodes).rev() {
+        let j = i / 2;
+        let (u, v) = if i % 2 == 0 {
+            (w[2 * j], w[2 * j + 1])
+        } else if j + 1 < nodes {
+            (
+                0.5 * (w[2 * j] + w[2 * j + 2]),
+                0.5 * (w[2 * j + 1] + w[2 * j + 3]),
+            )
+        } else {
+            (0.5 * w[2 * j], 0.5 * w[2 * j + 1])
+        };
+        w[2 * i] = u;
+        w[2 * i + 1] = v;
+    }
+}
+
+/// Advances the bed `bed` (`bed_len(N)` doubles for N ≥ 4 nodes, zero for a new
+/// contact) by the step's tangential displacement `ds` (m; its part along `n` is
+/// ignored) at the contact radius `a` (m) and Coulomb limit `limit = μ F_n0` (N)
+/// at the step's end, with `k_line = k'`, the tangential stiffness per unit
+/// length of the bed (`k_t/2`, Pa). Returns the elastic force `T` (N; the force on
+/// body `i` is `−T`), `|T| ≤ limit`, and whether every spring slips (gross
+/// sliding). A contact radius or limit that is zero, negative or not finite
+/// releases every spring (`T = 0`). Module docs.
+pub fn advance(
+    bed: &mut [f64],
+    n: &Vector3<f64>,
+    ds: &Vector3<f64>,
+    k_line: f64,
+    a: f64,
     limit: f64,
-    stick: bool,
-) -> Vector3<f64> {
-    if stick {
-        return ds * k0;
+) -> (Vector3<f64>, bool) {
+    let nodes = (bed.len() - HEAD) / 2;
+    let ok = |x: f64| x.is_finite() && x > 0.0;
+    if !(ok(a) && ok(limit) && ok(k_line)) || nodes < 4 {
+        wipe(bed);
+        return (Vector3::zeros(), false);
     }
-    let th = theta((along + dl) / limit);
-    ds * (k0 * th) + e * (dl * (1.0 - th))
+    let (head, w) = bed.split_at_mut(HEAD);
+    let a2 = a * a;
+    let top = (nodes - 1) as f64;
+    let e1 = basis(n, &Vector3::new(head[0], head[1], head[2]));
+    let e1 = if head[3] == 0.0 {
+        // a fresh contact: the axis of the first displacement, the spacing
+        // with a² at three quarters of the nodes
+        head[3] = a2 / (0.75 * top);
+        head[4] = 0.0;
+        basis(n, ds)
+    } else {
+        e1
+    };
+    let e2 = n.cross(&e1);
+    head[0] = e1.x;
+    head[1] = e1.y;
+    head[2] = e1.z;
+    let mut dz = head[3];
+    while a2 > top * dz {
+        coarsen(w, nodes);
+        dz *= 2.0;
+    }
+    while a2 <= 0.5 * top * dz && dz > 0.0 {
+        refine(w, nodes);
+        dz *= 0.5;
+    }
+    head[3] = dz;
+    let a0_sq = head[4];
+    head[4] = a2;
+    let (du, dv) = (ds.dot(&e1), ds.dot(&e2));
+    let phi = 0.75 * limit / (a2 * a * k_line);
+    let scale = dz.sqrt();
+    let ra = a2.sqrt() / scale;
+    // the nodes in contact: z_i < a²; the last of them borders the edge
+    let inside = ((a2 / dz).ceil() as usize).clamp(1, nodes);
+    let last = inside - 1;
+    let growth = if a2 > a0_sq { 1.0 / (a2 - a0_sq) } else { 0.0 };
+    let table = table();
+    let (mut su, mut sv) = (0.0, 0.0);
+    let mut slipping = 0;
+    for i in 0..inside {
+        let z = i as f64 * dz;
+        // a node the contact reached during the step takes the part of Δs
+        // after a² (linear along the step) passed it
+        let share = if z >= a0_sq && growth > 0.0 {
+            (a2 - z) * growth
+        } else {
+            1.0
+        };
+        let (mut u, mut v) = (w[2 * i] + du * share, w[2 * i + 1] + dv * share);
+        let cap = phi * (a2 - z);
+        let size2 = u * u + v * v;
+        if size2 >= cap * cap {
+            let f = cap / size2.sqrt();
+            u *= f;
+            v *= f;
+            slipping += 1;
+        }
+        w[2 * i] = u;
+        w[2 * i + 1] = v;
+        // the weight of node i in ∫ w z^{−1/2} dz (unit spacing, times √Δz)
+        let c = if i < last {
+            table.get(i).copied().unwrap_or_else(|| full_weight(i))
+        } else {
+            edge_weight(i, ra)
+        };
+        su += u * c;
+        sv += v * c;
+    }
+    // the nodes the contact left are released (one more: a refinement may have
+    // put a midpoint just beyond the last edge); those beyond were already
+    let before = ((a0_sq / dz).ceil() as usize + 1).clamp(inside, nodes);
+    for x in &mut w[2 * inside..2 * before] {
+        *x = 0.0;
+    }
+    let t = (e1 * su + e2 * sv) * (k_line * scale);
+    let size = t.norm();
+    if size > limit {
+        return (t * (limit / size), true);
+    }
+    (t, slipping == inside && inside > 0)
 }
 
-/// Forgets the turning points (loading).
-fn wipe(h: &mut ContactHistory) {
-    h.micro_slip_mode = LOADING;
-    h.micro_slip_turning = [0.0; 3];
-    h.micro_slip_reversal = 0.0;
+/// The elastic energy stored in the bed at contact radius `a` (J):
+/// `½ k' ∫₀^{a²} |w|² z^{−1/2} dz` with the nodal `|w|²` interpolated as `w`.
+pub fn stored_energy(bed: &[f64], k_line: f64, a: f64) -> f64 {
+    let nodes = (bed.len() - HEAD) / 2;
+    let dz = bed[3];
+    if dz <= 0.0 || a.is_nan() || a <= 0.0 {
+        return 0.0;
+    }
+    let w = &bed[HEAD..];
+    let a2 = a * a;
+    let inside = ((a2 / dz).ceil() as usize).clamp(1, nodes);
+    let ra = a2.sqrt() / dz.sqrt();
+    let mut sum = 0.0;
+    for i in 0..inside {
+        let c = if i + 1 < inside {
+            full_weight(i)
+        } else {
+            edge_weight(i, ra)
+        };
+        sum += (w[2 * i] * w[2 * i] + w[2 * i + 1] * w[2 * i + 1]) * c;
+    }
+    0.5 * k_line * dz.sqrt() * sum
 }

@@ -160,10 +160,12 @@ impl Friction {
     ///    of [`crate::Tangential::spring`]; beyond `μ F_n0` the force is scaled to
     ///    the limit and ξ reset to the elastic part of the scaled force;
     ///    `mindlin_rescale` first scales ξ by `a/a_old` when the contact shrinks;
-    ///    `mindlin_deresiewicz` (not a LAMMPS model) advances the elastic force
-    ///    `T` instead by Thornton (1991)'s incremental Mindlin-Deresiewicz form
-    ///    (`k_t a θ Δs ± ΔL(1 − θ)`, `L = μ F_n0`, module `micro_slip`), capped at
-    ///    `L`, and adds the damping `−x_γ,t η_n v_tr`, the sum again capped at `L`;
+    ///    `mindlin_deresiewicz` (not a LAMMPS model) advances instead a compact
+    ///    spring bed of the method of dimensionality reduction (Mindlin-Deresiewicz
+    ///    micro-slip, [`crate::micro_slip`]: [`crate::micro_slip::SPRINGS`] springs
+    ///    in `z = x²`, each with its share of the limit `L = μ F_n0`), whose elastic
+    ///    force `T` (`|T| ≤ L`) is kept in `history.tangential`, and adds the
+    ///    damping `−x_γ,t η_n v_tr`, the sum again capped at `L`;
     /// 2. rolling `sds` (`gran_sub_mod_rolling.cpp`): the same on the rolling
     ///    displacement with `k_roll`, `γ_roll`, `μ_roll F_n0`;
     /// 3. twisting (`gran_sub_mod_twisting.cpp`): `M = −k θ − γ ω_tw`, limited to
@@ -194,8 +196,16 @@ impl Friction {
         // 1. tangential
         if t.model == TangentialModel::MindlinDeresiewicz {
             let (fs, sliding) = if update_history {
-                let sliding = micro_slip::advance(history, &n, vtr * time_step, k, limit);
-                (-Vector3::from(history.tangential), sliding)
+                let (t_el, sliding) = micro_slip::advance(
+                    &mut history.micro_slip,
+                    &n,
+                    &(vtr * time_step),
+                    0.5 * t.stiffness,
+                    a,
+                    limit,
+                );
+                history.tangential = t_el.into();
+                (-t_el, sliding)
             } else {
                 let t = rotate_into_plane(Vector3::from(history.tangential), &n);
                 (-t, t.norm() >= limit)

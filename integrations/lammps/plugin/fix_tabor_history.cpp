@@ -1,5 +1,7 @@
 #include "fix_tabor_history.h"
 
+#include "tabor_ffi.h"
+
 #include "atom.h"
 #include "error.h"
 #include "memory.h"
@@ -74,6 +76,25 @@ void FixTaborHistory::grow_capacity()
   maxexchange = 1 + capacity * (1 + dnum);
 }
 
+void FixTaborHistory::set_width(int wide)
+{
+  if (wide < 1) error->all(FLERR, "fix tabor/history: width {} must be at least 1", wide);
+  if (wide == dnum) return;
+  auto *v = (double *) memory->smalloc(sizeof(double) * (bigint) nmax_alloc * capacity * wide, "tabor/history:values");
+  int keep = MIN(dnum, wide);
+  for (int i = 0; i < nmax_alloc; i++)
+    for (int k = 0; k < npartner[i] && k < capacity; k++) {
+      double *to = v + ((bigint) i * capacity + k) * wide;
+      const double *from = values + ((bigint) i * capacity + k) * dnum;
+      memcpy(to, from, sizeof(double) * keep);
+      for (int d = keep; d < wide; d++) to[d] = 0.0;
+    }
+  memory->sfree(values);
+  values = v;
+  dnum = wide;
+  maxexchange = 1 + capacity * (1 + dnum);
+}
+
 void FixTaborHistory::copy_arrays(int i, int j, int /*delflag*/)
 {
   npartner[j] = npartner[i];
@@ -125,12 +146,18 @@ int FixTaborHistory::pack_restart(int i, double *buf)
   return m;
 }
 
-/* A record written by an older build may hold fewer doubles per contact: the
-   layout of TaborContactHistory only ever grew at its end (2 doubles before
-   friction, 10 before mindlin_deresiewicz, 16 now), so the old values are the
-   leading part of the new ones and the rest starts at zero, which is what a
-   contact of the older models has there. A record with more doubles per contact
-   than this build knows is refused. */
+/* A record written by another build may hold another number of doubles per
+   contact. The layout of TaborContactHistory: the contact flag and turning point
+   of the normal law (2), the tangential and rolling displacements, the contact
+   radius of mindlin_rescale and the twist angle (8 more: 10 in all, what every
+   model but mindlin_deresiewicz uses), then the micro-slip bed of
+   mindlin_deresiewicz (TABOR_MICRO_SLIP_LEN more). Fewer doubles than this
+   build keeps: the missing ones start at zero (an older model's contact, or a
+   contact without micro-slip). More: accepted when the values dropped are all
+   zero (a contact that did not use them), refused otherwise. A record of 16
+   doubles per contact with values beyond the 10th is Thornton's incremental
+   micro-slip state of builds before the spring bed, which this build cannot
+   continue: refused. */
 void FixTaborHistory::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
@@ -147,11 +174,21 @@ void FixTaborHistory::unpack_restart(int nlocal, int nth)
     unpack_exchange(nlocal, const_cast<double *>(buf));
     return;
   }
-  if (stored > dnum)
-    error->one(FLERR,
-               "fix tabor/history: the restart file holds {} doubles per contact, this build of pair tabor "
-               "knows {}: it was written by a newer tabor; read it with that build",
-               stored, dnum);
+  // Thornton's incremental state (builds before the spring bed): doubles 10-15
+  int thornton = stored == 16 && TABOR_CONTACT_HISTORY_LEN != 16;
+  for (int k = 0, k0 = 1; k < n; k++, k0 += 1 + stored)
+    for (int d = thornton ? TABOR_CONTACT_HISTORY_BASE_LEN : dnum; d < stored; d++)
+      if (buf[k0 + 1 + d] != 0.0) {
+        if (thornton)
+          error->one(FLERR, "fix tabor/history: the restart file holds the micro-slip state of Thornton's "
+                            "incremental form (16 doubles per contact), which this build of pair tabor replaced by "
+                            "a spring bed; restart that run from its data file");
+        error->one(FLERR,
+                   "fix tabor/history: the restart file holds {} doubles per contact, this build of pair tabor "
+                   "keeps {} for these pair coefficients and cannot drop the rest (a micro-slip bed, or a newer "
+                   "tabor's state)",
+                   stored, dnum);
+      }
   while (n > capacity) grow_capacity();
   npartner[nlocal] = n;
   tagint *p = partner + (bigint) nlocal * capacity;

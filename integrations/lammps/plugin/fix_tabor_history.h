@@ -34,6 +34,9 @@ class FixTaborHistory : public Fix {
 
   // the doubles of one contact
   int width() const { return dnum; }
+  // changes the doubles per contact, keeping the leading min(old, new) values of
+  // every stored contact (the rest start at zero)
+  void set_width(int);
   // the history of atom i with partner tag t, or nullptr
   double *find(int i, tagint t);
   // stores h (width doubles) for (i, t); removes the entry when h[0] == 0

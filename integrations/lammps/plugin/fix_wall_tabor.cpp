@@ -16,6 +16,7 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 static constexpr int HLEN = TABOR_CONTACT_HISTORY_LEN;
+static constexpr int HBASE = TABOR_CONTACT_HISTORY_BASE_LEN;
 static constexpr double BIG = 1.0e20;
 // the per-atom output of `contacts`: touching flag, force (3), torque (3), contact radius
 static constexpr int NCOLS = 8;
@@ -25,9 +26,10 @@ static constexpr int NCOLS = 8;
 FixWallTabor::FixWallTabor(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), contact(nullptr), reach_unit(0.0), rmax_seen(0.0), reach_max(0.0), wallstyle(ZPLANE), lo(-BIG), hi(BIG),
     cylradius(0.0), wiggle(0), wshear(0), axis(0), amplitude(0.0), period(0.0), omega_wiggle(0.0),
-    vshear(0.0), time_origin(0), region(nullptr), nslot(1), ncontact(nullptr), walls(nullptr),
+    vshear(0.0), time_origin(0), region(nullptr), nslot(1), hlen(HBASE), ncontact(nullptr), walls(nullptr),
     history(nullptr), nmax_alloc(0)
 {
+  memset(&scratch, 0, sizeof(scratch));
   bool is_region = strcmp(style, "wall/tabor/region") == 0;
   who = is_region ? "fix wall/tabor/region" : "fix wall/tabor";
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
@@ -125,6 +127,10 @@ FixWallTabor::FixWallTabor(LAMMPS *lmp, int narg, char **arg) :
   status = tabor_contact_info_at(contact, 1.0, &info);
   if (status != TABOR_OK) tabor_fail_all(lmp, who, status, "interaction range");
   reach_unit = info.interaction_range;
+  // the doubles a contact keeps: the micro-slip bed only with mindlin_deresiewicz
+  hlen = static_cast<int>(tabor_contact_history_len(contact));
+  if (hlen != HBASE && hlen != HLEN)
+    error->all(FLERR, "{}: tabor_contact_history_len {} is neither {} nor {}", who, hlen, HBASE, HLEN);
 
   if (peratom_flag) {
     size_peratom_cols = NCOLS;
@@ -132,7 +138,7 @@ FixWallTabor::FixWallTabor(LAMMPS *lmp, int narg, char **arg) :
   }
   create_attribute = 1;
   restart_peratom = 1;
-  maxexchange = 1 + nslot * (1 + HLEN) + (peratom_flag ? NCOLS : 0);
+  maxexchange = 1 + nslot * (1 + hlen) + (peratom_flag ? NCOLS : 0);
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
@@ -186,7 +192,7 @@ double *FixWallTabor::find_or_add(int i, int wall)
   int k = ncontact[i]++;
   w[k] = wall;
   double *h = history_of(i, k);
-  for (int d = 0; d < HLEN; d++) h[d] = 0.0;
+  for (int d = 0; d < hlen; d++) h[d] = 0.0;
   return h;
 }
 
@@ -198,7 +204,7 @@ void FixWallTabor::forget(int i, int wall)
       int last = --ncontact[i];
       if (k != last) {
         w[k] = w[last];
-        memcpy(history_of(i, k), history_of(i, last), sizeof(double) * HLEN);
+        memcpy(history_of(i, k), history_of(i, last), sizeof(double) * hlen);
       }
       return;
     }
@@ -244,13 +250,21 @@ void FixWallTabor::one_contact(int i, int wall, const double *del, const double 
   s.time_step = update->dt;
   s.effective_mass = atom->rmass[i];
   s.update_history = update->setupflag ? 0 : 1;
-  // the stored doubles are the TaborContactHistory itself (16 doubles, repr(C)):
-  // advanced in place (tabor_contact_step leaves it unchanged on error)
+  // the stored doubles are the leading hlen of a TaborContactHistory (repr(C), all
+  // doubles): the full width (the micro-slip bed) is stepped where it lies, a
+  // narrower one in the scratch copy whose bed stays zero; tabor_contact_step
+  // leaves the history unchanged on error
   static_assert(sizeof(TaborContactHistory) == HLEN * sizeof(double), "history layout");
   double *h = find_or_add(i, wall);
-  TaborContactHistory &hist = *reinterpret_cast<TaborContactHistory *>(h);
+  TaborContactHistory *hp = &scratch;
+  if (hlen == HLEN)
+    hp = reinterpret_cast<TaborContactHistory *>(h);
+  else
+    memcpy(&scratch, h, sizeof(double) * hlen);
+  TaborContactHistory &hist = *hp;
   TaborContactForces out;
-  int status = tabor_contact_step(contact, &s, &hist, &out);
+  int status = tabor_contact_step(contact, &s, hp, &out);
+  if (hlen != HLEN) memcpy(h, &scratch, sizeof(double) * hlen);
   if (status != TABOR_OK) {
     char buf[512];
     tabor_last_error(buf, sizeof(buf));
@@ -377,7 +391,7 @@ void FixWallTabor::grow_arrays(int nmax)
 {
   memory->grow(ncontact, nmax, "wall/tabor:ncontact");
   walls = (int *) memory->srealloc(walls, sizeof(int) * (bigint) nmax * nslot, "wall/tabor:walls");
-  history = (double *) memory->srealloc(history, sizeof(double) * (bigint) nmax * nslot * HLEN,
+  history = (double *) memory->srealloc(history, sizeof(double) * (bigint) nmax * nslot * hlen,
                                         "wall/tabor:history");
   if (peratom_flag) memory->grow(array_atom, nmax, NCOLS, "wall/tabor:array_atom");
   for (int i = nmax_alloc; i < nmax; i++) set_arrays(i);
@@ -388,7 +402,7 @@ void FixWallTabor::copy_arrays(int i, int j, int /*delflag*/)
 {
   ncontact[j] = ncontact[i];
   memcpy(walls + (bigint) j * nslot, walls + (bigint) i * nslot, sizeof(int) * ncontact[i]);
-  memcpy(history_of(j, 0), history_of(i, 0), sizeof(double) * HLEN * ncontact[i]);
+  memcpy(history_of(j, 0), history_of(i, 0), sizeof(double) * hlen * ncontact[i]);
   if (peratom_flag)
     for (int m = 0; m < NCOLS; m++) array_atom[j][m] = array_atom[i][m];
 }
@@ -400,7 +414,7 @@ void FixWallTabor::set_arrays(int i)
     for (int m = 0; m < NCOLS; m++) array_atom[i][m] = 0.0;
 }
 
-/* [ncontact, (wall, HLEN doubles) * ncontact, (NCOLS outputs with contacts)] */
+/* [ncontact, (wall, hlen doubles) * ncontact, (NCOLS outputs with contacts)] */
 int FixWallTabor::pack_exchange(int i, double *buf)
 {
   int m = 0;
@@ -408,7 +422,7 @@ int FixWallTabor::pack_exchange(int i, double *buf)
   for (int k = 0; k < ncontact[i]; k++) {
     buf[m++] = walls[(bigint) i * nslot + k];
     const double *h = history_of(i, k);
-    for (int d = 0; d < HLEN; d++) buf[m++] = h[d];
+    for (int d = 0; d < hlen; d++) buf[m++] = h[d];
   }
   if (peratom_flag)
     for (int c = 0; c < NCOLS; c++) buf[m++] = array_atom[i][c];
@@ -424,26 +438,31 @@ int FixWallTabor::unpack_exchange(int nlocal, double *buf)
   for (int k = 0; k < n; k++) {
     walls[(bigint) nlocal * nslot + k] = static_cast<int>(buf[m++]);
     double *h = history_of(nlocal, k);
-    for (int d = 0; d < HLEN; d++) h[d] = buf[m++];
+    for (int d = 0; d < hlen; d++) h[d] = buf[m++];
   }
   if (peratom_flag)
     for (int c = 0; c < NCOLS; c++) array_atom[nlocal][c] = buf[m++];
   return m;
 }
 
-/* restart record per atom: [size, HLEN, ncontact, (wall, HLEN doubles) * ncontact];
-   buf[0] counts every value including itself (LAMMPS's convention); HLEN is
-   written so that a file from a build with a shorter history is read (zeros for
-   the values it lacks, as fix tabor/history does) and one from a longer is refused */
+/* restart record per atom: [size, width, ncontact, (wall, width doubles) * ncontact];
+   buf[0] counts every value including itself (LAMMPS's convention). The width is
+   written so that a record of another width is read by fix tabor/history's rules
+   for the pair histories: fewer doubles than this fix keeps (a contact without
+   micro-slip, or an older build) start the rest at zero; more are accepted when
+   the values dropped are all zero (a contact that did not use them) and refused
+   otherwise (a micro-slip bed this fix's model cannot continue, or a newer
+   tabor's state); a 16-double record with values beyond the 10th is Thornton's
+   incremental micro-slip state of builds before the spring bed: refused. */
 int FixWallTabor::pack_restart(int i, double *buf)
 {
   int m = 1;
-  buf[m++] = HLEN;
+  buf[m++] = hlen;
   buf[m++] = ncontact[i];
   for (int k = 0; k < ncontact[i]; k++) {
     buf[m++] = walls[(bigint) i * nslot + k];
     const double *h = history_of(i, k);
-    for (int d = 0; d < HLEN; d++) buf[m++] = h[d];
+    for (int d = 0; d < hlen; d++) buf[m++] = h[d];
   }
   buf[0] = m;
   return m;
@@ -458,34 +477,45 @@ void FixWallTabor::unpack_restart(int nlocal, int nth)
   int size = static_cast<int>(buf[0]);
   int width = static_cast<int>(buf[1]);
   int n = static_cast<int>(buf[2]);
-  if (width > HLEN)
-    error->one(FLERR, "{}: the restart file holds {} doubles per wall contact, this build knows {}: it was "
-               "written by a newer tabor", who, width, HLEN);
-  if (n > nslot || size != 3 + n * (1 + width))
-    error->one(FLERR, "{}: a restart record of {} values cannot hold {} wall contacts", who, size, n);
+  if (width < 1 || n < 0 || n > nslot || size != 3 + n * (1 + width))
+    error->one(FLERR, "{}: a restart record of {} values cannot hold {} wall contacts of {} doubles", who, size,
+               n, width);
+  // Thornton's incremental state (builds before the spring bed): doubles 10-15
+  bool thornton = width == 16 && HLEN != 16;
+  for (int k = 0, k0 = 3; k < n; k++, k0 += 1 + width)
+    for (int d = thornton ? HBASE : hlen; d < width; d++)
+      if (buf[k0 + 1 + d] != 0.0) {
+        if (thornton)
+          error->one(FLERR, "{}: the restart file holds the micro-slip state of Thornton's incremental form "
+                            "(16 doubles per wall contact), which this build replaced by a spring bed; restart "
+                            "that run from its data file", who);
+        error->one(FLERR, "{}: the restart file holds {} doubles per wall contact, this fix keeps {} for its "
+                          "model and cannot drop the rest (a micro-slip bed of tangential mindlin_deresiewicz, or "
+                          "a newer tabor's state)", who, width, hlen);
+      }
   ncontact[nlocal] = n;
   int k0 = 3;
   for (int k = 0; k < n; k++) {
     walls[(bigint) nlocal * nslot + k] = static_cast<int>(buf[k0++]);
     double *h = history_of(nlocal, k);
-    for (int d = 0; d < HLEN; d++) h[d] = d < width ? buf[k0 + d] : 0.0;
+    for (int d = 0; d < hlen; d++) h[d] = d < width ? buf[k0 + d] : 0.0;
     k0 += width;
   }
 }
 
 int FixWallTabor::size_restart(int i)
 {
-  return 3 + ncontact[i] * (1 + HLEN);
+  return 3 + ncontact[i] * (1 + hlen);
 }
 
 int FixWallTabor::maxsize_restart()
 {
-  return 3 + nslot * (1 + HLEN);
+  return 3 + nslot * (1 + hlen);
 }
 
 double FixWallTabor::memory_usage()
 {
-  double bytes = (double) nmax_alloc * (sizeof(int) + nslot * (sizeof(int) + sizeof(double) * HLEN));
+  double bytes = (double) nmax_alloc * (sizeof(int) + nslot * (sizeof(int) + sizeof(double) * hlen));
   if (peratom_flag) bytes += (double) nmax_alloc * NCOLS * sizeof(double);
   return bytes;
 }

@@ -10,8 +10,10 @@
    The wall is a flat half-space: R* = the particle's radius (the contact step is
    called with radius_j = +inf), E* the effective modulus of particle and wall,
    m* the particle's mass, torque arm R_i (fix wall/gran's). Every wall contact
-   keeps the full history of tabor_contact_step (normal turning point, tangential,
-   rolling and twisting displacements, micro-slip state): per atom up to `nslot`
+   keeps the history of tabor_contact_step its model uses (tabor_contact_history_len:
+   the normal turning point, the tangential, rolling and twisting displacements,
+   10 doubles; with tangential mindlin_deresiewicz also the micro-slip spring bed,
+   TABOR_CONTACT_HISTORY_LEN = 79 doubles, stepped where it lies): per atom up to `nslot`
    contacts (1 for a plane pair or a cylinder, the region's maximum number of
    surfaces touched at once for a region), each tagged with the wall it touches,
    carried with the atom between MPI ranks and written to restart files. */
@@ -62,14 +64,18 @@ class FixWallTabor : public Fix {
   class Region *region;
 
   // per-atom contacts: ncontact[i] of nslot slots, each the wall's id and the
-  // contact's TABOR_CONTACT_HISTORY_LEN doubles
+  // contact's hlen doubles (the leading part of a TaborContactHistory)
   int nslot;
+  int hlen;    // tabor_contact_history_len: 10, or 79 with mindlin_deresiewicz
   int *ncontact;
   int *walls;          // nmax * nslot
-  double *history;     // nmax * nslot * HLEN
+  double *history;     // nmax * nslot * hlen
   int nmax_alloc;
+  // a narrower history is stepped in this copy, whose micro-slip part stays zero
+  // (a model without mindlin_deresiewicz never writes it)
+  TaborContactHistory scratch;
 
-  double *history_of(int i, int k) { return history + ((bigint) i * nslot + k) * TABOR_CONTACT_HISTORY_LEN; }
+  double *history_of(int i, int k) { return history + ((bigint) i * nslot + k) * hlen; }
   double *find_or_add(int i, int wall);
   void forget(int i, int wall);
   void one_contact(int i, int wall, const double *del, const double *vwall, double **contacts_out);

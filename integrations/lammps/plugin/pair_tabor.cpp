@@ -138,11 +138,13 @@ void PairTabor::init_style()
 
   // the history fix: recreated after read_restart with the same ID and style,
   // LAMMPS hands it the histories stored in the restart file
+  // the doubles per contact: the micro-slip bed only where a pair coefficient
+  // uses mindlin_deresiewicz (tabor_contact_history_len)
+  history_width = TABOR_CONTACT_HISTORY_BASE_LEN;
+  for (auto &c : coeffs)
+    if (c.set && c.contact) history_width = MAX(history_width, (int) tabor_contact_history_len(c.contact));
   fix_history = dynamic_cast<FixTaborHistory *>(modify->get_fix_by_id(HISTORY_ID));
-  if (fix_history && fix_history->width() != history_width) {
-    modify->delete_fix(HISTORY_ID);
-    fix_history = nullptr;
-  }
+  if (fix_history) fix_history->set_width(history_width);
   if (!fix_history)
     fix_history = dynamic_cast<FixTaborHistory *>(
         modify->add_fix(fmt::format("{} all tabor/history {}", HISTORY_ID, history_width)));
@@ -198,6 +200,15 @@ int PairTabor::evaluate(int i, int j, int update_history, TaborContactForces &ou
   double *stored = fix_history->find(i, tag[j]);
   double reach = radsum + c.reach;
   if (!stored && rsq >= reach * reach) return 0;
+  // a history of many cache lines (the micro-slip bed): fetch all of them, and
+  // those of the copy on j, at once rather than one miss after another
+  if (stored && history_width > 16) {
+    double *other = j < atom->nlocal ? fix_history->find(j, tag[i]) : nullptr;
+    for (int k = 0; k < history_width; k += 8) {
+      __builtin_prefetch(stored + k, 1);
+      if (other) __builtin_prefetch(other + k, 1);
+    }
+  }
   double r = sqrt(rsq);
   double rinv = 1.0 / r;
   double **v = atom->v;
@@ -216,13 +227,23 @@ int PairTabor::evaluate(int i, int j, int update_history, TaborContactForces &ou
   double *rmass = atom->rmass;
   s.effective_mass = rmass[a] * rmass[b] / (rmass[a] + rmass[b]);
   s.update_history = update_history > 0 ? 1 : 0;
-  TaborContactHistory h{};
-  if (stored) std::memcpy(&h, stored, sizeof(h));
-  int status = tabor_contact_step(c.contact, &s, &h, &out);
+  // a stored history of the full width is stepped where it lies (the micro-slip
+  // bed is most of it); a narrower one, or none, in a zero-padded copy; single()
+  // (update_history < 0) must not change it: always a copy
+  TaborContactHistory local;
+  TaborContactHistory *h = &local;
+  if (stored && update_history >= 0 && history_width == TABOR_CONTACT_HISTORY_LEN) {
+    h = reinterpret_cast<TaborContactHistory *>(stored);
+  } else {
+    std::memset(&local, 0, sizeof(local));
+    if (stored) std::memcpy(&local, stored, sizeof(double) * history_width);
+  }
+  int status = tabor_contact_step(c.contact, &s, h, &out);
   if (status != TABOR_OK) fail_one(status, "tabor_contact_step");
-  if (update_history >= 0 && (stored || h.contact != 0.0)) {
-    fix_history->store(i, tag[j], reinterpret_cast<double *>(&h));
-    if (j < atom->nlocal) fix_history->store(j, tag[i], reinterpret_cast<double *>(&h));
+  if (update_history >= 0 && (stored || h->contact != 0.0)) {
+    // j first: storing for i may remove the entry h points into (contact broken)
+    if (j < atom->nlocal) fix_history->store(j, tag[i], reinterpret_cast<double *>(h));
+    fix_history->store(i, tag[j], reinterpret_cast<double *>(h));
   }
   return 1;
 }
