@@ -13,7 +13,9 @@ fastest of `none`; printed, and the ratio tabor-jkr/granular (target: at most
 1.0). No assertion: wall-clock times depend on the machine.
 
 Environment: as deposition.py (TABOR, TABOR_PLUGIN, TABOR_FFI_LIB, LAMMPS_VENV);
-TIMING_GRAINS, TIMING_REPEATS (3).
+TIMING_GRAINS, TIMING_REPEATS (3); TIMING_BEFORE_PLUGIN: another build of the
+plugin (e.g. before a change), run as a fifth variant `before-jkr` (tabor-jkr with
+that plugin) in the same alternation, its ratio printed beside.
 """
 
 import os
@@ -25,7 +27,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 GRAINS = os.environ.get("TIMING_GRAINS", "10000")
 REPEATS = int(os.environ.get("TIMING_REPEATS", "3"))
-VARIANTS = ("none", "tabor-jkr", "granular", "tabor")
+BEFORE = os.environ.get("TIMING_BEFORE_PLUGIN")
+VARIANTS = ("none", "tabor-jkr", "granular", "tabor") + (("before-jkr",) if BEFORE else ())
 
 
 def main():
@@ -34,6 +37,8 @@ def main():
         for wall in VARIANTS:
             env = dict(os.environ, DEP_WALL=wall, DEP_RANKS="1", DEP_GRAINS=GRAINS,
                        DEP_OUT=os.path.join(ROOT, "target", "lammps-deposition-timing"))
+            if wall == "before-jkr":
+                env.update(DEP_WALL="tabor-jkr", TABOR_PLUGIN=BEFORE)
             out = subprocess.run([sys.executable, os.path.join(ROOT, "examples", "lammps", "deposition.py")],
                                  env=env, check=True, capture_output=True, text=True).stdout
             t = {k: float(v) for k, v in re.findall(r"(\w+) ([0-9.]+)", out.split("timing (s): ")[1].splitlines()[0])}
@@ -51,6 +56,9 @@ def main():
     print(f"fix wall/tabor (jkr) / fix wall/gran granular jkr, same sub-models: {ratio:.2f}x (target <= 1.0)")
     ratio_md = (best[("tabor", "Modify")] - base) / (best[("granular", "Modify")] - base)
     print(f"fix wall/tabor (maugis) / fix wall/gran granular jkr: {ratio_md:.2f}x")
+    if BEFORE:
+        ratio_b = (best[("before-jkr", "Modify")] - base) / (best[("granular", "Modify")] - base)
+        print(f"fix wall/tabor (jkr) of TIMING_BEFORE_PLUGIN / fix wall/gran granular jkr: {ratio_b:.2f}x")
 
 
 if __name__ == "__main__":
