@@ -18,11 +18,11 @@ the library's answer when its normal speed is below its sticking velocity; the
 report counts the grains whose outcome in LAMMPS differs (grain-grain collisions
 and grains within a few percent of their sticking velocity).
 
-The Tabor parameter: this version uses the fixed-Lambda form of `maugis` (Lambda =
-LAMBDA for every radius, so the Dugdale range h = d_n(R)/Lambda grows as R^(1/3)).
-For one material the range h is the constant and Lambda varies with size: when the
-plugin takes `maugis E* w range h` (issue 31, item 3), change the MODEL line below
-(the one commented "one-line change") and the library's scenes to the range.
+The Tabor parameter: one material, one Dugdale range h (`maugis E* w range h`), so
+each contact's Lambda = d_n(R*)/h follows from its own size, Lambda ∝ R*^(1/3): the
+small grains sit toward the DMT end, the large ones toward JKR. h is chosen so that
+the median grain on the plate has Lambda = LAMBDA_AT_MEDIAN; the library's scene
+of each size has the same `range = h`.
 
 DEP_WALL=granular runs LAMMPS's own `fix wall/gran granular jkr ...` with the same
 sub-models instead, DEP_WALL=tabor-jkr fix wall/tabor with `jkr/load-controlled`
@@ -60,15 +60,30 @@ WALL = os.environ.get("DEP_WALL", "tabor")
 SEED = 31
 
 R0, SIGMA, RHO, E, NU, W = 1e-6, 0.3, 2650.0, 54e9, 0.17, 0.05
-LAMBDA = 1.0
+LAMBDA_AT_MEDIAN = 1.0
+
+
+def d_n(r_star):
+    """The Maugis-Dugdale depth scale d_n = a_c²/(3R*), a_c = (9πwR*²/(8E*))^(1/3)
+    (docs: the maugis-dugdale spec; pair_tabor.rst, range h)."""
+    a_c = (9.0 * math.pi * W * r_star * r_star / (8.0 * E_STAR)) ** (1.0 / 3.0)
+    return a_c * a_c / (3.0 * r_star)
+
+
+def tabor_parameter(r_star):
+    """Lambda = d_n(R*)/h of a contact of effective radius R* (m)."""
+    return d_n(r_star) / RANGE_H
+
+
 E_STAR = E / (2 * (1 - NU * NU))     # silica on silica (grain-grain and grain-plate alike)
+RANGE_H = d_n(R0) / LAMBDA_AT_MEDIAN  # the Dugdale range (m): one constant of the material
 MU, K_ROLL, MU_ROLL = 0.3, 50.0, 0.1
 ANGLE = 20.0                          # degrees from the plate's normal
 HEIGHTS = 0.05                        # starting gaps spread over this many median radii beyond the reach
 OCCUPANCY = 0.5                       # fraction of the grid's cells that hold a grain
 STEPS_PER_CONTACT = 50                # a DEM time step: Hertz contact time of the smallest grain / 50
 FRICTION = f"tangential mindlin NULL 0 {MU} rolling sds {K_ROLL} 0 {MU_ROLL} twisting marshall"
-MODEL = f"maugis {E_STAR!r} {W} {LAMBDA}"   # one-line change: f"maugis {E_STAR!r} {W} range {H}"
+MODEL = f"maugis {E_STAR!r} {W} range {RANGE_H!r}"   # each contact at its own Lambda
 COEFFS = f"{MODEL} poisson {NU} {FRICTION}"
 WALLS = {
     "tabor": f"fix plate all wall/tabor {COEFFS} zplane 0.0 NULL contacts",
@@ -90,7 +105,7 @@ def scene_file(radius, path):
         f.write(f'name = "grain-on-plate"\n[sphere]\nradius = {radius!r}\ndensity = {RHO}\n'
                 f"youngs_modulus = {E}\npoisson_ratio = {NU}\n[target]\ndensity = {RHO}\n"
                 f"youngs_modulus = {E}\npoisson_ratio = {NU}\n[adhesion]\nwork_of_adhesion = {W}\n"
-                f"tabor_parameter = {LAMBDA}\n")
+                f"range = {RANGE_H!r}\n")
 
 
 def sticking_velocity(radius, tmp):
@@ -99,17 +114,24 @@ def sticking_velocity(radius, tmp):
     return tabor_json("sticking", path)["sticking_velocity"]
 
 
-_RANGE_AT_R0 = []
+_REACH = []
 
 
 def interaction_range(radius):
     """The reach of the law beyond touching at R* = radius (m), the gap at which a
-    grain starts to feel the plate: tabor-ffi's own value (tabor_law_info) at the
-    median radius, scaled as lengths of the law scale, R*^(1/3) (one table built,
-    not one per grain)."""
-    if not _RANGE_AT_R0:
-        _RANGE_AT_R0.append(law_info(FFI, "maugis", E_STAR, R0, W, LAMBDA).interaction_range)
-    return _RANGE_AT_R0[0] * (radius / R0) ** (1 / 3)
+    grain starts to feel the plate: tabor-ffi's own value (tabor_law_info, at the
+    radius's own Lambda) on nine radii spanning ±3 sigma, interpolated in
+    log-log (nine tables built, not one per grain)."""
+    if not _REACH:
+        for k in range(9):
+            r = R0 * math.exp(SIGMA * (-3.0 + 0.75 * k))
+            reach = law_info(FFI, "maugis", E_STAR, r, W, tabor_parameter(r)).interaction_range
+            _REACH.append((math.log(r), math.log(reach)))
+    x = min(max(math.log(radius), _REACH[0][0]), _REACH[-1][0])
+    for (x0, y0), (x1, y1) in zip(_REACH, _REACH[1:]):
+        if x <= x1:
+            return math.exp(y0 + (y1 - y0) * (x - x0) / (x1 - x0))
+    return math.exp(_REACH[-1][1])
 
 
 def lmp_exe():
@@ -212,8 +234,9 @@ def main():
         t = timing(log)
         lines = [f"deposition: {GRAINS} silica grains, radii {r_min:.3e}..{r_max:.3e} m (log-normal, median {R0:g} m, "
                  f"sigma {SIGMA}), plate coverage {coverage:.3f}, speed {speed:.5f} m/s at {ANGLE:g} deg from the normal (normal "
-                 f"{speed * math.cos(math.radians(ANGLE)):.5f} m/s), Maugis-Dugdale Lambda = {LAMBDA} (fixed for every "
-                 f"radius) + {FRICTION}; wall: {WALL}; {RANKS} MPI rank(s), {steps} steps of {dt:.3e} s",
+                 f"{speed * math.cos(math.radians(ANGLE)):.5f} m/s), Maugis-Dugdale range h = {RANGE_H:.4e} m "
+                 f"(Lambda {tabor_parameter(r_min):.3f}..{tabor_parameter(r_max):.3f} on the plate, "
+                 f"{LAMBDA_AT_MEDIAN} at the median) + {FRICTION}; wall: {WALL}; {RANKS} MPI rank(s), {steps} steps of {dt:.3e} s",
                  "timing (s): " + ", ".join(f"{k} {v:.3f}" for k, v in t.items())]
         if WALL not in ("tabor", "granular"):
             print("\n".join(lines))
@@ -243,21 +266,29 @@ def main():
             per_grain = {}
             for i, row in state.items():
                 per_grain[i] = row[0]
-            # v_s(R) is a power law in R over the distribution: fit it from the bin centres
-            xs = [math.log(c) for c, *_ in rows]
-            ys = [math.log(v) for _, _, v, _ in rows]
-            n = len(xs)
-            slope = (n * sum(x * y for x, y in zip(xs, ys)) - sum(xs) * sum(ys)) / (n * sum(x * x for x in xs) - sum(xs) ** 2)
-            icpt = (sum(ys) - slope * sum(xs)) / n
-            worst = max(abs(math.exp(icpt + slope * x) / math.exp(y) - 1) for x, y in zip(xs, ys))
+            # v_s(R) on 21 radii spanning the distribution, interpolated in log-log
+            # (Lambda varies with R at a fixed range: not a power law)
+            grid = [r_min * (r_max / r_min) ** (k / 20) for k in range(21)]
+            table = [(math.log(r), math.log(sticking_velocity(r, tmp))) for r in grid]
+
+            def v_s_at(r):
+                x = min(max(math.log(r), table[0][0]), table[-1][0])
+                for (x0, y0), (x1, y1) in zip(table, table[1:]):
+                    if x <= x1:
+                        return math.exp(y0 + (y1 - y0) * (x - x0) / (x1 - x0))
+                return math.exp(table[-1][1])
+
+            # the interpolation's error, at the midpoints against the library itself
+            worst = max(abs(v_s_at(math.sqrt(a * b)) / sticking_velocity(math.sqrt(a * b), tmp) - 1)
+                        for a, b in zip(grid[::4], grid[1::4]))
             ratios = []
             for i, r in per_grain.items():
-                v_s = math.exp(icpt + slope * math.log(r))
+                v_s = v_s_at(r)
                 if (vn < v_s) != (i in stuck):
                     mismatched += 1
                     ratios.append(vn / v_s)
-            lines.append(f"library's sticking velocity on the plate: v_s = {math.exp(icpt):.4e} R^{slope:.4f} "
-                         f"(fit to the bin centres, worst {worst:.1e}); grains whose outcome differs from the "
+            lines.append(f"library's sticking velocity on the plate, v_s(R) on 21 radii, interpolated in log-log "
+                         f"(worst {worst:.1e} at midpoints); grains whose outcome differs from the "
                          f"library's (v_n < v_s(R)): {mismatched} of {GRAINS} ({100 * mismatched / GRAINS:.2f} %)"
                          + (f", all with v_n/v_s(R) in [{min(ratios):.4f}, {max(ratios):.4f}]" if ratios else ""))
         if os.environ.get("DEP_COMPARE_RANKS") == "1" and RANKS != 1:

@@ -5,8 +5,8 @@
 # impacting a plate, Maugis-Dugdale + friction at the plate (fix wall/tabor) and
 # between the grains (pair_style tabor), on 2 MPI ranks (mpirun -np 2); the fraction
 # that sticks per size bin beside the library's sticking velocity of each size.
-# Fixed-Lambda Maugis-Dugdale for now (see deposition.py's header: one line changes
-# it to a fixed range h). Outputs in target/lammps-deposition (report_tabor.txt,
+# Maugis-Dugdale at one Dugdale range h (maugis E* w range h): each contact's
+# Lambda from its own size (deposition.py's header). Outputs in target/lammps-deposition (report_tabor.txt,
 # deposition.svg; DEP_FIGURE=1 copies it to docs/figures/lammps_deposition.svg).
 # The CI runs DEP_GRAINS=300 DEP_COMPARE_RANKS=1 (integrations/lammps/test_plugin.sh).
 set -euo pipefail

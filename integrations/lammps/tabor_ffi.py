@@ -11,7 +11,8 @@ class Params(ctypes.Structure):
     _fields_ = [("model", ctypes.c_int32), ("effective_modulus", ctypes.c_double),
                 ("effective_radius", ctypes.c_double), ("work_of_adhesion", ctypes.c_double),
                 ("tabor_parameter", ctypes.c_double), ("damping_time", ctypes.c_double),
-                ("damping_model", ctypes.c_int32), ("damping_value", ctypes.c_double)]
+                ("damping_model", ctypes.c_int32), ("damping_value", ctypes.c_double),
+                ("dugdale_range", ctypes.c_double), ("cohesive_stress", ctypes.c_double)]
 
 
 class Info(ctypes.Structure):

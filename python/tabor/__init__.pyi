@@ -72,23 +72,23 @@ def maugis_dugdale_curve(
 ) -> Tuple[Floats, Floats]: ...
 @overload
 def force_displacement(
-    model: Literal['jkr', 'dmt', 'maugis-dugdale'], contact_radius: float, *, radius: float, elastic_modulus: float,
+    model: Literal['jkr', 'dmt', 'maugis-dugdale'], contact_radius: float, *, radius: float, contact_modulus: float,
     work_of_adhesion: float, cohesive_stress: Optional[float] = ..., errors: Errors = ..., threads: Optional[int] = ...
 ) -> Tuple[float, float]: ...
 @overload
 def force_displacement(
     model: Literal['jkr', 'dmt', 'maugis-dugdale'], contact_radius: ArrayLike, *, radius: ArrayLike,
-    elastic_modulus: ArrayLike, work_of_adhesion: ArrayLike, cohesive_stress: Optional[ArrayLike] = ...,
+    contact_modulus: ArrayLike, work_of_adhesion: ArrayLike, cohesive_stress: Optional[ArrayLike] = ...,
     errors: Errors = ..., threads: Optional[int] = ...
 ) -> Tuple[Floats, Floats]: ...
 @overload
 def maugis_parameter(
-    radius: float, elastic_modulus: float, work_of_adhesion: float, cohesive_stress: float, *, errors: Errors = ...,
+    radius: float, contact_modulus: float, work_of_adhesion: float, cohesive_stress: float, *, errors: Errors = ...,
     threads: Optional[int] = ...
 ) -> float: ...
 @overload
 def maugis_parameter(
-    radius: ArrayLike, elastic_modulus: ArrayLike, work_of_adhesion: ArrayLike, cohesive_stress: ArrayLike, *,
+    radius: ArrayLike, contact_modulus: ArrayLike, work_of_adhesion: ArrayLike, cohesive_stress: ArrayLike, *,
     errors: Errors = ..., threads: Optional[int] = ...
 ) -> Floats: ...
 def jkr_normalized_loss() -> float: ...
@@ -216,7 +216,7 @@ class JkrArrays(TypedDict):
 @overload
 def jkr(
     *,
-    modulus: float,
+    contact_modulus: float,
     radius: float,
     work_of_adhesion: float,
     mass: float,
@@ -229,7 +229,7 @@ def jkr(
 @overload
 def jkr(
     *,
-    modulus: ArrayLike,
+    contact_modulus: ArrayLike,
     radius: ArrayLike,
     work_of_adhesion: ArrayLike,
     mass: ArrayLike,
@@ -274,7 +274,7 @@ class PlasticArrays(TypedDict):
 def plastic(
     *,
     model: Literal['thornton', 'interpolation', 'jackson-green', 'dimensionless-fit', 'adhesive-interpolation', 'superposition'],
-    modulus: float,
+    contact_modulus: float,
     radius: float,
     mass: float,
     yield_stress: float,
@@ -291,7 +291,7 @@ def plastic(
 def plastic(
     *,
     model: Literal['thornton', 'interpolation', 'jackson-green', 'dimensionless-fit', 'adhesive-interpolation', 'superposition'],
-    modulus: ArrayLike,
+    contact_modulus: ArrayLike,
     radius: ArrayLike,
     mass: ArrayLike,
     yield_stress: ArrayLike,

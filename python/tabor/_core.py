@@ -232,7 +232,9 @@ def keyword_doc(spec: Sequence[Tuple[str, str, Any, Any, str]]) -> str:
     """The "Keyword arguments" section of a model function from its table."""
     lines = ["Keyword arguments (CLI flag in brackets):"]
     for name, kind, default, choices, help_ in spec:
-        flag = "--" + name.replace("_", "-")
+        # the command line keeps its own name where Python renamed a keyword
+        cli = {new: old for old, new in RENAMED_KEYWORDS.items() if old != "elastic_modulus"}.get(name, name)
+        flag = "--" + cli.replace("_", "-")
         if kind == "choice":
             opts = "".join(f'\n      "{c}": {about}' for c, about in choices)
             tail = (f' Default "{default}".' if default else " Required.") + " One of:" + opts

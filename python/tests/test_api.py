@@ -102,7 +102,7 @@ def test_loss_errors():
 def test_curve_and_conversion_errors():
     curve = tabor.maugis_dugdale_curve
     raises(r"invalid maugis_parameter = -1", curve, maugis_parameter=-1.0, contact_radius=1.0)
-    raises(r"invalid contact_radius = -5e-1", curve, maugis_parameter=1.0, contact_radius=-0.5)
+    raises(r"invalid contact_radius = -0.5", curve, maugis_parameter=1.0, contact_radius=-0.5)
     raises(r"contact_radius = NaN.*\(at index 1\)", curve, maugis_parameter=1.0, contact_radius=[1.0, np.nan])
     raises(r"invalid maugis_parameter = 0", tabor.tabor_parameter_from_maugis, 0.0)
     raises(r"invalid tabor_mu = -2", tabor.tabor_parameter_from_tabor_mu, -2.0)

@@ -18,6 +18,8 @@ fn params(model: i32, lambda: f64) -> TaborLawParams {
         damping_time: 0.0,
         damping_model: TABOR_DAMPING_KUWABARA_KONO,
         damping_value: 0.0,
+        dugdale_range: 0.0,
+        cohesive_stress: 0.0,
     }
 }
 

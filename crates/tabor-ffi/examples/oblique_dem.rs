@@ -45,6 +45,8 @@ fn main() {
             damping_time: 0.0,
             damping_model: TABOR_DAMPING_KUWABARA_KONO,
             damping_value: 0.0,
+            dugdale_range: 0.0,
+            cohesive_stress: 0.0,
         };
         // the plugin's `tangential mindlin_deresiewicz NULL 0 mu`: k_t = 8 G*,
         // G* = E* (1 − ν)/(2 (2 − ν))

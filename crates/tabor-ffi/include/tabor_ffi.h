@@ -102,6 +102,16 @@
 // an engine may keep only these for such contacts ([`ContactModel::history_len`]).
 #define TABOR_CONTACT_HISTORY_BASE_LEN 10
 
+// Intervals of the node grid in ln Λ between the case boundaries Λ1 and Λ2
+// (q = ln(Λ2/Λ1)/18 ≈ 0.0199: 116 nodes per decade of Λ).
+#define TABOR_LAMBDA_CASE_2_INTERVALS 18
+
+// The smallest Λ the grid reaches (deep DMT: the range is 10⁴ d_n).
+#define TABOR_LAMBDA_MIN 1e-4
+
+// The largest Λ the grid reaches (JKR to within 10⁻⁶ of every scale).
+#define TABOR_LAMBDA_MAX 1e6
+
 // An opaque contact model: a normal law with optional friction (create with
 // [`tabor_contact_new`], free with [`tabor_contact_free`]).
 typedef struct TaborContact TaborContact;
@@ -130,6 +140,12 @@ typedef struct TaborLawParams {
   // The DEM damping law's value: η_n0 (1/(m s)) for viscoelastic, e in (0, 1]
   // for tsuji and coeff_restitution.
   double damping_value;
+  // Maugis-Dugdale with a Tabor parameter from each contact's own size: the
+  // Dugdale range h (m), Λ = d_n(R*)/h per contact (module [`lambda`]); 0: not
+  // given. Excludes [`TaborLawParams::tabor_parameter`] and `cohesive_stress`.
+  double dugdale_range;
+  // The same with the Dugdale cohesive stress σ0 (Pa), h = w/σ0; 0: not given.
+  double cohesive_stress;
 } TaborLawParams;
 
 // The state a contact carries from one time step to the next (one per pair of
@@ -399,6 +415,19 @@ size_t tabor_contact_history_len(const struct TaborContact *contact);
 int32_t tabor_contact_info_at(const struct TaborContact *contact,
                               double effective_radius,
                               struct TaborLawInfo *out);
+
+// Prepares a contact model for effective radii in [r_min, r_max] (m): builds
+// now the table nodes of a per-contact-Λ law those radii need (a no-op for the
+// other laws; contacts outside still work, building their nodes on first use),
+// and writes to `*reach` the largest interaction range (m) over those radii,
+// which neighbor lists must cover.
+//
+// # Safety
+// `contact` from [`tabor_contact_new`]; `reach` writable.
+int32_t tabor_contact_prepare(const struct TaborContact *contact,
+                              double r_min,
+                              double r_max,
+                              double *reach);
 
 // Copies the message of the last error on this thread into `buffer` (at most
 // `length` bytes including the terminating NUL) and returns the message's full

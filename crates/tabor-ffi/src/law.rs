@@ -4,6 +4,7 @@
 //! δ > 0 in contact (negative: a gap), overlap rate δ̇ > 0 while approaching, force
 //! F > 0 when repulsive.
 
+pub use crate::state::{TaborForce, TaborHistory};
 use crate::table::{Table, TableError};
 use std::sync::{Arc, OnceLock};
 use tabor_dynamics::ForceLaw;
@@ -24,48 +25,19 @@ pub enum LawKind {
     /// Maugis-Dugdale at Tabor parameter Λ, the impact path of seed 000 section
     /// 5.3.2 ((5.40)-(5.46)): jump-in at δ = −h, snap-off at the path's minimum depth.
     MaugisDugdale(f64),
-}
-
-/// The state a contact carries from one time step to the next (one per pair of
-/// particles in contact). `#[repr(C)]` and all doubles, so that a DEM engine can
-/// store it in its per-atom partner arrays.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct TaborHistory {
-    /// 1 once the contact has formed (jump-in: δ ≥ 0 for Hertz and JKR, δ ≥ −h for
-    /// Maugis-Dugdale, seed 000 (5.40)), 0 before and after snap-off. While it is 1
-    /// the force follows the adhesive branch down to the snap-off overlap.
-    pub contact: f64,
-    /// The largest overlap reached since the contact formed (m): the turning point
-    /// that separates loading from unloading on the branch (0 when not in contact).
-    pub max_overlap: f64,
-}
-
-/// What happened to a contact in one evaluation.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct TaborForce {
-    /// Normal force (N), positive when repulsive: elastic-adhesive plus
-    /// Kuwabara-Kono damping.
-    pub force: f64,
-    /// The elastic-adhesive part of `force` (N), without damping (what the Coulomb
-    /// limit of friction is built from, LAMMPS's `Fne`).
-    pub elastic_force: f64,
-    /// Contact radius a (m) of the branch (0 without contact, and on the no-contact
-    /// branch of Maugis-Dugdale).
-    pub contact_radius: f64,
-    /// 0: nothing happened; 1: the contact formed in this call (jump-in); 2: it broke
-    /// (snap-off); 3: it formed and broke in the same call (never for a continuous
-    /// trajectory).
-    pub event: i32,
+    /// Maugis-Dugdale at a fixed Dugdale range h (m): each contact's Λ = d_n(R*)/h
+    /// (module [`crate::lambda`]).
+    MaugisDugdaleRange(f64),
 }
 
 /// The exact law at the reference radius, for overlaps beyond the table.
 #[derive(Clone, Debug)]
-enum Exact {
+pub(crate) enum Exact {
     Hertz,
     Jkr(JkrForceLaw),
     Maugis(Box<MaugisDugdaleForceLaw>),
+    /// A per-contact-Λ law has no single exact law.
+    PerContact,
 }
 
 /// The scales of a law at one effective radius R*: what turns the normalized
@@ -100,29 +72,31 @@ pub struct RadiusScales {
 /// reference the single-radius accessors report at.
 #[derive(Clone, Debug)]
 pub struct ContactLaw {
-    kind: LawKind,
-    effective_modulus: f64,
-    damping_time: f64,
+    pub(crate) kind: LawKind,
+    pub(crate) effective_modulus: f64,
+    pub(crate) damping_time: f64,
     /// A DEM damping law of LAMMPS's `pair granular` instead of Kuwabara-Kono.
-    dem_damping: Option<NormalDamping>,
+    pub(crate) dem_damping: Option<NormalDamping>,
     /// The scales at the reference radius.
-    reference: RadiusScales,
+    pub(crate) reference: RadiusScales,
     /// F_n/R*, d_n/R*^(1/3), a_c/R*^(2/3): the scales at unit radius.
-    unit_force: f64,
-    unit_depth: f64,
-    unit_contact_radius: f64,
+    pub(crate) unit_force: f64,
+    pub(crate) unit_depth: f64,
+    pub(crate) unit_contact_radius: f64,
     /// d̂₀: normalized depth at the table origin s = 0 (the branch minimum).
-    table_origin: f64,
+    pub(crate) table_origin: f64,
     /// 1/L: the table coordinate is s = √((d̂ − d̂₀)/L).
-    inv_table_length: f64,
+    pub(crate) inv_table_length: f64,
     /// Normalized overlap d̂ at which a contact forms.
-    jump_in: f64,
+    pub(crate) jump_in: f64,
     /// Normalized overlap below which a formed contact breaks.
-    snap_off: f64,
+    pub(crate) snap_off: f64,
     /// The most tensile force on the branch, F̂ (≤ 0).
-    pull_off_force: f64,
-    table: Option<Arc<Table>>,
-    exact: Exact,
+    pub(crate) pull_off_force: f64,
+    pub(crate) table: Option<Arc<Table>>,
+    /// The table over Λ of a per-contact-Λ law (then `table` is `None`).
+    pub(crate) per_contact: Option<(f64, Arc<crate::lambda::LambdaTable>)>,
+    pub(crate) exact: Exact,
 }
 
 fn jkr_table() -> Result<Arc<Table>> {
@@ -181,12 +155,13 @@ impl ContactLaw {
             snap_off: 0.0,
             pull_off_force: 0.0,
             table: None,
+            per_contact: None,
             exact: Exact::Hertz,
         })
     }
 
     /// Sets the adhesive scales from `s`, the JKR scales at the reference radius.
-    fn with_scales(mut self, s: &tabor_jkr::JkrScales) -> Self {
+    pub(crate) fn with_scales(mut self, s: &tabor_jkr::JkrScales) -> Self {
         let r = self.reference.effective_radius;
         let c = r.cbrt();
         self.reference.force = s.force;
@@ -356,8 +331,8 @@ impl ContactLaw {
     }
 
     #[inline]
-    fn scales_unchecked(&self, r: f64) -> RadiusScales {
-        if self.table.is_none() {
+    pub(crate) fn scales_unchecked(&self, r: f64) -> RadiusScales {
+        if !self.adhesive() {
             return RadiusScales {
                 effective_radius: r,
                 sqrt_radius: r.sqrt(),
@@ -384,6 +359,9 @@ impl ContactLaw {
 
     /// The overlap at which a contact forms at the radius of `s` (m).
     pub fn jump_in_overlap_at(&self, s: &RadiusScales) -> f64 {
+        if let Some((h, _)) = self.per_contact {
+            return -h;
+        }
         self.jump_in * s.depth
     }
 
@@ -396,6 +374,9 @@ impl ContactLaw {
 
     /// The snap-off overlap at the radius of `s` (m).
     pub fn snap_off_overlap_at(&self, s: &RadiusScales) -> f64 {
+        if self.per_contact.is_some() {
+            return self.local_at(s).map_or(f64::NAN, |l| l.snap_off * s.depth);
+        }
         self.snap_off * s.depth
     }
 
@@ -408,6 +389,9 @@ impl ContactLaw {
 
     /// The interaction range at the radius of `s` (m, ≥ 0; grows as R*^(1/3)).
     pub fn interaction_range_at(&self, s: &RadiusScales) -> f64 {
+        if let Some((h, _)) = self.per_contact {
+            return h.max(-self.snap_off_overlap_at(s));
+        }
         (-self.jump_in).max(-self.snap_off).max(0.0) * s.depth
     }
 
@@ -420,11 +404,19 @@ impl ContactLaw {
 
     /// The pull-off force at the radius of `s` (N, ≤ 0; ∝ R*).
     pub fn pull_off_force_at(&self, s: &RadiusScales) -> f64 {
+        if self.per_contact.is_some() {
+            return self
+                .local_at(s)
+                .map_or(f64::NAN, |l| l.pull_off_force * s.force);
+        }
         self.pull_off_force * s.force
     }
 
     /// The measured interpolation errors of the table (zero for Hertz).
     pub fn table_error(&self) -> TableError {
+        if let Some((_, t)) = &self.per_contact {
+            return t.node_error();
+        }
         self.table.as_ref().map(|t| t.error()).unwrap_or_default()
     }
 
@@ -485,6 +477,12 @@ impl ContactLaw {
                 Ok((law.force(d, 0.0)?, law.contact_radius(d, 0.0)?))
             }
             Exact::Maugis(law) => Ok((law.force(overlap, 0.0)?, law.contact_radius(overlap, 0.0)?)),
+            Exact::PerContact => Err(Error::Model {
+                model: "tabor-ffi per-contact Lambda law",
+                message:
+                    "no single exact law: build ContactLaw::maugis_dugdale at the contact's Lambda"
+                        .into(),
+            }),
         }
     }
 
@@ -551,6 +549,17 @@ impl ContactLaw {
                 "overlap and overlap rate must be finite",
             ));
         }
+        if let Some((h, table)) = &self.per_contact {
+            return self.evaluate_per_contact(
+                *h,
+                table,
+                scales,
+                overlap,
+                overlap_rate,
+                effective_mass,
+                history,
+            );
+        }
         let mut event = 0;
         let hertz = self.table.is_none();
         if history.contact == 0.0 {
@@ -572,7 +581,26 @@ impl ContactLaw {
             history.max_overlap = overlap;
         }
         let (f, a) = self.branch(scales, overlap)?;
-        let force = match &self.dem_damping {
+        Ok(TaborForce {
+            force: self.total_force(f, a, overlap_rate, effective_mass),
+            elastic_force: f,
+            contact_radius: a,
+            event,
+        })
+    }
+
+    /// The elastic-adhesive force `f` (N) at contact radius `a` (m) plus the
+    /// damping force at `overlap_rate` (Hertz with Kuwabara-Kono damping clipped
+    /// at 0, see [`ContactLaw::evaluate_with_mass`]).
+    #[inline]
+    pub(crate) fn total_force(
+        &self,
+        f: f64,
+        a: f64,
+        overlap_rate: f64,
+        effective_mass: f64,
+    ) -> f64 {
+        match &self.dem_damping {
             Some(d) => f + d.force(effective_mass, a, overlap_rate),
             None => {
                 let damping = tabor_visco::kuwabara_kono::viscous_force(
@@ -581,18 +609,18 @@ impl ContactLaw {
                     overlap_rate,
                 );
                 let force = f + damping;
-                if hertz && force < 0.0 {
+                if !self.adhesive() && force < 0.0 {
                     0.0
                 } else {
                     force
                 }
             }
-        };
-        Ok(TaborForce {
-            force,
-            elastic_force: f,
-            contact_radius: a,
-            event,
-        })
+        }
+    }
+
+    /// Whether the law is adhesive (tabulated: JKR, Maugis-Dugdale).
+    #[inline]
+    pub(crate) fn adhesive(&self) -> bool {
+        self.table.is_some() || self.per_contact.is_some()
     }
 }

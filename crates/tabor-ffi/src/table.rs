@@ -217,6 +217,11 @@ impl Table {
         Ok(table)
     }
 
+    /// The bytes the table's coefficients take (64 per interval).
+    pub fn memory_bytes(&self) -> usize {
+        (self.fine.len() + self.upper.len() + self.hertz.len()) * std::mem::size_of::<Cubic2>()
+    }
+
     /// The measured interpolation errors.
     pub fn error(&self) -> TableError {
         self.error

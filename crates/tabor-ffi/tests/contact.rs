@@ -23,6 +23,8 @@ fn contact(friction: TaborFrictionParams) -> *mut TaborContact {
         damping_time: 0.0,
         damping_model: TABOR_DAMPING_KUWABARA_KONO,
         damping_value: 0.0,
+        dugdale_range: 0.0,
+        cohesive_stress: 0.0,
     };
     let mut c = std::ptr::null_mut();
     assert_eq!(
@@ -178,6 +180,8 @@ fn bad_friction_and_states_are_status_codes() {
         damping_time: 0.0,
         damping_model: TABOR_DAMPING_KUWABARA_KONO,
         damping_value: 0.0,
+        dugdale_range: 0.0,
+        cohesive_stress: 0.0,
     };
     let mut c = std::ptr::null_mut();
     for f in [

@@ -22,6 +22,8 @@ fn params(model: i32, value: f64) -> TaborLawParams {
         damping_time: 0.0,
         damping_model: model,
         damping_value: value,
+        dugdale_range: 0.0,
+        cohesive_stress: 0.0,
     }
 }
 

@@ -25,6 +25,9 @@
 //! (the pipeline); `law`, `impact`; `parse`, `check`; `plugin`.
 //! Derivations and sources: `crates/tabor-lammps/README.md`; the claims are
 //! verified by running LAMMPS in `integrations/lammps`.
+//!
+//! - [`check_plugin()`]: `--check` of a `pair_style tabor` line (`maugis … range h`
+//!   too): the restitution the plugin's own law gives the scene's bodies.
 
 mod calibrate;
 mod check;
@@ -35,6 +38,7 @@ mod impact;
 mod law;
 mod parse;
 mod plugin;
+mod plugin_check;
 mod report;
 mod verify;
 
@@ -50,9 +54,11 @@ pub use law::{
 };
 pub use parse::{parse_line, substitute_variables, LineError, LineKind, ParsedLine};
 pub use plugin::{
-    export_plugin, export_plugin_wall, plugin_load_command, PluginExport, PluginModel, PluginSpeed,
-    DEFAULT_WALL, PLUGIN_RESTITUTION_ERROR, PLUGIN_TIME_STEP_FRACTION,
+    export_plugin, export_plugin_wall, export_plugin_with, plugin_load_command, PluginExport,
+    PluginModel, PluginOptions, PluginSpeed, DEFAULT_WALL, PLUGIN_RESTITUTION_ERROR,
+    PLUGIN_TIME_STEP_FRACTION,
 };
+pub use plugin_check::{check_plugin, is_plugin_line, PluginCheck, PluginCheckPoint};
 pub use report::{
     time_step_error, Bodies, Claim, Export, ExportError, Geometry, Limit, Parameter, RangeEnd,
     Scope, SpeedComparison, CALIBRATED_RELATIVE_ERROR, LOSS_STEP_ERROR, REPRODUCES,

@@ -68,8 +68,11 @@ pub struct PluginExport {
     pub effective_modulus: f64,
     /// Work of adhesion w (J/m²), `None` for Hertz.
     pub work_of_adhesion: Option<f64>,
-    /// Tabor parameter Λ, `None` unless Maugis-Dugdale.
+    /// Tabor parameter Λ (at the scene's R*), `None` unless Maugis-Dugdale.
     pub tabor_parameter: Option<f64>,
+    /// The Dugdale range h (m) of `--per-contact-lambda` (`maugis E* w range h`),
+    /// `None` for a fixed Λ.
+    pub dugdale_range: Option<f64>,
     /// Kuwabara-Kono dissipative time A (s), `None` without viscosity.
     pub damping_time: Option<f64>,
     /// Effective radius R* (m) of the scene's two spheres.
@@ -193,7 +196,7 @@ pub fn export_plugin(
     plugin: &str,
     speed: Option<f64>,
 ) -> Result<PluginExport, ExportError> {
-    export_plugin_wall(scene, plugin, speed, None)
+    export_plugin_with(scene, plugin, speed, PluginOptions::default())
 }
 
 /// The wallstyles of `fix wall/tabor` and how many arguments each takes.
@@ -240,6 +243,20 @@ fn wall_style(wall: &str) -> Result<String, ExportError> {
     Ok(words.join(" "))
 }
 
+/// Choices of [`export_plugin_with`].
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PluginOptions {
+    /// Write Maugis-Dugdale as `maugis E* w range h` (the Dugdale range held fixed,
+    /// each contact's Λ = d_n(R*)/h from its own size) instead of a fixed Λ; h is
+    /// the scene's, or d_n(R*)/Λ at the scene's R* (so the scene's own pair gets
+    /// exactly its Λ). Refused for a scene that is not Maugis-Dugdale.
+    pub per_contact_lambda: bool,
+    /// The wall of a flat target: a wallstyle of `fix wall/tabor` and its
+    /// arguments, as `--wall` takes them; `None`: [`DEFAULT_WALL`]. A wall given
+    /// for two spheres is refused.
+    pub wall: Option<String>,
+}
+
 /// [`export_plugin`] with the wall of a flat target given (`wall`: a wallstyle and
 /// its arguments, as `--wall` takes them; `None`: [`DEFAULT_WALL`]). A wall given
 /// for two spheres is refused.
@@ -248,6 +265,20 @@ pub fn export_plugin_wall(
     plugin: &str,
     speed: Option<f64>,
     wall: Option<&str>,
+) -> Result<PluginExport, ExportError> {
+    let options = PluginOptions {
+        wall: wall.map(str::to_owned),
+        ..PluginOptions::default()
+    };
+    export_plugin_with(scene, plugin, speed, options)
+}
+
+/// [`export_plugin`] with [`PluginOptions`].
+pub fn export_plugin_with(
+    scene: &Scene,
+    plugin: &str,
+    speed: Option<f64>,
+    options: PluginOptions,
 ) -> Result<PluginExport, ExportError> {
     let geometry = if scene.target.radius.is_some() {
         Geometry::Pair
@@ -268,7 +299,7 @@ pub fn export_plugin_wall(
     }
     let adhesion = scene.adhesion.as_ref().filter(|a| a.work_of_adhesion > 0.0);
     let a_time = damping_time(scene, adhesion.is_some())?;
-    let wall = match (geometry, wall) {
+    let wall = match (geometry, options.wall.as_deref()) {
         (Geometry::Wall, w) => Some(wall_style(w.unwrap_or(DEFAULT_WALL))?),
         (Geometry::Pair, Some(w)) => {
             return Err(ExportError::Model(format!(
@@ -298,8 +329,29 @@ pub fn export_plugin_wall(
             },
         },
     };
+    // --per-contact-lambda: the range h = d_n(R*)/Λ at the scene's R* (exactly
+    // the scene's Λ for the scene's own pair), then Λ = d_n(R*)/h per contact
+    let dugdale_range = match (options.per_contact_lambda, w, lambda) {
+        (false, _, _) => None,
+        (true, Some(w), Some(l)) => Some(
+            tabor_jkr::JkrSphere::new(e_star, r, w)
+                .map_err(model_err)?
+                .scales()
+                .depth
+                / l,
+        ),
+        (true, _, _) => {
+            return Err(refuse(
+                "a per-contact Tabor parameter",
+                "--per-contact-lambda needs a Maugis-Dugdale scene ([adhesion] range, cohesive_stress, tabor_parameter, maugis_parameter or tabor_mu)",
+            ))
+        }
+    };
     let law = match (model, w, lambda) {
-        (PluginModel::Maugis, Some(w), Some(l)) => ContactLaw::maugis_dugdale(e_star, r, w, l),
+        (PluginModel::Maugis, Some(w), Some(l)) => match dugdale_range {
+            Some(h) => ContactLaw::maugis_dugdale_range(e_star, r, w, h),
+            None => ContactLaw::maugis_dugdale(e_star, r, w, l),
+        },
         (PluginModel::JkrFixedGrip, Some(w), _) => {
             ContactLaw::jkr(e_star, r, w, SeparationRule::FixedGrip)
         }
@@ -340,8 +392,10 @@ pub fn export_plugin_wall(
     if let Some(w) = w {
         coeff += &format!(" {}", fmt(w));
     }
-    if let Some(l) = lambda {
-        coeff += &format!(" {}", fmt(l));
+    match (dugdale_range, lambda) {
+        (Some(h), _) => coeff += &format!(" range {}", fmt(h)),
+        (None, Some(l)) => coeff += &format!(" {}", fmt(l)),
+        _ => {}
     }
     if let Some(a) = a_time {
         coeff += &format!(" damping {}", fmt(a));
@@ -394,10 +448,14 @@ pub fn export_plugin_wall(
         PluginModel::Hertz => "Hertz".to_string(),
         PluginModel::JkrFixedGrip => "JKR with the fixed-grip separation".to_string(),
         PluginModel::JkrLoadControlled => "JKR with the load-controlled separation".to_string(),
-        PluginModel::Maugis => format!(
-            "Maugis-Dugdale at Lambda = {:.6e}",
-            lambda.unwrap_or(f64::NAN)
-        ),
+        PluginModel::Maugis => match dugdale_range {
+            Some(h) => format!(
+                "Maugis-Dugdale at the fixed range h = {h:.6e} m (cohesive stress w/h = {:.6e} Pa), each contact's Lambda = d_n(R*)/h: Lambda = {:.6e} at the scene's R*; the table over Lambda adds |dF| <= 3e-5 F_n",
+                w.unwrap_or(f64::NAN) / h,
+                lambda.unwrap_or(f64::NAN)
+            ),
+            None => format!("Maugis-Dugdale at Lambda = {:.6e}", lambda.unwrap_or(f64::NAN)),
+        },
     };
     let mut reproduces = vec![format!(
         "tabor's force law itself ({law_name}{}), so tabor's restitution at every speed{}: |e_LAMMPS - e_tabor| <= {PLUGIN_RESTITUTION_ERROR:.0e} at timestep <= Hertz contact time/20000 ({})",
@@ -447,14 +505,22 @@ pub fn export_plugin_wall(
         } else {
             "energy tally: the pair style tallies no energy (its contact histories are written to restart files; after read_restart include this fragment again)".to_string()
         },
-        "Maugis-Dugdale keeps Lambda fixed for every effective radius of a polydisperse system (the range h = d_n(R*)/Lambda grows as R*^(1/3))".to_string(),
     ];
+    if model == PluginModel::Maugis && dugdale_range.is_none() {
+        limits.push("Maugis-Dugdale keeps Lambda fixed for every effective radius of a polydisperse system (the range h = d_n(R*)/Lambda grows as R*^(1/3)); --per-contact-lambda writes `range h` instead, each contact at its own Lambda".to_string());
+    }
     if wall.is_none() {
         limits.push(
             "the neighbor skin must stay at least the interaction range (checked at run)".into(),
         );
     } else {
         limits.push("other walls, and the contacts between the particles: the fragment is the sphere-wall contact only (add pair_style tabor for particle-particle contacts)".into());
+    }
+    if let Some(h) = dugdale_range {
+        reproduces.push(format!(
+            "every other size at the same material constant: a contact of effective radius R* gets Lambda = {lambda:.6e} (R*/{r:.6e} m)^(1/3) (the Dugdale range {h:.6e} m is fixed), verified in LAMMPS across the three Maugis-Dugdale cases (integrations/lammps/test_plugin_lambda.py)",
+            lambda = lambda.unwrap_or(f64::NAN)
+        ));
     }
     if range > 0.0 && wall.is_none() {
         limits.push(format!(
@@ -471,6 +537,7 @@ pub fn export_plugin_wall(
         effective_modulus: e_star,
         work_of_adhesion: w,
         tabor_parameter: lambda,
+        dugdale_range,
         damping_time: a_time,
         effective_radius: r,
         effective_mass: m,
@@ -536,8 +603,12 @@ impl PluginExport {
             self.work_of_adhesion.map_or(String::new(), |w| format!(
                 ", w = {w:.10e} J/m^2 (= 2 gamma of LAMMPS's jkr)"
             )),
-            self.tabor_parameter
-                .map_or(String::new(), |l| format!(", Lambda = {l:.10e}")),
+            match (self.dugdale_range, self.tabor_parameter) {
+                (Some(h), Some(l)) => format!(
+                    ", range h = {h:.10e} m (held fixed: each contact's Lambda = d_n(R*)/h, d_n = (9 pi w R*^2/(8 E*))^(2/3)/(3 R*); Lambda = {l:.10e} at the scene's R*)"
+                ),
+                (_, l) => l.map_or(String::new(), |l| format!(", Lambda = {l:.10e}")),
+            },
             self.damping_time.map_or(String::new(), |a| format!(
                 ", Kuwabara-Kono time A = {a:.10e} s"
             ))

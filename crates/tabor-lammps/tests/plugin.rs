@@ -325,3 +325,109 @@ fn check_reads_the_wall_gran_line_and_names_wall_tabor() {
             .expect_err("refused");
     assert!(e.to_string().contains("tabor's own force law"), "{e}");
 }
+
+#[test]
+fn per_contact_lambda_writes_the_range_form() {
+    use tabor_lammps::{export_plugin_with, PluginOptions};
+    let on = PluginOptions {
+        per_contact_lambda: true,
+        ..PluginOptions::default()
+    };
+    // the scene gives the range 0.3 nm: written back to 10 digits
+    let s = scene("examples/scenes/silica_maugis.toml");
+    let x = export_plugin_with(&s, SO, None, on.clone()).expect("export");
+    let f = x.fragment();
+    let line = f.lines().find(|l| l.starts_with("pair_coeff")).unwrap();
+    let words: Vec<&str> = line.split_whitespace().collect();
+    assert_eq!(words[3..5].len(), 2);
+    assert_eq!(words[6], "range", "{line}");
+    let h: f64 = words[7].parse().unwrap();
+    assert!((h / 0.3e-9 - 1.0).abs() < 1e-10, "{h}");
+    assert_eq!(x.dugdale_range, Some(h));
+    // by hand: Λ = d_n/h, d_n = (9π w R*²/(8E*))^(2/3)/(3R*) at R* = 0.5 µm
+    let e_star = 54e9 / (2.0 * (1.0 - 0.17f64 * 0.17));
+    let r = 0.5e-6;
+    let d_n = (9.0 * PI * 0.05 * r * r / (8.0 * e_star)).powf(2.0 / 3.0) / (3.0 * r);
+    assert!((x.tabor_parameter.unwrap() / (d_n / 0.3e-9) - 1.0).abs() < 1e-12);
+    assert!(f.contains("held fixed: each contact's Lambda = d_n(R*)/h"));
+    // a scene given by Λ: h = d_n/Λ, so the scene's own pair gets exactly its Λ
+    let s2 = scene("integrations/lammps/scenes/maugis_case2.toml");
+    let x2 = export_plugin_with(&s2, SO, None, on.clone()).expect("export");
+    let law = ContactLaw::maugis_dugdale_range(e_star, r, 0.05, x2.dugdale_range.unwrap()).unwrap();
+    let l = law.tabor_parameter_at(&law.scales(r).unwrap()).unwrap();
+    assert!((l / 0.55 - 1.0).abs() < 1e-12, "{l}");
+    // the fixed form is unchanged without the option
+    let plain = export_plugin(&s, SO, None).unwrap();
+    assert_eq!(plain.dugdale_range, None);
+    let plain_coeff = plain.fragment();
+    let plain_coeff = plain_coeff
+        .lines()
+        .find(|l| l.starts_with("pair_coeff"))
+        .unwrap();
+    assert_eq!(plain_coeff.split_whitespace().count(), 7, "{plain_coeff}");
+    assert!(plain.fragment().contains("--per-contact-lambda writes"));
+    // not Maugis-Dugdale: refused by name
+    let e = export_plugin_with(&scene("examples/scenes/silica.toml"), SO, None, on.clone())
+        .unwrap_err();
+    assert!(e.to_string().contains("per-contact"), "{e}");
+}
+
+#[test]
+fn check_reads_the_exported_range_form() {
+    use tabor_lammps::{check_plugin, export_plugin_with, is_plugin_line, PluginOptions};
+    let s = scene("examples/scenes/silica_maugis.toml");
+    let on = PluginOptions {
+        per_contact_lambda: true,
+        ..PluginOptions::default()
+    };
+    let frag = export_plugin_with(&s, SO, None, on.clone())
+        .unwrap()
+        .fragment();
+    let line = frag.lines().find(|l| l.starts_with("pair_coeff")).unwrap();
+    assert!(is_plugin_line(line));
+    assert!(!is_plugin_line(
+        "pair_coeff * * hertz/material 54e9 0.5 0.17"
+    ));
+    let c = check_plugin(&s, line, None, &[]).unwrap();
+    // the scene's own Λ (range 0.3 nm at R* = 0.5 µm), by hand as above
+    let e_star = 54e9 / (2.0 * (1.0 - 0.17f64 * 0.17));
+    let r = 0.5e-6;
+    let d_n = (9.0 * PI * 0.05 * r * r / (8.0 * e_star)).powf(2.0 / 3.0) / (3.0 * r);
+    assert!((c.tabor_parameter.unwrap() / (d_n / 0.3e-9) - 1.0).abs() < 1e-9);
+    // the plugin's law integrated at t_c/20000 against tabor's restitution: the
+    // bound the plugin is verified to in LAMMPS
+    assert!(c.decade.len() >= 5);
+    for p in &c.decade {
+        let t = p.tabor.unwrap();
+        assert!((p.lammps - t).abs() <= PLUGIN_RESTITUTION_ERROR, "{p:?}");
+    }
+    // stress s0 = w/h: the same law; a fixed Λ at the contact's Λ: the same within
+    // the table over Λ's error (a restitution moves far less than 1e-5 here)
+    let stress = line.replace(
+        "range 3.0000000000e-10",
+        &format!("stress {:e}", 0.05 / 0.3e-9),
+    );
+    let c2 = check_plugin(&s, &stress, None, &[]).unwrap();
+    assert!((c2.at_speed.lammps - c.at_speed.lammps).abs() < 1e-12);
+    let fixed = line.replace(
+        "range 3.0000000000e-10",
+        &format!("{:e}", c.tabor_parameter.unwrap()),
+    );
+    let c3 = check_plugin(&s, &fixed, None, &[]).unwrap();
+    assert_eq!(c3.dugdale_range, None);
+    assert!((c3.at_speed.lammps - c.at_speed.lammps).abs() < 1e-5);
+    // bad input named
+    for (bad, name) in [
+        (
+            line.replace("range 3.0000000000e-10", "range -1e-9"),
+            "range",
+        ),
+        (
+            line.replace("range 3.0000000000e-10", "0.3 range 3e-10"),
+            "tabor_parameter",
+        ),
+    ] {
+        let e = check_plugin(&s, &bad, None, &[]).unwrap_err().to_string();
+        assert!(e.contains(name), "{e}");
+    }
+}

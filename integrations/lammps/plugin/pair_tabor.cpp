@@ -14,7 +14,9 @@
 #include "utils.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <string>
 
 using namespace LAMMPS_NS;
@@ -153,6 +155,11 @@ void PairTabor::init_style()
   std::vector<double> local(n + 1, 0.0);
   for (int i = 0; i < atom->nlocal; i++) local[atom->type[i]] = MAX(local[atom->type[i]], atom->radius[i]);
   MPI_Allreduce(local.data(), maxrad, n + 1, MPI_DOUBLE, MPI_MAX, world);
+  // and the smallest (the per-contact Lambda table covers [R*min, R*max])
+  std::vector<double> small(n + 1, std::numeric_limits<double>::infinity());
+  for (int i = 0; i < atom->nlocal; i++) small[atom->type[i]] = MIN(small[atom->type[i]], atom->radius[i]);
+  minrad.assign(n + 1, std::numeric_limits<double>::infinity());
+  MPI_Allreduce(small.data(), minrad.data(), n + 1, MPI_DOUBLE, MPI_MIN, world);
 }
 
 double PairTabor::init_one(int i, int j)
@@ -162,11 +169,12 @@ double PairTabor::init_one(int i, int j)
   double ri = maxrad[i], rj = maxrad[j];
   c.reach = 0.0;
   if (ri <= 0.0 || rj <= 0.0) return 0.0;
-  // the largest effective radius has the largest interaction range (∝ R*^(1/3))
-  TaborLawInfo info;
-  int status = tabor_contact_info_at(c.contact, ri * rj / (ri + rj), &info);
+  // the largest interaction range over the pair's effective radii (at the largest
+  // for a fixed Lambda, ∝ R*^(1/3)); a per-contact Lambda law builds its table
+  // for [R*min, R*max] now, on every rank alike (contacts outside still work)
+  double si = MIN(minrad[i], ri), sj = MIN(minrad[j], rj);
+  int status = tabor_contact_prepare(c.contact, si * sj / (si + sj), ri * rj / (ri + rj), &c.reach);
   if (status != TABOR_OK) fail_all(status, "init");
-  c.reach = info.interaction_range;
   if (neighbor->skin < c.reach)
     error->all(FLERR, "pair tabor: neighbor skin {} is below the interaction range {} of types {} {}",
                neighbor->skin, c.reach, i, j);

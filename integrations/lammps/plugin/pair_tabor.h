@@ -40,6 +40,7 @@ class PairTabor : public Pair {
   };
   std::vector<Coeff> coeffs;    // (ntypes+1)^2, upper triangle used
   double *maxrad;
+  std::vector<double> minrad;    // smallest radius per type (per-contact Lambda range)
   class FixTaborHistory *fix_history;
   int history_width;
 

@@ -5,6 +5,8 @@
 #include "utils.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -69,7 +71,13 @@ int LAMMPS_NS::tabor_parse_coeff(LAMMPS *lmp, const std::string &who, int narg, 
   }
   p.effective_modulus = number("E*");
   if (p.model != TABOR_MODEL_HERTZ) p.work_of_adhesion = number("w");
-  if (p.model == TABOR_MODEL_MAUGIS_DUGDALE) p.tabor_parameter = number("Lambda");
+  // maugis E* w Lambda, or maugis E* w range h | stress s0 (a Lambda per contact)
+  bool have_lambda = false;
+  if (p.model == TABOR_MODEL_MAUGIS_DUGDALE && !(iarg < narg && (strcmp(arg[iarg], "range") == 0 ||
+                                                                 strcmp(arg[iarg], "stress") == 0))) {
+    p.tabor_parameter = number("Lambda (or range h | stress s0)");
+    have_lambda = true;
+  }
   double poisson = 0.0;
   bool have_poisson = false;
   bool stiffness_null = false;
@@ -141,8 +149,27 @@ int LAMMPS_NS::tabor_parse_coeff(LAMMPS *lmp, const std::string &who, int narg, 
       } else {
         error->all(FLERR, "{}: unknown twisting model {} (marshall, sds)", who, t);
       }
+    } else if (key == "range" || key == "stress") {
+      // ---- per-contact Lambda (maugis only): the material constant h (m) or s0 (Pa);
+      // each contact's Lambda = d_n(R*)/h, h = w/s0, follows from its own R* (tabor-ffi)
+      if (p.model != TABOR_MODEL_MAUGIS_DUGDALE)
+        error->all(FLERR, "{}: keyword {} belongs to maugis, not {}", who, key, model);
+      if (have_lambda)
+        error->all(FLERR, "{} maugis: {} and a fixed Lambda {} exclude each other (give one)", who, key,
+                   p.tabor_parameter);
+      if (p.dugdale_range != 0.0 || p.cohesive_stress != 0.0)
+        error->all(FLERR, "{} maugis: give one of range and stress (s0 h = w), not both or twice", who);
+      std::string text = word(key == "range" ? "range h (m)" : "stress s0 (Pa)");
+      char *end = nullptr;
+      double value = strtod(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0' || !std::isfinite(value) || value <= 0.0)
+        error->all(FLERR, "{} maugis: {} {} must be a finite number > 0 ({})", who, key, text,
+                   key == "range" ? "m" : "Pa");
+      (key == "range" ? p.dugdale_range : p.cohesive_stress) = value;
+      // ---- end per-contact Lambda
     } else {
-      error->all(FLERR, "{}: unknown keyword {} (poisson, damping, tangential, rolling, twisting)", who, key);
+      error->all(FLERR, "{}: unknown keyword {} (poisson, damping, tangential, rolling, twisting, range, stress)",
+                 who, key);
     }
   }
   if (stiffness_null) {

@@ -5,7 +5,10 @@
 use crate::output::{json_text, print_json, stdout, Outcome};
 use std::io::Write;
 use std::path::PathBuf;
-use tabor::lammps::{check, export, export_plugin_wall, Check};
+use tabor::lammps::{
+    check, check_plugin, export, export_plugin_with, is_plugin_line, Check, PluginCheck,
+    PluginOptions,
+};
 use tabor::scene::Scene;
 
 /// Arguments of `tabor export`.
@@ -24,7 +27,7 @@ enum Target {
 /// Arguments of `tabor export lammps`.
 #[derive(clap::Args)]
 #[command(
-    after_help = "Examples:\n  tabor export lammps examples/scenes/silica.toml --out silica.lmp\n  tabor export lammps examples/scenes/silica_maugis.toml --plugin target/lammps-plugin/taborplugin.so\n  tabor export lammps integrations/lammps/scenes/jkr_wall.toml --plugin target/lammps-plugin/taborplugin.so --wall 'zplane NULL 5e-5'\n  tabor export lammps examples/scenes/silica.toml --check 'pair_coeff * * hertz/material 54e9 0.5 0.17 damping tsuji' --speed 0.2"
+    after_help = "Examples:\n  tabor export lammps examples/scenes/silica.toml --out silica.lmp\n  tabor export lammps examples/scenes/silica_maugis.toml --plugin target/lammps-plugin/taborplugin.so\n  tabor export lammps examples/scenes/silica_maugis.toml --plugin target/lammps-plugin/taborplugin.so --per-contact-lambda\n  tabor export lammps integrations/lammps/scenes/jkr_wall.toml --plugin target/lammps-plugin/taborplugin.so --wall 'zplane NULL 5e-5'\n  tabor export lammps examples/scenes/silica.toml --check 'pair_coeff * * hertz/material 54e9 0.5 0.17 damping tsuji' --speed 0.2"
 )]
 pub struct LammpsArgs {
     /// The scene file (.toml or .json)
@@ -39,7 +42,9 @@ pub struct LammpsArgs {
     #[arg(long)]
     json: bool,
     /// Predict the restitution LAMMPS produces for this pair_coeff or
-    /// "fix ... wall/gran granular ..." line, with the scene's bodies
+    /// "fix ... wall/gran granular ..." line, with the scene's bodies; a
+    /// pair_style tabor line (maugis ... [range h | stress s0], jkr/fixed-grip,
+    /// jkr/load-controlled) is run through the plugin's own force law
     #[arg(long, value_name = "LINE", conflicts_with = "plugin")]
     check: Option<String>,
     /// Write the fragment for pair_style tabor (the plugin built by
@@ -57,6 +62,11 @@ pub struct LammpsArgs {
         allow_hyphen_values = true
     )]
     wall: Option<String>,
+    /// With --plugin, a Maugis-Dugdale scene: write `maugis E* w range h` (the
+    /// Dugdale range held fixed, each contact's Tabor parameter from its own size,
+    /// Lambda = d_n(R*)/h) instead of one Lambda for every size
+    #[arg(long, requires = "plugin")]
+    per_contact_lambda: bool,
     /// A LAMMPS variable used in the --check line ($x, ${name}), as NAME=VALUE
     /// (repeatable)
     #[arg(long = "var", value_name = "NAME=VALUE", value_parser = parse_var, requires = "check")]
@@ -126,10 +136,58 @@ fn check_report(c: &Check) -> String {
     s
 }
 
+fn plugin_check_report(c: &PluginCheck) -> String {
+    let mut s = String::new();
+    s.push_str(&format!("line                {}\n", c.line));
+    s.push_str(&format!(
+        "model               pair_style tabor {}{}\n",
+        c.model.keyword(),
+        c.dugdale_range.map_or(String::new(), |h| format!(
+            " at the fixed range h = {h:.6e} m (each contact's Lambda = d_n(R*)/h)"
+        ))
+    ));
+    if let Some(l) = c.tabor_parameter {
+        s.push_str(&format!(
+            "Lambda              {l:.6e} for the scene's contact\n"
+        ));
+    }
+    s.push_str(&format!(
+        "bodies              R* = {:.6e} m, m* = {:.6e} kg\n",
+        c.effective_radius, c.effective_mass
+    ));
+    let p = &c.at_speed;
+    s.push_str(&format!(
+        "achieved            {:.6} at {:.4e} m/s (LAMMPS at timestep <= contact time/20000: +- {:.0e})\n",
+        p.lammps, p.speed, c.time_step_error
+    ));
+    s.push_str("speed (m/s)   LAMMPS     tabor\n");
+    for p in &c.decade {
+        s.push_str(&format!(
+            "{:.4e}    {:.6}   {}\n",
+            p.speed,
+            p.lammps,
+            p.tabor.map_or("-".into(), |t| format!("{t:.6}"))
+        ));
+    }
+    for n in &c.notes {
+        s.push_str(&format!("note: {n}\n"));
+    }
+    s
+}
+
 /// Runs `tabor export`.
 pub fn run(args: &Args) -> Outcome {
     let Target::Lammps(a) = &args.target;
     let scene = Scene::from_path(&a.scene).map_err(|e| format!("{}: {e}", a.scene.display()))?;
+    if let Some(line) = a.check.as_deref().filter(|l| is_plugin_line(l)) {
+        // a pair_style tabor line: the plugin's own law for the scene's bodies
+        let c = check_plugin(&scene, line, a.speed, &a.vars)
+            .map_err(|e| format!("{}: {e}", a.scene.display()))?;
+        if a.json {
+            return print_json(&c);
+        }
+        return emit(&plugin_check_report(&c));
+    }
     if let Some(line) = &a.check {
         let c = check(&scene, line, a.speed, &a.vars)
             .map_err(|e| format!("{}: {e}", a.scene.display()))?;
@@ -142,13 +200,12 @@ pub fn run(args: &Args) -> Outcome {
         // an existing .so is written as an absolute path, so that the fragment
         // loads it from any working directory
         let plugin = std::fs::canonicalize(plugin).unwrap_or_else(|_| plugin.clone());
-        let x = export_plugin_wall(
-            &scene,
-            &plugin.to_string_lossy(),
-            a.speed,
-            a.wall.as_deref(),
-        )
-        .map_err(|e| format!("{}: {e}", a.scene.display()))?;
+        let options = PluginOptions {
+            per_contact_lambda: a.per_contact_lambda,
+            wall: a.wall.clone(),
+        };
+        let x = export_plugin_with(&scene, &plugin.to_string_lossy(), a.speed, options)
+            .map_err(|e| format!("{}: {e}", a.scene.display()))?;
         // also in the fragment (# WARNING) and the JSON; stderr so it is seen
         for w in &x.warnings {
             eprintln!("warning: {w}");
