@@ -6,7 +6,8 @@ grains in every run), the same time step and steps, on 1 rank, alternately
 TIMING_REPEATS times (the machine may be shared), with the plate as
   tabor-jkr: fix wall/tabor jkr/load-controlled + mindlin NULL + sds + marshall,
   granular:  fix wall/gran granular jkr + the same sub-models (the same law),
-  tabor:     fix wall/tabor maugis (Lambda 1) + the same sub-models (reference),
+  tabor:     fix wall/tabor maugis range h (each contact's Lambda, 1 at the median
+             radius; deposition.py's own wall) + the same sub-models (reference),
   none:      no wall (the baseline: fix nve/sphere is in the Modify time too).
 The wall's cost is the fastest Modify time (LAMMPS's own timer breakdown) minus the
 fastest of `none`; printed, and the ratio tabor-jkr/granular (target: at most
