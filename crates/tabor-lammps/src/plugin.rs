@@ -4,6 +4,7 @@
 
 use crate::friction::{null_stiffness_fits, scene_friction};
 use crate::report::{ExportError, Geometry};
+use crate::wall::wall_style;
 use serde::Serialize;
 use std::fmt::Display;
 use tabor_ffi::ContactLaw;
@@ -197,50 +198,6 @@ pub fn export_plugin(
     speed: Option<f64>,
 ) -> Result<PluginExport, ExportError> {
     export_plugin_with(scene, plugin, speed, PluginOptions::default())
-}
-
-/// The wallstyles of `fix wall/tabor` and how many arguments each takes.
-const WALLSTYLES: [(&str, usize); 4] = [
-    ("xplane", 2),
-    ("yplane", 2),
-    ("zplane", 2),
-    ("zcylinder", 1),
-];
-
-/// Checks a `--wall` value: a wallstyle of `fix wall/tabor` with its arguments
-/// (numbers, or NULL for a plane's missing side); returns it with single spaces.
-fn wall_style(wall: &str) -> Result<String, ExportError> {
-    let words: Vec<&str> = wall.split_whitespace().collect();
-    let bad = |why: String| ExportError::Model(format!("--wall {wall:?}: {why}"));
-    let Some((style, rest)) = words.split_first() else {
-        return Err(bad(
-            "empty: give a wallstyle and its arguments, e.g. zplane 0.0 NULL".into(),
-        ));
-    };
-    let Some(&(_, n)) = WALLSTYLES.iter().find(|(w, _)| w == style) else {
-        return Err(bad(format!(
-            "unknown wallstyle {style} (xplane|yplane|zplane lo hi, zcylinder radius)"
-        )));
-    };
-    if rest.len() != n {
-        return Err(bad(format!(
-            "{style} takes {n} argument(s), got {}",
-            rest.len()
-        )));
-    }
-    for a in rest {
-        let null_ok = n == 2 && *a == "NULL";
-        if !null_ok && a.parse::<f64>().map_or(true, |x| !x.is_finite()) {
-            return Err(bad(format!(
-                "{a} is not a number{}",
-                if n == 2 { " or NULL" } else { "" }
-            )));
-        }
-    }
-    if n == 2 && rest.iter().all(|a| *a == "NULL") {
-        return Err(bad("lo and hi cannot both be NULL".into()));
-    }
-    Ok(words.join(" "))
 }
 
 /// Choices of [`export_plugin_with`].

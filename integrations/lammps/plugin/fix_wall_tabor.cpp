@@ -172,6 +172,38 @@ void FixWallTabor::init()
       error->all(FLERR, "{}: region {} was redefined since the fix was created; unfix and fix again", who,
                  idregion);
   }
+  // the reach over the group's radii, from the law itself (tabor_contact_prepare:
+  // with `maugis ... range h` each radius has its own Lambda, so lengths do not
+  // scale as R^(1/3) from one radius; it also builds that law's table nodes now)
+  double *radius = atom->radius;
+  int *mask = atom->mask;
+  double rlo = BIG, rhi = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((mask[i] & groupbit) && radius[i] > 0.0) {
+      rlo = MIN(rlo, radius[i]);
+      rhi = MAX(rhi, radius[i]);
+    }
+  double rmin = BIG, rmax = 0.0;
+  MPI_Allreduce(&rlo, &rmin, 1, MPI_DOUBLE, MPI_MIN, world);
+  MPI_Allreduce(&rhi, &rmax, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (rmax > 0.0) {
+    double reach = 0.0;
+    int status = tabor_contact_prepare(contact, rmin, rmax, &reach);
+    if (status != TABOR_OK) tabor_fail_all(lmp, who, status, "tabor_contact_prepare");
+    rmax_seen = MAX(rmax_seen, rmax);
+    reach_max = MAX(reach_max, reach);
+  }
+}
+
+/* a particle larger than any met so far: the reach bound grows to the law's reach
+   at its radius (the bound is the largest reach of every radius met) */
+void FixWallTabor::grow_reach(double r)
+{
+  double reach = 0.0;
+  int status = tabor_contact_prepare(contact, r, r, &reach);
+  if (status != TABOR_OK) error->one(FLERR, "{}: tabor_contact_prepare at radius {} failed (status {})", who, r, status);
+  rmax_seen = r;
+  reach_max = MAX(reach_max, reach);
 }
 
 void FixWallTabor::setup(int vflag)
@@ -225,10 +257,7 @@ void FixWallTabor::one_contact(int i, int wall, const double *del, const double 
   bool stored = false;
   for (int k = 0; k < ncontact[i]; k++) stored = stored || w[k] == wall;
   if (!stored) {
-    if (ri > rmax_seen) {
-      rmax_seen = ri;
-      reach_max = reach_unit > 0.0 ? reach_unit * cbrt(ri) : 0.0;
-    }
+    if (ri > rmax_seen) grow_reach(ri);
     double cut = ri + reach_max;
     if (rsq >= cut * cut) return;
   }
@@ -314,10 +343,7 @@ void FixWallTabor::post_force(int /*vflag*/)
         ncontact[i] = 0;
         continue;
       }
-      if (radius[i] > rmax_seen) {
-        rmax_seen = radius[i];
-        reach_max = reach_unit > 0.0 ? reach_unit * cbrt(radius[i]) : 0.0;
-      }
+      if (radius[i] > rmax_seen) grow_reach(radius[i]);
       double cutoff = radius[i] + reach_max;
       int nc = region->surface(x[i][0], x[i][1], x[i][2], cutoff);
       if (nc > nslot) error->one(FLERR, "{}: atom {} touches {} surfaces of region {} (at most {})", who,

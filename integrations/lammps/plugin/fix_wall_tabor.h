@@ -54,7 +54,7 @@ class FixWallTabor : public Fix {
   TaborContact *contact;
   double reach_unit;    // the law's interaction range at R* = 1 m (lengths scale as R*^(1/3))
   double rmax_seen;     // the largest particle radius met on this rank
-  double reach_max;     // the interaction range at rmax_seen
+  double reach_max;     // the largest interaction range of every radius met (tabor_contact_prepare)
   int wallstyle;
   double lo, hi, cylradius;
   int wiggle, wshear, axis;
@@ -78,6 +78,7 @@ class FixWallTabor : public Fix {
   double *history_of(int i, int k) { return history + ((bigint) i * nslot + k) * hlen; }
   double *find_or_add(int i, int wall);
   void forget(int i, int wall);
+  void grow_reach(double r);
   void one_contact(int i, int wall, const double *del, const double *vwall, double **contacts_out);
 };
 

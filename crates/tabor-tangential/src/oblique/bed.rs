@@ -58,7 +58,11 @@
 //! checked at every evaluation, and the bed falls back to visiting every spring
 //! where it fails) and is rebuilt when its budget is half spent.
 
+use super::bodies::ObliqueImpact;
+use crate::model::TangentialModel;
 use nalgebra::{Matrix3, Vector3};
+use std::cell::RefCell;
+use tabor_dynamics::ForceLaw;
 
 /// The default number of nodes of the spring bed in `z = x²` per `a_ref²`, the
 /// square of the contact-radius scale of the impact (the grid grows with the same
@@ -453,5 +457,36 @@ impl MicroSlipBed {
             .map(|i| self.committed(i).norm_squared() * self.weight(i, a2))
             .sum();
         0.5 * self.k_line * sum
+    }
+}
+
+impl ObliqueImpact {
+    /// The spring bed of `mindlin_deresiewicz`, its grid scaled by the contact
+    /// radius at the overlap scale (the Hertz radius `√(R δ)` or the law's own,
+    /// whichever is larger); `None` for the other tangential models.
+    pub(super) fn micro_slip_bed(
+        &self,
+        law: &dyn ForceLaw,
+        r_eff: f64,
+        length: f64,
+        v_n: f64,
+        nodes: usize,
+    ) -> Option<RefCell<MicroSlipBed>> {
+        let f = self.friction.as_ref()?;
+        if f.tangential.model != TangentialModel::MindlinDeresiewicz {
+            return None;
+        }
+        let hertz = (r_eff * length).sqrt();
+        let own = law.contact_radius(length, v_n).unwrap_or(0.0);
+        let a_ref = if own.is_finite() {
+            hertz.max(own)
+        } else {
+            hertz
+        };
+        Some(RefCell::new(MicroSlipBed::new(
+            f.tangential.stiffness,
+            a_ref,
+            nodes,
+        )))
     }
 }

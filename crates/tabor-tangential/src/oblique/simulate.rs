@@ -2,17 +2,15 @@
 //! after segment from first touch to separation (or sticking), each ended by an
 //! event ([`Event`]), with the constants of its regularizations.
 
-use super::bed::{MicroSlipBed, MICRO_SLIP_NODES};
+use super::bed::MICRO_SLIP_NODES;
 use super::bodies::ObliqueImpact;
 use super::elements::*;
 use super::limits::*;
 use super::outcome::ObliqueOutcome;
 use super::state::*;
-use crate::model::TangentialModel;
 use crate::model::Twisting;
 use nalgebra::Vector3;
 use std::cell::Cell;
-use std::cell::RefCell;
 use tabor_dynamics::{BranchChange, ForceLaw, SimulationSettings};
 use tabor_numerics::ode::{
     drive_events, DenseStepper, DormandPrince, DormandPrince853, EventDirection, EventsIntegration,
@@ -596,37 +594,6 @@ where
     O: FnMut(f64, &[f64; N]),
 {
     drive_events(stepper, f, g, [EventDirection::Falling], t_end, observer)
-}
-
-impl ObliqueImpact {
-    /// The spring bed of `mindlin_deresiewicz`, its grid scaled by the contact
-    /// radius at the overlap scale (the Hertz radius `√(R δ)` or the law's own,
-    /// whichever is larger); `None` for the other tangential models.
-    fn micro_slip_bed(
-        &self,
-        law: &dyn ForceLaw,
-        r_eff: f64,
-        length: f64,
-        v_n: f64,
-        nodes: usize,
-    ) -> Option<RefCell<MicroSlipBed>> {
-        let f = self.friction.as_ref()?;
-        if f.tangential.model != TangentialModel::MindlinDeresiewicz {
-            return None;
-        }
-        let hertz = (r_eff * length).sqrt();
-        let own = law.contact_radius(length, v_n).unwrap_or(0.0);
-        let a_ref = if own.is_finite() {
-            hertz.max(own)
-        } else {
-            hertz
-        };
-        Some(RefCell::new(MicroSlipBed::new(
-            f.tangential.stiffness,
-            a_ref,
-            nodes,
-        )))
-    }
 }
 
 impl<'a> Setup<'a> {
