@@ -32,6 +32,8 @@
 //! in Λ) needs 47 nodes, 7.7 MB, 0.2-0.4 s, once per process (every pair of
 //! types shares them).
 
+pub use crate::lambda_table::LambdaTable;
+use crate::lambda_table::Node;
 use crate::law::{ContactLaw, RadiusScales};
 use crate::table::{Table, TableError};
 use std::sync::{Arc, OnceLock};
@@ -46,22 +48,6 @@ pub const TABOR_LAMBDA_CASE_2_INTERVALS: i32 = 18;
 pub const TABOR_LAMBDA_MIN: f64 = 1e-4;
 /// The largest Λ the grid reaches (JKR to within 10⁻⁶ of every scale).
 pub const TABOR_LAMBDA_MAX: f64 = 1e6;
-
-/// One node of the grid: the normalized fixed-Λ branch.
-#[derive(Debug)]
-struct Node {
-    table: Arc<Table>,
-    /// d̂₀: the snap-off depth, the table origin.
-    origin: f64,
-    /// 1/L of the node's table coordinate s = √((d̂ − d̂₀)/L).
-    inv_length: f64,
-    /// u_k = d̂_j − d̂₀ (0 in case 3).
-    kink: f64,
-    /// U − u_k.
-    span: f64,
-    /// The most tensile force F̂ (≤ 0).
-    pull_off: f64,
-}
 
 /// The normalized branch at one contact's Λ, ready to evaluate.
 #[derive(Clone, Copy, Debug)]
@@ -78,15 +64,6 @@ pub struct LocalBranch {
     span: f64,
     nodes: [i32; 4],
     weights: [f64; 4],
-}
-
-/// The table over Λ and the branch coordinate (see the module docs). Shared by
-/// every contact of a pair of particle types; nodes are built once, on first use,
-/// and kept (≈ 165 kB and 60-90 ms each).
-#[derive(Debug)]
-pub struct LambdaTable {
-    k_min: i32,
-    nodes: Vec<OnceLock<Node>>,
 }
 
 fn step() -> f64 {

@@ -95,7 +95,7 @@ pub struct ContactLaw {
     pub(crate) pull_off_force: f64,
     pub(crate) table: Option<Arc<Table>>,
     /// The table over Λ of a per-contact-Λ law (then `table` is `None`).
-    pub(crate) per_contact: Option<(f64, Arc<crate::lambda::LambdaTable>)>,
+    pub(crate) per_contact: Option<(f64, Arc<crate::lambda_table::LambdaTable>)>,
     pub(crate) exact: Exact,
 }
 

@@ -42,6 +42,7 @@
 
 pub mod contact;
 pub mod lambda;
+mod lambda_table;
 pub mod law;
 pub mod state;
 pub mod table;

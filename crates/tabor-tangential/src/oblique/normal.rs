@@ -11,24 +11,9 @@
 //! same overlap several times (it is forgotten whenever a hook of the law may have
 //! changed its branch, [`Setup::forget_normal`]).
 
-use super::state::{derivative, Setup};
-use std::cell::Cell;
+use super::state::{derivative, NormalPoint, Setup};
 use tabor_dynamics::{BranchCurve, ForceLaw};
 use tabor_restitution::Result;
-
-/// The normal law at one overlap.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct NormalPoint {
-    /// Elastic-adhesive force (N, repulsive > 0).
-    pub(super) force: f64,
-    /// Contact radius (m, ≥ 0).
-    pub(super) radius: f64,
-    /// `(da/dδ, dF/dδ)`, when asked for.
-    pub(super) slopes: Option<(f64, f64)>,
-}
-
-/// The last point evaluated: `(overlap, rate)` as bits and the point.
-pub(super) type NormalCache = Cell<Option<([u64; 2], NormalPoint)>>;
 
 /// The largest mismatch (relative to the overlap scale) between the overlap and
 /// the curve's overlap at the coordinate solved for it: beyond it the curve does

@@ -6,12 +6,25 @@ use super::bed::MicroSlipBed;
 use super::bodies::ObliqueImpact;
 use super::elements::*;
 use super::limits::*;
-use super::normal::NormalCache;
 use crate::model::{TangentialModel, Twisting};
 use nalgebra::Vector3;
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use tabor_dynamics::ForceLaw;
 use tabor_restitution::Result;
+
+/// The normal law at one overlap.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct NormalPoint {
+    /// Elastic-adhesive force (N, repulsive > 0).
+    pub(super) force: f64,
+    /// Contact radius (m, ≥ 0).
+    pub(super) radius: f64,
+    /// `(da/dδ, dF/dδ)`, when asked for.
+    pub(super) slopes: Option<(f64, f64)>,
+}
+
+/// The last point evaluated: `(overlap, rate)` as bits and the point.
+pub(super) type NormalCache = Cell<Option<([u64; 2], NormalPoint)>>;
 
 // ---------------------------------------------------------------------------
 // state layout
