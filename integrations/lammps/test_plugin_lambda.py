@@ -95,6 +95,20 @@ def contact_time(r1, r2, speed):
     return 2.87 * (m_star ** 2 / (r_star * E_STAR ** 2 * speed)) ** 0.2
 
 
+def rebound(lmp, velocity, reach, speed, tc, steps, gap0, max_contact_times):
+    """Runs a set-up collision (LAMMPS variables `gap` and `velocity`, the
+    separating speed) across the starting gap `gap0`, then contact time by contact
+    time until the bodies are beyond `reach` and separating: the restitution, or 0
+    when they are still together after `max_contact_times` contact times."""
+    dt = tc / steps
+    lmp.command(f"run {int(math.ceil(gap0 / speed / dt)) + 1}")
+    for _ in range(max_contact_times):
+        lmp.command(f"run {steps}")
+        if lmp.extract_variable("gap") > reach * 1.001 + 1e-3 * speed * tc and lmp.extract_variable(velocity) > 0:
+            return lmp.extract_variable(velocity) / speed
+    return 0.0
+
+
 def run(coeff, r1, r2, speed, steps, max_contact_times=20, h=H):
     """One central collision of spheres r1, r2 (centre-of-mass frame) under
     `coeff`, at dt = t_c/steps; the spheres start a whole number of steps outside
@@ -123,12 +137,7 @@ def run(coeff, r1, r2, speed, steps, max_contact_times=20, h=H):
                   "fix integrate all nve/sphere", f"timestep {dt}",
                   "variable vrel equal vx[2]-vx[1]", f"variable gap equal x[2]-x[1]-{r1 + r2}"]:
             lmp.command(c)
-        lmp.command(f"run {int(math.ceil(gap0 / speed / dt)) + 1}")
-        for _ in range(max_contact_times):
-            lmp.command(f"run {steps}")
-            if lmp.extract_variable("gap") > reach * 1.001 + 1e-3 * speed * tc and lmp.extract_variable("vrel") > 0:
-                return lmp.extract_variable("vrel") / speed
-        return 0.0
+        return rebound(lmp, "vrel", reach, speed, tc, steps, gap0, max_contact_times)
     finally:
         lmp.close()
 
@@ -298,12 +307,7 @@ def run_wall(model, r, speed, steps, max_contact_times=20):
                   f"fix wall all wall/tabor {model} zplane 0.0 NULL", "fix integrate all nve/sphere",
                   f"timestep {dt}", f"variable gap equal z[1]-{r}", "variable vz equal vz[1]"]:
             lmp.command(c)
-        lmp.command(f"run {int(math.ceil(gap0 / speed / dt)) + 1}")
-        for _ in range(max_contact_times):
-            lmp.command(f"run {steps}")
-            if lmp.extract_variable("gap") > reach * 1.001 + 1e-3 * speed * tc and lmp.extract_variable("vz") > 0:
-                return lmp.extract_variable("vz") / speed
-        return 0.0
+        return rebound(lmp, "vz", reach, speed, tc, steps, gap0, max_contact_times)
     finally:
         lmp.close()
 

@@ -121,18 +121,11 @@ fn check_report(c: &Check) -> String {
         if p.sticks { " (sticks)" } else { "" },
         c.time_step_error
     ));
-    s.push_str("speed (m/s)   LAMMPS     tabor\n");
-    for p in &c.decade {
-        s.push_str(&format!(
-            "{:.4e}    {:.6}   {}\n",
-            p.speed,
-            p.lammps,
-            p.tabor.map_or("-".into(), |t| format!("{t:.6}"))
-        ));
-    }
-    for n in &c.notes {
-        s.push_str(&format!("note: {n}\n"));
-    }
+    decade_table(
+        &mut s,
+        c.decade.iter().map(|p| (p.speed, p.lammps, p.tabor)),
+        &c.notes,
+    );
     s
 }
 
@@ -160,18 +153,11 @@ fn plugin_check_report(c: &PluginCheck) -> String {
         "achieved            {:.6} at {:.4e} m/s (LAMMPS at timestep <= contact time/20000: +- {:.0e})\n",
         p.lammps, p.speed, c.time_step_error
     ));
-    s.push_str("speed (m/s)   LAMMPS     tabor\n");
-    for p in &c.decade {
-        s.push_str(&format!(
-            "{:.4e}    {:.6}   {}\n",
-            p.speed,
-            p.lammps,
-            p.tabor.map_or("-".into(), |t| format!("{t:.6}"))
-        ));
-    }
-    for n in &c.notes {
-        s.push_str(&format!("note: {n}\n"));
-    }
+    decade_table(
+        &mut s,
+        c.decade.iter().map(|p| (p.speed, p.lammps, p.tabor)),
+        &c.notes,
+    );
     s
 }
 
@@ -226,5 +212,24 @@ fn write_out(a: &LammpsArgs, x: &impl serde::Serialize, fragment: &str) -> Outco
         (Some(path), false) => std::fs::write(path, fragment)
             .map_err(|e| format!("cannot write {}: {e}", path.display()).into()),
         (None, false) => emit(fragment),
+    }
+}
+
+/// The decade of speeds of a `--check` report (speed, LAMMPS's restitution,
+/// tabor's) and its notes, one line each.
+fn decade_table(
+    s: &mut String,
+    points: impl Iterator<Item = (f64, f64, Option<f64>)>,
+    notes: &[String],
+) {
+    s.push_str("speed (m/s)   LAMMPS     tabor\n");
+    for (speed, lammps, tabor) in points {
+        s.push_str(&format!(
+            "{speed:.4e}    {lammps:.6}   {}\n",
+            tabor.map_or("-".into(), |t| format!("{t:.6}"))
+        ));
+    }
+    for n in notes {
+        s.push_str(&format!("note: {n}\n"));
     }
 }
