@@ -3,10 +3,12 @@
 #include "tabor_ffi.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "error.h"
 #include "memory.h"
 #include "utils.h"
 
+#include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -163,13 +165,44 @@ void FixTaborHistory::unpack_restart(int nlocal, int nth)
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  int size = static_cast<int>(extra[nlocal][m]);
-  m++;
-  const double *buf = &extra[nlocal][m];
-  int n = static_cast<int>(buf[0]);
+  npartner[nlocal] = 0;
+  // every number of the record is checked before it is used: a corrupted record
+  // is refused (check_restart, on every rank), never read out of bounds
+  const double *rec = &extra[nlocal][m];
+  const tagint self = atom->tag[nlocal];
+  const double room = atom->nextra_store > m ? atom->nextra_store - m : 0;
+  auto refuse = [&](const std::string &what) {
+    if (bad_record.empty())
+      bad_record = fmt::format("fix tabor/history: the restart record of atom {} {}", self, what);
+  };
+  double size_d = rec[0];
+  if (!std::isfinite(size_d) || size_d != std::floor(size_d) || size_d < 2 || (room > 0 && size_d > room))
+    return refuse(fmt::format("has a length of {} values (2 to {} expected): a corrupted restart file", size_d,
+                              room));
+  int size = static_cast<int>(size_d);
+  const double *buf = &rec[1];
+  double n_d = buf[0];
+  if (!std::isfinite(n_d) || n_d != std::floor(n_d) || n_d < 0 || n_d > (size - 2) / 2)
+    return refuse(fmt::format("has a partner count of {} (0 to {} fit in its {} values): a corrupted restart file",
+                              n_d, (size - 2) / 2, size));
+  int n = static_cast<int>(n_d);
+  if (n == 0 && size != 2)
+    return refuse(fmt::format("holds no contact but {} values: a corrupted restart file", size));
   int stored = n > 0 ? (size - 2) / n - 1 : dnum;
   if (n > 0 && (size - 2) != n * (1 + stored))
-    error->one(FLERR, "fix tabor/history: a restart record of {} values cannot hold {} contacts", size, n);
+    return refuse(fmt::format("of {} values cannot hold {} contacts: a corrupted restart file", size, n));
+  for (int k = 0, k0 = 1; k < n; k++, k0 += 1 + stored) {
+    tagint t = (tagint) ubuf(buf[k0]).i;
+    if (t <= 0 || t == self)
+      return refuse(fmt::format("has partner ID {} (contact {} of {}): an ID is > 0 and not the atom's own", t,
+                                k + 1, n));
+    for (int d = 0; d < stored; d++)
+      if (!std::isfinite(buf[k0 + 1 + d]))
+        return refuse(fmt::format("has the non-finite value {} (double {} of its contact with atom {})",
+                                  buf[k0 + 1 + d], d, t));
+    if (buf[k0 + 1] != 1.0)
+      return refuse(fmt::format("has contact flag {} with atom {} (a stored contact has 1)", buf[k0 + 1], t));
+  }
   if (stored == dnum) {
     unpack_exchange(nlocal, const_cast<double *>(buf));
     return;
@@ -179,15 +212,16 @@ void FixTaborHistory::unpack_restart(int nlocal, int nth)
   for (int k = 0, k0 = 1; k < n; k++, k0 += 1 + stored)
     for (int d = thornton ? TABOR_CONTACT_HISTORY_BASE_LEN : dnum; d < stored; d++)
       if (buf[k0 + 1 + d] != 0.0) {
-        if (thornton)
-          error->one(FLERR, "fix tabor/history: the restart file holds the micro-slip state of Thornton's "
+        if (bad_record.empty())
+          bad_record = thornton
+              ? std::string("fix tabor/history: the restart file holds the micro-slip state of Thornton's "
                             "incremental form (16 doubles per contact), which this build of pair tabor replaced by "
-                            "a spring bed; restart that run from its data file");
-        error->one(FLERR,
-                   "fix tabor/history: the restart file holds {} doubles per contact, this build of pair tabor "
-                   "keeps {} for these pair coefficients and cannot drop the rest (a micro-slip bed, or a newer "
-                   "tabor's state)",
-                   stored, dnum);
+                            "a spring bed; restart that run from its data file")
+              : fmt::format("fix tabor/history: the restart file holds {} doubles per contact, this build of pair "
+                            "tabor keeps {} for these pair coefficients and cannot drop the rest (a micro-slip bed, "
+                            "or a newer tabor's state)",
+                            stored, dnum);
+        return;
       }
   while (n > capacity) grow_capacity();
   npartner[nlocal] = n;
@@ -253,4 +287,20 @@ void FixTaborHistory::store(int i, tagint t, const double *h)
   p[npartner[i]] = t;
   memcpy(v + npartner[i] * dnum, h, sizeof(double) * dnum);
   npartner[i]++;
+}
+
+/* A record refused by unpack_restart (on the rank that owns the atom) becomes
+   one error->all on every rank, with the message of the lowest such rank. */
+void FixTaborHistory::check_restart()
+{
+  int me = comm->me, first = 0;
+  int mine = bad_record.empty() ? comm->nprocs : me;
+  MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, world);
+  if (first == comm->nprocs) return;
+  int length = me == first ? (int) bad_record.size() : 0;
+  MPI_Bcast(&length, 1, MPI_INT, first, world);
+  std::string message(length, ' ');
+  if (me == first) message = bad_record;
+  MPI_Bcast(&message[0], length, MPI_CHAR, first, world);
+  error->all(FLERR, message);
 }

@@ -13,6 +13,8 @@
 
 #include "fix.h"
 
+#include <string>
+
 namespace LAMMPS_NS {
 
 class FixTaborHistory : public Fix {
@@ -44,6 +46,9 @@ class FixTaborHistory : public Fix {
   void store(int i, tagint t, const double *h);
   // number of stored contacts of atom i
   int count(int i) const { return npartner[i]; }
+  // one error->all on every rank if unpack_restart refused a record (call it on
+  // every rank once the fix is made: the check is collective)
+  void check_restart();
 
  private:
   int dnum;        // doubles per contact
@@ -52,6 +57,7 @@ class FixTaborHistory : public Fix {
   int *npartner;
   tagint *partner;    // nmax_alloc * capacity
   double *values;     // nmax_alloc * capacity * dnum
+  std::string bad_record;    // the first restart record refused on this rank
   void grow_capacity();
 };
 

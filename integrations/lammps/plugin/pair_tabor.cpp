@@ -149,6 +149,32 @@ void PairTabor::init_style()
     fix_history = dynamic_cast<FixTaborHistory *>(
         modify->add_fix(fmt::format("{} all tabor/history {}", HISTORY_ID, history_width)));
   if (!fix_history) error->all(FLERR, "pair tabor: could not create fix tabor/history");
+  // a restart record refused when the fix read it: one error on every rank
+  fix_history->check_restart();
+
+  // a point particle (radius 0) or a radius not finite cannot touch anything:
+  // refused here on every rank (error->all), naming the lowest such atom ID,
+  // rather than by the contact step of one rank during the run
+  tagint bad = MAXTAGINT;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (!(atom->radius[i] > 0.0) || !std::isfinite(atom->radius[i])) bad = MIN(bad, atom->tag[i]);
+  tagint worst = MAXTAGINT;
+  MPI_Allreduce(&bad, &worst, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (worst != MAXTAGINT) {
+    double mine = 0.0, value = 0.0;
+    int type = 0, owner_type = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if (atom->tag[i] == worst) {
+        mine = atom->radius[i];
+        type = atom->type[i];
+      }
+    MPI_Allreduce(&mine, &value, 1, MPI_DOUBLE, MPI_SUM, world);
+    MPI_Allreduce(&type, &owner_type, 1, MPI_INT, MPI_MAX, world);
+    error->all(FLERR,
+               "pair tabor: atom {} (type {}) has radius {}: every particle needs a finite radius > 0 "
+               "(a point particle cannot touch; set its diameter)",
+               worst, owner_type, value);
+  }
 
   // largest radius per type, over all ranks (as pair granular's maxrad_dynamic)
   int n = atom->ntypes;
