@@ -7,7 +7,12 @@
 
    Storage: per atom a row of `capacity` partners, grown (doubled, for all atoms)
    when an atom gets more contacts than fit, so there is no fixed limit. Memory:
-   nmax * capacity * (8 + 8 * width) bytes. */
+   nmax * (12 + capacity * (16 + 8 * width)) bytes.
+
+   Lifecycle: each atom has a creation stamp (new atoms get one above every
+   stamp used before), each record its partner's stamp; an atom ID with another
+   stamp is another atom, so a recycled ID starts clean, and the records of
+   partners absent from a rebuilt neighbor list (deleted atoms) are dropped. */
 #ifndef TABOR_FIX_HISTORY_H
 #define TABOR_FIX_HISTORY_H
 
