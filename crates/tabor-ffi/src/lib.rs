@@ -476,8 +476,10 @@ pub unsafe extern "C" fn tabor_contact_step(
         // in place: ContactModel::step leaves the history unchanged on error (it
         // fails only before it writes); the doubles it uses are kept aside only to
         // be put back when its result is not finite
-        let mut kept = [0.0; TABOR_CONTACT_HISTORY_LEN];
-        kept[..len].copy_from_slice(&check::as_doubles(history)[..len]);
+        // (ten doubles on the stack; the whole history only with a micro-slip bed)
+        let mut kept = [0.0; TABOR_CONTACT_HISTORY_BASE_LEN];
+        kept.copy_from_slice(&check::as_doubles(history)[..TABOR_CONTACT_HISTORY_BASE_LEN]);
+        let kept_bed = (len > TABOR_CONTACT_HISTORY_BASE_LEN).then_some(*history);
         match model.step(state, history) {
             Ok(o) => match check::forces(&o, state, history, model) {
                 Ok(()) => {
@@ -485,7 +487,11 @@ pub unsafe extern "C" fn tabor_contact_step(
                     TABOR_OK
                 }
                 Err(m) => {
-                    check::as_doubles_mut(history)[..len].copy_from_slice(&kept[..len]);
+                    match kept_bed {
+                        Some(all) => *history = all,
+                        None => check::as_doubles_mut(history)[..TABOR_CONTACT_HISTORY_BASE_LEN]
+                            .copy_from_slice(&kept),
+                    }
                     *out = TaborContactForces::default();
                     refuse(m)
                 }
