@@ -180,13 +180,27 @@ fn flag_and_overlap(contact: f64, max_overlap: f64) -> Checked {
 pub(crate) fn contact_history(h: &TaborContactHistory, len: usize) -> Checked {
     flag_and_overlap(h.contact, h.max_overlap)?;
     let all = as_doubles(h);
-    match all.iter().take(len).position(|x| !x.is_finite()) {
-        None => Ok(()),
-        Some(i) => Err(format!(
+    if let Some(i) = all.iter().take(len).position(|x| !x.is_finite()) {
+        return Err(format!(
             "invalid history double {i} = {}: every value must be finite",
             plain(all[i])
-        )),
+        ));
     }
+    // the micro-slip bed's header (tabor_tangential::micro_slip): the node
+    // spacing and the last squared contact radius are >= 0 (a negative spacing
+    // would never be coarsened to the contact's size)
+    if len > crate::TABOR_CONTACT_HISTORY_BASE_LEN {
+        for (k, name) in [(3, "node spacing"), (4, "last squared contact radius")] {
+            let x = h.micro_slip[k];
+            if x < 0.0 {
+                return Err(format!(
+                    "invalid history micro-slip {name} = {}: must be >= 0 (zero for a new contact)",
+                    plain(x)
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The doubles of a contact history, in order.

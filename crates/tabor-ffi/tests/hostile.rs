@@ -196,6 +196,30 @@ fn a_nan_or_inconsistent_history_is_refused() {
         last_error(),
         "invalid history double 3 = inf: every value must be finite"
     );
+    unsafe { tabor_contact_free(c) };
+    // a negative node spacing of the micro-slip bed (it would never be coarsened
+    // to the contact's size: the step did not return)
+    let md = TaborFrictionParams {
+        tangential_model: TABOR_TANGENTIAL_MINDLIN_DERESIEWICZ,
+        tangential_stiffness: 8.0 * 1.2e10,
+        friction_coefficient: 0.3,
+        ..TaborFrictionParams::default()
+    };
+    let mut c = std::ptr::null_mut();
+    assert_eq!(unsafe { tabor_contact_new(&p, &md, &mut c) }, TABOR_OK);
+    let mut h = TaborContactHistory {
+        contact: 1.0,
+        max_overlap: 1e-9,
+        ..TaborContactHistory::default()
+    };
+    h.micro_slip[3] = -1e-16;
+    let status = unsafe { tabor_contact_step(c, &state(1e-9), &mut h, &mut out) };
+    assert_eq!(status, TABOR_ERR_INVALID);
+    assert!(
+        last_error().starts_with("invalid history micro-slip node spacing = -1e-16"),
+        "{}",
+        last_error()
+    );
     unsafe {
         tabor_contact_free(c);
         tabor_law_free(law);
@@ -328,7 +352,7 @@ fn contact_history() -> impl Strategy<Value = TaborContactHistory> {
         hostile(1e-8),
     )
         .prop_map(|(contact, max_overlap, tangential, rolling, twisting, a)| {
-            TaborContactHistory {
+            let mut h = TaborContactHistory {
                 contact,
                 max_overlap,
                 tangential,
@@ -336,7 +360,11 @@ fn contact_history() -> impl Strategy<Value = TaborContactHistory> {
                 rolling,
                 twisting,
                 ..TaborContactHistory::default()
-            }
+            };
+            // the micro-slip bed's header: node spacing, last squared radius
+            h.micro_slip[3] = rolling[0];
+            h.micro_slip[4] = rolling[1];
+            h
         })
 }
 
