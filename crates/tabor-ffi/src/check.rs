@@ -199,6 +199,17 @@ pub(crate) fn contact_history(h: &TaborContactHistory, len: usize) -> Checked {
                 ));
             }
         }
+        // a step leaves a² <= (nodes - 1) Δz (the bed spans the contact)
+        let (dz, a0_sq) = (h.micro_slip[3], h.micro_slip[4]);
+        let nodes = (crate::TABOR_MICRO_SLIP_LEN - 5) / 2;
+        if dz > 0.0 && a0_sq > nodes as f64 * dz {
+            return Err(format!(
+                "invalid history micro-slip last squared contact radius = {}: beyond the bed of \
+                 node spacing {} ({nodes} nodes)",
+                plain(a0_sq),
+                plain(dz)
+            ));
+        }
     }
     Ok(())
 }

@@ -265,7 +265,10 @@ pub fn advance(
     }
     // the nodes the contact left are released (one more: a refinement may have
     // put a midpoint just beyond the last edge); those beyond were already
-    let before = ((a0_sq / dz).ceil() as usize + 1).clamp(inside, nodes);
+    // (saturating: a contact that shrank by more than 2^64 in area in one step)
+    let before = ((a0_sq / dz).ceil() as usize)
+        .saturating_add(1)
+        .clamp(inside, nodes);
     for x in &mut w[2 * inside..2 * before] {
         *x = 0.0;
     }
