@@ -10,7 +10,9 @@
 # wall/tabor against tabor impact on a flat, fix wall/gran, restart, 1 vs 2 ranks,
 # the exported wall fragment), test_plugin_lambda.py
 # (maugis ... range h: three sizes, each at its own Lambda, against tabor impact;
-# bad input at pair_coeff), test_plugin_cloud.py (a
+# bad input at pair_coeff), test_plugin_lifecycle.py (point particles, absurd
+# coefficients, corrupted restart records, recycled atom IDs: clean error->all or
+# a fresh contact), test_plugin_cloud.py (a
 # polydisperse cloud on 1 and 2 ranks, a restart in the middle), test_doc_examples.py
 # (every example line of the doc pages doc/pair_tabor.rst and doc/fix_tabor_history.rst),
 # then the MPI cloud example of examples/lammps with the
@@ -37,6 +39,7 @@ export PATH="$VENV/bin:$PATH"
 "$VENV/bin/python" "$HERE/test_plugin_damping.py"
 "$VENV/bin/python" "$HERE/test_plugin_wall.py"  # fix wall/tabor: flat-target impacts, wall/gran, restart, MPI
 "$VENV/bin/python" "$HERE/test_plugin_lambda.py"  # per-contact Lambda (range h / stress s0)
+"$VENV/bin/python" "$HERE/test_plugin_lifecycle.py"  # point particles, absurd coefficients, corrupted restarts, recycled IDs
 "$VENV/bin/python" "$HERE/test_lammps.py" plugin_friction  # the exported --plugin fragment with [friction], oblique (export branch)
 "$VENV/bin/python" "$HERE/test_plugin_cloud.py"
 CLOUD_PLUGIN="$PLUGIN" CLOUD_OUT="$TARGET/lammps-cloud-plugin" bash "$ROOT/examples/lammps/run.sh"

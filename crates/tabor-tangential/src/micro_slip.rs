@@ -178,7 +178,7 @@ fn refine(w: &mut [f64], nodes: usize) {
 /// at the step's end, with `k_line = k'`, the tangential stiffness per unit
 /// length of the bed (`k_t/2`, Pa). Returns the elastic force `T` (N; the force on
 /// body `i` is `−T`), `|T| ≤ limit`, and whether every spring slips (gross
-/// sliding). A contact radius or limit that is zero, negative or not finite
+/// sliding). A contact radius (or its square) or limit that is zero, negative or not finite
 /// releases every spring (`T = 0`). Module docs.
 pub fn advance(
     bed: &mut [f64],
@@ -190,7 +190,8 @@ pub fn advance(
 ) -> (Vector3<f64>, bool) {
     let nodes = (bed.len() - HEAD) / 2;
     let ok = |x: f64| x.is_finite() && x > 0.0;
-    if !(ok(a) && ok(limit) && ok(k_line)) || nodes < 4 {
+    // a² must be finite too: at a² = ∞ the spacing doubles to ∞ and never halves back
+    if !(ok(a) && ok(a * a) && ok(limit) && ok(k_line)) || nodes < 4 {
         wipe(bed);
         return (Vector3::zeros(), false);
     }
@@ -265,7 +266,10 @@ pub fn advance(
     }
     // the nodes the contact left are released (one more: a refinement may have
     // put a midpoint just beyond the last edge); those beyond were already
-    let before = ((a0_sq / dz).ceil() as usize + 1).clamp(inside, nodes);
+    // (saturating: a contact that shrank by more than 2^64 in area in one step)
+    let before = ((a0_sq / dz).ceil() as usize)
+        .saturating_add(1)
+        .clamp(inside, nodes);
     for x in &mut w[2 * inside..2 * before] {
         *x = 0.0;
     }

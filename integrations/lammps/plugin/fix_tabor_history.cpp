@@ -3,11 +3,15 @@
 #include "tabor_ffi.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "error.h"
 #include "memory.h"
+#include "neigh_list.h"
 #include "utils.h"
 
+#include <cmath>
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -16,7 +20,7 @@ static constexpr int INITIAL_CAPACITY = 8;
 /* fix ID group tabor/history WIDTH */
 FixTaborHistory::FixTaborHistory(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), dnum(0), capacity(INITIAL_CAPACITY), nmax_alloc(0), npartner(nullptr),
-    partner(nullptr), values(nullptr)
+    partner(nullptr), values(nullptr), stamp(nullptr), pstamp(nullptr)
 {
   if (narg != 4) error->all(FLERR, "Illegal fix tabor/history command (created by pair style tabor)");
   dnum = utils::inumeric(FLERR, arg[3], false, lmp);
@@ -24,11 +28,16 @@ FixTaborHistory::FixTaborHistory(LAMMPS *lmp, int narg, char **arg) :
   create_attribute = 1;
   restart_peratom = 1;
   maxexchange_dynamic = 1;
-  maxexchange = 1 + capacity * (1 + dnum);
+  maxexchange = 2 + capacity * (2 + dnum);
+  comm_forward = 1;    // the creation stamps of ghost atoms
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
-  for (int i = 0; i < nmax_alloc; i++) npartner[i] = 0;
+  // the atoms that exist now are their IDs' first incarnation here: stamp 0
+  for (int i = 0; i < nmax_alloc; i++) {
+    npartner[i] = 0;
+    stamp[i] = 0.0;
+  }
 }
 
 FixTaborHistory::~FixTaborHistory()
@@ -38,6 +47,8 @@ FixTaborHistory::~FixTaborHistory()
   memory->destroy(npartner);
   memory->sfree(partner);
   memory->sfree(values);
+  memory->destroy(stamp);
+  memory->sfree(pstamp);
 }
 
 int FixTaborHistory::setmask()
@@ -52,7 +63,13 @@ void FixTaborHistory::grow_arrays(int nmax)
                                         "tabor/history:partner");
   values = (double *) memory->srealloc(values, sizeof(double) * (bigint) nmax * capacity * dnum,
                                        "tabor/history:values");
-  for (int i = nmax_alloc; i < nmax; i++) npartner[i] = 0;
+  memory->grow(stamp, nmax, "tabor/history:stamp");
+  pstamp = (double *) memory->srealloc(pstamp, sizeof(double) * (bigint) nmax * capacity,
+                                       "tabor/history:pstamp");
+  for (int i = nmax_alloc; i < nmax; i++) {
+    npartner[i] = 0;
+    stamp[i] = 0.0;
+  }
   nmax_alloc = nmax;
 }
 
@@ -61,19 +78,23 @@ void FixTaborHistory::grow_capacity()
   int wider = 2 * capacity;
   auto *p = (tagint *) memory->smalloc(sizeof(tagint) * (bigint) nmax_alloc * wider, "tabor/history:partner");
   auto *v = (double *) memory->smalloc(sizeof(double) * (bigint) nmax_alloc * wider * dnum, "tabor/history:values");
+  auto *ps = (double *) memory->smalloc(sizeof(double) * (bigint) nmax_alloc * wider, "tabor/history:pstamp");
   for (int i = 0; i < nmax_alloc; i++) {
     int n = npartner[i] < capacity ? npartner[i] : capacity;
     if (n > 0) {
       memcpy(p + (bigint) i * wider, partner + (bigint) i * capacity, sizeof(tagint) * n);
+      memcpy(ps + (bigint) i * wider, pstamp + (bigint) i * capacity, sizeof(double) * n);
       memcpy(v + (bigint) i * wider * dnum, values + (bigint) i * capacity * dnum, sizeof(double) * n * dnum);
     }
   }
   memory->sfree(partner);
   memory->sfree(values);
+  memory->sfree(pstamp);
   partner = p;
   values = v;
+  pstamp = ps;
   capacity = wider;
-  maxexchange = 1 + capacity * (1 + dnum);
+  maxexchange = 2 + capacity * (2 + dnum);
 }
 
 void FixTaborHistory::set_width(int wide)
@@ -92,30 +113,106 @@ void FixTaborHistory::set_width(int wide)
   memory->sfree(values);
   values = v;
   dnum = wide;
-  maxexchange = 1 + capacity * (1 + dnum);
+  maxexchange = 2 + capacity * (2 + dnum);
 }
 
 void FixTaborHistory::copy_arrays(int i, int j, int /*delflag*/)
 {
   npartner[j] = npartner[i];
+  stamp[j] = stamp[i];
   memcpy(partner + (bigint) j * capacity, partner + (bigint) i * capacity, sizeof(tagint) * npartner[i]);
+  memcpy(pstamp + (bigint) j * capacity, pstamp + (bigint) i * capacity, sizeof(double) * npartner[i]);
   memcpy(values + (bigint) j * capacity * dnum, values + (bigint) i * capacity * dnum,
          sizeof(double) * npartner[i] * dnum);
 }
 
+/* a new atom (create_atoms, fix deposit, ...): no contact, and a creation stamp
+   no atom of its ID had before, whatever ID it gets */
 void FixTaborHistory::set_arrays(int i)
 {
   npartner[i] = 0;
+  stamp[i] = next_stamp + (double) issued * comm->nprocs + comm->me;
+  issued_max = MAX(issued_max, stamp[i]);
+  issued++;
+}
+
+/* the next stamps lie above every stamp an atom or a record holds, or that
+   was ever issued (a deleted atom's too): all ranks agree on the base */
+void FixTaborHistory::refresh_stamps()
+{
+  double most = issued_max;
+  for (int i = 0; i < atom->nlocal; i++) {
+    most = MAX(most, stamp[i]);
+    const double *ps = pstamp + (bigint) i * capacity;
+    for (int k = 0; k < npartner[i]; k++) most = MAX(most, ps[k]);
+  }
+  double all = 0.0;
+  MPI_Allreduce(&most, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  next_stamp = all + 1.0;
+  issued = 0;
+}
+
+/* drops the records whose partner is not a neighbor (list: pair tabor's
+   newton-off half list, just rebuilt): a contact's partner is always within
+   the list's reach, so such a record belongs to a deleted atom */
+void FixTaborHistory::drop_orphans(int inum, const int *ilist, const int *numneigh, int *const *firstneigh)
+{
+  const tagint *tag = atom->tag;
+  int nlocal = atom->nlocal;
+  std::vector<char> seen((size_t) nlocal * capacity, 0);
+  auto mark = [&](int i, int j) {
+    const tagint *p = partner + (bigint) i * capacity;
+    const double *ps = pstamp + (bigint) i * capacity;
+    for (int k = 0; k < npartner[i]; k++)
+      if (p[k] == tag[j] && ps[k] == stamp[j]) seen[(size_t) i * capacity + k] = 1;
+  };
+  for (int ii = 0; ii < inum; ii++) {
+    int i = ilist[ii];
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      int j = firstneigh[i][jj] & NEIGHMASK;
+      if (npartner[i]) mark(i, j);
+      if (j < nlocal && npartner[j]) mark(j, i);
+    }
+  }
+  for (int i = 0; i < nlocal; i++) {
+    for (int k = npartner[i] - 1; k >= 0; k--)
+      if (!seen[(size_t) i * capacity + k]) remove(i, k);
+  }
+}
+
+void FixTaborHistory::remove(int i, int k)
+{
+  tagint *p = partner + (bigint) i * capacity;
+  double *ps = pstamp + (bigint) i * capacity;
+  double *v = values + (bigint) i * capacity * dnum;
+  int last = --npartner[i];
+  p[k] = p[last];
+  ps[k] = ps[last];
+  if (k != last) memmove(v + k * dnum, v + last * dnum, sizeof(double) * dnum);
+}
+
+int FixTaborHistory::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  for (int k = 0; k < n; k++) buf[k] = stamp[list[k]];
+  return n;
+}
+
+void FixTaborHistory::unpack_forward_comm(int n, int first, double *buf)
+{
+  for (int k = 0; k < n; k++) stamp[first + k] = buf[k];
 }
 
 int FixTaborHistory::pack_exchange(int i, double *buf)
 {
   int m = 0;
   buf[m++] = npartner[i];
+  buf[m++] = stamp[i];
   const tagint *p = partner + (bigint) i * capacity;
+  const double *ps = pstamp + (bigint) i * capacity;
   const double *v = values + (bigint) i * capacity * dnum;
   for (int k = 0; k < npartner[i]; k++) {
     buf[m++] = ubuf(p[k]).d;
+    buf[m++] = ps[k];
     for (int d = 0; d < dnum; d++) buf[m++] = v[k * dnum + d];
   }
   return m;
@@ -127,21 +224,28 @@ int FixTaborHistory::unpack_exchange(int nlocal, double *buf)
   int n = static_cast<int>(buf[m++]);
   while (n > capacity) grow_capacity();
   npartner[nlocal] = n;
+  stamp[nlocal] = buf[m++];
   tagint *p = partner + (bigint) nlocal * capacity;
+  double *ps = pstamp + (bigint) nlocal * capacity;
   double *v = values + (bigint) nlocal * capacity * dnum;
   for (int k = 0; k < n; k++) {
     p[k] = (tagint) ubuf(buf[m++]).i;
+    ps[k] = buf[m++];
     for (int d = 0; d < dnum; d++) v[k * dnum + d] = buf[m++];
   }
   return m;
 }
 
-/* restart layout per atom: [size, npartner, (tag, dnum values) * npartner];
-   buf[0] counts every value including itself (LAMMPS's convention) */
+/* restart layout per atom: [size, -1, npartner, stamp, (tag, partner stamp,
+   dnum values) * npartner]; buf[0] counts every value including itself
+   (LAMMPS's convention); -1 marks the layout with creation stamps (the records
+   of earlier builds, [size, npartner, (tag, values) * npartner], read with every
+   stamp 0: their atoms are their IDs' first incarnation) */
 int FixTaborHistory::pack_restart(int i, double *buf)
 {
-  int m = 1;
-  m += pack_exchange(i, &buf[1]);
+  buf[1] = -1.0;
+  int m = 2;
+  m += pack_exchange(i, &buf[2]);
   buf[0] = m;
   return m;
 }
@@ -163,47 +267,88 @@ void FixTaborHistory::unpack_restart(int nlocal, int nth)
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  int size = static_cast<int>(extra[nlocal][m]);
-  m++;
-  const double *buf = &extra[nlocal][m];
-  int n = static_cast<int>(buf[0]);
-  int stored = n > 0 ? (size - 2) / n - 1 : dnum;
-  if (n > 0 && (size - 2) != n * (1 + stored))
-    error->one(FLERR, "fix tabor/history: a restart record of {} values cannot hold {} contacts", size, n);
-  if (stored == dnum) {
-    unpack_exchange(nlocal, const_cast<double *>(buf));
-    return;
+  npartner[nlocal] = 0;
+  // every number of the record is checked before it is used: a corrupted record
+  // is refused (check_restart, on every rank), never read out of bounds
+  const double *rec = &extra[nlocal][m];
+  const tagint self = atom->tag[nlocal];
+  const double room = atom->nextra_store > m ? atom->nextra_store - m : 0;
+  auto refuse = [&](const std::string &what) {
+    if (bad_record.empty())
+      bad_record = fmt::format("fix tabor/history: the restart record of atom {} {}", self, what);
+  };
+  double size_d = rec[0];
+  if (!std::isfinite(size_d) || size_d != std::floor(size_d) || size_d < 2 || (room > 0 && size_d > room))
+    return refuse(fmt::format("has a length of {} values (2 to {} expected): a corrupted restart file", size_d,
+                              room));
+  int size = static_cast<int>(size_d);
+  // the layout: with creation stamps (-1 after the length), or of earlier builds
+  const bool stamped = size >= 4 && rec[1] == -1.0;
+  const int head = stamped ? 4 : 2, per = stamped ? 2 : 1;
+  double n_d = rec[head - 2];
+  if (!std::isfinite(n_d) || n_d != std::floor(n_d) || n_d < 0 || n_d > (size - head) / (per + 1))
+    return refuse(fmt::format("has a partner count of {} (0 to {} fit in its {} values): a corrupted restart file",
+                              n_d, (size - head) / (per + 1), size));
+  int n = static_cast<int>(n_d);
+  if (n == 0 && size != head)
+    return refuse(fmt::format("holds no contact but {} values: a corrupted restart file", size));
+  int stored = n > 0 ? (size - head) / n - per : dnum;
+  if (n > 0 && (size - head) != n * (per + stored))
+    return refuse(fmt::format("of {} values cannot hold {} contacts: a corrupted restart file", size, n));
+  auto whole = [](double x) { return std::isfinite(x) && x >= 0.0 && x == std::floor(x) && x < 9007199254740992.0; };
+  double own = stamped ? rec[3] : 0.0;
+  if (!whole(own)) return refuse(fmt::format("has the creation stamp {} (a whole number >= 0)", own));
+  const double *entry = &rec[head];
+  for (int k = 0; k < n; k++, entry += per + stored) {
+    tagint t = (tagint) ubuf(entry[0]).i;
+    if (t <= 0 || t == self)
+      return refuse(fmt::format("has partner ID {} (contact {} of {}): an ID is > 0 and not the atom's own", t,
+                                k + 1, n));
+    if (stamped && !whole(entry[1]))
+      return refuse(fmt::format("has the partner stamp {} for atom {} (a whole number >= 0)", entry[1], t));
+    const double *h = entry + per;
+    for (int d = 0; d < stored; d++)
+      if (!std::isfinite(h[d]))
+        return refuse(fmt::format("has the non-finite value {} (double {} of its contact with atom {})", h[d], d,
+                                  t));
+    if (h[0] != 1.0)
+      return refuse(fmt::format("has contact flag {} with atom {} (a stored contact has 1)", h[0], t));
   }
+  // an older model's contact: the dropped doubles must be zero
   // Thornton's incremental state (builds before the spring bed): doubles 10-15
   int thornton = stored == 16 && TABOR_CONTACT_HISTORY_LEN != 16;
-  for (int k = 0, k0 = 1; k < n; k++, k0 += 1 + stored)
+  entry = &rec[head];
+  for (int k = 0; k < n; k++, entry += per + stored)
     for (int d = thornton ? TABOR_CONTACT_HISTORY_BASE_LEN : dnum; d < stored; d++)
-      if (buf[k0 + 1 + d] != 0.0) {
-        if (thornton)
-          error->one(FLERR, "fix tabor/history: the restart file holds the micro-slip state of Thornton's "
+      if (entry[per + d] != 0.0) {
+        if (bad_record.empty())
+          bad_record = thornton
+              ? std::string("fix tabor/history: the restart file holds the micro-slip state of Thornton's "
                             "incremental form (16 doubles per contact), which this build of pair tabor replaced by "
-                            "a spring bed; restart that run from its data file");
-        error->one(FLERR,
-                   "fix tabor/history: the restart file holds {} doubles per contact, this build of pair tabor "
-                   "keeps {} for these pair coefficients and cannot drop the rest (a micro-slip bed, or a newer "
-                   "tabor's state)",
-                   stored, dnum);
+                            "a spring bed; restart that run from its data file")
+              : fmt::format("fix tabor/history: the restart file holds {} doubles per contact, this build of pair "
+                            "tabor keeps {} for these pair coefficients and cannot drop the rest (a micro-slip bed, "
+                            "or a newer tabor's state)",
+                            stored, dnum);
+        return;
       }
   while (n > capacity) grow_capacity();
   npartner[nlocal] = n;
+  stamp[nlocal] = own;
   tagint *p = partner + (bigint) nlocal * capacity;
+  double *ps = pstamp + (bigint) nlocal * capacity;
   double *v = values + (bigint) nlocal * capacity * dnum;
-  int k0 = 1;
-  for (int k = 0; k < n; k++) {
-    p[k] = (tagint) ubuf(buf[k0++]).i;
-    for (int d = 0; d < dnum; d++) v[k * dnum + d] = d < stored ? buf[k0 + d] : 0.0;
-    k0 += stored;
+  entry = &rec[head];
+  for (int k = 0; k < n; k++, entry += per + stored) {
+    p[k] = (tagint) ubuf(entry[0]).i;
+    ps[k] = stamped ? entry[1] : 0.0;
+    for (int d = 0; d < dnum; d++) v[k * dnum + d] = d < stored ? entry[per + d] : 0.0;
   }
 }
 
 int FixTaborHistory::size_restart(int i)
 {
-  return 2 + npartner[i] * (1 + dnum);
+  return 4 + npartner[i] * (2 + dnum);
 }
 
 int FixTaborHistory::maxsize_restart()
@@ -212,23 +357,29 @@ int FixTaborHistory::maxsize_restart()
   for (int i = 0; i < atom->nlocal; i++) most = MAX(most, npartner[i]);
   int all = 0;
   MPI_Allreduce(&most, &all, 1, MPI_INT, MPI_MAX, world);
-  return 2 + all * (1 + dnum);
+  return 4 + all * (2 + dnum);
 }
 
 double FixTaborHistory::memory_usage()
 {
-  return (double) nmax_alloc * (sizeof(int) + capacity * (sizeof(tagint) + sizeof(double) * dnum));
+  return (double) nmax_alloc * (sizeof(int) + sizeof(double) + capacity * (sizeof(tagint) + sizeof(double) * (1 + dnum)));
 }
 
-double *FixTaborHistory::find(int i, tagint t)
+double *FixTaborHistory::find(int i, tagint t, double st)
 {
   const tagint *p = partner + (bigint) i * capacity;
+  const double *ps = pstamp + (bigint) i * capacity;
   for (int k = 0; k < npartner[i]; k++)
-    if (p[k] == t) return values + ((bigint) i * capacity + k) * dnum;
+    if (p[k] == t) {
+      if (ps[k] == st) return values + ((bigint) i * capacity + k) * dnum;
+      // the record of a deleted atom whose ID came back: it dies here
+      remove(i, k);
+      return nullptr;
+    }
   return nullptr;
 }
 
-void FixTaborHistory::store(int i, tagint t, const double *h)
+void FixTaborHistory::store(int i, tagint t, double st, const double *h)
 {
   tagint *p = partner + (bigint) i * capacity;
   double *v = values + (bigint) i * capacity * dnum;
@@ -236,10 +387,9 @@ void FixTaborHistory::store(int i, tagint t, const double *h)
     if (p[k] == t) {
       if (h[0] != 0.0) {
         if (v + k * dnum != h) memcpy(v + k * dnum, h, sizeof(double) * dnum);
+        pstamp[(bigint) i * capacity + k] = st;
       } else {
-        int last = --npartner[i];
-        p[k] = p[last];
-        memmove(v + k * dnum, v + last * dnum, sizeof(double) * dnum);
+        remove(i, k);
       }
       return;
     }
@@ -251,6 +401,23 @@ void FixTaborHistory::store(int i, tagint t, const double *h)
     v = values + (bigint) i * capacity * dnum;
   }
   p[npartner[i]] = t;
+  pstamp[(bigint) i * capacity + npartner[i]] = st;
   memcpy(v + npartner[i] * dnum, h, sizeof(double) * dnum);
   npartner[i]++;
+}
+
+/* A record refused by unpack_restart (on the rank that owns the atom) becomes
+   one error->all on every rank, with the message of the lowest such rank. */
+void FixTaborHistory::check_restart()
+{
+  int me = comm->me, first = 0;
+  int mine = bad_record.empty() ? comm->nprocs : me;
+  MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, world);
+  if (first == comm->nprocs) return;
+  int length = me == first ? (int) bad_record.size() : 0;
+  MPI_Bcast(&length, 1, MPI_INT, first, world);
+  std::string message(length, ' ');
+  if (me == first) message = bad_record;
+  MPI_Bcast(&message[0], length, MPI_CHAR, first, world);
+  error->all(FLERR, message);
 }

@@ -149,6 +149,33 @@ void PairTabor::init_style()
     fix_history = dynamic_cast<FixTaborHistory *>(
         modify->add_fix(fmt::format("{} all tabor/history {}", HISTORY_ID, history_width)));
   if (!fix_history) error->all(FLERR, "pair tabor: could not create fix tabor/history");
+  // a restart record refused when the fix read it: one error on every rank
+  fix_history->check_restart();
+  fix_history->refresh_stamps();
+
+  // a point particle (radius 0) or a radius not finite cannot touch anything:
+  // refused here on every rank (error->all), naming the lowest such atom ID,
+  // rather than by the contact step of one rank during the run
+  tagint bad = MAXTAGINT;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (!(atom->radius[i] > 0.0) || !std::isfinite(atom->radius[i])) bad = MIN(bad, atom->tag[i]);
+  tagint worst = MAXTAGINT;
+  MPI_Allreduce(&bad, &worst, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (worst != MAXTAGINT) {
+    double mine = 0.0, value = 0.0;
+    int type = 0, owner_type = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if (atom->tag[i] == worst) {
+        mine = atom->radius[i];
+        type = atom->type[i];
+      }
+    MPI_Allreduce(&mine, &value, 1, MPI_DOUBLE, MPI_SUM, world);
+    MPI_Allreduce(&type, &owner_type, 1, MPI_INT, MPI_MAX, world);
+    error->all(FLERR,
+               "pair tabor: atom {} (type {}) has radius {}: every particle needs a finite radius > 0 "
+               "(a point particle cannot touch; set its diameter)",
+               worst, owner_type, value);
+  }
 
   // largest radius per type, over all ranks (as pair granular's maxrad_dynamic)
   int n = atom->ntypes;
@@ -197,13 +224,13 @@ int PairTabor::evaluate(int i, int j, int update_history, TaborContactForces &ou
   double del[3] = {x[a][0] - x[b][0], x[a][1] - x[b][1], x[a][2] - x[b][2]};
   double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
   double radsum = radius[a] + radius[b];
-  double *stored = fix_history->find(i, tag[j]);
+  double *stored = fix_history->find(i, tag[j], fix_history->stamp_of(j));
   double reach = radsum + c.reach;
   if (!stored && rsq >= reach * reach) return 0;
   // a history of many cache lines (the micro-slip bed): fetch all of them, and
   // those of the copy on j, at once rather than one miss after another
   if (stored && history_width > 16) {
-    double *other = j < atom->nlocal ? fix_history->find(j, tag[i]) : nullptr;
+    double *other = j < atom->nlocal ? fix_history->find(j, tag[i], fix_history->stamp_of(i)) : nullptr;
     for (int k = 0; k < history_width; k += 8) {
       __builtin_prefetch(stored + k, 1);
       if (other) __builtin_prefetch(other + k, 1);
@@ -242,8 +269,8 @@ int PairTabor::evaluate(int i, int j, int update_history, TaborContactForces &ou
   if (status != TABOR_OK) fail_one(status, "tabor_contact_step");
   if (update_history >= 0 && (stored || h->contact != 0.0)) {
     // j first: storing for i may remove the entry h points into (contact broken)
-    if (j < atom->nlocal) fix_history->store(j, tag[i], reinterpret_cast<double *>(h));
-    fix_history->store(i, tag[j], reinterpret_cast<double *>(h));
+    if (j < atom->nlocal) fix_history->store(j, tag[i], fix_history->stamp_of(i), reinterpret_cast<double *>(h));
+    fix_history->store(i, tag[j], fix_history->stamp_of(j), reinterpret_cast<double *>(h));
   }
   return 1;
 }
@@ -264,6 +291,13 @@ void PairTabor::compute(int eflag, int vflag)
   int *ilist = list->ilist;
   int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
+
+  // after each neighbor list build: the ghosts' creation stamps, and the records
+  // of partners that are gone (deleted atoms) dropped
+  if (neighbor->ago == 0) {
+    comm->forward_comm(fix_history);
+    fix_history->drop_orphans(inum, ilist, numneigh, firstneigh);
+  }
 
   for (int ii = 0; ii < inum; ii++) {
     int i = ilist[ii];
