@@ -154,6 +154,46 @@ def restart(failures):
             refused(f"restart, {what}", read, ["restart record of atom 1", words], failures)
 
 
+def wall_restart(failures):
+    """A grain stuck on a fix wall/tabor plate, written to a restart file; its
+    wall record [length 14, width 10, 1 contact, wall index, 10 doubles]
+    corrupted field by field: one clean error->all, never a crash."""
+    wall = f"fix plate all wall/tabor jkr/load-controlled {E_STAR} {W} zplane 0.0 NULL"
+    with tempfile.TemporaryDirectory() as tmp:
+        file = os.path.join(tmp, "wall.restart")
+        status, out = lmp(HEAD + [f"create_atoms 1 single 0 0 {R - 0.5e-9}",
+                                  f"set atom 1 diameter {2 * R} density 2650", f"plugin load {PLUGIN}", wall,
+                                  "fix integrate all nve/sphere", "timestep 1e-10", "run 20",
+                                  f"write_restart {file}"])
+        if status != 0:
+            failures.append(f"wall restart: writing failed: {error_line(out)}")
+            return
+        data = open(file, "rb").read()
+        record = struct.pack("<ddd", 14.0, 10.0, 1.0)
+        at = data.find(record)
+        if at < 0 or data.find(record, at + 1) >= 0:
+            failures.append("wall restart: the record (14 values, 1 contact of 10 doubles) not found once")
+            return
+        read = ["units si", f"plugin load {PLUGIN}", f"read_restart {file}", wall, "fix integrate all nve/sphere",
+                "timestep 1e-10", "run 0"]
+        status, out = lmp(read)
+        print(f"  intact wall restart: exit {status}")
+        if status != 0:
+            failures.append(f"wall restart: the intact file is refused: {error_line(out)}")
+        for what, offset, value, words in [
+            ("contact count NaN", 16, struct.pack("<d", math.nan), "holds nan wall contacts"),
+            ("contact count 2^31", 16, struct.pack("<d", 2.0 ** 31), "holds 2147483648 wall contacts"),
+            ("width -1", 8, struct.pack("<d", -1.0), "wall contacts of -1 doubles"),
+            ("length NaN", 0, struct.pack("<d", math.nan), "length of nan"),
+            ("contact flag NaN", 32, struct.pack("<d", math.nan), "non-finite history value nan"),
+        ]:
+            bad = bytearray(data)
+            bad[at + offset:at + offset + 8] = value
+            with open(file, "wb") as f:
+                f.write(bad)
+            refused(f"wall restart, {what}", read, ["fix wall/tabor: the restart record of atom 1", words], failures)
+
+
 def force_on_1(lines):
     """fx of atom 1 after `lines` (a `run 0` at the end), and the exit status."""
     status, out = lmp(lines + ["variable fx equal fx[1]", 'print "FX ${fx}"'])
@@ -203,6 +243,7 @@ def main():
     absurd_coefficients(failures)
     print("corrupted restart records:")
     restart(failures)
+    wall_restart(failures)
     print("recycled atom IDs:")
     recycled_ids(failures)
     if failures:

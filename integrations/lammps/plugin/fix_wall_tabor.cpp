@@ -1,6 +1,7 @@
 #include "fix_wall_tabor.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "memory.h"
@@ -165,6 +166,7 @@ int FixWallTabor::setmask()
 
 void FixWallTabor::init()
 {
+  check_restart();
   if (wallstyle == REGION) {
     Region *now = domain->get_region_by_id(idregion);
     if (!now) error->all(FLERR, "{}: region {} does not exist", who, idregion);
@@ -499,25 +501,48 @@ void FixWallTabor::unpack_restart(int nlocal, int nth)
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  ncontact[nlocal] = 0;
+  // every number of the record is checked before it is used: a corrupted record
+  // is refused (check_restart, one error->all on every rank), never cast or read
+  // out of bounds
   const double *buf = &extra[nlocal][m];
+  const double room = atom->nextra_store > m ? atom->nextra_store - m : 0;
+  auto refuse = [&](const std::string &what) {
+    if (bad_record.empty())
+      bad_record = fmt::format("{}: the restart record of atom {} {}", who, atom->tag[nlocal], what);
+  };
+  auto integer = [](double x, double lo, double hi) {
+    return std::isfinite(x) && x == std::floor(x) && x >= lo && x <= hi;
+  };
+  if (!integer(buf[0], 3, room > 0 ? room : 1e9))
+    return refuse(fmt::format("has a length of {} values: a corrupted restart file", buf[0]));
+  if (!integer(buf[1], 1, 1e6) || !integer(buf[2], 0, nslot))
+    return refuse(fmt::format("holds {} wall contacts of {} doubles (0 to {} contacts): a corrupted restart file",
+                              buf[2], buf[1], nslot));
   int size = static_cast<int>(buf[0]);
   int width = static_cast<int>(buf[1]);
   int n = static_cast<int>(buf[2]);
-  if (width < 1 || n < 0 || n > nslot || size != 3 + n * (1 + width))
-    error->one(FLERR, "{}: a restart record of {} values cannot hold {} wall contacts of {} doubles", who, size,
-               n, width);
+  if (size != 3 + n * (1 + width))
+    return refuse(fmt::format("of {} values cannot hold {} wall contacts of {} doubles", size, n, width));
+  for (int k = 0, k0 = 3; k < n; k++, k0 += 1 + width) {
+    if (!integer(buf[k0], 0, 1e9))
+      return refuse(fmt::format("names wall {}: a corrupted restart file", buf[k0]));
+    for (int d = 0; d < width; d++)
+      if (!std::isfinite(buf[k0 + 1 + d]))
+        return refuse(fmt::format("holds the non-finite history value {} (contact {}, double {}): a corrupted "
+                                  "restart file", buf[k0 + 1 + d], k, d));
+  }
   // Thornton's incremental state (builds before the spring bed): doubles 10-15
   bool thornton = width == 16 && HLEN != 16;
   for (int k = 0, k0 = 3; k < n; k++, k0 += 1 + width)
     for (int d = thornton ? HBASE : hlen; d < width; d++)
       if (buf[k0 + 1 + d] != 0.0) {
         if (thornton)
-          error->one(FLERR, "{}: the restart file holds the micro-slip state of Thornton's incremental form "
-                            "(16 doubles per wall contact), which this build replaced by a spring bed; restart "
-                            "that run from its data file", who);
-        error->one(FLERR, "{}: the restart file holds {} doubles per wall contact, this fix keeps {} for its "
-                          "model and cannot drop the rest (a micro-slip bed of tangential mindlin_deresiewicz, or "
-                          "a newer tabor's state)", who, width, hlen);
+          return refuse("holds the micro-slip state of Thornton's incremental form (16 doubles per wall "
+                        "contact), which this build replaced by a spring bed; restart that run from its data file");
+        return refuse(fmt::format("holds {} doubles per wall contact, this fix keeps {} for its model and cannot "
+                                  "drop the rest (a micro-slip bed of tangential mindlin_deresiewicz, or a newer "
+                                  "tabor's state)", width, hlen));
       }
   ncontact[nlocal] = n;
   int k0 = 3;
@@ -527,6 +552,22 @@ void FixWallTabor::unpack_restart(int nlocal, int nth)
     for (int d = 0; d < hlen; d++) h[d] = d < width ? buf[k0 + d] : 0.0;
     k0 += width;
   }
+}
+
+/* A record refused by unpack_restart (on the rank that owns the atom) becomes
+   one error->all on every rank, with the message of the lowest such rank. */
+void FixWallTabor::check_restart()
+{
+  int me = comm->me, first = 0;
+  int mine = bad_record.empty() ? comm->nprocs : me;
+  MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, world);
+  if (first == comm->nprocs) return;
+  int length = me == first ? (int) bad_record.size() : 0;
+  MPI_Bcast(&length, 1, MPI_INT, first, world);
+  std::string message(length, ' ');
+  if (me == first) message = bad_record;
+  MPI_Bcast(&message[0], length, MPI_CHAR, first, world);
+  error->all(FLERR, message);
 }
 
 int FixWallTabor::size_restart(int i)

@@ -61,6 +61,8 @@ class FixWallTabor : public Fix {
   double amplitude, period, omega_wiggle, vshear;
   bigint time_origin;
   std::string idregion;
+  std::string bad_record;    // the first restart record refused on this rank (raised in init)
+  void check_restart();
   class Region *region;
 
   // per-atom contacts: ncontact[i] of nslot slots, each the wall's id and the
