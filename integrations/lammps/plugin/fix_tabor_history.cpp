@@ -3,6 +3,7 @@
 #include "tabor_ffi.h"
 
 #include "atom.h"
+#include "tabor_coeff.h"
 #include "comm.h"
 #include "error.h"
 #include "memory.h"
@@ -410,14 +411,5 @@ void FixTaborHistory::store(int i, tagint t, double st, const double *h)
    one error->all on every rank, with the message of the lowest such rank. */
 void FixTaborHistory::check_restart()
 {
-  int me = comm->me, first = 0;
-  int mine = bad_record.empty() ? comm->nprocs : me;
-  MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, world);
-  if (first == comm->nprocs) return;
-  int length = me == first ? (int) bad_record.size() : 0;
-  MPI_Bcast(&length, 1, MPI_INT, first, world);
-  std::string message(length, ' ');
-  if (me == first) message = bad_record;
-  MPI_Bcast(&message[0], length, MPI_CHAR, first, world);
-  error->all(FLERR, message);
+  tabor_raise_first(lmp, bad_record);
 }

@@ -558,16 +558,7 @@ void FixWallTabor::unpack_restart(int nlocal, int nth)
    one error->all on every rank, with the message of the lowest such rank. */
 void FixWallTabor::check_restart()
 {
-  int me = comm->me, first = 0;
-  int mine = bad_record.empty() ? comm->nprocs : me;
-  MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, world);
-  if (first == comm->nprocs) return;
-  int length = me == first ? (int) bad_record.size() : 0;
-  MPI_Bcast(&length, 1, MPI_INT, first, world);
-  std::string message(length, ' ');
-  if (me == first) message = bad_record;
-  MPI_Bcast(&message[0], length, MPI_CHAR, first, world);
-  error->all(FLERR, message);
+  tabor_raise_first(lmp, bad_record);
 }
 
 int FixWallTabor::size_restart(int i)

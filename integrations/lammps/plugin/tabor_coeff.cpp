@@ -1,5 +1,6 @@
 #include "tabor_coeff.h"
 
+#include "comm.h"
 #include "error.h"
 #include "lammps.h"
 #include "utils.h"
@@ -194,4 +195,18 @@ int LAMMPS_NS::tabor_parse_coeff(LAMMPS *lmp, const std::string &who, int narg, 
   out.params = p;
   out.friction = fr;
   return iarg;
+}
+
+void LAMMPS_NS::tabor_raise_first(LAMMPS *lmp, const std::string &message)
+{
+  int me = lmp->comm->me, nprocs = lmp->comm->nprocs, first = 0;
+  int mine = message.empty() ? nprocs : me;
+  MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, lmp->world);
+  if (first == nprocs) return;
+  int length = me == first ? (int) message.size() : 0;
+  MPI_Bcast(&length, 1, MPI_INT, first, lmp->world);
+  std::string text(length, ' ');
+  if (me == first) text = message;
+  MPI_Bcast(&text[0], length, MPI_CHAR, first, lmp->world);
+  lmp->error->all(FLERR, text);
 }

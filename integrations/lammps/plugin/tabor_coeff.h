@@ -43,6 +43,11 @@ int tabor_parse_coeff(LAMMPS *lmp, const std::string &who, int narg, char **arg,
 // error->all with the library's last error message, `what` and the status.
 [[noreturn]] void tabor_fail_all(LAMMPS *lmp, const std::string &who, int status, const char *what);
 
+// A message some ranks hold (a restart record refused where its atom lives; empty
+// elsewhere) as one error->all on every rank, with the message of the lowest rank
+// that has one; returns when no rank has one. Collective.
+void tabor_raise_first(LAMMPS *lmp, const std::string &message);
+
 }    // namespace LAMMPS_NS
 
 #endif
