@@ -192,7 +192,12 @@ pub trait ForceLaw {
     }
 }
 
-impl<L: ForceLaw + ?Sized> ForceLaw for &mut L {
+/// Forwards every method of [`ForceLaw`] to the law behind a pointer: a
+/// borrowed law (`&mut L`) and a boxed law (`Box<dyn ForceLaw>`) are laws (seed
+/// 000 eq. (5.5) as for any [`ForceLaw`]).
+macro_rules! forward_force_law {
+    ($($pointer:ty),+) => {$(
+        impl<L: ForceLaw + ?Sized> ForceLaw for $pointer {
     fn name(&self) -> String {
         (**self).name()
     }
@@ -231,49 +236,8 @@ impl<L: ForceLaw + ?Sized> ForceLaw for &mut L {
     }
     fn curve(&self) -> Option<&dyn BranchCurve> {
         (**self).curve()
-    }
+    }}
+    )+};
 }
 
-/// A boxed law (`Box<dyn ForceLaw>`) is a law: every call goes to the box's
-/// content (seed 000 eq. (5.5) as for any [`ForceLaw`]).
-impl<L: ForceLaw + ?Sized> ForceLaw for Box<L> {
-    fn name(&self) -> String {
-        (**self).name()
-    }
-    fn overlap_scale(&self, m: f64, v: f64) -> Result<f64> {
-        (**self).overlap_scale(m, v)
-    }
-    fn begin_impact(&mut self, m: f64, v: f64) -> Result<()> {
-        (**self).begin_impact(m, v)
-    }
-    fn start_overlap(&self) -> f64 {
-        (**self).start_overlap()
-    }
-    fn in_contact(&self) -> bool {
-        (**self).in_contact()
-    }
-    fn force(&self, d: f64, r: f64) -> Result<f64> {
-        (**self).force(d, r)
-    }
-    fn contact_radius(&self, d: f64, r: f64) -> Result<f64> {
-        (**self).contact_radius(d, r)
-    }
-    fn branch_end(&self, d: f64, r: f64) -> Result<f64> {
-        (**self).branch_end(d, r)
-    }
-    fn on_branch_end(&mut self, d: f64, r: f64) -> Result<BranchChange> {
-        (**self).on_branch_end(d, r)
-    }
-    fn on_max_compression(&mut self, d: f64) -> Result<BranchChange> {
-        (**self).on_max_compression(d)
-    }
-    fn on_min_compression(&mut self, d: f64) -> Result<BranchChange> {
-        (**self).on_min_compression(d)
-    }
-    fn on_curve_end(&mut self, q: f64, d: f64, r: f64) -> Result<BranchChange> {
-        (**self).on_curve_end(q, d, r)
-    }
-    fn curve(&self) -> Option<&dyn BranchCurve> {
-        (**self).curve()
-    }
-}
+forward_force_law!(&mut L, Box<L>);

@@ -113,9 +113,11 @@ impl<'a> Setup<'a> {
         if self.imp.friction.is_none() {
             losses.tangential_spring = 0.0;
         }
+        // the line of centres, overlap and rate at the end (the springs' store and
+        // the frame of the rebound quantities below)
+        let (n1, overlap, rate, _) = self.geometry(t, y);
         if let Some(bed) = &self.bed {
             // what is left in the springs (0 once the contact has broken)
-            let (_, overlap, rate, _) = self.geometry(t, y);
             let a = if sticks || law.in_contact() {
                 law.contact_radius(overlap, rate)?.max(0.0)
             } else {
@@ -142,7 +144,6 @@ impl<'a> Setup<'a> {
         // first-touch axes would mistake the turn for a normal velocity that never
         // separated. The rotation taking the final normal onto the first one maps
         // the final motion into the first-touch axes; a flat never turns.
-        let (n1, ..) = self.geometry(t, y);
         let normal_turn = n1.dot(&n0).clamp(-1.0, 1.0).acos();
         let to_first = nalgebra::Rotation3::rotation_between(&n1, &n0)
             .unwrap_or_else(nalgebra::Rotation3::identity);
