@@ -25,7 +25,7 @@ static constexpr int NCOLS = 8;
 /* fix ID group wall/tabor MODEL ARGS [KEYWORDS] wallstyle args [wiggle|shear|contacts ...]
    fix ID group wall/tabor/region MODEL ARGS [KEYWORDS] regionID [contacts] */
 FixWallTabor::FixWallTabor(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), contact(nullptr), reach_unit(0.0), rmax_seen(0.0), reach_max(0.0), wallstyle(ZPLANE), lo(-BIG), hi(BIG),
+    Fix(lmp, narg, arg), contact(nullptr), rmax_seen(0.0), reach_max(0.0), wallstyle(ZPLANE), lo(-BIG), hi(BIG),
     cylradius(0.0), wiggle(0), wshear(0), axis(0), amplitude(0.0), period(0.0), omega_wiggle(0.0),
     vshear(0.0), time_origin(0), region(nullptr), nslot(1), hlen(HBASE), ncontact(nullptr), walls(nullptr),
     history(nullptr), nmax_alloc(0)
@@ -124,10 +124,6 @@ FixWallTabor::FixWallTabor(LAMMPS *lmp, int narg, char **arg) :
 
   int status = tabor_contact_new(&coeff.params, &coeff.friction, &contact);
   if (status != TABOR_OK) tabor_fail_all(lmp, who, status, "coefficients");
-  TaborLawInfo info;
-  status = tabor_contact_info_at(contact, 1.0, &info);
-  if (status != TABOR_OK) tabor_fail_all(lmp, who, status, "interaction range");
-  reach_unit = info.interaction_range;
   // the doubles a contact keeps: the micro-slip bed only with mindlin_deresiewicz
   hlen = static_cast<int>(tabor_contact_history_len(contact));
   if (hlen != HBASE && hlen != HLEN)
@@ -252,9 +248,9 @@ void FixWallTabor::one_contact(int i, int wall, const double *del, const double 
   double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
   double ri = radius[i];
   // a stored contact is found whatever the gap; a new one only within reach: the
-  // reach at the largest radius met on this rank bounds every atom's (the reach
-  // grows as R^(1/3)), so no cube root per atom and step; the law itself tells
-  // an atom between its own reach and the bound that it has no contact
+  // largest reach of every radius met (grow_reach) bounds every atom's, so no
+  // law call per atom and step; the law itself tells an atom between its own
+  // reach and the bound that it has no contact
   int *w = walls + (bigint) i * nslot;
   bool stored = false;
   for (int k = 0; k < ncontact[i]; k++) stored = stored || w[k] == wall;

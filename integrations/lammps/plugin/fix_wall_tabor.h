@@ -52,7 +52,6 @@ class FixWallTabor : public Fix {
   enum WallStyle { XPLANE = 0, YPLANE = 1, ZPLANE = 2, ZCYLINDER, REGION };
   std::string who;    // "fix wall/tabor" or "fix wall/tabor/region"
   TaborContact *contact;
-  double reach_unit;    // the law's interaction range at R* = 1 m (lengths scale as R*^(1/3))
   double rmax_seen;     // the largest particle radius met on this rank
   double reach_max;     // the largest interaction range of every radius met (tabor_contact_prepare)
   int wallstyle;
