@@ -17,6 +17,33 @@ use std::io::{self, BufWriter, Stdout, Write};
 pub use tabor::numerics::readable::{human, humanize, meaningful_digits, READABLE_DIGITS};
 use tabor::single::Naming;
 
+/// The rounding of a text report: values at the digits a result's relative
+/// accuracy supports ([`meaningful_digits`]), with SI prefixes ([`human`]), and
+/// the numbers inside messages rounded alike ([`humanize`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Rounding {
+    digits: usize,
+}
+
+impl Rounding {
+    /// The rounding for a result of relative accuracy `accuracy`.
+    pub fn at(accuracy: f64) -> Self {
+        Rounding {
+            digits: meaningful_digits(accuracy),
+        }
+    }
+
+    /// `value` in `unit`, rounded.
+    pub fn value(&self, value: f64, unit: &str) -> String {
+        human(value, unit, self.digits)
+    }
+
+    /// `text` with every number in it rounded.
+    pub fn text(&self, text: &str) -> String {
+        humanize(text, self.digits)
+    }
+}
+
 /// The tabor version written into every output.
 pub const VERSION: &str = tabor::VERSION;
 

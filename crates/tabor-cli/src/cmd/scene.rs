@@ -1,9 +1,7 @@
 //! The scene subcommands: `impact`, `sweep`, `sticking`, `trajectory`. A scene is a
 //! TOML or JSON file (format: `examples/scenes/README.md`).
 
-use crate::output::{
-    human, humanize, meaningful_digits, number, print_json, stdout, Failure, Outcome, VERSION,
-};
+use crate::output::{human, number, print_json, stdout, Failure, Outcome, Rounding, VERSION};
 use serde::Serialize;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -119,28 +117,31 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
         }
         if let Some((central, o)) = oblique_at(&scene, &args.scene, speed, angle)? {
             let mut out = stdout();
-            let d = meaningful_digits(central.accuracy);
-            let h = |value: f64, unit: &str| human(value, unit, d);
-            let vector = |v: [f64; 3]| v.map(|x| h(x, "")).join(", ");
+            let r = Rounding::at(central.accuracy);
+            let vector = |v: [f64; 3]| v.map(|x| r.value(x, "")).join(", ");
             writeln!(out, "scene                  {}", central.scene)?;
             writeln!(
                 out,
                 "impact speed           {} at {} degrees",
-                h(speed, "m/s"),
-                h(angle, "")
+                r.value(speed, "m/s"),
+                r.value(angle, "")
             )?;
             writeln!(out, "normal law             {}", o.law)?;
             writeln!(
                 out,
                 "normal restitution     {}",
-                h(o.normal_restitution, "")
+                r.value(o.normal_restitution, "")
             )?;
             match o.tangential_restitution {
-                Some(e) => writeln!(out, "tangential restitution {} (contact point)", h(e, ""))?,
+                Some(e) => writeln!(
+                    out,
+                    "tangential restitution {} (contact point)",
+                    r.value(e, "")
+                )?,
                 None => writeln!(out, "tangential restitution - (no sliding before impact)")?,
             }
             match o.rebound_angle {
-                Some(a) => writeln!(out, "rebound angle          {} degrees", h(a, ""))?,
+                Some(a) => writeln!(out, "rebound angle          {} degrees", r.value(a, ""))?,
                 None => writeln!(out, "rebound angle          - (the bodies stick)")?,
             }
             writeln!(out, "sticks                 {}", o.sticks)?;
@@ -155,8 +156,8 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
             writeln!(
                 out,
                 "energy loss            {} of {}",
-                h(o.energy_loss, "J"),
-                h(o.kinetic_energy, "J")
+                r.value(o.energy_loss, "J"),
+                r.value(o.kinetic_energy, "J")
             )?;
             let mechanisms = [
                 ("normal adhesion", l.normal_adhesion),
@@ -174,17 +175,17 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
                 .into_iter()
                 .filter(|(name, value)| *name != "micro-slip" || *value != 0.0)
             {
-                writeln!(out, "  {name:<20} {}", h(value, "J"))?;
+                writeln!(out, "  {name:<20} {}", r.value(value, "J"))?;
             }
             writeln!(out, "energy bookkeeping     {:.1e}", o.energy_error)?;
             writeln!(
                 out,
                 "central model          {} (restitution {} at the normal speed)",
                 central.model,
-                h(central.restitution, "")
+                r.value(central.restitution, "")
             )?;
             for w in &central.warnings {
-                writeln!(out, "warning [{}]: {}", w.code, humanize(&w.message, d))?;
+                writeln!(out, "warning [{}]: {}", w.code, r.text(&w.message))?;
             }
             return out.finish();
         }
@@ -199,29 +200,28 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
     }
     let o = &outcome;
     let mut out = stdout();
-    let d = meaningful_digits(o.accuracy);
-    let h = |value: f64, unit: &str| human(value, unit, d);
+    let r = Rounding::at(o.accuracy);
     writeln!(out, "scene             {}", o.scene)?;
-    writeln!(out, "impact speed      {}", h(o.impact_speed, "m/s"))?;
-    writeln!(out, "restitution       {}", h(o.restitution, ""))?;
+    writeln!(out, "impact speed      {}", r.value(o.impact_speed, "m/s"))?;
+    writeln!(out, "restitution       {}", r.value(o.restitution, ""))?;
     writeln!(out, "sticks            {}", o.sticks)?;
     let sticking_warning = o
         .warnings
         .iter()
         .any(|w| matches!(w.code, "sticks-up-to-limit" | "sticking-velocity-unknown"));
     match o.sticking_velocity {
-        Some(v) => writeln!(out, "sticking velocity {}", h(v, "m/s"))?,
+        Some(v) => writeln!(out, "sticking velocity {}", r.value(v, "m/s"))?,
         None if sticking_warning => writeln!(out, "sticking velocity none (see the warning)")?,
         None => writeln!(out, "sticking velocity none (the bodies never stick)")?,
     }
     writeln!(
         out,
         "energy loss       {} of {}",
-        h(o.energy_loss, "J"),
-        h(o.kinetic_energy, "J")
+        r.value(o.energy_loss, "J"),
+        r.value(o.kinetic_energy, "J")
     )?;
     if let Some(l) = o.tabor_parameter {
-        writeln!(out, "Tabor parameter   {}", h(l, ""))?;
+        writeln!(out, "Tabor parameter   {}", r.value(l, ""))?;
     }
     writeln!(out, "model             {}", o.model)?;
     writeln!(out, "branch            {}", o.branch)?;
@@ -245,13 +245,13 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
     for e in &o.effects {
         let loss = e
             .energy_loss
-            .map_or(String::new(), |l| format!(" [{}]", h(l, "J")));
+            .map_or(String::new(), |l| format!(" [{}]", r.value(l, "J")));
         writeln!(
             out,
             "  {:<16} {:<5} {}{loss}",
             e.name,
             if e.used { "used" } else { "skip" },
-            humanize(&e.reason, d)
+            r.text(&e.reason)
         )?;
     }
     writeln!(
@@ -262,7 +262,7 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
         o.cost.evaluations
     )?;
     for w in &o.warnings {
-        writeln!(out, "warning [{}]: {}", w.code, humanize(&w.message, d))?;
+        writeln!(out, "warning [{}]: {}", w.code, r.text(&w.message))?;
     }
     out.finish()
 }
@@ -328,13 +328,13 @@ pub fn sticking(args: &StickingArgs) -> Outcome {
         return print_json(&out);
     }
     let mut stdout = stdout();
-    let d = meaningful_digits(scene.accuracy);
+    let r = Rounding::at(scene.accuracy);
     match (out.sticking_velocity, out.sticks_up_to) {
-        (Some(v), _) => writeln!(stdout, "sticking velocity {}", human(v, "m/s", d))?,
+        (Some(v), _) => writeln!(stdout, "sticking velocity {}", r.value(v, "m/s"))?,
         (None, Some(limit)) => writeln!(
             stdout,
             "the bodies stick at every speed up to {} ({}): no sticking velocity within the model's validity",
-            human(limit, "m/s", d),
+            r.value(limit, "m/s"),
             out.limit_reason.unwrap_or("validity limit")
         )?,
         (None, None) => writeln!(stdout, "the bodies never stick")?,
@@ -470,25 +470,25 @@ pub fn trajectory(args: &TrajectoryArgs) -> Outcome {
         return print_json(&out);
     }
     let mut stdout = stdout();
-    let d = meaningful_digits(scene.accuracy);
+    let r = Rounding::at(scene.accuracy);
     writeln!(stdout, "law                  {}", out.law)?;
     writeln!(
         stdout,
         "restitution          {} (simulated)",
-        human(out.restitution, "", d)
+        r.value(out.restitution, "")
     )?;
     writeln!(
         stdout,
         "restitution_analytic {}",
-        human(out.restitution_analytic, "", d)
+        r.value(out.restitution_analytic, "")
     )?;
     match out.contact_time {
-        Some(t) => writeln!(stdout, "contact time         {}", human(t, "s", d))?,
+        Some(t) => writeln!(stdout, "contact time         {}", r.value(t, "s"))?,
         None => writeln!(stdout, "contact time         - (the bodies stick)")?,
     }
     writeln!(stdout, "energy bookkeeping   {:.1e}", out.energy_error)?;
     for w in &out.warnings {
-        writeln!(stdout, "warning [{}]: {}", w.code, humanize(&w.message, d))?;
+        writeln!(stdout, "warning [{}]: {}", w.code, r.text(&w.message))?;
     }
     stdout.finish()
 }
