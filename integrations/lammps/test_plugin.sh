@@ -10,7 +10,9 @@
 # wall/tabor against tabor impact on a flat, fix wall/gran, restart, 1 vs 2 ranks,
 # the exported wall fragment), test_plugin_lambda.py
 # (maugis ... range h: three sizes, each at its own Lambda, against tabor impact;
-# bad input at pair_coeff), test_plugin_lifecycle.py (point particles, absurd
+# bad input at pair_coeff), test_plugin_material.py (the material form E nu gamma per
+# type against the E*/w form mixed by hand and against pair granular; walls; bad
+# input), test_plugin_lifecycle.py (point particles, absurd
 # coefficients, corrupted restart records, recycled atom IDs: clean error->all or
 # a fresh contact), test_plugin_cloud.py (a
 # polydisperse cloud on 1 and 2 ranks, a restart in the middle), test_doc_examples.py
@@ -39,6 +41,7 @@ export PATH="$VENV/bin:$PATH"
 "$VENV/bin/python" "$HERE/test_plugin_damping.py"
 "$VENV/bin/python" "$HERE/test_plugin_wall.py"  # fix wall/tabor: flat-target impacts, wall/gran, restart, MPI
 "$VENV/bin/python" "$HERE/test_plugin_lambda.py"  # per-contact Lambda (range h / stress s0)
+"$VENV/bin/python" "$HERE/test_plugin_material.py"  # material E nu gamma per type, mixed as pair granular
 "$VENV/bin/python" "$HERE/test_plugin_lifecycle.py"  # point particles, absurd coefficients, corrupted restarts, recycled IDs
 "$VENV/bin/python" "$HERE/test_lammps.py" plugin_friction  # the exported --plugin fragment with [friction], oblique (export branch)
 "$VENV/bin/python" "$HERE/test_plugin_cloud.py"

@@ -112,6 +112,7 @@ void PairTabor::coeff(int narg, char **arg)
       tabor_contact_free(c.contact);
       c = Coeff();
       c.set = 1;
+      c.given = parsed;
       c.params = p;
       c.friction = fr;
       status = tabor_contact_new(&p, &fr, &c.contact);
@@ -192,7 +193,7 @@ void PairTabor::init_style()
 double PairTabor::init_one(int i, int j)
 {
   Coeff &c = coeff_of(i, j);
-  if (!c.set) error->all(FLERR, "pair tabor: no pair_coeff for types {} {}", i, j);
+  if (!c.set) mix(i, j);
   double ri = maxrad[i], rj = maxrad[j];
   c.reach = 0.0;
   if (ri <= 0.0 || rj <= 0.0) return 0.0;
@@ -206,6 +207,41 @@ double PairTabor::init_one(int i, int j)
     error->all(FLERR, "pair tabor: neighbor skin {} is below the interaction range {} of types {} {}",
                neighbor->skin, c.reach, i, j);
   return ri + rj + c.reach;
+}
+
+/* Types I != J without a pair_coeff line of their own: mixed from the material
+   forms of I I and J J as pair granular mixes them (tabor_mix_coeff), again at
+   every init (a later pair_coeff I I changes it); the contact model is rebuilt
+   only when the mixed parameters change. Refused on every rank (error->all) when
+   it cannot be mixed, naming the types and the reason. */
+void PairTabor::mix(int i, int j)
+{
+  Coeff &c = coeff_of(i, j);
+  const Coeff &a = coeff_of(i, i), &b = coeff_of(j, j);
+  if (i == j || !a.set || !b.set)
+    error->all(FLERR, "pair tabor: no pair_coeff for types {} {}, and it cannot be mixed without pair_coeff {} {}",
+               i, j, a.set ? j : i, a.set ? j : i);
+  TaborCoeff m;
+  std::string why = tabor_mix_coeff(a.given, b.given, m);
+  if (!why.empty())
+    error->all(FLERR, "pair tabor: no pair_coeff for types {} {}, and pair_coeff {} {} and {} {} cannot be mixed: {}",
+               i, j, i, i, j, j, why);
+  if (c.mixed && c.contact && std::memcmp(&c.params, &m.params, sizeof(m.params)) == 0 &&
+      std::memcmp(&c.friction, &m.friction, sizeof(m.friction)) == 0)
+    return;
+  tabor_contact_free(c.contact);
+  c = Coeff();
+  c.mixed = 1;
+  c.given = m;
+  c.params = m.params;
+  c.friction = m.friction;
+  int status = tabor_contact_new(&c.params, &c.friction, &c.contact);
+  if (status != TABOR_OK) {
+    char buf[512];
+    tabor_last_error(buf, sizeof(buf));
+    error->all(FLERR, "pair tabor: types {} {} mixed from pair_coeff {} {} and {} {} (status {}): {}", i, j, i, i, j,
+               j, status, buf);
+  }
 }
 
 /* One contact, evaluated with the atom of the lower tag as body 1 (whatever the

@@ -49,9 +49,38 @@ int LAMMPS_NS::tabor_parse_coeff(LAMMPS *lmp, const std::string &who, int narg, 
   Error *error = lmp->error;
   TaborLawParams p{};
   TaborFrictionParams fr{};
-  if (first >= narg) error->all(FLERR, "{}: missing the model (hertz, jkr/fixed-grip, jkr/load-controlled, maugis)", who);
-  std::string model = arg[first];
-  int iarg = first + 1;
+  const bool wall = who != "pair tabor";
+  int iarg = first;
+  // ---- LAMMPS's material form: material E nu gamma MODEL ... (pair granular's
+  // jkr E eta nu gamma without eta: damping is a keyword here)
+  bool material = iarg < narg && strcmp(arg[iarg], "material") == 0;
+  TaborMaterial mat, wall_mat;
+  bool have_wall_mat = false;
+  auto read_material = [&](const std::string &key, TaborMaterial &m) {
+    auto value = [&](const char *what) {
+      if (iarg >= narg) error->all(FLERR, "{} {}: missing {} (give {} E nu gamma)", who, key, what, key);
+      if (!utils::is_double(arg[iarg]))
+        error->all(FLERR, "{} {}: {} must be a number, not {} (give {} E nu gamma)", who, key, what, arg[iarg], key);
+      return utils::numeric(FLERR, arg[iarg++], false, lmp);
+    };
+    m.youngs = value("Young's modulus E");
+    m.poisson = value("Poisson's ratio nu");
+    m.gamma = value("surface energy gamma");
+    if (!(m.youngs > 0.0) || !std::isfinite(m.youngs))
+      error->all(FLERR, "{} {}: Young's modulus E {} must be a finite number > 0", who, key, m.youngs);
+    if (!(m.poisson > -1.0 && m.poisson < 0.5))
+      error->all(FLERR, "{} {}: Poisson's ratio nu {} must lie in (-1, 0.5)", who, key, m.poisson);
+    if (!(m.gamma >= 0.0) || !std::isfinite(m.gamma))
+      error->all(FLERR, "{} {}: surface energy gamma {} must be a finite number >= 0 (per surface: w = 2 gamma)",
+                 who, key, m.gamma);
+  };
+  if (material) {
+    iarg++;
+    read_material("material", mat);
+  }
+  if (iarg >= narg)
+    error->all(FLERR, "{}: missing the model (hertz, jkr/fixed-grip, jkr/load-controlled, maugis)", who);
+  std::string model = arg[iarg++];
   auto stops = [&](int k) { return std::find(stop.begin(), stop.end(), std::string(arg[k])) != stop.end(); };
   auto number = [&](const std::string &what) {
     if (iarg >= narg || stops(iarg)) error->all(FLERR, "{} {}: missing {}", who, model, what);
@@ -67,11 +96,23 @@ int LAMMPS_NS::tabor_parse_coeff(LAMMPS *lmp, const std::string &who, int narg, 
     p.model = model == "jkr/fixed-grip" ? TABOR_MODEL_JKR_FIXED_GRIP : TABOR_MODEL_JKR_LOAD_CONTROLLED;
   } else if (model == "maugis") {
     p.model = TABOR_MODEL_MAUGIS_DUGDALE;
+  } else if (model == "material") {
+    error->all(FLERR, "{}: material comes first (material E nu gamma MODEL ...), once", who);
   } else {
     error->all(FLERR, "{}: unknown model {} (hertz, jkr/fixed-grip, jkr/load-controlled, maugis)", who, model);
   }
-  p.effective_modulus = number("E*");
-  if (p.model != TABOR_MODEL_HERTZ) p.work_of_adhesion = number("w");
+  if (material) {
+    if (p.model == TABOR_MODEL_HERTZ && mat.gamma != 0.0)
+      error->all(FLERR, "{} material: hertz has no adhesion: surface energy gamma {} must be 0", who, mat.gamma);
+    // both bodies of one material: pair granular's mix_stiffnessE(E, E, nu, nu),
+    // and fix wall/gran's E/(2 (1 - nu^2)) for a wall
+    p.effective_modulus = wall ? mat.youngs / (2.0 * (1.0 - mat.poisson * mat.poisson))
+                               : tabor_mix_modulus(mat, mat);
+    if (p.model != TABOR_MODEL_HERTZ) p.work_of_adhesion = 2.0 * mat.gamma;
+  } else {
+    p.effective_modulus = number("E*");
+    if (p.model != TABOR_MODEL_HERTZ) p.work_of_adhesion = number("w");
+  }
   // maugis E* w Lambda, or maugis E* w range h | stress s0 (a Lambda per contact)
   bool have_lambda = false;
   if (p.model == TABOR_MODEL_MAUGIS_DUGDALE && !(iarg < narg && (strcmp(arg[iarg], "range") == 0 ||
@@ -105,7 +146,17 @@ int LAMMPS_NS::tabor_parse_coeff(LAMMPS *lmp, const std::string &who, int narg, 
         p.damping_model = TABOR_DAMPING_KUWABARA_KONO;
         p.damping_time = number("damping time A (or viscoelastic|tsuji|coeff_restitution VALUE)");
       }
+    } else if (key == "wall_material") {
+      if (!wall || !material)
+        error->all(FLERR, "{}: wall_material belongs to a wall fix in the material form (material E nu gamma "
+                   "MODEL ... wall_material E_w nu_w gamma_w)", who);
+      if (have_wall_mat) error->all(FLERR, "{}: wall_material given twice", who);
+      read_material("wall_material", wall_mat);
+      have_wall_mat = true;
     } else if (key == "poisson") {
+      if (material)
+        error->all(FLERR, "{}: poisson belongs to the E* form; the material form takes nu after E "
+                   "(material E nu gamma)", who);
       poisson = number("Poisson ratio");
       have_poisson = true;
       if (!(poisson > -1.0 && poisson < 0.5))
@@ -169,11 +220,26 @@ int LAMMPS_NS::tabor_parse_coeff(LAMMPS *lmp, const std::string &who, int narg, 
       (key == "range" ? p.dugdale_range : p.cohesive_stress) = value;
       // ---- end per-contact Lambda
     } else {
-      error->all(FLERR, "{}: unknown keyword {} (poisson, damping, tangential, rolling, twisting, range, stress)",
+      error->all(FLERR, "{}: unknown keyword {} (poisson, damping, tangential, rolling, twisting, range, stress, wall_material)",
                  who, key);
     }
   }
-  if (stiffness_null) {
+  if (material && have_wall_mat) {
+    // the wall's own material, mixed with the particles' as two types would be
+    if (p.model == TABOR_MODEL_HERTZ && wall_mat.gamma != 0.0)
+      error->all(FLERR, "{} wall_material: hertz has no adhesion: surface energy gamma {} must be 0", who,
+                 wall_mat.gamma);
+    p.effective_modulus = tabor_mix_modulus(mat, wall_mat);
+    if (p.model != TABOR_MODEL_HERTZ) p.work_of_adhesion = 2.0 * sqrt(mat.gamma * wall_mat.gamma);
+  }
+  if (stiffness_null && material) {
+    // 8 G*: pair granular's mix_stiffnessG(E, E, nu, nu) for one material,
+    // mix_stiffnessG_wall E/(4 (2 - nu)(1 + nu)) for a wall of it
+    double g = have_wall_mat ? tabor_mix_shear(mat, wall_mat)
+        : wall               ? mat.youngs / (4.0 * (2.0 - mat.poisson) * (1.0 + mat.poisson))
+                             : tabor_mix_shear(mat, mat);
+    fr.tangential_stiffness = 8.0 * g;
+  } else if (stiffness_null) {
     if (!have_poisson)
       error->all(FLERR, "{}: tangential {} NULL needs `poisson nu` (k_t = 8 G*, G* = E* (1 - nu) / (2 (2 - nu)))",
                  who,
@@ -194,6 +260,9 @@ int LAMMPS_NS::tabor_parse_coeff(LAMMPS *lmp, const std::string &who, int narg, 
   tabor_contact_free(probe);
   out.params = p;
   out.friction = fr;
+  out.material = material;
+  out.mat = mat;
+  out.stiffness_null = stiffness_null;
   return iarg;
 }
 
@@ -209,4 +278,70 @@ void LAMMPS_NS::tabor_raise_first(LAMMPS *lmp, const std::string &message)
   if (me == first) text = message;
   MPI_Bcast(&text[0], length, MPI_CHAR, first, lmp->world);
   lmp->error->all(FLERR, text);
+}
+
+double LAMMPS_NS::tabor_mix_modulus(const TaborMaterial &a, const TaborMaterial &b)
+{
+  double fa = (1.0 - a.poisson * a.poisson) / a.youngs;
+  double fb = (1.0 - b.poisson * b.poisson) / b.youngs;
+  return 1.0 / (fa + fb);
+}
+
+double LAMMPS_NS::tabor_mix_shear(const TaborMaterial &a, const TaborMaterial &b)
+{
+  double fa = 2.0 * (2.0 - a.poisson) * (1.0 + a.poisson) / a.youngs;
+  double fb = 2.0 * (2.0 - b.poisson) * (1.0 + b.poisson) / b.youngs;
+  return 1.0 / (fa + fb);
+}
+
+/* pair granular's mix_geom, sqrt(c_i c_j), for every coefficient but the moduli
+   and k_t NULL (LAMMPS's GranSubMod::mix_coeffs and its overrides for the
+   material normal models and mindlin) */
+std::string LAMMPS_NS::tabor_mix_coeff(const TaborCoeff &a, const TaborCoeff &b, TaborCoeff &out)
+{
+  static const char *const models[] = {"hertz", "jkr/fixed-grip", "jkr/load-controlled", "maugis"};
+  const TaborLawParams &pa = a.params, &pb = b.params;
+  const TaborFrictionParams &fa = a.friction, &fb = b.friction;
+  if (!a.material || !b.material) return "only the material form (material E nu gamma MODEL ...) mixes";
+  if (pa.model != pb.model) {
+    auto name = [&](int m) { return m >= 0 && m < 4 ? models[m] : "?"; };
+    return std::string("the models differ (") + name(pa.model) + ", " + name(pb.model) + ")";
+  }
+  auto form = [](const TaborLawParams &p) {
+    return p.dugdale_range != 0.0 ? "range h" : p.cohesive_stress != 0.0 ? "stress s0" : "a fixed Lambda";
+  };
+  if (pa.model == TABOR_MODEL_MAUGIS_DUGDALE && std::string(form(pa)) != form(pb))
+    return std::string("maugis is given with ") + form(pa) + " and with " + form(pb);
+  if (pa.damping_model != pb.damping_model || (pa.damping_time != 0.0) != (pb.damping_time != 0.0))
+    return "the damping models differ";
+  if (fa.tangential_model != fb.tangential_model) return "the tangential models differ";
+  if (fa.rolling_model != fb.rolling_model) return "the rolling models differ";
+  if (fa.twisting_model != fb.twisting_model) return "the twisting models differ";
+  auto geom = [](double x, double y) { return sqrt(x * y); };
+  TaborLawParams p = pa;
+  TaborFrictionParams f = fa;
+  p.effective_modulus = tabor_mix_modulus(a.mat, b.mat);
+  p.work_of_adhesion = pa.model == TABOR_MODEL_HERTZ ? 0.0 : 2.0 * geom(a.mat.gamma, b.mat.gamma);
+  p.tabor_parameter = geom(pa.tabor_parameter, pb.tabor_parameter);
+  p.dugdale_range = geom(pa.dugdale_range, pb.dugdale_range);
+  p.cohesive_stress = geom(pa.cohesive_stress, pb.cohesive_stress);
+  p.damping_time = geom(pa.damping_time, pb.damping_time);
+  p.damping_value = geom(pa.damping_value, pb.damping_value);
+  bool null = a.stiffness_null || b.stiffness_null;
+  f.tangential_stiffness = null ? 8.0 * tabor_mix_shear(a.mat, b.mat)
+                                : geom(fa.tangential_stiffness, fb.tangential_stiffness);
+  f.tangential_damping = geom(fa.tangential_damping, fb.tangential_damping);
+  f.friction_coefficient = geom(fa.friction_coefficient, fb.friction_coefficient);
+  f.rolling_stiffness = geom(fa.rolling_stiffness, fb.rolling_stiffness);
+  f.rolling_damping = geom(fa.rolling_damping, fb.rolling_damping);
+  f.rolling_coefficient = geom(fa.rolling_coefficient, fb.rolling_coefficient);
+  f.twisting_stiffness = geom(fa.twisting_stiffness, fb.twisting_stiffness);
+  f.twisting_damping = geom(fa.twisting_damping, fb.twisting_damping);
+  f.twisting_coefficient = geom(fa.twisting_coefficient, fb.twisting_coefficient);
+  out = TaborCoeff();
+  out.params = p;
+  out.friction = f;
+  out.material = false;    // a mixed pair is not itself a material
+  out.stiffness_null = null;
+  return "";
 }

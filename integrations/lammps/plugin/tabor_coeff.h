@@ -4,6 +4,9 @@
 
    MODEL ARGS: hertz E* | jkr/fixed-grip E* w | jkr/load-controlled E* w |
                maugis E* w Lambda
+               or LAMMPS's material form: material E nu gamma MODEL [Lambda]
+               (Young's modulus, Poisson's ratio, surface energy per surface;
+               E* and w = 2 gamma follow as pair granular computes them)
    KEYWORDS:   poisson nu
                damping A | damping viscoelastic eta_n0 | damping tsuji e |
                damping coeff_restitution e
@@ -11,6 +14,7 @@
                  (TMODEL linear_history, mindlin, mindlin_rescale, mindlin_deresiewicz)
                rolling sds k_roll gamma_roll mu_roll
                twisting marshall | twisting sds k_tw gamma_tw mu_tw
+               wall_material E_w nu_w gamma_w (walls, material form only)
    The meaning of each value is in doc/pair_tabor.rst. Every error is error->all,
    naming the command, the parameter and the value. */
 #ifndef TABOR_TABOR_COEFF_H
@@ -25,11 +29,36 @@ namespace LAMMPS_NS {
 
 class LAMMPS;
 
-// One contact model's parameters, as tabor_contact_new takes them.
+// One body's material in LAMMPS's form (pair granular's jkr E eta nu gamma):
+// Young's modulus, Poisson's ratio, surface energy per surface.
+struct TaborMaterial {
+  double youngs = 0.0, poisson = 0.0, gamma = 0.0;
+};
+
+// One contact model's parameters, as tabor_contact_new takes them, and how they
+// were given (the material form can be mixed across types, see tabor_mix_coeff).
 struct TaborCoeff {
   TaborLawParams params{};
   TaborFrictionParams friction{};
+  bool material = false;          // given as `material E nu gamma MODEL ...`
+  TaborMaterial mat;              // its material (both bodies of it)
+  bool stiffness_null = false;    // tangential k_t given as NULL (8 G* of the materials)
 };
+
+// pair granular's mixing of two materials (LAMMPS's GranSubMod::mix_stiffnessE):
+// E* = 1 / ((1 - nu_i^2)/E_i + (1 - nu_j^2)/E_j).
+double tabor_mix_modulus(const TaborMaterial &a, const TaborMaterial &b);
+// The effective shear modulus as pair granular's documentation gives it (and its
+// mix_stiffnessG computes): G* = 1 / (2 (2 - nu_i)(1 + nu_i)/E_i + 2 (2 - nu_j)(1 + nu_j)/E_j).
+double tabor_mix_shear(const TaborMaterial &a, const TaborMaterial &b);
+
+/* The coefficients of types I J from those of I I and J J, both in the material
+   form, mixed as pair granular mixes them: E* from both materials
+   (tabor_mix_modulus), gamma and every other coefficient by the geometric mean
+   sqrt(c_i c_j), k_t NULL (if either is) as 8 G* (tabor_mix_shear). The models,
+   damping, tangential, rolling and twisting models and the maugis form must be
+   the same. Returns "" or why the two cannot be mixed. */
+std::string tabor_mix_coeff(const TaborCoeff &a, const TaborCoeff &b, TaborCoeff &out);
 
 /* Parses `MODEL ARGS [KEYWORDS]` from arg[first] on. The keyword loop stops at
    the end of the arguments or at the first word listed in `stop` (the wall fix's
