@@ -70,7 +70,7 @@ void PairTabor::fail_one(int status, const char *what)
 {
   char buf[512];
   tabor_last_error(buf, sizeof(buf));
-  error->one(FLERR, "pair tabor: {} (status {}): {}", what, status, buf);
+  tabor_fail_rank(lmp, FLERR, "pair tabor: {} (status {}): {}", what, status, buf);
   throw;    // not reached
 }
 
@@ -154,29 +154,11 @@ void PairTabor::init_style()
   fix_history->check_restart();
   fix_history->refresh_stamps();
 
-  // a point particle (radius 0) or a radius not finite cannot touch anything:
-  // refused here on every rank (error->all), naming the lowest such atom ID,
-  // rather than by the contact step of one rank during the run
-  tagint bad = MAXTAGINT;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (!(atom->radius[i] > 0.0) || !std::isfinite(atom->radius[i])) bad = MIN(bad, atom->tag[i]);
-  tagint worst = MAXTAGINT;
-  MPI_Allreduce(&bad, &worst, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (worst != MAXTAGINT) {
-    double mine = 0.0, value = 0.0;
-    int type = 0, owner_type = 0;
-    for (int i = 0; i < atom->nlocal; i++)
-      if (atom->tag[i] == worst) {
-        mine = atom->radius[i];
-        type = atom->type[i];
-      }
-    MPI_Allreduce(&mine, &value, 1, MPI_DOUBLE, MPI_SUM, world);
-    MPI_Allreduce(&type, &owner_type, 1, MPI_INT, MPI_MAX, world);
-    error->all(FLERR,
-               "pair tabor: atom {} (type {}) has radius {}: every particle needs a finite radius > 0 "
-               "(a point particle cannot touch; set its diameter)",
-               worst, owner_type, value);
-  }
+  // an atom no contact law can take (a point particle of radius 0, a type out of
+  // range, a non-finite position, velocity or spin, as a corrupted restart file
+  // can hold) is refused here on every rank (error->all), naming the lowest such
+  // atom ID, rather than by the contact step of one rank during the run
+  tabor_check_atoms(lmp, "pair tabor", 1);
 
   // largest radius per type, over all ranks (as pair granular's maxrad_dynamic)
   int n = atom->ntypes;
@@ -242,6 +224,9 @@ void PairTabor::mix(int i, int j)
     error->all(FLERR, "pair tabor: types {} {} mixed from pair_coeff {} {} and {} {} (status {}): {}", i, j, i, i, j,
                j, status, buf);
   }
+  std::string probe = tabor_probe_contact(c.contact, c.friction);
+  if (!probe.empty())
+    error->all(FLERR, "pair tabor: types {} {} mixed from pair_coeff {} {} and {} {}: {}", i, j, i, i, j, j, probe);
 }
 
 /* One contact, evaluated with the atom of the lower tag as body 1 (whatever the

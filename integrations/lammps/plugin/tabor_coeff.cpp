@@ -1,5 +1,6 @@
 #include "tabor_coeff.h"
 
+#include "atom.h"
 #include "comm.h"
 #include "error.h"
 #include "lammps.h"
@@ -257,7 +258,9 @@ int LAMMPS_NS::tabor_parse_coeff(LAMMPS *lmp, const std::string &who, int narg, 
   TaborContact *probe = nullptr;
   int status = tabor_contact_new(&p, &fr, &probe);
   if (status != TABOR_OK) tabor_fail_all(lmp, who, status, who == "pair tabor" ? "pair_coeff" : "coefficients");
+  std::string why = tabor_probe_contact(probe, fr);
   tabor_contact_free(probe);
+  if (!why.empty()) error->all(FLERR, "{}: {}: {}", who, who == "pair tabor" ? "pair_coeff" : "coefficients", why);
   out.params = p;
   out.friction = fr;
   out.material = material;
@@ -343,5 +346,118 @@ std::string LAMMPS_NS::tabor_mix_coeff(const TaborCoeff &a, const TaborCoeff &b,
   out.friction = f;
   out.material = false;    // a mixed pair is not itself a material
   out.stiffness_null = null;
+  return "";
+}
+
+int LAMMPS_NS::tabor_restart_offset(LAMMPS *lmp, int nlocal, int nth, std::string &problem)
+{
+  const double *extra = lmp->atom->extra[nlocal];
+  const double room = lmp->atom->nextra_store;
+  double m = 0.0;
+  for (int i = 0; i < nth; i++) {
+    double length = extra[static_cast<int>(m)];
+    if (!std::isfinite(length) || length != std::floor(length) || length < 1.0 || m + length >= room) {
+      problem = fmt::format("follows a record of {} values (the record of fix {} of the atom, at value {}): a "
+                            "corrupted restart file", length, i + 1, m);
+      return -1;
+    }
+    m += length;
+  }
+  return static_cast<int>(m);
+}
+
+std::string LAMMPS_NS::tabor_history_problem(const double *h, int width)
+{
+  for (int d = 0; d < width; d++)
+    if (!std::isfinite(h[d])) return fmt::format("the non-finite history value {} (double {})", h[d], d);
+  if (h[0] != 0.0 && h[0] != 1.0) return fmt::format("the contact flag {} (0 or 1)", h[0]);
+  if (width > TABOR_CONTACT_HISTORY_BASE_LEN) {
+    // the micro-slip bed's header: node spacing and last squared contact radius
+    const double *bed = h + TABOR_CONTACT_HISTORY_BASE_LEN;
+    double dz = bed[3], a0_sq = bed[4];
+    int nodes = (TABOR_MICRO_SLIP_LEN - 5) / 2;
+    if (dz < 0.0 || a0_sq < 0.0 || (dz > 0.0 && a0_sq > nodes * dz))
+      return fmt::format("the micro-slip bed header spacing {}, squared radius {} (both >= 0, the radius "
+                         "inside {} nodes)", dz, a0_sq, nodes);
+  }
+  return "";
+}
+
+void LAMMPS_NS::tabor_check_atoms(LAMMPS *lmp, const std::string &who, int groupbit)
+{
+  Atom *atom = lmp->atom;
+  auto problem = [&](int i) -> std::string {
+    if (atom->type[i] < 1 || atom->type[i] > atom->ntypes)
+      return fmt::format("type {} (1 to {})", atom->type[i], atom->ntypes);
+    double r = atom->radius[i];
+    if (!(r > 0.0) || !std::isfinite(r))
+      return fmt::format("radius {}: every particle needs a finite radius > 0 (a point particle cannot touch; set "
+                         "its diameter)", r);
+    if (!(atom->rmass[i] > 0.0) || !std::isfinite(atom->rmass[i]))
+      return fmt::format("mass {} (a finite mass > 0)", atom->rmass[i]);
+    // a sphere's moment of inertia that underflows or overflows: no spin can be integrated
+    double inertia = 0.4 * atom->rmass[i] * r * r;
+    if (!(inertia > 0.0) || !std::isfinite(inertia))
+      return fmt::format("radius {} and mass {}: the moment of inertia 0.4 m r^2 = {} is not a finite number > 0",
+                         r, atom->rmass[i], inertia);
+    const char *names[3] = {"position", "velocity", "angular velocity"};
+    double *vectors[3] = {atom->x[i], atom->v[i], atom->omega[i]};
+    for (int k = 0; k < 3; k++)
+      for (int d = 0; d < 3; d++)
+        if (!std::isfinite(vectors[k][d]))
+          return fmt::format("{} ({}, {}, {}) (finite)", names[k], vectors[k][0], vectors[k][1], vectors[k][2]);
+    return "";
+  };
+  tagint bad = MAXTAGINT;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && !problem(i).empty()) bad = MIN(bad, atom->tag[i]);
+  tagint worst = MAXTAGINT;
+  MPI_Allreduce(&bad, &worst, 1, MPI_LMP_TAGINT, MPI_MIN, lmp->world);
+  if (worst == MAXTAGINT) return;
+  std::string message;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->tag[i] == worst && (atom->mask[i] & groupbit))
+      message = fmt::format("{}: atom {} (type {}) has {}", who, worst, atom->type[i], problem(i));
+  tabor_raise_first(lmp, message);
+}
+
+/* tabor_contact_new checks the normal law (finite from its snap-off overlap to 1
+   cm at R* = 1 m, at rest and moving); the friction models are checked here on
+   the same scale: two steps of a contact of two 2 m spheres overlapping by 1 cm,
+   sliding at 1 m/s and spinning at 1 rad/s, with a time step of 1 ms. A
+   tangential, rolling or twisting stiffness so large that its force overflows
+   there is refused now, on every rank, not by one rank's contact step during the
+   run. */
+std::string LAMMPS_NS::tabor_probe_contact(TaborContact *contact, const TaborFrictionParams &fr)
+{
+  if (fr.tangential_model == TABOR_TANGENTIAL_NONE) return "";
+  TaborContactState s{};
+  s.normal[0] = 1.0;
+  s.overlap = 1e-2;
+  s.radius_i = s.radius_j = 2.0;
+  const double v[3] = {-0.1, 1.0, 0.5}, wi[3] = {1.0, -0.5, 1.0}, wj[3] = {-1.0, 0.5, 0.3};
+  for (int k = 0; k < 3; k++) {
+    s.relative_velocity[k] = v[k];
+    s.angular_velocity_i[k] = wi[k];
+    s.angular_velocity_j[k] = wj[k];
+  }
+  s.time_step = 1e-3;
+  s.effective_mass = 1.0;
+  s.update_history = 1;
+  TaborContactHistory h;
+  std::memset(&h, 0, sizeof(h));
+  TaborContactForces out;
+  for (int step = 0; step < 2; step++) {
+    int status = tabor_contact_step(contact, &s, &h, &out);
+    if (status != TABOR_OK) {
+      char buf[512];
+      tabor_last_error(buf, sizeof(buf));
+      return fmt::format("the friction model (tangential k_t = {}, x_gamma = {}, mu = {}; rolling {} {} {}; "
+                         "twisting {} {} {}) does not answer finitely for a contact at R* = 1 m sliding at 1 m/s "
+                         "(status {}): {}", fr.tangential_stiffness, fr.tangential_damping,
+                         fr.friction_coefficient, fr.rolling_stiffness, fr.rolling_damping, fr.rolling_coefficient,
+                         fr.twisting_stiffness, fr.twisting_damping, fr.twisting_coefficient, status, buf);
+    }
+  }
   return "";
 }

@@ -20,9 +20,14 @@
 #ifndef TABOR_TABOR_COEFF_H
 #define TABOR_TABOR_COEFF_H
 
+#include "comm.h"
+#include "error.h"
+#include "fmt/format.h"
+#include "lammps.h"
 #include "tabor_ffi.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -69,6 +74,24 @@ std::string tabor_mix_coeff(const TaborCoeff &a, const TaborCoeff &b, TaborCoeff
 int tabor_parse_coeff(LAMMPS *lmp, const std::string &who, int narg, char **arg, int first,
                       const std::vector<std::string> &stop, TaborCoeff &out);
 
+// "" if a contact model's friction answers finitely on the scale at which
+// tabor_contact_new checks its normal law (R* = 1 m), else why not (naming the
+// friction parameters). Every rank alike (no communication).
+std::string tabor_probe_contact(TaborContact *contact, const TaborFrictionParams &fr);
+
+// An error met by one rank during a run (a contact step that fails): error->all
+// when the run has one rank (a clean `ERROR:` line, the instance usable after
+// it), error->one (an abort, the only safe way out of one rank) with more.
+template <typename... Args>
+[[noreturn]] void tabor_fail_rank(LAMMPS *lmp, const std::string &file, int line, const std::string &format,
+                                  Args &&...args)
+{
+  std::string text = fmt::format(format, std::forward<Args>(args)...);
+  if (lmp->comm->nprocs == 1) lmp->error->all(file, line, text);
+  lmp->error->one(file, line, text);
+  throw;    // not reached
+}
+
 // error->all with the library's last error message, `what` and the status.
 [[noreturn]] void tabor_fail_all(LAMMPS *lmp, const std::string &who, int status, const char *what);
 
@@ -76,6 +99,24 @@ int tabor_parse_coeff(LAMMPS *lmp, const std::string &who, int narg, char **arg,
 // elsewhere) as one error->all on every rank, with the message of the lowest rank
 // that has one; returns when no rank has one. Collective.
 void tabor_raise_first(LAMMPS *lmp, const std::string &message);
+
+/* The offset of fix number `nth`'s record in atom `nlocal`'s per-atom restart
+   data (atom->extra), walking the records before it by their lengths, each
+   checked (a whole number >= 1 that stays inside the atom's data): -1 and
+   `problem` set when one is corrupted. */
+int tabor_restart_offset(LAMMPS *lmp, int nlocal, int nth, std::string &problem);
+
+/* Why the `width` stored doubles of a contact history cannot be handed to
+   tabor_contact_step ("" if they can): tabor-ffi's own rules (the contact flag
+   0 or 1, every value finite, the micro-slip bed's spacing and last squared
+   contact radius >= 0 and the radius inside the bed). */
+std::string tabor_history_problem(const double *h, int width);
+
+/* The atoms a contact law will see, checked before a run: type in 1..ntypes,
+   a finite radius > 0 and mass > 0, finite position, velocity and spin. The
+   first bad atom (lowest ID) of `groupbit` stops the run on every rank
+   (error->all) with `who`, its ID, type and what is wrong. Collective. */
+void tabor_check_atoms(LAMMPS *lmp, const std::string &who, int groupbit);
 
 }    // namespace LAMMPS_NS
 
