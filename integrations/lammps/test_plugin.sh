@@ -49,6 +49,7 @@ if [ "${TABOR_HOSTILE_ONLY:-0}" = 1 ]; then exit 0; fi
 "$VENV/bin/python" "$HERE/test_plugin_lambda.py"  # per-contact Lambda (range h / stress s0)
 "$VENV/bin/python" "$HERE/test_plugin_material.py"  # material E nu gamma per type, mixed as pair granular
 "$VENV/bin/python" "$HERE/test_plugin_lifecycle.py"  # point particles, absurd coefficients, corrupted restarts, recycled IDs
+"$VENV/bin/python" "$HERE/test_plugin_lifecycle_extra.py"  # a restart of an older build, a recycled ID on 2 ranks
 "$VENV/bin/python" "$HERE/test_lammps.py" plugin_friction  # the exported --plugin fragment with [friction], oblique (export branch)
 "$VENV/bin/python" "$HERE/test_plugin_cloud.py"
 CLOUD_PLUGIN="$PLUGIN" CLOUD_OUT="$TARGET/lammps-cloud-plugin" bash "$ROOT/examples/lammps/run.sh"

@@ -287,7 +287,8 @@ void FixTaborHistory::unpack_restart(int nlocal, int nth)
   // the layout: with creation stamps (-1 after the length), or of earlier builds
   const bool stamped = size >= 4 && rec[1] == -1.0;
   const int head = stamped ? 4 : 2, per = stamped ? 2 : 1;
-  double n_d = rec[head - 2];
+  // the partner count: [length, -1, count, stamp, ...] or [length, count, ...]
+  double n_d = stamped ? rec[2] : rec[1];
   if (!std::isfinite(n_d) || n_d != std::floor(n_d) || n_d < 0 || n_d > (size - head) / (per + 1))
     return refuse(fmt::format("has a partner count of {} (0 to {} fit in its {} values): a corrupted restart file",
                               n_d, (size - head) / (per + 1), size));
