@@ -348,6 +348,28 @@ def bad_input():
     return failures
 
 
+def remix():
+    """A mixed pair follows a later pair_coeff J J (mixed again at the next run):
+    the force on atom 1 (type 1, overlapping atom 2 of type 2) after changing type
+    2's material equals that of a fresh setup with the new material."""
+    failures = []
+    head = ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f", "comm_modify vel yes",
+            "region box block -1e-5 1e-5 -1e-5 1e-5 -1e-5 1e-5", "create_box 2 box", "create_atoms 1 single 0 0 0",
+            "create_atoms 2 single 1.99e-6 0 0", "set atom * diameter 2e-6 density 2650", "neighbor 2e-7 bin",
+            f"plugin load {PLUGIN}", "pair_style tabor", "pair_coeff 1 1 " + OK]
+    soft, stiff = "pair_coeff 2 2 material 20e9 0.3 0.01 jkr/load-controlled", \
+        "pair_coeff 2 2 material 150e9 0.25 0.05 jkr/load-controlled"
+    show = ["variable fx equal fx[1]", 'print "FX ${fx}"']
+    _, changed = lmp_run(head + [soft, "run 0", stiff, "run 0"] + show)
+    _, fresh = lmp_run(head + [stiff, "run 0"] + show)
+    _, before = lmp_run(head + [soft, "run 0"] + show)
+    values = [[x.split()[1] for x in out.splitlines() if x.startswith("FX ")] for out in (changed, fresh, before)]
+    print(f"  type 2 changed after a run: fx[1] {values[0]}, fresh {values[1]}, before the change {values[2]}")
+    if not all(values) or values[0][-1] != values[1][-1] or values[0][-1] == values[2][-1]:
+        failures.append(f"the mixed pair 1 2 did not follow pair_coeff 2 2: {values}")
+    return failures
+
+
 def main():
     failures = []
     print("1. material form against the E*/w form with the values mixed from the formulas")
@@ -360,6 +382,7 @@ def main():
     failures += walls()
     print("5. bad input")
     failures += bad_input()
+    failures += remix()
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))
         return 1

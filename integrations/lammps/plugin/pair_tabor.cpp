@@ -208,9 +208,21 @@ void PairTabor::mix(int i, int j)
   if (!why.empty())
     error->all(FLERR, "pair tabor: no pair_coeff for types {} {}, and pair_coeff {} {} and {} {} cannot be mixed: {}",
                i, j, i, i, j, j, why);
-  if (c.mixed && c.contact && std::memcmp(&c.params, &m.params, sizeof(m.params)) == 0 &&
-      std::memcmp(&c.friction, &m.friction, sizeof(m.friction)) == 0)
-    return;
+  // field by field (a memcmp would see the structs' padding)
+  const TaborLawParams &p = c.params, &q = m.params;
+  const TaborFrictionParams &f = c.friction, &g = m.friction;
+  bool same = p.model == q.model && p.effective_modulus == q.effective_modulus &&
+      p.work_of_adhesion == q.work_of_adhesion && p.tabor_parameter == q.tabor_parameter &&
+      p.damping_time == q.damping_time && p.damping_model == q.damping_model &&
+      p.damping_value == q.damping_value && p.dugdale_range == q.dugdale_range &&
+      p.cohesive_stress == q.cohesive_stress && p.effective_radius == q.effective_radius &&
+      f.tangential_model == g.tangential_model && f.tangential_stiffness == g.tangential_stiffness &&
+      f.tangential_damping == g.tangential_damping && f.friction_coefficient == g.friction_coefficient &&
+      f.rolling_model == g.rolling_model && f.rolling_stiffness == g.rolling_stiffness &&
+      f.rolling_damping == g.rolling_damping && f.rolling_coefficient == g.rolling_coefficient &&
+      f.twisting_model == g.twisting_model && f.twisting_stiffness == g.twisting_stiffness &&
+      f.twisting_damping == g.twisting_damping && f.twisting_coefficient == g.twisting_coefficient;
+  if (c.mixed && c.contact && same) return;
   tabor_contact_free(c.contact);
   c = Coeff();
   c.mixed = 1;
