@@ -5,7 +5,9 @@
 
    One law per pair of atom types serves every effective radius (the branch is
    tabulated in normalized variables; crates/tabor-ffi), so any polydispersity is
-   allowed. Works with newton on and off (it requests a newton-off neighbor list
+   allowed. A type pair without a pair_coeff line of its own is mixed from the
+   material forms of its two types, as pair granular mixes (tabor_mix_coeff).
+   Works with newton on and off (it requests a newton-off neighbor list
    and keeps each contact's history on both atoms). Contact history is written to
    restart files. single() serves compute pair/local. */
 #ifndef TABOR_PAIR_TABOR_H

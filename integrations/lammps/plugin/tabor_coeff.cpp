@@ -43,6 +43,13 @@ void LAMMPS_NS::tabor_fail_all(LAMMPS *lmp, const std::string &who, int status, 
    points kept in the contact's history; k_t NULL for the Mindlin models
    means 8 G* with G* = E* (1 - nu) / (2 (2 - nu)), the value pair granular computes
    for two bodies of one material, which needs `poisson nu`).
+   Or LAMMPS's material form, MODEL PARAMETERS = material E nu gamma MODEL [Lambda]
+   (Young's modulus, Poisson's ratio, surface energy per surface, as pair
+   granular's jkr E eta nu gamma): E* = 1/(2 (1 - nu^2)/E) (pair granular's
+   mix_stiffnessE(E, E, nu, nu); fix wall/gran's E/(2 (1 - nu^2)) for a wall),
+   w = 2 gamma (LAMMPS's JKR force 4 E* a^3/(3 R) - 2 pi a^2 sqrt(4 gamma E*/(pi a))
+   is JKR's with w = 2 gamma), k_t NULL = 8 G* with G* = 1/(4 (2 - nu)(1 + nu)/E);
+   a wall's own material (wall_material E_w nu_w gamma_w) mixes as two types do.
    Every error is reported on all ranks (error->all). */
 int LAMMPS_NS::tabor_parse_coeff(LAMMPS *lmp, const std::string &who, int narg, char **arg, int first,
                                  const std::vector<std::string> &stop, TaborCoeff &out)
