@@ -108,7 +108,7 @@ def collide(fragment, geometry, bodies, speed, contact_time, pulloff=0.0,
 
 
 def collide_oblique(fragment, bodies, speed, angle, dt, reach, run_steps, spin=(0.0, 0.0, 0.0),
-                    newton=None):
+                    newton=None, types=(1, 1), ntypes=None):
     """Runs one oblique collision of two spheres in LAMMPS, the one home of every
     oblique LAMMPS run of the test suites (test_oblique.py, test_lammps.py,
     test_plugin_friction.py).
@@ -128,7 +128,8 @@ def collide_oblique(fragment, bodies, speed, angle, dt, reach, run_steps, spin=(
     granular`'s answer when a sphere spins with `rolling sds`). Returns
     {"sphere"|"target": {"velocity", "angular_velocity"}, "separated"}, with
     `separated` true when at the end the centres are farther apart than the radii
-    plus `reach` and receding."""
+    plus `reach` and receding. `types`: the atom types of the sphere and the target
+    (the box has `ntypes` types, at least the larger)."""
     r1, r2 = bodies["sphere_radius"], bodies["target_radius"]
     m1 = bodies["sphere_density"] * r1 ** 3
     m2 = bodies["target_density"] * r2 ** 3
@@ -153,9 +154,9 @@ def collide_oblique(fragment, bodies, speed, angle, dt, reach, run_steps, spin=(
             "units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
             *([f"newton {newton}"] if newton else []),
             f"region box block {-span} {span} {-span} {span} {-span} {span}",
-            "create_box 1 box",
-            f"create_atoms 1 single {start[0]!r} {start[1]!r} 0",
-            "create_atoms 1 single 0 0 0",
+            f"create_box {max(*types, ntypes or 1)} box",
+            f"create_atoms {types[0]} single {start[0]!r} {start[1]!r} 0",
+            f"create_atoms {types[1]} single 0 0 0",
             f"set atom 1 diameter {2 * r1!r} density {bodies['sphere_density']!r}",
             f"set atom 2 diameter {2 * r2!r} density {bodies['target_density']!r}",
             f"set atom 1 vx {u[0] * m2 / (m1 + m2)!r} vy {u[1] * m2 / (m1 + m2)!r} vz 0",

@@ -266,18 +266,19 @@ int FixTaborHistory::pack_restart(int i, double *buf)
 void FixTaborHistory::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   npartner[nlocal] = 0;
   // every number of the record is checked before it is used: a corrupted record
   // is refused (check_restart, on every rank), never read out of bounds
-  const double *rec = &extra[nlocal][m];
   const tagint self = atom->tag[nlocal];
-  const double room = atom->nextra_store > m ? atom->nextra_store - m : 0;
   auto refuse = [&](const std::string &what) {
     if (bad_record.empty())
       bad_record = fmt::format("fix tabor/history: the restart record of atom {} {}", self, what);
   };
+  std::string before;
+  int m = tabor_restart_offset(lmp, nlocal, nth, before);
+  if (m < 0) return refuse(before);
+  const double *rec = &extra[nlocal][m];
+  const double room = atom->nextra_store > m ? atom->nextra_store - m : 0;
   double size_d = rec[0];
   if (!std::isfinite(size_d) || size_d != std::floor(size_d) || size_d < 2 || (room > 0 && size_d > room))
     return refuse(fmt::format("has a length of {} values (2 to {} expected): a corrupted restart file", size_d,
@@ -286,7 +287,8 @@ void FixTaborHistory::unpack_restart(int nlocal, int nth)
   // the layout: with creation stamps (-1 after the length), or of earlier builds
   const bool stamped = size >= 4 && rec[1] == -1.0;
   const int head = stamped ? 4 : 2, per = stamped ? 2 : 1;
-  double n_d = rec[head - 2];
+  // the partner count: [length, -1, count, stamp, ...] or [length, count, ...]
+  double n_d = stamped ? rec[2] : rec[1];
   if (!std::isfinite(n_d) || n_d != std::floor(n_d) || n_d < 0 || n_d > (size - head) / (per + 1))
     return refuse(fmt::format("has a partner count of {} (0 to {} fit in its {} values): a corrupted restart file",
                               n_d, (size - head) / (per + 1), size));
@@ -314,6 +316,8 @@ void FixTaborHistory::unpack_restart(int nlocal, int nth)
                                   t));
     if (h[0] != 1.0)
       return refuse(fmt::format("has contact flag {} with atom {} (a stored contact has 1)", h[0], t));
+    std::string bad = tabor_history_problem(h, MIN(stored, dnum));
+    if (!bad.empty()) return refuse(fmt::format("holds {} for its contact with atom {}", bad, t));
   }
   // an older model's contact: the dropped doubles must be zero
   // Thornton's incremental state (builds before the spring bed): doubles 10-15

@@ -163,6 +163,8 @@ int FixWallTabor::setmask()
 void FixWallTabor::init()
 {
   check_restart();
+  // every atom of the group finite, with a radius and mass > 0 (error->all)
+  tabor_check_atoms(lmp, who, groupbit);
   if (wallstyle == REGION) {
     Region *now = domain->get_region_by_id(idregion);
     if (!now) error->all(FLERR, "{}: region {} does not exist", who, idregion);
@@ -199,7 +201,7 @@ void FixWallTabor::grow_reach(double r)
 {
   double reach = 0.0;
   int status = tabor_contact_prepare(contact, r, r, &reach);
-  if (status != TABOR_OK) error->one(FLERR, "{}: tabor_contact_prepare at radius {} failed (status {})", who, r, status);
+  if (status != TABOR_OK) tabor_fail_rank(lmp, FLERR, "{}: tabor_contact_prepare at radius {} failed (status {})", who, r, status);
   rmax_seen = r;
   reach_max = MAX(reach_max, reach);
 }
@@ -218,7 +220,7 @@ double *FixWallTabor::find_or_add(int i, int wall)
   for (int k = 0; k < ncontact[i]; k++)
     if (w[k] == wall) return history_of(i, k);
   if (ncontact[i] >= nslot)
-    error->one(FLERR, "{}: atom {} touches more than {} walls at once", who, atom->tag[i], nslot);
+    tabor_fail_rank(lmp, FLERR, "{}: atom {} touches more than {} walls at once", who, atom->tag[i], nslot);
   int k = ncontact[i]++;
   w[k] = wall;
   double *h = history_of(i, k);
@@ -260,7 +262,13 @@ void FixWallTabor::one_contact(int i, int wall, const double *del, const double 
     if (rsq >= cut * cut) return;
   }
   double r = sqrt(rsq);
-  if (r == 0.0) error->one(FLERR, "{}: the centre of atom {} lies on the wall", who, atom->tag[i]);
+  if (r == 0.0) {
+    if (update->setupflag) {
+      centre_on_wall = MIN(centre_on_wall, atom->tag[i]);
+      return;
+    }
+    tabor_fail_rank(lmp, FLERR, "{}: the centre of atom {} lies on the wall", who, atom->tag[i]);
+  }
   double rinv = 1.0 / r;
   double **v = atom->v;
   double **omega = atom->omega;
@@ -295,7 +303,7 @@ void FixWallTabor::one_contact(int i, int wall, const double *del, const double 
   if (status != TABOR_OK) {
     char buf[512];
     tabor_last_error(buf, sizeof(buf));
-    error->one(FLERR, "{}: tabor_contact_step (status {}) for atom {}: {}", who, status, atom->tag[i], buf);
+    tabor_fail_rank(lmp, FLERR, "{}: tabor_contact_step (status {}) for atom {}: {}", who, status, atom->tag[i], buf);
   }
   if (hist.contact == 0.0) {
     forget(i, wall);
@@ -318,7 +326,23 @@ void FixWallTabor::one_contact(int i, int wall, const double *del, const double 
   }
 }
 
+/* the contacts of every atom of the group; at setup (the first force call of a
+   run, on every rank) an atom whose centre lies on a wall, which has no contact
+   normal, is refused with error->all (during the run only its rank meets it) */
 void FixWallTabor::post_force(int /*vflag*/)
+{
+  centre_on_wall = MAXTAGINT;
+  all_contacts();
+  if (update->setupflag) {
+    tagint worst = MAXTAGINT;
+    MPI_Allreduce(&centre_on_wall, &worst, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    if (worst != MAXTAGINT)
+      error->all(FLERR, "{}: the centre of atom {} lies on the wall (no contact normal): start it off the wall", who,
+                 worst);
+  }
+}
+
+void FixWallTabor::all_contacts()
 {
   double **x = atom->x;
   int *mask = atom->mask;
@@ -344,7 +368,7 @@ void FixWallTabor::post_force(int /*vflag*/)
       if (radius[i] > rmax_seen) grow_reach(radius[i]);
       double cutoff = radius[i] + reach_max;
       int nc = region->surface(x[i][0], x[i][1], x[i][2], cutoff);
-      if (nc > nslot) error->one(FLERR, "{}: atom {} touches {} surfaces of region {} (at most {})", who,
+      if (nc > nslot) tabor_fail_rank(lmp, FLERR, "{}: atom {} touches {} surfaces of region {} (at most {})", who,
                                  atom->tag[i], nc, idregion, nslot);
       // a contact whose surface is no longer within reach has separated
       for (int k = ncontact[i] - 1; k >= 0; k--) {
@@ -457,7 +481,7 @@ int FixWallTabor::unpack_exchange(int nlocal, double *buf)
 {
   int m = 0;
   int n = static_cast<int>(buf[m++]);
-  if (n > nslot) error->one(FLERR, "{}: an atom arrived with {} wall contacts (at most {})", who, n, nslot);
+  if (n > nslot) tabor_fail_rank(lmp, FLERR, "{}: an atom arrived with {} wall contacts (at most {})", who, n, nslot);
   ncontact[nlocal] = n;
   for (int k = 0; k < n; k++) {
     walls[(bigint) nlocal * nslot + k] = static_cast<int>(buf[m++]);
@@ -495,18 +519,19 @@ int FixWallTabor::pack_restart(int i, double *buf)
 void FixWallTabor::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   ncontact[nlocal] = 0;
   // every number of the record is checked before it is used: a corrupted record
   // is refused (check_restart, one error->all on every rank), never cast or read
   // out of bounds
-  const double *buf = &extra[nlocal][m];
-  const double room = atom->nextra_store > m ? atom->nextra_store - m : 0;
   auto refuse = [&](const std::string &what) {
     if (bad_record.empty())
       bad_record = fmt::format("{}: the restart record of atom {} {}", who, atom->tag[nlocal], what);
   };
+  std::string before;
+  int m = tabor_restart_offset(lmp, nlocal, nth, before);
+  if (m < 0) return refuse(before);
+  const double *buf = &extra[nlocal][m];
+  const double room = atom->nextra_store > m ? atom->nextra_store - m : 0;
   auto integer = [](double x, double lo, double hi) {
     return std::isfinite(x) && x == std::floor(x) && x >= lo && x <= hi;
   };
@@ -527,6 +552,8 @@ void FixWallTabor::unpack_restart(int nlocal, int nth)
       if (!std::isfinite(buf[k0 + 1 + d]))
         return refuse(fmt::format("holds the non-finite history value {} (contact {}, double {}): a corrupted "
                                   "restart file", buf[k0 + 1 + d], k, d));
+    std::string bad = tabor_history_problem(buf + k0 + 1, MIN(width, hlen));
+    if (!bad.empty()) return refuse(fmt::format("holds {} (contact {}): a corrupted restart file", bad, k));
   }
   // Thornton's incremental state (builds before the spring bed): doubles 10-15
   bool thornton = width == 16 && HLEN != 16;

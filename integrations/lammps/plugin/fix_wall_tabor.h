@@ -60,6 +60,8 @@ class FixWallTabor : public Fix {
   double amplitude, period, omega_wiggle, vshear;
   bigint time_origin;
   std::string idregion;
+  tagint centre_on_wall;     // the lowest atom ID whose centre lies on a wall (setup)
+  void all_contacts();
   std::string bad_record;    // the first restart record refused on this rank (raised in init)
   void check_restart();
   class Region *region;

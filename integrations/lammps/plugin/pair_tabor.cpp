@@ -70,7 +70,7 @@ void PairTabor::fail_one(int status, const char *what)
 {
   char buf[512];
   tabor_last_error(buf, sizeof(buf));
-  error->one(FLERR, "pair tabor: {} (status {}): {}", what, status, buf);
+  tabor_fail_rank(lmp, FLERR, "pair tabor: {} (status {}): {}", what, status, buf);
   throw;    // not reached
 }
 
@@ -112,6 +112,7 @@ void PairTabor::coeff(int narg, char **arg)
       tabor_contact_free(c.contact);
       c = Coeff();
       c.set = 1;
+      c.given = parsed;
       c.params = p;
       c.friction = fr;
       status = tabor_contact_new(&p, &fr, &c.contact);
@@ -153,29 +154,11 @@ void PairTabor::init_style()
   fix_history->check_restart();
   fix_history->refresh_stamps();
 
-  // a point particle (radius 0) or a radius not finite cannot touch anything:
-  // refused here on every rank (error->all), naming the lowest such atom ID,
-  // rather than by the contact step of one rank during the run
-  tagint bad = MAXTAGINT;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (!(atom->radius[i] > 0.0) || !std::isfinite(atom->radius[i])) bad = MIN(bad, atom->tag[i]);
-  tagint worst = MAXTAGINT;
-  MPI_Allreduce(&bad, &worst, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (worst != MAXTAGINT) {
-    double mine = 0.0, value = 0.0;
-    int type = 0, owner_type = 0;
-    for (int i = 0; i < atom->nlocal; i++)
-      if (atom->tag[i] == worst) {
-        mine = atom->radius[i];
-        type = atom->type[i];
-      }
-    MPI_Allreduce(&mine, &value, 1, MPI_DOUBLE, MPI_SUM, world);
-    MPI_Allreduce(&type, &owner_type, 1, MPI_INT, MPI_MAX, world);
-    error->all(FLERR,
-               "pair tabor: atom {} (type {}) has radius {}: every particle needs a finite radius > 0 "
-               "(a point particle cannot touch; set its diameter)",
-               worst, owner_type, value);
-  }
+  // an atom no contact law can take (a point particle of radius 0, a type out of
+  // range, a non-finite position, velocity or spin, as a corrupted restart file
+  // can hold) is refused here on every rank (error->all), naming the lowest such
+  // atom ID, rather than by the contact step of one rank during the run
+  tabor_check_atoms(lmp, "pair tabor", 1);
 
   // largest radius per type, over all ranks (as pair granular's maxrad_dynamic)
   int n = atom->ntypes;
@@ -192,7 +175,7 @@ void PairTabor::init_style()
 double PairTabor::init_one(int i, int j)
 {
   Coeff &c = coeff_of(i, j);
-  if (!c.set) error->all(FLERR, "pair tabor: no pair_coeff for types {} {}", i, j);
+  if (!c.set) mix(i, j);
   double ri = maxrad[i], rj = maxrad[j];
   c.reach = 0.0;
   if (ri <= 0.0 || rj <= 0.0) return 0.0;
@@ -206,6 +189,56 @@ double PairTabor::init_one(int i, int j)
     error->all(FLERR, "pair tabor: neighbor skin {} is below the interaction range {} of types {} {}",
                neighbor->skin, c.reach, i, j);
   return ri + rj + c.reach;
+}
+
+/* Types I != J without a pair_coeff line of their own: mixed from the material
+   forms of I I and J J as pair granular mixes them (tabor_mix_coeff), again at
+   every init (a later pair_coeff I I changes it); the contact model is rebuilt
+   only when the mixed parameters change. Refused on every rank (error->all) when
+   it cannot be mixed, naming the types and the reason. */
+void PairTabor::mix(int i, int j)
+{
+  Coeff &c = coeff_of(i, j);
+  const Coeff &a = coeff_of(i, i), &b = coeff_of(j, j);
+  if (i == j || !a.set || !b.set)
+    error->all(FLERR, "pair tabor: no pair_coeff for types {} {}, and it cannot be mixed without pair_coeff {} {}",
+               i, j, a.set ? j : i, a.set ? j : i);
+  TaborCoeff m;
+  std::string why = tabor_mix_coeff(a.given, b.given, m);
+  if (!why.empty())
+    error->all(FLERR, "pair tabor: no pair_coeff for types {} {}, and pair_coeff {} {} and {} {} cannot be mixed: {}",
+               i, j, i, i, j, j, why);
+  // field by field (a memcmp would see the structs' padding)
+  const TaborLawParams &p = c.params, &q = m.params;
+  const TaborFrictionParams &f = c.friction, &g = m.friction;
+  bool same = p.model == q.model && p.effective_modulus == q.effective_modulus &&
+      p.work_of_adhesion == q.work_of_adhesion && p.tabor_parameter == q.tabor_parameter &&
+      p.damping_time == q.damping_time && p.damping_model == q.damping_model &&
+      p.damping_value == q.damping_value && p.dugdale_range == q.dugdale_range &&
+      p.cohesive_stress == q.cohesive_stress && p.effective_radius == q.effective_radius &&
+      f.tangential_model == g.tangential_model && f.tangential_stiffness == g.tangential_stiffness &&
+      f.tangential_damping == g.tangential_damping && f.friction_coefficient == g.friction_coefficient &&
+      f.rolling_model == g.rolling_model && f.rolling_stiffness == g.rolling_stiffness &&
+      f.rolling_damping == g.rolling_damping && f.rolling_coefficient == g.rolling_coefficient &&
+      f.twisting_model == g.twisting_model && f.twisting_stiffness == g.twisting_stiffness &&
+      f.twisting_damping == g.twisting_damping && f.twisting_coefficient == g.twisting_coefficient;
+  if (c.mixed && c.contact && same) return;
+  tabor_contact_free(c.contact);
+  c = Coeff();
+  c.mixed = 1;
+  c.given = m;
+  c.params = m.params;
+  c.friction = m.friction;
+  int status = tabor_contact_new(&c.params, &c.friction, &c.contact);
+  if (status != TABOR_OK) {
+    char buf[512];
+    tabor_last_error(buf, sizeof(buf));
+    error->all(FLERR, "pair tabor: types {} {} mixed from pair_coeff {} {} and {} {} (status {}): {}", i, j, i, i, j,
+               j, status, buf);
+  }
+  std::string probe = tabor_probe_contact(c.contact, c.friction);
+  if (!probe.empty())
+    error->all(FLERR, "pair tabor: types {} {} mixed from pair_coeff {} {} and {} {}: {}", i, j, i, i, j, j, probe);
 }
 
 /* One contact, evaluated with the atom of the lower tag as body 1 (whatever the

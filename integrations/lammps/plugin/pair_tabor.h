@@ -5,13 +5,16 @@
 
    One law per pair of atom types serves every effective radius (the branch is
    tabulated in normalized variables; crates/tabor-ffi), so any polydispersity is
-   allowed. Works with newton on and off (it requests a newton-off neighbor list
+   allowed. A type pair without a pair_coeff line of its own is mixed from the
+   material forms of its two types, as pair granular mixes (tabor_mix_coeff).
+   Works with newton on and off (it requests a newton-off neighbor list
    and keeps each contact's history on both atoms). Contact history is written to
    restart files. single() serves compute pair/local. */
 #ifndef TABOR_PAIR_TABOR_H
 #define TABOR_PAIR_TABOR_H
 
 #include "pair.h"
+#include "tabor_coeff.h"
 #include "tabor_ffi.h"
 
 #include <vector>
@@ -32,7 +35,9 @@ class PairTabor : public Pair {
 
  private:
   struct Coeff {
-    int set = 0;
+    int set = 0;      // given by a pair_coeff line
+    int mixed = 0;    // mixed at init from the I I and J J material forms
+    TaborCoeff given;    // as parsed (its material, for mixing)
     TaborLawParams params{};
     TaborFrictionParams friction{};
     TaborContact *contact = nullptr;    // serves every effective radius
@@ -47,6 +52,7 @@ class PairTabor : public Pair {
   int ntypes_alloc = 0;
   Coeff &coeff_of(int i, int j) { return coeffs[MIN(i, j) * (ntypes_alloc + 1) + MAX(i, j)]; }
   void free_laws();
+  void mix(int i, int j);
   int evaluate(int i, int j, int update_history, TaborContactForces &out, int &first);
   [[noreturn]] void fail_all(int status, const char *what);
   [[noreturn]] void fail_one(int status, const char *what);
