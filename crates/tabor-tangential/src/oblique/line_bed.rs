@@ -25,13 +25,17 @@
 //! The bound is that of the node bed's frame (checked at every evaluation; the
 //! frame is flattened and rebuilt where it fails or half its budget is spent).
 
-use super::node_bed::{rotation, FRAME_STEPS};
+use super::node_bed::FRAME_STEPS;
 use nalgebra::Vector3;
 
 /// `∫_p^q f z^{−1/2} dz` for `f` linear in z with `f(p) = fp`, `f(q) = fq`
 /// (with `z = r²`: `2 ∫ f(r²) dr`, in a form without cancellation).
 pub(super) fn piece_integral(p: f64, q: f64, fp: f64, fq: f64) -> f64 {
-    let (rp, rq) = (p.sqrt(), q.sqrt());
+    piece_integral_r(p, q, p.sqrt(), q.sqrt(), fp, fq)
+}
+
+/// [`piece_integral`] with the roots `rp = √p`, `rq = √q` given.
+fn piece_integral_r(p: f64, q: f64, rp: f64, rq: f64, fp: f64, fq: f64) -> f64 {
     let sum = rp + rq;
     if sum == 0.0 {
         return 0.0;
@@ -58,6 +62,19 @@ fn piece_square_integral(p: f64, q: f64, fp: f64, fq: f64) -> f64 {
         })
         .sum();
     2.0 * half * sum
+}
+
+/// `v` turned by the rotation taking the unit vector `from` to `to` about their
+/// common normal (Rodrigues, as [`super::node_bed::rotation`]; `v` where they are
+/// equal or opposite).
+fn turned(from: &Vector3<f64>, to: &Vector3<f64>, v: &Vector3<f64>) -> Vector3<f64> {
+    let c = from.dot(to);
+    if from == to || c <= -1.0 + 1e-12 {
+        return *v;
+    }
+    let k = from.cross(to);
+    let kv = k.cross(v);
+    v + kv + k.cross(&kv) / (1.0 + c)
 }
 
 /// Where a sub-interval of a clipped piece lies: within the limits, or on the
@@ -135,11 +152,19 @@ pub(super) struct LineProbe {
 /// The spring bed of a planar history as breakpoints (see the module doc).
 #[derive(Clone, Debug)]
 pub(super) struct LineBed {
-    /// Breakpoints in z (m²), from 0 to the committed a₀².
+    /// Breakpoints in z (m²), from 0 to the committed a₀², and their roots √z.
     z: Vec<f64>,
+    root: Vec<f64>,
     /// The displacement at each breakpoint along `e` (m): `u_k + sigma` for the
     /// first `frame` breakpoints, `u_k` beyond.
     u: Vec<f64>,
+    /// From breakpoint `acc_from` (the frame's last, or 0) on, `acc[k]` is
+    /// `∫ w z^{−1/2} dz` of the committed profile from `z[acc_from]` to `z[k]`:
+    /// a run of pieces that stick at the probe costs one difference.
+    acc: Vec<f64>,
+    acc_from: usize,
+    /// The commit's new points (kept to spare an allocation per step).
+    scratch: Vec<(f64, f64, Regime)>,
     /// The committed direction (unit, in the committed tangent plane).
     e: Vector3<f64>,
     /// Whether any spring may be strained (else every direction is the bed's).
@@ -156,6 +181,7 @@ pub(super) struct LineBed {
     a_r_sq: f64,
     /// `s`, the normal, a² and φ at the last commit.
     s0: Vector3<f64>,
+    s0_norm: f64,
     n0: Vector3<f64>,
     a0_sq: f64,
     phi0: f64,
@@ -166,7 +192,11 @@ impl LineBed {
     pub(super) fn new() -> Self {
         LineBed {
             z: vec![0.0],
+            root: vec![0.0],
             u: vec![0.0],
+            acc: vec![0.0],
+            acc_from: 0,
+            scratch: Vec::new(),
             e: Vector3::y(),
             strained: false,
             frame: 0,
@@ -177,6 +207,7 @@ impl LineBed {
             phi_r: 0.0,
             a_r_sq: 0.0,
             s0: Vector3::zeros(),
+            s0_norm: 0.0,
             n0: -Vector3::x(),
             a0_sq: 0.0,
             phi0: 0.0,
@@ -187,10 +218,14 @@ impl LineBed {
     pub(super) fn reset(&mut self, s: &Vector3<f64>, n: &Vector3<f64>, a: f64) {
         let a2 = a * a;
         self.z = if a2 > 0.0 { vec![0.0, a2] } else { vec![0.0] };
+        self.root = self.z.iter().map(|z| z.sqrt()).collect();
         self.u = vec![0.0; self.z.len()];
+        self.acc = vec![0.0; self.z.len()];
+        self.acc_from = 0;
         self.strained = false;
         self.clear_frame();
         self.s0 = *s;
+        self.s0_norm = s.norm();
         self.n0 = *n;
         self.a0_sq = a2;
         self.phi0 = 0.0;
@@ -250,10 +285,10 @@ impl LineBed {
         let mut ds = s - self.s0;
         ds -= n * n.dot(&ds);
         let size = ds.norm();
+        // the committed direction turned with the normal: unit and in the new
+        // tangent plane to rounding (it is renormalized at the commit)
         let e = if self.strained {
-            let e = rotation(&self.n0, n).map_or(self.e, |r| r * self.e);
-            let e = e - n * n.dot(&e);
-            e / e.norm()
+            turned(&self.n0, n, &self.e)
         } else if size > 0.0 {
             ds / size
         } else {
@@ -262,7 +297,7 @@ impl LineBed {
         let d = ds.dot(&e);
         // rounding leaves ~1e-16 of |s| and |Δs| off the line of a planar history
         let off = (ds - e * d).norm();
-        let scale = size + self.s0.norm() + phi * a2;
+        let scale = size + self.s0_norm + phi * a2;
         (off <= 1e-11 * scale).then_some(LineProbe { e, d, a2, phi })
     }
 
@@ -283,9 +318,21 @@ impl LineBed {
         p: &LineProbe,
         mut emit: F,
     ) {
-        let last = self.z.len() - 1;
+        self.map_range(start, self.z.len() - 1, p, &mut emit);
+        self.map_entry(p, &mut emit);
+    }
+
+    /// [`LineBed::map_from`] for the committed pieces from breakpoint `start` to
+    /// `end` only.
+    fn map_range<F: FnMut(f64, f64, f64, f64, Regime)>(
+        &self,
+        start: usize,
+        end: usize,
+        p: &LineProbe,
+        emit: &mut F,
+    ) {
         let cap = |z: f64| p.phi * (p.a2 - z);
-        for k in start..last {
+        for k in start..end {
             let (zp, zq) = (self.z[k], self.z[k + 1]);
             if zp >= p.a2 {
                 break;
@@ -297,29 +344,87 @@ impl LineBed {
             } else {
                 zq
             };
-            clip(zp, q, (vp + p.d, vq + p.d), (cap(zp), cap(q)), &mut emit);
+            clip(zp, q, (vp + p.d, vq + p.d), (cap(zp), cap(q)), &mut *emit);
         }
-        // the springs the contact reached during the step: Δs after a² passed them
-        let edge = self.z[last];
+    }
+
+    /// [`LineBed::map_from`] for the springs the contact reached during the step
+    /// only: `Δs` after a² passed them.
+    fn map_entry<F: FnMut(f64, f64, f64, f64, Regime)>(&self, p: &LineProbe, emit: &mut F) {
+        let edge = self.z[self.z.len() - 1];
         if p.a2 > edge {
-            clip(edge, p.a2, (p.d, 0.0), (cap(edge), 0.0), &mut emit);
+            clip(
+                edge,
+                p.a2,
+                (p.d, 0.0),
+                (p.phi * (p.a2 - edge), 0.0),
+                &mut *emit,
+            );
         }
     }
 
     /// `∫ w z^{−1/2} dz` of the return-mapped bed at the probe, along `p.e`.
     pub(super) fn integral(&self, p: &LineProbe) -> f64 {
-        let mut sum = 0.0;
+        let mut runs = 0.0;
         let start = if self.frame_holds(p) {
-            let top = self.z[self.frame - 1];
-            sum += self.frame_sum + (self.sigma + p.d) * 2.0 * top.sqrt();
+            runs += self.frame_sum + (self.sigma + p.d) * 2.0 * self.root[self.frame - 1];
             self.frame - 1
         } else {
             0
         };
-        self.map_from(start, p, |z0, z1, f0, f1, _| {
-            sum += piece_integral(z0, z1, f0, f1)
-        });
-        sum
+        let mut clipped = 0.0;
+        let mut add = |z0, z1, f0, f1, _| clipped += piece_integral(z0, z1, f0, f1);
+        // below the accumulated breakpoints (a frame that failed): piece by piece
+        let from = self.acc_from.max(start);
+        self.map_range(start, from, p, &mut add);
+        // then runs of pieces within their limits from the accumulated integral,
+        // the others clipped
+        let last = self.z.len() - 1;
+        let mut run = from;
+        let mut k = from;
+        while k < last && self.z[k + 1] <= p.a2 {
+            let (tp, tq) = (self.value(k) + p.d, self.value(k + 1) + p.d);
+            let (cp, cq) = (p.phi * (p.a2 - self.z[k]), p.phi * (p.a2 - self.z[k + 1]));
+            if tp.abs() > cp || tq.abs() > cq {
+                runs += self.run_integral(run, k, p.d);
+                self.map_range(k, k + 1, p, &mut add);
+                run = k + 1;
+            }
+            k += 1;
+        }
+        runs += self.run_integral(run, k, p.d);
+        // the piece the shrinking contact cuts, and the springs it reached
+        self.map_range(k, last, p, &mut add);
+        self.map_entry(p, &mut add);
+        runs + clipped
+    }
+
+    /// `∫ (w + d) z^{−1/2} dz` over the committed pieces from breakpoint `a` to
+    /// `b` (both at least `acc_from`).
+    fn run_integral(&self, a: usize, b: usize, d: f64) -> f64 {
+        if b <= a {
+            return 0.0;
+        }
+        self.acc[b] - self.acc[a] + d * 2.0 * (self.root[b] - self.root[a])
+    }
+
+    /// Recomputes the accumulated integral from the frame's last breakpoint on.
+    fn accumulate(&mut self) {
+        let from = self.frame.saturating_sub(1);
+        self.acc_from = from;
+        self.acc.resize(self.z.len(), 0.0);
+        self.acc[from] = 0.0;
+        for k in from..self.z.len() - 1 {
+            let piece = piece_integral_r(
+                self.z[k],
+                self.z[k + 1],
+                self.root[k],
+                self.root[k + 1],
+                self.value(k),
+                self.value(k + 1),
+            );
+            self.acc[k + 1] = self.acc[k] + piece;
+        }
     }
 
     /// The direction of the force at the probe.
@@ -339,7 +444,8 @@ impl LineBed {
         // the new profile beyond `start`: points with the regime of the
         // sub-interval ending at them; a point between two runs on one cap is
         // dropped (the cap is one line)
-        let mut points: Vec<(f64, f64, Regime)> = Vec::with_capacity(self.z.len() - start + 4);
+        let mut points = std::mem::take(&mut self.scratch);
+        points.clear();
         let c0 = p.phi * (p.a2 - self.z[start]);
         let first = (self.value(start) + p.d).clamp(-c0, c0);
         points.push((self.z[start], first, Regime::Free));
@@ -356,12 +462,15 @@ impl LineBed {
         // the frame's last point moves with the frame (its value is not stored)
         let keep = if holds { start + 1 } else { start };
         self.z.truncate(keep);
+        self.root.truncate(keep);
         self.u.truncate(keep);
         let skip = if holds { 1 } else { 0 };
         for &(z, f, _) in &points[skip..] {
             self.z.push(z);
+            self.root.push(z.sqrt());
             self.u.push(f);
         }
+        self.scratch = points;
         let limits = (p.phi - self.phi0).abs() * self.a0_sq + p.phi * (p.a2 - self.a0_sq).abs();
         let change = p.d.abs() + limits;
         if holds {
@@ -369,8 +478,10 @@ impl LineBed {
             self.path += p.d.abs();
         }
         self.strained |= p.d != 0.0;
-        self.e = p.e;
+        let e = p.e - n * n.dot(&p.e);
+        self.e = e / e.norm();
         self.s0 = *s;
+        self.s0_norm = s.norm();
         self.n0 = *n;
         self.a0_sq = p.a2;
         self.phi0 = p.phi;
@@ -380,6 +491,7 @@ impl LineBed {
         if !holds || 2.0 * spent > self.budget {
             self.rebuild(p, FRAME_STEPS * change);
         }
+        self.accumulate();
     }
 
     /// The frame's shift moved into its values; no frame.
