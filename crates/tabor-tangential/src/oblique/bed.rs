@@ -54,7 +54,8 @@ use nalgebra::Vector3;
 use std::cell::{Cell, RefCell};
 use tabor_dynamics::ForceLaw;
 
-/// The default number of nodes of the spring bed in `z = x²` per `a_ref²`, the
+/// The number of nodes of the node bed, which takes a history off the planar
+/// bed's line in [`ObliqueImpact::simulate`], in `z = x²` per `a_ref²`, the
 /// square of the contact-radius scale of the impact (the grid grows with the same
 /// spacing where the contact outgrows it). The error of the stick zone's profile
 /// falls as `1/nodes²`: for steel on steel (Maw, Barber & Fawcett's case) the

@@ -248,8 +248,7 @@ impl LineBed {
         }
     }
 
-    /// The committed state as `(s0, n0, a0², φ0)` and the displacement at `z`
-    /// (a vector; 0 beyond the edge), for a node bed taking it over.
+    /// The committed `(s₀, n₀, a₀², φ₀)`, for a node bed taking the state over.
     pub(super) fn committed(&self) -> (Vector3<f64>, Vector3<f64>, f64, f64) {
         (self.s0, self.n0, self.a0_sq, self.phi0)
     }
