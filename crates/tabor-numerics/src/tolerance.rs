@@ -77,11 +77,12 @@ pub const MODEL_ACCURACY_FLOOR: f64 = DEFAULT_TOLERANCE;
 pub const STICKING_ACCURACY_FLOOR: f64 = DEFAULT_TOLERANCE / 100.0;
 
 /// What Mindlin-Deresiewicz micro-slip resolves, relative to the tangential
-/// restitution: `tabor-tangential`'s spring bed (1024 nodes in x², the return map
-/// along each step's path) reproduces Maw, Barber & Fawcett's steel impact to
-/// 2e-5 from its node spacing plus ~3e-5 from its path at an integration
-/// tolerance of 1e-9 (`tabor-tangential/tests/micro_slip.rs`); a scene asking for
-/// less is told so by a warning.
+/// restitution: `tabor-tangential`'s spring bed (the return map along each step's
+/// path; exact in x² for a planar history, 1024 nodes in x² otherwise) reproduces
+/// Maw, Barber & Fawcett's steel impact to ~3e-5 from its path at an integration
+/// tolerance of 1e-9, plus 2e-5 from the node spacing where the history is not
+/// planar (`tabor-tangential/tests/micro_slip.rs`); a scene asking for less is
+/// told so by a warning.
 pub const MICRO_SLIP_RESOLUTION: f64 = 1e-4;
 
 #[cfg(test)]

@@ -85,7 +85,7 @@ pub(crate) fn oblique_floors(accuracy: f64, micro_slip: bool) -> Vec<Warning> {
                     accuracy,
                     MICRO_SLIP_RESOLUTION,
                     "MICRO_SLIP_RESOLUTION",
-                    "the micro-slip of mindlin_deresiewicz (a bed of 1024 springs)",
+                    "the micro-slip of mindlin_deresiewicz (its spring bed)",
                 )
             })
             .flatten(),

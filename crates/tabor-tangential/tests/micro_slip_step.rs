@@ -264,8 +264,9 @@ fn dem_form_on_maw_barber_fawcett() {
     }
 }
 
-/// The per-contact bed of [`SPRINGS`] nodes against the library's 1024-node bed
-/// over MBF's range Ψ = 0.1…10, in a DEM integration of 4000 steps per contact
+/// The per-contact bed of [`SPRINGS`] nodes against the library's bed (planar
+/// here: exact in z; the tolerance was set against its 1024-node bed) over MBF's
+/// range Ψ = 0.1…10, in a DEM integration of 4000 steps per contact
 /// time: within a tenth of the time-step tolerance ([`step_tolerance`], the
 /// tolerance of the LAMMPS comparison) at every Ψ, so the bed's error is well
 /// below what a DEM step resolves. The micro-slip work `Σ T·Δs` over the
@@ -290,9 +291,10 @@ fn dem_form_against_the_library_bed() {
 }
 
 /// The bed's error falls as the square of its spacing: against the library's
-/// 1024-node bed at Ψ = 1.2 (where it is largest), 16, 32 and 64 springs; each
-/// doubling divides the difference by at least 3 (4 for an error ∝ 1/N², less
-/// where the library's own error, about 2e-5, is approached).
+/// bed (planar here, exact in z; the bound was set against its 1024-node bed) at
+/// Ψ = 1.2 (where it is largest), 16, 32 and 64 springs; each doubling divides
+/// the difference by at least 3 (4 for an error ∝ 1/N², less where the
+/// library's own error, its path at the integration tolerance, is approached).
 #[test]
 fn the_bed_converges_as_the_square_of_its_spacing() {
     let e = exact_beta(1.2);

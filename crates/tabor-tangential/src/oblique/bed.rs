@@ -22,16 +22,6 @@
 //! between micro-slip and stick is therefore uncertain by the shape of `q(x)`,
 //! while the gross-sliding limit `μ F_n0` is that of LAMMPS's `jkr`.
 //!
-//! **The state.** Every spring's elastic displacement `w(x)` (a vector in the
-//! tangent plane). The springs are nodes uniform in `z = x²` (the load and the
-//! slip profile `q(x)/k'` are linear in `z`, so a slipping zone is integrated
-//! exactly); `w` is linear in `z` between nodes, and the force
-//! `F = −2 k' ∫₀^a w dx = −k' ∫₀^{a²} w(z) z^{−1/2} dz` is integrated exactly for
-//! that interpolation, with `w = 0` at the edge `z = a²` (a spring there is at its
-//! zero limit). What is discretized is the stick zone's profile between nodes;
-//! its error falls as the square of the node spacing (measured in
-//! `tests/micro_slip.rs`).
-//!
 //! **The update.** The law is rate-independent: a spring's state at the end of a
 //! step depends only on the path of the tangential displacement `s` and of its
 //! limit. Within a step the path is taken straight from the last committed state
@@ -47,24 +37,25 @@
 //! carries only the part of `Δs` after that point. After every accepted step the
 //! state is committed at the step's end.
 //!
-//! **The frame.** Most springs cannot slip within a few steps: a spring whose
-//! slack (its limit less its displacement) exceeds the path length of `s` plus
-//! the change of the limits since the last rebuild follows `s` rigidly. Such
-//! springs are kept in a frame: their displacements at the rebuild `u_i`, and
-//! the common transform since, `w_i = Q u_i + σ` (the rotation of the tangent
-//! plane and the shift); their force is `Q Σ c_i u_i + σ Σ c_i`, one sum. Only
-//! the other springs (near the edge, in the slipping annuli) are visited one by
-//! one. The frame is exact (no spring in it could have slipped: the bound is
-//! checked at every evaluation, and the bed falls back to visiting every spring
-//! where it fails) and is rebuilt when its budget is half spent.
+//! **Two forms.** A planar history (every displacement on one line of the tangent
+//! plane turned with the normal, as in an impact whose spins are normal to its
+//! plane) is kept exactly as breakpoints of a profile piecewise linear in
+//! `z = x²` ([`super::line_bed`]): no discretization in z, the cost of an
+//! evaluation the breakpoints near the stick/slip boundaries. Any other history
+//! takes the nodes uniform in z of [`super::node_bed`] (the planar bed hands its
+//! profile over, sampled at the nodes, at the first increment off its line).
+//! [`ObliqueImpact::simulate_with_nodes`] takes the node bed throughout.
 
 use super::bodies::ObliqueImpact;
+use super::line_bed::LineBed;
+use super::node_bed::NodeBed;
 use crate::model::TangentialModel;
-use nalgebra::{Matrix3, Vector3};
-use std::cell::RefCell;
+use nalgebra::Vector3;
+use std::cell::{Cell, RefCell};
 use tabor_dynamics::ForceLaw;
 
-/// The default number of nodes of the spring bed in `z = x²` per `a_ref²`, the
+/// The number of nodes of the node bed, which takes a history off the planar
+/// bed's line in [`ObliqueImpact::simulate`], in `z = x²` per `a_ref²`, the
 /// square of the contact-radius scale of the impact (the grid grows with the same
 /// spacing where the contact outgrows it). The error of the stick zone's profile
 /// falls as `1/nodes²`: for steel on steel (Maw, Barber & Fawcett's case) the
@@ -72,167 +63,41 @@ use tabor_dynamics::ForceLaw;
 /// (`tests/micro_slip.rs` measures it).
 pub const MICRO_SLIP_NODES: usize = 1024;
 
-/// The slack of the frame, in units of the last step's change (path length of
-/// `s` plus the bound on the change of the limits): springs with more slack than
-/// this many steps' change are kept in the frame.
-const FRAME_STEPS: f64 = 16.0;
-
-/// The MDR spring bed of a contact under Mindlin-Deresiewicz micro-slip.
+/// The MDR spring bed of a contact under Mindlin-Deresiewicz micro-slip: the
+/// planar form while the history allows it, else the node bed.
 #[derive(Clone, Debug)]
 pub(super) struct MicroSlipBed {
     /// k' = k_t/2 (N/m²): tangential stiffness per unit length of the bed.
     k_line: f64,
-    /// Node spacing in z = x² (m²).
-    dz: f64,
-    /// The committed displacements of the nodes `z_i = i dz` outside the frame;
-    /// for a node in the frame, its displacement `u_i` at the last rebuild.
-    w: Vec<Vector3<f64>>,
-    /// Whether a node is in the frame.
-    in_frame: Vec<bool>,
-    /// The nodes outside the frame in contact at the last commit.
-    explicit: Vec<usize>,
-    /// Per cell `[z_i, z_{i+1}]`: the weights of `w_i` and `w_{i+1}` in
-    /// `∫ w z^{−1/2} dz` for `w` linear in z.
-    left: Vec<f64>,
-    right: Vec<f64>,
-    /// The full-cell weight of each node, `left_i + right_{i−1}`.
-    full: Vec<f64>,
-    /// The frame: `w_i = q u_i + sigma` for its nodes, `Σ c_i u_i`, `Σ c_i`
-    /// (full-cell weights), its slack `budget`, the path length of `s` since the
-    /// rebuild, and the slope φ, squared radius and highest cell top at the
-    /// rebuild.
-    q: Matrix3<f64>,
-    sigma: Vector3<f64>,
-    sum_u: Vector3<f64>,
-    sum_c: f64,
-    budget: f64,
-    path: f64,
-    phi_r: f64,
-    a_r_sq: f64,
-    frame_top: f64,
-    /// The tangential displacement `s` at the last commit.
-    s0: Vector3<f64>,
-    /// The normal at the last commit (the committed `w` lie in its tangent plane).
-    n0: Vector3<f64>,
-    /// The squared contact radius and slope φ at the last commit.
-    a0_sq: f64,
-    phi0: f64,
-}
-
-/// `√q − √p` without cancellation.
-fn root_difference(p: f64, q: f64) -> f64 {
-    (q - p) / (q.sqrt() + p.sqrt())
-}
-
-/// The rotation taking the unit vector `from` to `to` about their common normal
-/// (Rodrigues; the identity where they are equal).
-fn rotation(from: &Vector3<f64>, to: &Vector3<f64>) -> Option<Matrix3<f64>> {
-    if from == to {
-        return None;
-    }
-    let k = from.cross(to);
-    let c = from.dot(to);
-    if c <= -1.0 + 1e-12 {
-        return None;
-    }
-    let kx = k.cross_matrix();
-    Some(Matrix3::identity() + kx + kx * kx / (1.0 + c))
-}
-
-/// What an evaluation needs of the state given: the rotation since the commit,
-/// the tangential increment, a², φ and the entering nodes' range.
-struct Probe {
-    turn: Option<Matrix3<f64>>,
-    ds: Vector3<f64>,
-    a2: f64,
-    phi: f64,
+    /// The planar bed (`None`: the node bed throughout).
+    line: Option<LineBed>,
+    /// Whether the planar bed holds the state (else the node bed does).
+    planar: Cell<bool>,
+    /// The node bed, loaded from the planar one where a history leaves its line.
+    nodes: RefCell<NodeBed>,
 }
 
 impl MicroSlipBed {
     /// An unstrained bed of stiffness `k_t` (N/m² per unit radius: the no-slip
-    /// stiffness is `k_t a`) with nodes spaced `a_ref²/nodes` in z.
-    pub(super) fn new(k_t: f64, a_ref: f64, nodes: usize) -> Self {
-        let mut bed = MicroSlipBed {
+    /// stiffness is `k_t a`), planar where the history allows (`exact`), with
+    /// nodes spaced `a_ref²/nodes` in z otherwise.
+    pub(super) fn new(k_t: f64, a_ref: f64, nodes: usize, exact: bool) -> Self {
+        MicroSlipBed {
             k_line: 0.5 * k_t,
-            dz: a_ref * a_ref / nodes as f64,
-            w: Vec::new(),
-            in_frame: Vec::new(),
-            explicit: Vec::new(),
-            left: Vec::new(),
-            right: Vec::new(),
-            full: Vec::new(),
-            q: Matrix3::identity(),
-            sigma: Vector3::zeros(),
-            sum_u: Vector3::zeros(),
-            sum_c: 0.0,
-            budget: 0.0,
-            path: 0.0,
-            phi_r: 0.0,
-            a_r_sq: 0.0,
-            frame_top: 0.0,
-            s0: Vector3::zeros(),
-            n0: -Vector3::x(),
-            a0_sq: 0.0,
-            phi0: 0.0,
-        };
-        bed.grow(nodes + 1);
-        bed
-    }
-
-    /// Extends the grid to at least `nodes` nodes.
-    fn grow(&mut self, nodes: usize) {
-        while self.w.len() < nodes {
-            let i = self.w.len();
-            self.w.push(Vector3::zeros());
-            self.in_frame.push(false);
-            if i > 0 {
-                let (p, q) = ((i - 1) as f64 * self.dz, i as f64 * self.dz);
-                let (rp, rq) = (p.sqrt(), q.sqrt());
-                let d = root_difference(p, q);
-                // ∫(z − p) z^{−1/2} dz / dz and ∫(q − z) z^{−1/2} dz / dz
-                let up = 2.0 / 3.0 * d * d * (rq + 2.0 * rp) / self.dz;
-                let down = 2.0 / 3.0 * d * d * (2.0 * rq + rp) / self.dz;
-                self.left.push(down);
-                self.right.push(up);
-                // node i−1 is complete now
-                let below = if i > 1 { self.right[i - 2] } else { 0.0 };
-                self.full.push(down + below);
-            }
+            line: exact.then(LineBed::new),
+            planar: Cell::new(exact),
+            nodes: RefCell::new(NodeBed::new(k_t, a_ref, nodes)),
         }
     }
 
     /// Resets the bed at contact onset (contact radius `a`): no spring strained,
-    /// `s` and `n` the reference, the frame empty.
+    /// `s` and `n` the reference.
     pub(super) fn reset(&mut self, s: &Vector3<f64>, n: &Vector3<f64>, a: f64) {
-        let needed = 2 * (a * a / self.dz).ceil() as usize + 8;
-        if needed > self.w.len() {
-            self.grow(needed);
+        if let Some(line) = self.line.as_mut() {
+            line.reset(s, n, a);
+            self.planar.set(true);
         }
-        self.unstrain();
-        self.explicit
-            .extend((0..self.w.len()).take_while(|&i| (i as f64) * self.dz < a * a));
-        self.s0 = *s;
-        self.n0 = *n;
-        self.a0_sq = a * a;
-        self.phi0 = 0.0;
-    }
-
-    /// Every spring unstrained and outside the frame, the frame empty.
-    fn unstrain(&mut self) {
-        self.w.iter_mut().for_each(|w| *w = Vector3::zeros());
-        self.in_frame.iter_mut().for_each(|f| *f = false);
-        self.explicit.clear();
-        self.clear_frame();
-    }
-
-    fn clear_frame(&mut self) {
-        self.q = Matrix3::identity();
-        self.sigma = Vector3::zeros();
-        self.sum_u = Vector3::zeros();
-        self.sum_c = 0.0;
-        self.budget = 0.0;
-        self.path = 0.0;
-        self.frame_top = 0.0;
+        self.nodes.get_mut().reset(s, n, a);
     }
 
     /// The slip displacement per unit of `a² − z` at contact radius `a` (m) and
@@ -241,106 +106,34 @@ impl MicroSlipBed {
         0.75 * limit / (a * a * a * self.k_line)
     }
 
-    /// The full-cell weight of node i in `∫ w z^{−1/2} dz`.
-    fn full_weight(&self, i: usize) -> f64 {
-        self.full[i]
-    }
-
-    /// The weight of node i at squared radius `a2`: full where the cell above it
-    /// is in contact, else the cell below plus the edge cell `[z_i, a²]` (w = 0
-    /// at a²).
-    fn weight(&self, i: usize, a2: f64) -> f64 {
-        let z = i as f64 * self.dz;
-        if z + self.dz <= a2 && i < self.full.len() {
-            return self.full_weight(i);
-        }
-        let below = if i > 0 { self.right[i - 1] } else { 0.0 };
-        let (rp, re) = (z.sqrt(), a2.sqrt());
-        below + 2.0 / 3.0 * root_difference(z, a2) * (2.0 * re + rp) / (re + rp)
-    }
-
-    /// The committed displacement of node i.
-    fn committed(&self, i: usize) -> Vector3<f64> {
-        if self.in_frame[i] {
-            self.q * self.w[i] + self.sigma
-        } else {
-            self.w[i]
-        }
-    }
-
-    fn probe(&self, n: &Vector3<f64>, s: &Vector3<f64>, a: f64, limit: f64) -> Option<Probe> {
-        if a <= 0.0 || limit.is_nan() || limit <= 0.0 {
-            return None;
-        }
-        // the increment in the current tangent plane (s0 lies in the plane of
-        // the last commit: the difference has a normal part of order |s| |Δn|,
-        // which would otherwise act on the normal motion)
-        let mut ds = s - self.s0;
-        ds -= n * n.dot(&ds);
-        Some(Probe {
-            turn: rotation(&self.n0, n),
-            ds,
-            a2: a * a,
-            phi: self.slope(a, limit),
-        })
-    }
-
-    /// Whether the frame holds at the probe: no spring in it can have reached
-    /// its limit, and every one has its cell above in contact.
-    fn frame_holds(&self, p: &Probe) -> bool {
-        if self.sum_c == 0.0 {
-            return true;
-        }
-        let limits = (p.phi - self.phi_r).abs() * self.a_r_sq + p.phi * (p.a2 - self.a_r_sq).abs();
-        self.frame_top <= p.a2 && self.path + p.ds.norm() + limits <= self.budget
-    }
-
-    /// The returned-mapped displacement of node i at the probe.
-    fn trial(&self, i: usize, p: &Probe) -> Vector3<f64> {
-        let z = i as f64 * self.dz;
-        let base = self.committed(i);
-        let base = p.turn.map_or(base, |r| r * base);
-        // a spring the contact reached during the step entered unstrained where
-        // a² (linear along the path) passed its z: it carries the part of Δs
-        // after that point
-        let mut t = if z >= self.a0_sq && p.a2 > self.a0_sq {
-            base + p.ds * ((p.a2 - z) / (p.a2 - self.a0_sq))
-        } else {
-            base + p.ds
+    /// The planar bed and its probe at the state given, where it holds the state
+    /// and the increment stays on its line; hands the state to the node bed at
+    /// the first increment off the line. `Err(())` where there is no contact.
+    fn planar_probe(
+        &self,
+        n: &Vector3<f64>,
+        s: &Vector3<f64>,
+        a: f64,
+        limit: f64,
+    ) -> Result<Option<(&LineBed, super::line_bed::LineProbe)>, ()> {
+        let Some(line) = self.line.as_ref().filter(|_| self.planar.get()) else {
+            return Ok(None);
         };
-        let cap = p.phi * (p.a2 - z);
-        let size2 = t.norm_squared();
-        if size2 > cap * cap {
-            t *= cap / size2.sqrt();
+        if a <= 0.0 || limit.is_nan() || limit <= 0.0 {
+            return Err(());
         }
-        t
-    }
-
-    /// Calls `visit(i, w_i)` for every node in contact at the probe that the
-    /// frame does not carry (every node when `all`).
-    fn visit_outside<F: FnMut(usize, Vector3<f64>)>(&self, p: &Probe, all: bool, mut visit: F) {
-        let inside = (p.a2 / self.dz).ceil() as usize;
-        if all {
-            for i in 0..inside.min(self.w.len()) {
-                visit(i, self.trial(i, p));
+        match line.probe(n, s, a * a, self.slope(a, limit)) {
+            Some(p) => Ok(Some((line, p))),
+            None => {
+                self.nodes.borrow_mut().load(line);
+                self.planar.set(false);
+                Ok(None)
             }
-            return;
-        }
-        for &i in &self.explicit {
-            if (i as f64) * self.dz < p.a2 {
-                visit(i, self.trial(i, p));
-            }
-        }
-        // nodes the contact reached since the commit
-        let first_new = (self.a0_sq / self.dz).ceil() as usize;
-        for i in first_new..inside.min(self.w.len()) {
-            visit(i, self.trial(i, p));
         }
     }
 
     /// The force of the bed on body i (N) at the state given (not committed):
-    /// `−k' ∫₀^{a²} w z^{−1/2} dz`, exact for `w` linear in z between nodes and 0
-    /// at the edge.
+    /// `−k' ∫₀^{a²} w z^{−1/2} dz`.
     pub(super) fn force(
         &self,
         n: &Vector3<f64>,
@@ -348,129 +141,54 @@ impl MicroSlipBed {
         a: f64,
         limit: f64,
     ) -> Vector3<f64> {
-        let Some(p) = self.probe(n, s, a, limit) else {
-            return Vector3::zeros();
-        };
-        let holds = self.frame_holds(&p);
-        let mut sum = Vector3::zeros();
-        if holds && self.sum_c > 0.0 {
-            let frame = self.q * self.sum_u + self.sigma * self.sum_c;
-            sum += p.turn.map_or(frame, |r| r * frame) + p.ds * self.sum_c;
+        match self.planar_probe(n, s, a, limit) {
+            Err(()) => Vector3::zeros(),
+            Ok(Some((line, p))) => -LineBed::direction(&p) * (self.k_line * line.integral(&p)),
+            Ok(None) => self.nodes.borrow().force(n, s, a, limit),
         }
-        self.visit_outside(&p, !holds, |i, w| sum += w * self.weight(i, p.a2));
-        -sum * self.k_line
     }
 
     /// Commits the state at (n, s, a, limit): the return map becomes the bed's
-    /// displacements (the frame moves as a whole); springs out of contact are
-    /// unstrained. The frame is rebuilt when it no longer holds or half its
-    /// budget is spent.
+    /// state; springs out of contact are unstrained.
     pub(super) fn commit(&mut self, n: &Vector3<f64>, s: &Vector3<f64>, a: f64, limit: f64) {
-        // room for the contact to double its area within the next step
-        let needed = 2 * (a * a / self.dz).ceil() as usize + 8;
-        if needed > self.w.len() {
-            self.grow(needed);
-        }
-        let Some(p) = self.probe(n, s, a, limit) else {
-            // no contact (or no limit): every spring unstrained
-            self.reset(s, n, 0.0);
-            self.phi0 = 0.0;
-            return;
+        let probe = match self.planar_probe(n, s, a, limit) {
+            Err(()) => {
+                // no contact (or no limit): every spring unstrained
+                self.reset(s, n, 0.0);
+                return;
+            }
+            Ok(found) => found.map(|(_, p)| p),
         };
-        let holds = self.frame_holds(&p);
-        let mut updated = Vec::with_capacity(self.explicit.len() + 16);
-        self.visit_outside(&p, !holds, |i, w| updated.push((i, w)));
-        // the step's change, for the budget
-        let limits = (p.phi - self.phi0).abs() * self.a0_sq + p.phi * (p.a2 - self.a0_sq).abs();
-        let change = p.ds.norm() + limits;
-        // a frame that no longer holds is rebuilt from the springs just mapped
-        // (every one in contact, in order)
-        let fresh = if holds {
-            for &i in &self.explicit {
-                self.w[i] = Vector3::zeros();
-            }
-            self.explicit.clear();
-            for (i, w) in updated {
-                self.w[i] = w;
-                self.in_frame[i] = false;
-                self.explicit.push(i);
-            }
-            if let Some(r) = p.turn {
-                self.q = r * self.q;
-                self.sigma = r * self.sigma;
-            }
-            self.sigma += p.ds;
-            self.path += p.ds.norm();
-            None
-        } else {
-            Some(updated.into_iter().map(|(_, w)| w).collect())
-        };
-        self.s0 = *s;
-        self.n0 = *n;
-        self.a0_sq = p.a2;
-        self.phi0 = p.phi;
-        let spent = self.path
-            + (p.phi - self.phi_r).abs() * self.a_r_sq
-            + p.phi * (p.a2 - self.a_r_sq).abs();
-        let budget = FRAME_STEPS * change;
-        match fresh {
-            Some(actual) => self.rebuild(&p, budget, actual),
-            None if self.sum_c == 0.0 || 2.0 * spent > self.budget => {
-                let inside = ((p.a2 / self.dz).ceil() as usize).min(self.w.len());
-                let actual = (0..inside).map(|i| self.committed(i)).collect();
-                self.rebuild(&p, budget, actual);
-            }
-            None => {}
-        }
-    }
-
-    /// Sets the springs in contact to `actual` (from the centre outwards; the rest
-    /// unstrained) and puts every one whose slack exceeds `budget` (and whose cell
-    /// above is in contact) into a new frame.
-    fn rebuild(&mut self, p: &Probe, budget: f64, actual: Vec<Vector3<f64>>) {
-        self.unstrain();
-        self.budget = budget;
-        self.phi_r = p.phi;
-        self.a_r_sq = p.a2;
-        for (i, w) in actual.into_iter().enumerate() {
-            let z = i as f64 * self.dz;
-            self.w[i] = w;
-            let slack = p.phi * (p.a2 - z) - w.norm();
-            if budget > 0.0 && z + self.dz <= p.a2 && slack > budget {
-                self.in_frame[i] = true;
-                let c = self.full_weight(i);
-                self.sum_u += w * c;
-                self.sum_c += c;
-                self.frame_top = self.frame_top.max(z + self.dz);
-            } else {
-                self.explicit.push(i);
-            }
+        match (probe, self.line.as_mut()) {
+            (Some(p), Some(line)) => line.commit(&p, n, s),
+            _ => self.nodes.get_mut().commit(n, s, a, limit),
         }
     }
 
     /// The elastic energy stored in the committed bed (J):
-    /// `½ k' ∫ |w|² z^{−1/2} dz` (the nodal values of `|w|²` interpolated as `w`).
+    /// `½ k' ∫ |w|² z^{−1/2} dz` (exact for the planar bed; the nodal values of
+    /// `|w|²` interpolated as `w` for the node bed).
     pub(super) fn stored_energy(&self, a: f64) -> f64 {
-        let a2 = a * a;
-        let inside = ((a2 / self.dz).ceil() as usize).min(self.w.len());
-        let sum: f64 = (0..inside)
-            .map(|i| self.committed(i).norm_squared() * self.weight(i, a2))
-            .sum();
-        0.5 * self.k_line * sum
+        match self.line.as_ref().filter(|_| self.planar.get()) {
+            Some(line) => 0.5 * self.k_line * line.square_integral(a * a),
+            None => self.nodes.borrow().stored_energy(a),
+        }
     }
 }
 
 impl ObliqueImpact {
-    /// The spring bed of `mindlin_deresiewicz`, its grid scaled by the contact
-    /// radius at the overlap scale (the Hertz radius `√(R δ)` or the law's own,
-    /// whichever is larger); `None` for the other tangential models.
+    /// The spring bed of `mindlin_deresiewicz`: planar where the history allows
+    /// and `nodes` is `None`, its node grid (`nodes`, or [`MICRO_SLIP_NODES`])
+    /// scaled by the contact radius at the overlap scale (the Hertz radius
+    /// `√(R δ)` or the law's own, whichever is larger); `None` for the other
+    /// tangential models.
     pub(super) fn micro_slip_bed(
         &self,
         law: &dyn ForceLaw,
         r_eff: f64,
         length: f64,
         v_n: f64,
-        nodes: usize,
+        nodes: Option<usize>,
     ) -> Option<RefCell<MicroSlipBed>> {
         let f = self.friction.as_ref()?;
         if f.tangential.model != TangentialModel::MindlinDeresiewicz {
@@ -486,7 +204,8 @@ impl ObliqueImpact {
         Some(RefCell::new(MicroSlipBed::new(
             f.tangential.stiffness,
             a_ref,
-            nodes,
+            nodes.unwrap_or(MICRO_SLIP_NODES),
+            nodes.is_none(),
         )))
     }
 }

@@ -85,11 +85,15 @@
 //! (`crates/tabor-scene/tests/oblique.rs`).
 
 mod bed;
+#[cfg(test)]
+mod bed_tests;
 mod bodies;
 mod elements;
 mod energy;
 mod limits;
+mod line_bed;
 mod modes;
+mod node_bed;
 mod normal;
 mod outcome;
 mod simulate;

@@ -2,7 +2,6 @@
 //! after segment from first touch to separation (or sticking), each ended by an
 //! event ([`Event`]), with the constants of its regularizations.
 
-use super::bed::MICRO_SLIP_NODES;
 use super::bodies::ObliqueImpact;
 use super::elements::*;
 use super::limits::*;
@@ -55,9 +54,10 @@ impl ObliqueImpact {
     /// state), to the accuracy of `settings` (tolerances in normalized units: the
     /// law's overlap scale, the impact speed, the normal force scale).
     ///
-    /// `mindlin_deresiewicz` uses a spring bed of [`MICRO_SLIP_NODES`] nodes per
-    /// squared contact-radius scale ([`ObliqueImpact::simulate_with_nodes`] sets
-    /// another count).
+    /// `mindlin_deresiewicz` keeps a planar history's spring bed exactly (its
+    /// breakpoints), any other on [`MICRO_SLIP_NODES`](super::MICRO_SLIP_NODES) nodes per squared
+    /// contact-radius scale ([`ObliqueImpact::simulate_with_nodes`] takes the
+    /// nodes throughout, at a count given).
     pub fn simulate(
         &self,
         law: &mut dyn ForceLaw,
@@ -65,13 +65,13 @@ impl ObliqueImpact {
         angle: f64,
         settings: &SimulationSettings,
     ) -> Result<ObliqueOutcome> {
-        self.simulate_with_nodes(law, speed, angle, settings, MICRO_SLIP_NODES)
+        self.run(law, speed, angle, settings, None)
     }
 
-    /// [`ObliqueImpact::simulate`] with the node count of `mindlin_deresiewicz`'s
-    /// spring bed given (≥ 16; ignored by the other tangential models): the error
-    /// of the micro-slip falls as `1/nodes²` (the crate README gives the measured
-    /// constant), so two counts show it.
+    /// [`ObliqueImpact::simulate`] with `mindlin_deresiewicz`'s spring bed on
+    /// nodes throughout, at the count given (≥ 16; ignored by the other
+    /// tangential models): the error of the nodes falls as `1/nodes²` (the crate
+    /// README gives the measured constant), so two counts show it.
     pub fn simulate_with_nodes(
         &self,
         law: &mut dyn ForceLaw,
@@ -87,6 +87,19 @@ impl ObliqueImpact {
                 "the micro-slip spring bed needs at least 16 nodes",
             ));
         }
+        self.run(law, speed, angle, settings, Some(nodes))
+    }
+
+    /// The simulation, with the node count of the spring bed (`None`: planar
+    /// where the history allows).
+    fn run(
+        &self,
+        law: &mut dyn ForceLaw,
+        speed: f64,
+        angle: f64,
+        settings: &SimulationSettings,
+        nodes: Option<usize>,
+    ) -> Result<ObliqueOutcome> {
         let v = validate::positive("speed", speed)?;
         let alpha_deg = validate::finite("angle", angle)?;
         if !(0.0..90.0).contains(&alpha_deg) {
@@ -117,7 +130,7 @@ impl ObliqueImpact {
             }
         }
         if this != *self {
-            return this.simulate_with_nodes(law, speed, angle, settings, nodes);
+            return this.run(law, speed, angle, settings, nodes);
         }
         validate::non_negative("pull_off_force", self.normal.pull_off_force)?;
         validate::non_negative("damping", self.normal.damping)?;
