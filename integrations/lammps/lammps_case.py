@@ -44,6 +44,10 @@ E_STAR = E / (2 * (1 - NU * NU))   # 1/E* = 2 (1 - nu^2)/E
 MASS = RHO * 4 / 3 * math.pi * R ** 3
 MU, K_ROLL, MU_ROLL = 0.3, 50.0, 0.1   # sliding, rolling stiffness and coefficient
 FRICTION = f"tangential mindlin NULL 0 {MU} rolling sds {K_ROLL} 0 {MU_ROLL} twisting marshall"
+# the two spheres as collide.collide_oblique takes them, and as a scene's TOML
+SILICA_BODIES = {"sphere_radius": R, "sphere_density": RHO, "target_radius": R, "target_density": RHO}
+SILICA_TOML = "".join(f"[{body}]\nradius = {R}\ndensity = {RHO}\nyoungs_modulus = {E}\npoisson_ratio = {NU}\n"
+                      for body in ("sphere", "target"))
 
 
 def lmp_new():
@@ -137,6 +141,17 @@ def tabor_restitution(path, speed):
     """tabor's restitution of the scene file at `speed`: 0 when it sticks."""
     o = tabor_impact(path, speed)
     return 0.0 if o["sticks"] else o["restitution"]
+
+
+def export_plugin(path, *extra):
+    """The text of `tabor export lammps PATH --plugin PLUGIN [EXTRA...]`."""
+    return subprocess.run([__getattr__("TABOR"), "export", "lammps", path, "--plugin", __getattr__("PLUGIN"), *extra],
+                          check=True, capture_output=True, text=True).stdout
+
+
+def commands(fragment):
+    """The command lines of a fragment's text (blank lines and comments dropped)."""
+    return [line for line in fragment.splitlines() if line.strip() and not line.startswith("#")]
 
 
 def report(failures, passed):

@@ -23,25 +23,19 @@ Lambda = d_n(R*)/h, d_n = (9 pi w R*^2 / (8 E*))^(2/3) / (3 R*) (seed 000 sectio
 Needs TABOR, TABOR_PLUGIN, TABOR_FFI_LIB, LAMMPS_VENV (test_plugin.sh sets them).
 """
 
-import json
 import math
 import os
 import subprocess
 import sys
 import tempfile
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from lammps import lammps  # noqa: E402
+from lammps_case import (E, E_STAR, FFI, NU, PLUGIN, RHO, ROOT, TABOR, W, hertz_contact_time,  # noqa: E402
+                         lmp_new, report, tabor_impact, tabor_json)
 from tabor_ffi import law_info  # noqa: E402
 
-TABOR = os.environ["TABOR"]
-PLUGIN = os.environ["TABOR_PLUGIN"]
-FFI = os.environ["TABOR_FFI_LIB"]
-
-E, NU, RHO, W = 54e9, 0.17, 2650.0, 0.05
-E_STAR = E / (2.0 * (1.0 - NU * NU))
+# silica (lammps_case's E, NU, RHO, W); the radii are this test's own
 FLOOR = 2e-4
 SAME_FORM_TOL = 1e-5
 
@@ -74,17 +68,8 @@ def scene(r1, r2, extra):
     return f.name
 
 
-def tabor(path, speed):
-    out = subprocess.run([TABOR, "impact", path, "--speed", repr(speed), "--json"],
-                         check=True, capture_output=True, text=True).stdout
-    o = json.loads(out)
-    return o
-
-
 def sticking_speed(path):
-    out = subprocess.run([TABOR, "impact", path, "--json"], check=True, capture_output=True,
-                         text=True).stdout
-    return json.loads(out)["sticking_velocity"]
+    return tabor_json(["impact", path])["sticking_velocity"]
 
 
 def contact_time(r1, r2, speed):
@@ -92,7 +77,7 @@ def contact_time(r1, r2, speed):
     r_star = r1 * r2 / (r1 + r2)
     m1, m2 = RHO * 4.0 / 3.0 * math.pi * r1 ** 3, RHO * 4.0 / 3.0 * math.pi * r2 ** 3
     m_star = m1 * m2 / (m1 + m2)
-    return 2.87 * (m_star ** 2 / (r_star * E_STAR ** 2 * speed)) ** 0.2
+    return hertz_contact_time(m_star, r_star, E_STAR, speed)
 
 
 def rebound(lmp, velocity, reach, speed, tc, steps, gap0, max_contact_times):
@@ -121,7 +106,7 @@ def run(coeff, r1, r2, speed, steps, max_contact_times=20, h=H):
     dt = tc / steps
     gap0 = reach + 20 * speed * dt
     m1, m2 = r1 ** 3, r2 ** 3
-    lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    lmp = lmp_new()
     try:
         span = 40.0 * (r1 + r2)
         for c in ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
@@ -157,7 +142,7 @@ def collisions():
         try:
             v_stick = sticking_speed(path)
             for v in (0.5 * v_stick, 2.0 * v_stick, 6.0 * v_stick):
-                o = tabor(path, v)
+                o = tabor_impact(path, v)
                 e_t = 0.0 if o["sticks"] else o["restitution"]
                 lam_t = o.get("tabor_parameter")
                 fine = run(coeff, r1, r2, v, 10000)
@@ -185,7 +170,7 @@ def collisions():
     path = scene(r1, r2, f"range = {H!r}")
     try:
         v = 2.0 * sticking_speed(path)
-        o = tabor(path, v)
+        o = tabor_impact(path, v)
     finally:
         os.unlink(path)
     wrong = run(f"pair_coeff * * maugis {E_STAR!r} {W!r} {lambdas[1]!r}", r1, r2, v, 10000)
@@ -202,7 +187,7 @@ def collisions():
 
 def pair_coeff_error(coeff):
     """The error LAMMPS raises for `coeff`, or None when it is accepted."""
-    lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    lmp = lmp_new()
     try:
         for c in ["units si", "atom_style sphere", "region box block -1 1 -1 1 -1 1",
                   "create_box 1 box", f"plugin load {PLUGIN}", "pair_style tabor"]:
@@ -264,8 +249,7 @@ def exported():
     1 um spheres and for spheres 10x larger (Lambda 0.30 and 0.65), against
     `tabor impact` of the scene with those radii, same tolerance as above."""
     failures = []
-    root = os.path.dirname(os.path.dirname(HERE))
-    path = os.path.join(root, "examples/scenes/silica_maugis.toml")
+    path = os.path.join(ROOT, "examples/scenes/silica_maugis.toml")
     frag = subprocess.run([TABOR, "export", "lammps", path, "--plugin", PLUGIN, "--per-contact-lambda"],
                           check=True, capture_output=True, text=True).stdout
     coeff = next(line for line in frag.splitlines() if line.startswith("pair_coeff"))
@@ -275,7 +259,7 @@ def exported():
         spath = scene(r, r, f"range = {h!r}")
         try:
             v = 3.0 * sticking_speed(spath)
-            o = tabor(spath, v)
+            o = tabor_impact(spath, v)
         finally:
             os.unlink(spath)
         fine = run(coeff, r, r, v, 10000, h=h)
@@ -294,10 +278,10 @@ def run_wall(model, r, speed, steps, max_contact_times=20):
     reach of the law at its own Lambda; the restitution (0: stuck)."""
     reach = law_info(FFI, "maugis", E_STAR, r, W, depth_scale(r) / H).interaction_range
     m_flat = RHO * 4.0 / 3.0 * math.pi * r ** 3
-    tc = 2.87 * (m_flat ** 2 / (r * E_STAR ** 2 * speed)) ** 0.2
+    tc = hertz_contact_time(m_flat, r, E_STAR, speed)
     dt = tc / steps
     gap0 = reach + 20 * speed * dt
-    lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    lmp = lmp_new()
     try:
         span = 40.0 * r
         for c in ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
@@ -328,7 +312,7 @@ def wall():
         try:
             v_stick = sticking_speed(path)
             for v in (0.5 * v_stick, 2.0 * v_stick):
-                o = tabor(path, v)
+                o = tabor_impact(path, v)
                 e_t = 0.0 if o["sticks"] else o["restitution"]
                 fine = run_wall(model, r, v, 10000)
                 coarse = run_wall(model, r, v, 5000)
@@ -352,11 +336,8 @@ def main():
     print("bad input:")
     failures += bad_input()
     failures += stress_is_range()
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        sys.exit(1)
-    print("per-contact Lambda: all passed")
+    return report(failures, "per-contact Lambda: all passed")
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())
