@@ -45,7 +45,12 @@ MASS = RHO * 4 / 3 * math.pi * R ** 3
 MU, K_ROLL, MU_ROLL = 0.3, 50.0, 0.1   # sliding, rolling stiffness and coefficient
 FRICTION = f"tangential mindlin NULL 0 {MU} rolling sds {K_ROLL} 0 {MU_ROLL} twisting marshall"
 # the two spheres as collide.collide_oblique takes them, and as a scene's TOML
-SILICA_BODIES = {"sphere_radius": R, "sphere_density": RHO, "target_radius": R, "target_density": RHO}
+def equal_spheres(r, rho):
+    """Two spheres of radius r and density rho, as collide.collide_oblique takes them."""
+    return {"sphere_radius": r, "sphere_density": rho, "target_radius": r, "target_density": rho}
+
+
+SILICA_BODIES = equal_spheres(R, RHO)
 SILICA_TOML = "".join(f"[{body}]\nradius = {R}\ndensity = {RHO}\nyoungs_modulus = {E}\npoisson_ratio = {NU}\n"
                       for body in ("sphere", "target"))
 
@@ -72,6 +77,30 @@ def run_lmp(lines, tmp, tag, ranks=1):
                     "-screen", "none", "-nocite"], check=True, cwd=tmp)
     with open(log) as f:
         return f.read()
+
+
+def lmp_output(lines, ranks=1, cwd=None, timeout=120):
+    """Runs `lines` in the wheel's lmp binary (VENV/bin/lmp; through mpirun -np ranks
+    for ranks > 1), the input a temporary file in `cwd`, log none, at most `timeout`
+    seconds; returns (exit status, stdout + stderr)."""
+    venv = __getattr__("VENV")
+    with tempfile.NamedTemporaryFile("w", suffix=".in", delete=False, dir=cwd) as f:
+        f.write("\n".join(lines) + "\n")
+        path = f.name
+    try:
+        cmd = [os.path.join(venv, "bin", "lmp"), "-in", path, "-log", "none", "-nocite"]
+        if ranks > 1:
+            cmd = [os.path.join(venv, "bin", "mpirun"), "-np", str(ranks)] + cmd
+        r = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, cwd=cwd)
+        return r.returncode, r.stdout + r.stderr
+    finally:
+        os.unlink(path)
+
+
+def error_line(out):
+    """The first line of `out` that starts with ERROR, or None."""
+    lines = [line for line in out.splitlines() if line.startswith("ERROR")]
+    return lines[0] if lines else None
 
 
 def read_dump(path):
