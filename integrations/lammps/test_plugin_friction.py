@@ -48,8 +48,8 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from collide import collide_oblique  # noqa: E402
-from lammps_case import (E, E_STAR, FFI, K_ROLL, MASS, MU, MU_ROLL, NU, PLUGIN, R, RHO, SILICA_BODIES,  # noqa: E402
-                         W, equal_spheres, force_scale, hertz_contact_time, hertz_overlap, report)
+from lammps_case import (E, E_STAR, FFI, K_ROLL, M_STAR, MASS, MU, MU_ROLL, NU, PLUGIN, R, R_STAR, RHO,  # noqa: E402
+                         SILICA_BODIES, W, equal_spheres, force_scale, hertz_contact_time, hertz_overlap, report)
 from tabor_ffi import law_info  # noqa: E402
 
 LIBRARY = os.environ["OBLIQUE_LIBRARY"]
@@ -57,9 +57,7 @@ STEPS_PER_CONTACT = 5000
 EVENTS = 2
 SAME_SCHEME = 1e-9
 
-# two silica spheres (lammps_case's R, RHO, E, NU, W, MU, K_ROLL, MU_ROLL)
-R_STAR = R / 2
-M_STAR = MASS / 2
+# two silica spheres (lammps_case's R, RHO, E, NU, W, MU, K_ROLL, MU_ROLL, R_STAR, M_STAR)
 INERTIA = 0.4 * MASS * R * R
 
 

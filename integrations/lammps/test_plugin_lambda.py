@@ -27,12 +27,11 @@ import math
 import os
 import subprocess
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from lammps_case import (E, E_STAR, FFI, NU, PLUGIN, RHO, ROOT, TABOR, W, hertz_contact_time,  # noqa: E402
-                         lmp_new, report, tabor_impact, tabor_json)
+                         lmp_new, report, tabor_impact, tabor_json, write_temp)
 from tabor_ffi import law_info  # noqa: E402
 
 # silica (lammps_case's E, NU, RHO, W); the radii are this test's own
@@ -62,10 +61,7 @@ def scene(r1, r2, extra):
              f"radius = {r2!r}", f"density = {RHO!r}", f"youngs_modulus = {E!r}",
              f"poisson_ratio = {NU!r}", "[adhesion]", f"work_of_adhesion = {W!r}", extra,
              "[impact]", "speed = 1.0"]
-    f = tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False)
-    f.write("\n".join(lines) + "\n")
-    f.close()
-    return f.name
+    return write_temp("\n".join(lines) + "\n", ".toml")
 
 
 def sticking_speed(path):

@@ -27,10 +27,10 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-from lammps_case import PLUGIN, error_line, lmp_output, report  # noqa: E402
+import lammps_case  # noqa: E402
+from lammps_case import FIELDS, PLUGIN, error_line, lmp_output, report  # noqa: E402
 from test_plugin_lifecycle import HEAD, R, TAIL, ubuf  # noqa: E402
 
-FIELDS = 16    # the doubles of atom_style sphere's own part of a per-atom restart buffer
 FRICTION = "poisson 0.17 tangential mindlin NULL 0.5 0.3 rolling sds 50 0 0.1 twisting marshall"
 PAIR = TAIL[:2] + [TAIL[2] + " " + FRICTION] + TAIL[3:]
 # three grains: 1 and 2 stuck and sliding, 3 pressed against 2 and spinning
@@ -46,18 +46,9 @@ def forces(out):
 
 
 def atom_buffers(data):
-    """[offset of each atom buffer] of the per-atom section: the buffers [m, 16
-    fields, fix records], walked by their lengths from the first radius R (field
-    11); the int before the first holds the section's count of doubles."""
-    first = data.find(struct.pack("<d", R)) - 11 * 8
-    at, starts = first, []
-    while at + 8 <= len(data):
-        m = struct.unpack_from("<d", data, at)[0]
-        if not (FIELDS <= m < 1e5 and m == int(m)):
-            break
-        starts.append(at)
-        at += 8 * int(m)
-    return starts, at
+    """lammps_case.atom_buffers of this file's grains (radius R, buffers under 1e5
+    doubles); the int before the first buffer holds the section's count of doubles."""
+    return lammps_case.atom_buffers(data, R, 1e5)
 
 
 def without_stamps(data):

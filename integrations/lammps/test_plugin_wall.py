@@ -61,7 +61,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from lammps_case import (E, E_STAR, FFI, FRICTION, K_ROLL, MASS, MU, MU_ROLL, NU, PLUGIN, R, RHO, SCENES,  # noqa: E402
                          TABOR, VENV, W, force_scale, hertz_contact_time, hertz_overlap, lmp_exe, lmp_new,
-                         load_scene, read_dump, report, run_lmp, tabor_json, write_toml)
+                         load_scene, read_dump, report, run_lmp, tabor_json, write_temp, write_toml)
 from tabor_ffi import law_info  # noqa: E402
 
 STEPS = 5000            # steps per Hertz contact time
@@ -177,9 +177,7 @@ def exported_fragment():
     o = tabor_json(["impact", path, "--speed", repr(v)])
     info = law_info(FFI, "maugis", E_STAR, R, W, 0.55)
     dt = contact_time(v) / STEPS
-    with tempfile.NamedTemporaryFile("w", suffix=".lmp", delete=False) as f:
-        f.write(frag)
-        inc = f.name
+    inc = write_temp(frag, ".lmp")
     try:
         vel, _, sep = wall_collide([f"include {inc}"], v, dt, info.interaction_range)
     finally:
