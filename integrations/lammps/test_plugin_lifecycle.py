@@ -92,8 +92,8 @@ def restart(failures):
         # overlap 1 nm at rest: the JKR contact forms and stays (adhesion)
         gap = R - 0.5e-9
         status, out = lmp_output(HEAD + [f"create_atoms 1 single {-gap} 0 0", f"create_atoms 1 single {gap} 0 0",
-                                  f"set atom 1*2 diameter {2 * R} density 2650"] + TAIL
-                          + ["run 20", f"write_restart {file}"])
+                                         f"set atom 1*2 diameter {2 * R} density 2650"] + TAIL
+                                 + ["run 20", f"write_restart {file}"])
         if status != 0:
             failures.append(f"restart: writing failed: {error_line(out)}")
             return
@@ -140,9 +140,9 @@ def wall_restart(failures):
     with tempfile.TemporaryDirectory() as tmp:
         file = os.path.join(tmp, "wall.restart")
         status, out = lmp_output(HEAD + [f"create_atoms 1 single 0 0 {R - 0.5e-9}",
-                                  f"set atom 1 diameter {2 * R} density 2650", f"plugin load {PLUGIN}", wall,
-                                  "fix integrate all nve/sphere", "timestep 1e-10", "run 20",
-                                  f"write_restart {file}"])
+                                         f"set atom 1 diameter {2 * R} density 2650", f"plugin load {PLUGIN}", wall,
+                                         "fix integrate all nve/sphere", "timestep 1e-10", "run 20",
+                                         f"write_restart {file}"])
         if status != 0:
             failures.append(f"wall restart: writing failed: {error_line(out)}")
             return
@@ -179,6 +179,16 @@ def force_on_1(lines):
     return (float(values[-1]) if values else None), status, out
 
 
+def survivor_restart(stuck, ranks=1):
+    """`stuck` (a stuck pair, atoms 1 and 2), atom 2 deleted, a `run 0`, then
+    write_restart: (exit status, the restart file's bytes, empty on failure)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        file = os.path.join(tmp, "survivor.restart")
+        status, _ = lmp_output(stuck + ["group gone id 2", "delete_atoms group gone", "run 0", f"write_restart {file}"],
+                               ranks)
+        return status, (open(file, "rb").read() if status == 0 else b"")
+
+
 def recycled_ids(failures):
     """delete_atoms a grain stuck to another, create_atoms a new one (it gets the
     same ID, 2) 1.5 nm away: the new pair starts clean (force 0, as the same
@@ -201,16 +211,13 @@ def recycled_ids(failures):
         failures.append(f"recycled ID: the stuck pair has no force ({before})")
     elif recycled != 0.0 or fresh != 0.0:
         failures.append(f"recycled ID: force {recycled} N on the new pair, {fresh} N fresh (both must be 0)")
-    with tempfile.TemporaryDirectory() as tmp:
-        file = os.path.join(tmp, "survivor.restart")
-        status, out = lmp_output(stuck + ["group gone id 2", "delete_atoms group gone", "run 0", f"write_restart {file}"])
-        data = open(file, "rb").read() if status == 0 else b""
-        empty = struct.pack("<dddd", 4.0, -1.0, 0.0, 0.0)
-        stale = struct.pack("<dddd", 16.0, -1.0, 1.0, 0.0) + ubuf(2)
-        print(f"  survivor's record after delete_atoms: {'empty' if empty in data else 'not empty'}"
-              f"{', stale contact with atom 2' if stale in data else ''}")
-        if status != 0 or empty not in data or stale in data:
-            failures.append(f"recycled ID: the survivor keeps a record of the deleted atom (exit {status})")
+    status, data = survivor_restart(stuck)
+    empty = struct.pack("<dddd", 4.0, -1.0, 0.0, 0.0)
+    stale = struct.pack("<dddd", 16.0, -1.0, 1.0, 0.0) + ubuf(2)
+    print(f"  survivor's record after delete_atoms: {'empty' if empty in data else 'not empty'}"
+          f"{', stale contact with atom 2' if stale in data else ''}")
+    if status != 0 or empty not in data or stale in data:
+        failures.append(f"recycled ID: the survivor keeps a record of the deleted atom (exit {status})")
 
 
 def main():

@@ -29,7 +29,7 @@ sys.path.insert(0, HERE)
 
 import lammps_case  # noqa: E402
 from lammps_case import FIELDS, PLUGIN, error_line, lmp_output, report  # noqa: E402
-from test_plugin_lifecycle import HEAD, R, TAIL, ubuf  # noqa: E402
+from test_plugin_lifecycle import HEAD, R, TAIL, survivor_restart, ubuf  # noqa: E402
 
 FRICTION = "poisson 0.17 tangential mindlin NULL 0.5 0.3 rolling sds 50 0 0.1 twisting marshall"
 PAIR = TAIL[:2] + [TAIL[2] + " " + FRICTION] + TAIL[3:]
@@ -150,15 +150,11 @@ def recycled_two_ranks(failures):
         failures.append(f"recycled ID on 2 ranks: force {after[-1]} N on the new pair (must be 0)")
     elif not owned or "1 ave           1 max           1 min" not in owned[0]:
         failures.append(f"recycled ID on 2 ranks: the grains are not one per rank ({owned[:1]})")
-    with tempfile.TemporaryDirectory() as tmp:
-        file = os.path.join(tmp, "survivor.restart")
-        status, out = lmp_output(stuck + ["group gone id 2", "delete_atoms group gone", "run 0", f"write_restart {file}"],
-                          ranks=2)
-        data = open(file, "rb").read() if status == 0 else b""
-        empty = struct.pack("<dddd", 4.0, -1.0, 0.0, 0.0)
-        print(f"  2 ranks: survivor's record after delete_atoms: {'empty' if empty in data else 'not empty'}")
-        if status != 0 or empty not in data:
-            failures.append(f"recycled ID on 2 ranks: the survivor keeps a record of the deleted atom (exit {status})")
+    status, data = survivor_restart(stuck, ranks=2)
+    empty = struct.pack("<dddd", 4.0, -1.0, 0.0, 0.0)
+    print(f"  2 ranks: survivor's record after delete_atoms: {'empty' if empty in data else 'not empty'}")
+    if status != 0 or empty not in data:
+        failures.append(f"recycled ID on 2 ranks: the survivor keeps a record of the deleted atom (exit {status})")
 
 
 def main():
