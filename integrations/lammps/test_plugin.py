@@ -29,6 +29,7 @@ import tomllib
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
+from collide import rebound  # noqa: E402
 from lammps_case import (FFI, PLUGIN, ROOT, TABOR, VENV, load_scene, lmp_exe, lmp_new, report,  # noqa: E402
                          tabor_restitution, write_toml)
 from tabor_ffi import law_info  # noqa: E402
@@ -104,13 +105,7 @@ def collide(scene, speed, fragment=None):
             "variable fx2 equal fx[2]", "fix fv all vector 1 v_fx2",
             "variable fmin equal min(f_fv)",
         ])
-        lmp.command(f"run {int(math.ceil(gap0 / speed / dt)) + 1}")
-        e = 0.0
-        for _ in range(200):
-            lmp.command(f"run {STEPS_PER_CONTACT}")
-            if lmp.extract_variable("gap") > rng * 1.001 + 1e-3 * speed * tc and lmp.extract_variable("vrel") > 0:
-                e = lmp.extract_variable("vrel") / speed
-                break
+        e, _ = rebound(lmp, gap0, speed, tc, STEPS_PER_CONTACT, rng, 200)
         # fmin: the tensile force on atom 2 (pulled towards -x) is negative
         return e, lmp.extract_variable("fmin"), info
     finally:

@@ -30,6 +30,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
+from collide import rebound  # noqa: E402
 from lammps_case import (E, E_STAR, FFI, NU, PLUGIN, RHO, ROOT, TABOR, W, hertz_contact_time,  # noqa: E402
                          lmp_new, report, tabor_impact, tabor_json, write_temp)
 from tabor_ffi import law_info  # noqa: E402
@@ -76,20 +77,6 @@ def contact_time(r1, r2, speed):
     return hertz_contact_time(m_star, r_star, E_STAR, speed)
 
 
-def rebound(lmp, velocity, reach, speed, tc, steps, gap0, max_contact_times):
-    """Runs a set-up collision (LAMMPS variables `gap` and `velocity`, the
-    separating speed) across the starting gap `gap0`, then contact time by contact
-    time until the bodies are beyond `reach` and separating: the restitution, or 0
-    when they are still together after `max_contact_times` contact times."""
-    dt = tc / steps
-    lmp.command(f"run {int(math.ceil(gap0 / speed / dt)) + 1}")
-    for _ in range(max_contact_times):
-        lmp.command(f"run {steps}")
-        if lmp.extract_variable("gap") > reach * 1.001 + 1e-3 * speed * tc and lmp.extract_variable(velocity) > 0:
-            return lmp.extract_variable(velocity) / speed
-    return 0.0
-
-
 def run(coeff, r1, r2, speed, steps, max_contact_times=20, h=H):
     """One central collision of spheres r1, r2 (centre-of-mass frame) under
     `coeff`, at dt = t_c/steps; the spheres start a whole number of steps outside
@@ -118,7 +105,7 @@ def run(coeff, r1, r2, speed, steps, max_contact_times=20, h=H):
                   "fix integrate all nve/sphere", f"timestep {dt}",
                   "variable vrel equal vx[2]-vx[1]", f"variable gap equal x[2]-x[1]-{r1 + r2}"]:
             lmp.command(c)
-        return rebound(lmp, "vrel", reach, speed, tc, steps, gap0, max_contact_times)
+        return rebound(lmp, gap0, speed, tc, steps, reach, max_contact_times)[0]
     finally:
         lmp.close()
 
@@ -287,7 +274,7 @@ def run_wall(model, r, speed, steps, max_contact_times=20):
                   f"fix wall all wall/tabor {model} zplane 0.0 NULL", "fix integrate all nve/sphere",
                   f"timestep {dt}", f"variable gap equal z[1]-{r}", "variable vz equal vz[1]"]:
             lmp.command(c)
-        return rebound(lmp, "vz", reach, speed, tc, steps, gap0, max_contact_times)
+        return rebound(lmp, gap0, speed, tc, steps, reach, max_contact_times, velocity="vz")[0]
     finally:
         lmp.close()
 
