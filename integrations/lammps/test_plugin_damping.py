@@ -30,8 +30,8 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from collide import collide_oblique  # noqa: E402
-from lammps_case import (E, E_STAR, FFI, M_STAR, NU, PLUGIN, R, R_STAR, SILICA_BODIES, SILICA_TOML, W,  # noqa: E402
-                         commands, export_plugin, force_scale, hertz_contact_time, report, tabor_impact,
+from lammps_case import (E, E_STAR, FFI, M_STAR, NU, R, R_STAR, SILICA_BODIES, SILICA_TOML, W,  # noqa: E402
+                         commands, export_plugin, force_scale, hertz_contact_time, pair_tabor, report, tabor_impact,
                          write_temp)
 from tabor_ffi import law_info  # noqa: E402
 
@@ -63,7 +63,7 @@ def central(lines, v, reach, contact_times=12):
 
 
 def plugin(coeff):
-    return [f'plugin load "{PLUGIN}"', "pair_style tabor", f"pair_coeff * * {coeff}"]
+    return pair_tabor(f"pair_coeff * * {coeff}")
 
 
 def without_adhesion():

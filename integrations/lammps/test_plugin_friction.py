@@ -48,8 +48,9 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from collide import collide_oblique  # noqa: E402
-from lammps_case import (E, E_STAR, FFI, K_ROLL, M_STAR, MASS, MU, MU_ROLL, NU, PLUGIN, R, R_STAR, RHO,  # noqa: E402
-                         SILICA_BODIES, W, equal_spheres, force_scale, hertz_contact_time, hertz_overlap, report)
+from lammps_case import (E, E_STAR, FFI, K_ROLL, M_STAR, MASS, MU, MU_ROLL, NU, R, R_STAR, RHO,  # noqa: E402
+                         SILICA_BODIES, W, equal_spheres, force_scale, hertz_contact_time, hertz_overlap, pair_tabor,
+                         report)
 from tabor_ffi import law_info  # noqa: E402
 
 LIBRARY = os.environ["OBLIQUE_LIBRARY"]
@@ -105,7 +106,7 @@ def collide(coeff_cmds, v, angle, spin=0.0, newton="on", reach=None, contact_tim
 
 
 def plugin(friction, model=f"jkr/load-controlled {E_STAR!r} {W}"):
-    return [f"plugin load \"{PLUGIN}\"", "pair_style tabor", tabor_coeff(friction, model)]
+    return pair_tabor(tabor_coeff(friction, model))
 
 
 def granular(friction):
@@ -238,8 +239,7 @@ def micro_slip_against_library():
         tol_w = EVENTS * dt * mu * r * f_scale / inertia
         a = math.degrees(math.atan(psi * mu / kappa(nu)))
         normal = f"jkr/load-controlled {e_star!r} {w}" if model == "jkr" else f"hertz {e_star!r}"
-        coeff = [f"plugin load \"{PLUGIN}\"", "pair_style tabor",
-                 f"pair_coeff * * {normal} poisson {nu} tangential mindlin_deresiewicz NULL 0 {mu}"]
+        coeff = pair_tabor(f"pair_coeff * * {normal} poisson {nu} tangential mindlin_deresiewicz NULL 0 {mu}")
         bodies = equal_spheres(r, rho)
         reach = REACH if model == "jkr" else 1e-3 * r
         o = collide_oblique(coeff, bodies, v, a, dt, reach, 12 * STEPS_PER_CONTACT)
@@ -292,8 +292,7 @@ def micro_slip_same_form():
         approach = 20 + math.ceil(reach / max(math.cos(math.radians(a)), 0.05) / (v * dt))
         steps = approach + 12 * STEPS_PER_CONTACT
         normal = f"jkr/load-controlled {e_star!r} {w}" if model == "jkr" else f"hertz {e_star!r}"
-        lines = [f'plugin load "{PLUGIN}"', "pair_style tabor",
-                 f"pair_coeff * * {normal} poisson {nu} tangential mindlin_deresiewicz NULL 0 {mu}"]
+        lines = pair_tabor(f"pair_coeff * * {normal} poisson {nu} tangential mindlin_deresiewicz NULL 0 {mu}")
         bodies = equal_spheres(r, rho)
         o = collide_oblique(lines, bodies, v, a, dt, reach, 12 * STEPS_PER_CONTACT)
         p = (o["sphere"]["velocity"][0] - o["target"]["velocity"][0],
@@ -328,9 +327,8 @@ def micro_slip_newton():
     one x_gamma multiplies) and an initial spin: newton on and off give identical
     collisions (the plugin keeps each history on both atoms)."""
     failures = []
-    lines = [f'plugin load "{PLUGIN}"', "pair_style tabor",
-             f"pair_coeff * * jkr/load-controlled {E_STAR!r} {W} poisson {NU} damping coeff_restitution 0.7 "
-             f"tangential mindlin_deresiewicz NULL 0.5 {MU}"]
+    lines = pair_tabor(f"pair_coeff * * jkr/load-controlled {E_STAR!r} {W} poisson {NU} damping coeff_restitution 0.7 "
+                       f"tangential mindlin_deresiewicz NULL 0.5 {MU}")
     for a in (10, 40):
         on = collide(lines, 0.5, a, 2e4)
         off = collide(lines, 0.5, a, 2e4, newton="off")

@@ -36,7 +36,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from collide import collide_oblique  # noqa: E402
-from lammps_case import FFI, PLUGIN, error_line, hertz_contact_time, lmp_new, lmp_output, report  # noqa: E402
+from lammps_case import FFI, PLUGIN, error_line, hertz_contact_time, lmp_new, lmp_output, pair_tabor, report  # noqa: E402
 from tabor_ffi import law_info  # noqa: E402
 import test_plugin_wall as wall  # noqa: E402
 
@@ -138,7 +138,7 @@ CASES = [(0.3, 30, 0.0), (0.6, 60, 2e4)]   # (speed m/s, angle deg, spin rad/s)
 
 
 def tabor(lines):
-    return [f"plugin load \"{PLUGIN}\"", "pair_style tabor", *lines]
+    return pair_tabor(*lines)
 
 
 def granular(lines):

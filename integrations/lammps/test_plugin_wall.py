@@ -60,7 +60,7 @@ import tempfile
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from lammps_case import (E, E_STAR, FFI, FRICTION, K_ROLL, MASS, MU, MU_ROLL, NU, PLUGIN, R, RHO, SCENES,  # noqa: E402
-                         TABOR, VENV, W, force_scale, hertz_contact_time, hertz_overlap, lmp_exe, lmp_new,
+                         TABOR, VENV, W, force_scale, hertz_contact_time, hertz_overlap, lmp_exe, lmp_new, plugin_load,
                          load_scene, read_dump, report, run_lmp, tabor_json, write_temp, write_toml)
 from tabor_ffi import law_info  # noqa: E402
 
@@ -75,7 +75,7 @@ TABOR_MD = f"jkr/load-controlled {E_STAR!r} {W} poisson {NU} tangential mindlin_
 
 
 def plugin_wall(coeffs, extra=""):
-    return [f"plugin load \"{PLUGIN}\"", f"fix wall all wall/tabor {coeffs} zplane 0.0 NULL {extra}".rstrip()]
+    return [plugin_load(), f"fix wall all wall/tabor {coeffs} zplane 0.0 NULL {extra}".rstrip()]
 
 
 def granular_wall(extra=""):
@@ -336,7 +336,7 @@ def restart():
         # read_restart does not restore regions: defined again, as the fix)
         region_box = f"region plate block {-span - 10 * R!r} {span + 10 * R!r} {-10 * R!r} {10 * R!r} 0 {20 * R!r}"
         region_fix = f"fix wall all wall/tabor/region {TABOR_JKR} plate contacts"
-        load = f"plugin load \"{PLUGIN}\""
+        load = plugin_load()
         md = plugin_wall(TABOR_MD, "contacts")
         for kind, wall, reread in (("tabor", plugin_wall(TABOR_JKR, "contacts"), plugin_wall(TABOR_JKR, "contacts")),
                                    ("granular", granular_wall("contacts"), granular_wall("contacts")),
@@ -467,7 +467,7 @@ def styles():
     dt = contact_time(v) / STEPS
     reach = law.interaction_range
     tol_v, tol_w = tolerances(v, law.pull_off_force)
-    load = f"plugin load \"{PLUGIN}\""
+    load = plugin_load()
     print(f"{'case':32} {'|du| tabor-gran':>15} {'|dw| tabor-gran':>15} {'|v| after':>10}")
     for label, ours, theirs, angle in STYLES:
         ut, wt, st = wall_collide([load, f"fix wall all wall/tabor {TABOR_JKR} {ours}"], v, dt, reach, angle)
@@ -538,7 +538,7 @@ def bad_input():
         lmp = lmp_new()
         try:
             for c in ["units si", "atom_style sphere", "boundary f f f", "region box block -1 1 -1 1 -1 1",
-                      "create_box 1 box", f"plugin load \"{PLUGIN}\""]:
+                      "create_box 1 box", plugin_load()]:
                 lmp.command(c)
             try:
                 lmp.command(f"fix w all wall/tabor {args}")
