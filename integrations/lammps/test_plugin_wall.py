@@ -59,9 +59,9 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from lammps_case import (E, E_STAR, FFI, FRICTION, K_ROLL, MASS, MU, MU_ROLL, NU, PLUGIN, R, RHO, SCENES,  # noqa: E402
-                         TABOR, VENV, W, force_scale, hertz_contact_time, hertz_overlap, lmp_exe, lmp_new, plugin_load,
-                         load_scene, read_dump, report, run_lmp, tabor_json, write_temp, write_toml)
+from lammps_case import (E, E_STAR, FFI, FRICTION, K_ROLL, MASS, MU, MU_ROLL, NU, R, RHO, SCENES, VENV, W,  # noqa: E402
+                         export_plugin, force_scale, hertz_contact_time, hertz_overlap, lmp_exe, lmp_new, load_scene,
+                         plugin_load, read_dump, report, run_lmp, tabor_json, write_temp, write_toml)
 from tabor_ffi import law_info  # noqa: E402
 
 STEPS = 5000            # steps per Hertz contact time
@@ -171,8 +171,7 @@ def exported_fragment():
     `tabor impact` at the scene's speed."""
     failures = []
     path = os.path.join(SCENES, "maugis_wall.toml")
-    frag = subprocess.run([TABOR, "export", "lammps", path, "--plugin", PLUGIN], check=True,
-                          capture_output=True, text=True).stdout
+    frag = export_plugin(path)
     v = 2.0 * tabor_json(["sticking", path])["sticking_velocity"]
     o = tabor_json(["impact", path, "--speed", repr(v)])
     info = law_info(FFI, "maugis", E_STAR, R, W, 0.55)
