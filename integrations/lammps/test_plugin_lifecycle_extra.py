@@ -27,9 +27,10 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-from test_plugin_lifecycle import HEAD, PLUGIN, R, TAIL, error_line, lmp, ubuf  # noqa: E402
+import lammps_case  # noqa: E402
+from lammps_case import FIELDS, PLUGIN, error_line, lmp_output, report  # noqa: E402
+from test_plugin_lifecycle import HEAD, R, TAIL, survivor_restart, ubuf  # noqa: E402
 
-FIELDS = 16    # the doubles of atom_style sphere's own part of a per-atom restart buffer
 FRICTION = "poisson 0.17 tangential mindlin NULL 0.5 0.3 rolling sds 50 0 0.1 twisting marshall"
 PAIR = TAIL[:2] + [TAIL[2] + " " + FRICTION] + TAIL[3:]
 # three grains: 1 and 2 stuck and sliding, 3 pressed against 2 and spinning
@@ -45,18 +46,9 @@ def forces(out):
 
 
 def atom_buffers(data):
-    """[offset of each atom buffer] of the per-atom section: the buffers [m, 16
-    fields, fix records], walked by their lengths from the first radius R (field
-    11); the int before the first holds the section's count of doubles."""
-    first = data.find(struct.pack("<d", R)) - 11 * 8
-    at, starts = first, []
-    while at + 8 <= len(data):
-        m = struct.unpack_from("<d", data, at)[0]
-        if not (FIELDS <= m < 1e5 and m == int(m)):
-            break
-        starts.append(at)
-        at += 8 * int(m)
-    return starts, at
+    """lammps_case.atom_buffers of this file's grains (radius R, buffers under 1e5
+    doubles); the int before the first buffer holds the section's count of doubles."""
+    return lammps_case.atom_buffers(data, R, 1e5)
 
 
 def without_stamps(data):
@@ -104,7 +96,7 @@ def record_of(data, tag):
 def older_build(failures):
     with tempfile.TemporaryDirectory() as tmp:
         file = os.path.join(tmp, "stamped.restart")
-        status, out = lmp(HEAD + GRAINS + PAIR + ["run 20", f"write_restart {file}"])
+        status, out = lmp_output(HEAD + GRAINS + PAIR + ["run 20", f"write_restart {file}"])
         if status != 0:
             failures.append(f"older build: writing failed: {error_line(out)}")
             return
@@ -120,7 +112,7 @@ def older_build(failures):
         runs = {}
         for name, path in (("as written", file), ("older layout", legacy)):
             read = ["units si", f"plugin load {PLUGIN}", f"read_restart {path}"] + PAIR[1:]
-            status, out = lmp(read + ["run 0"] + FORCES + ["run 50"] + FORCES)
+            status, out = lmp_output(read + ["run 0"] + FORCES + ["run 50"] + FORCES)
             runs[name] = forces(out) if status == 0 else None
             print(f"  {name}: {len(old) if name != 'as written' else len(data)} bytes, exit {status}, "
                   f"F1 after run 0 {runs[name][0] if runs[name] else error_line(out)}")
@@ -143,9 +135,9 @@ def recycled_two_ranks(failures):
     new = [f"create_atoms 1 single {-gap + 2 * R + 1.5e-9} 0 0", f"set atom 2 diameter {2 * R} density 2650",
            "velocity all set 0 0 0"]
     fx = ["variable fx equal fx[1]", 'print "FX ${fx}"']
-    status, out = lmp(stuck + fx, ranks=2)
+    status, out = lmp_output(stuck + fx, ranks=2)
     before = [line.split()[1] for line in out.splitlines() if line.startswith("FX ")]
-    status2, out2 = lmp(stuck + ["group gone id 2", "delete_atoms group gone"] + new + ["run 0"] + fx, ranks=2)
+    status2, out2 = lmp_output(stuck + ["group gone id 2", "delete_atoms group gone"] + new + ["run 0"] + fx, ranks=2)
     after = [line.split()[1] for line in out2.splitlines() if line.startswith("FX ")]
     # the two grains on different ranks: each rank owns one atom
     owned = [line for line in out.splitlines() if "Nlocal:" in line]
@@ -158,15 +150,11 @@ def recycled_two_ranks(failures):
         failures.append(f"recycled ID on 2 ranks: force {after[-1]} N on the new pair (must be 0)")
     elif not owned or "1 ave           1 max           1 min" not in owned[0]:
         failures.append(f"recycled ID on 2 ranks: the grains are not one per rank ({owned[:1]})")
-    with tempfile.TemporaryDirectory() as tmp:
-        file = os.path.join(tmp, "survivor.restart")
-        status, out = lmp(stuck + ["group gone id 2", "delete_atoms group gone", "run 0", f"write_restart {file}"],
-                          ranks=2)
-        data = open(file, "rb").read() if status == 0 else b""
-        empty = struct.pack("<dddd", 4.0, -1.0, 0.0, 0.0)
-        print(f"  2 ranks: survivor's record after delete_atoms: {'empty' if empty in data else 'not empty'}")
-        if status != 0 or empty not in data:
-            failures.append(f"recycled ID on 2 ranks: the survivor keeps a record of the deleted atom (exit {status})")
+    status, data = survivor_restart(stuck, ranks=2)
+    empty = struct.pack("<dddd", 4.0, -1.0, 0.0, 0.0)
+    print(f"  2 ranks: survivor's record after delete_atoms: {'empty' if empty in data else 'not empty'}")
+    if status != 0 or empty not in data:
+        failures.append(f"recycled ID on 2 ranks: the survivor keeps a record of the deleted atom (exit {status})")
 
 
 def main():
@@ -175,11 +163,8 @@ def main():
     older_build(failures)
     print("a recycled atom ID across two MPI ranks:")
     recycled_two_ranks(failures)
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        sys.exit(1)
-    print("lifecycle (older restart, recycled ID on 2 ranks): all passed")
+    return report(failures, "lifecycle (older restart, recycled ID on 2 ranks): all passed")
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

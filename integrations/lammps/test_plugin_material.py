@@ -31,21 +31,15 @@ Needs TABOR_PLUGIN, TABOR_FFI_LIB, TABOR, LAMMPS_VENV, LD_LIBRARY_PATH=<venv>/li
 
 import math
 import os
-import subprocess
 import sys
-import tempfile
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from collide import collide_oblique  # noqa: E402
-from lammps import lammps  # noqa: E402
+from lammps_case import FFI, PLUGIN, error_line, hertz_contact_time, lmp_new, lmp_output, pair_tabor, report  # noqa: E402
 from tabor_ffi import law_info  # noqa: E402
 import test_plugin_wall as wall  # noqa: E402
 
-PLUGIN = os.environ["TABOR_PLUGIN"]
-FFI = os.environ["TABOR_FFI_LIB"]
-LMP = os.path.join(os.environ["LAMMPS_VENV"], "bin", "lmp")
 SAME_SCHEME = 1e-9
 STEPS_PER_CONTACT = 4000
 
@@ -121,7 +115,7 @@ def masses(i, j):
 def collide(cmds, i, j, v, angle, spin=0.0):
     c = mixed(i, j)
     r_star = MAT[i]["R"] * MAT[j]["R"] / (MAT[i]["R"] + MAT[j]["R"])
-    tc = 2.87 * (masses(i, j) ** 2 / (r_star * c["Es"] ** 2 * v)) ** 0.2
+    tc = hertz_contact_time(masses(i, j), r_star, c["Es"], v)
     reach = 2 * law_info(FFI, "jkr/load-controlled", c["Es"], r_star, c["w"]).interaction_range
     out = collide_oblique(cmds, bodies(i, j), v, angle, tc / STEPS_PER_CONTACT, reach, 12 * STEPS_PER_CONTACT,
                           spin=(0.0, 0.0, spin), types=(i, j), ntypes=2)
@@ -144,7 +138,7 @@ CASES = [(0.3, 30, 0.0), (0.6, 60, 2e4)]   # (speed m/s, angle deg, spin rad/s)
 
 
 def tabor(lines):
-    return [f"plugin load \"{PLUGIN}\"", "pair_style tabor", *lines]
+    return pair_tabor(*lines)
 
 
 def granular(lines):
@@ -186,7 +180,7 @@ def against_granular():
 def sliding_force(lines):
     """The tangential force on atom 1 (type 1) after one step of a contact of types
     1 and 2 at a fixed overlap of 2 nm sliding at 1 mm/s: k_t a v dt (no damping)."""
-    lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    lmp = lmp_new()
     try:
         d = MAT[1]["R"] + MAT[2]["R"] - 2e-9
         for c in ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f", "comm_modify vel yes",
@@ -310,14 +304,7 @@ BAD = [  # (lines after HEAD, words of the error)
 
 
 def lmp_run(lines):
-    with tempfile.NamedTemporaryFile("w", suffix=".in", delete=False) as f:
-        f.write("\n".join(lines) + "\n")
-        path = f.name
-    try:
-        r = subprocess.run([LMP, "-in", path, "-log", "none", "-nocite"], capture_output=True, text=True, timeout=60)
-        return r.returncode, r.stdout + r.stderr
-    finally:
-        os.unlink(path)
+    return lmp_output(lines, timeout=60)
 
 
 def bad_input():
@@ -325,8 +312,7 @@ def bad_input():
     failures = []
     for lines, words in BAD:
         status, out = lmp_run(HEAD + lines)
-        errors = [x for x in out.splitlines() if x.startswith("ERROR")]
-        line = errors[0] if errors else None
+        line = error_line(out)
         print(f"  {lines[-1 if lines[-1] != 'run 0' else 0][:60]:60} -> {line}")
         if status == 0 or line is None:
             failures.append(f"{lines}: not refused")
@@ -383,11 +369,7 @@ def main():
     print("5. bad input")
     failures += bad_input()
     failures += remix()
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        return 1
-    print("material form tests passed")
-    return 0
+    return report(failures, "material form tests passed")
 
 
 if __name__ == "__main__":

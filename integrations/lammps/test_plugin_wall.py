@@ -50,37 +50,24 @@ JKR limit, runs the same discrete scheme: the differences printed are round-off)
 Needs TABOR, TABOR_PLUGIN, TABOR_FFI_LIB, LAMMPS_VENV, LD_LIBRARY_PATH=<venv>/lib.
 """
 
-import glob
-import json
 import math
 import os
 import re
 import subprocess
 import sys
 import tempfile
-import tomllib
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from lammps import lammps  # noqa: E402
+from lammps_case import (E, E_STAR, FFI, FRICTION, K_ROLL, MASS, MU, MU_ROLL, NU, R, RHO, SCENES, VENV, W,  # noqa: E402
+                         export_plugin, force_scale, hertz_contact_time, hertz_overlap, lmp_exe, lmp_new, load_scene,
+                         plugin_load, read_dump, report, run_lmp, tabor_json, write_temp, write_toml)
 from tabor_ffi import law_info  # noqa: E402
 
-TABOR = os.environ["TABOR"]
-PLUGIN = os.environ["TABOR_PLUGIN"]
-FFI = os.environ["TABOR_FFI_LIB"]
-VENV = os.environ["LAMMPS_VENV"]
-SCENES = os.path.join(HERE, "scenes")
 STEPS = 5000            # steps per Hertz contact time
 EVENTS = 2
-
-R, RHO, E, NU, W = 1e-6, 2650.0, 54e9, 0.17, 0.05   # silica sphere on a silica wall
-E_STAR = E / (2 * (1 - NU * NU))                     # 1/E* = 2 (1 - nu^2)/E
-MASS = RHO * 4 / 3 * math.pi * R ** 3
+# a silica sphere on a silica wall (lammps_case's R, RHO, E, NU, W); m* = m, R* = R
 INERTIA = 0.4 * MASS * R ** 2
-MU, K_ROLL, MU_ROLL = 0.3, 50.0, 0.1
-FRICTION = f"tangential mindlin NULL 0 {MU} rolling sds {K_ROLL} 0 {MU_ROLL} twisting marshall"
 TABOR_JKR = f"jkr/load-controlled {E_STAR!r} {W} poisson {NU} {FRICTION}"
 # LAMMPS's own: jkr E eta_n0 nu gamma (gamma = w/2), wall of the particle's material
 GRANULAR_JKR = f"granular jkr {E} 0 {NU} {W / 2} damping viscoelastic {FRICTION}"
@@ -88,7 +75,7 @@ TABOR_MD = f"jkr/load-controlled {E_STAR!r} {W} poisson {NU} tangential mindlin_
 
 
 def plugin_wall(coeffs, extra=""):
-    return [f"plugin load \"{PLUGIN}\"", f"fix wall all wall/tabor {coeffs} zplane 0.0 NULL {extra}".rstrip()]
+    return [plugin_load(), f"fix wall all wall/tabor {coeffs} zplane 0.0 NULL {extra}".rstrip()]
 
 
 def granular_wall(extra=""):
@@ -96,16 +83,11 @@ def granular_wall(extra=""):
 
 
 def contact_time(v):
-    return 2.87 * (MASS ** 2 / (R * E_STAR ** 2 * v)) ** 0.2
+    return hertz_contact_time(MASS, R, E_STAR, v)
 
 
 def f_scale(v, pull_off):
-    d_max = (15 * MASS * v * v / (16 * E_STAR * math.sqrt(R))) ** 0.4
-    return 4 / 3 * E_STAR * math.sqrt(R) * d_max ** 1.5 + 2 * abs(pull_off)
-
-
-def lmp_new():
-    return lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    return force_scale(MASS, R, E_STAR, v, pull_off)
 
 
 def wall_collide(wall_cmds, v, dt, reach, angle=0.0, spin=(0.0, 0.0, 0.0), max_steps=None):
@@ -147,35 +129,6 @@ def wall_collide(wall_cmds, v, dt, reach, angle=0.0, spin=(0.0, 0.0, 0.0), max_s
         lmp.close()
 
 
-def scene(name, **adhesion):
-    with open(os.path.join(SCENES, name + ".toml"), "rb") as f:
-        s = tomllib.load(f)
-    s["adhesion"].update(adhesion)
-    return s
-
-
-def write_toml(s):
-    lines = [f'name = "{s.get("name", "x")}"']
-    for sec in ("sphere", "target", "adhesion", "friction", "impact"):
-        if sec in s:
-            lines.append(f"[{sec}]")
-            for k, val in s[sec].items():
-                if isinstance(val, dict):
-                    val = "{ " + ", ".join(f"{kk} = {json.dumps(vv)}" for kk, vv in val.items()) + " }"
-                    lines.append(f"{k} = {val}")
-                else:
-                    lines.append(f"{k} = {json.dumps(val)}")
-    f = tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False)
-    f.write("\n".join(lines) + "\n")
-    f.close()
-    return f.name
-
-
-def tabor_json(args):
-    return json.loads(subprocess.run([TABOR, *args, "--json"], check=True, capture_output=True,
-                                     text=True).stdout)
-
-
 NORMAL = [  # (scene, adhesion overrides, wall coefficients, label)
     ("jkr_wall", {}, f"jkr/fixed-grip {E_STAR!r} {W}", "JKR fixed grip"),
     ("jkr_wall", {"separation": "load-controlled"}, f"jkr/load-controlled {E_STAR!r} {W}", "JKR load controlled"),
@@ -189,7 +142,7 @@ def normal_impacts():
     failures = []
     print(f"{'case':22} {'v/v_s':>5} {'v (m/s)':>9} {'e LAMMPS':>9} {'e tabor':>9} {'|diff|':>9} {'tol':>8}")
     for name, over, coeffs, label in NORMAL:
-        s = scene(name, **over)
+        s = load_scene(name, **over)
         path = write_toml(s)
         try:
             v_s = tabor_json(["sticking", path])["sticking_velocity"]
@@ -218,15 +171,12 @@ def exported_fragment():
     `tabor impact` at the scene's speed."""
     failures = []
     path = os.path.join(SCENES, "maugis_wall.toml")
-    frag = subprocess.run([TABOR, "export", "lammps", path, "--plugin", PLUGIN], check=True,
-                          capture_output=True, text=True).stdout
+    frag = export_plugin(path)
     v = 2.0 * tabor_json(["sticking", path])["sticking_velocity"]
     o = tabor_json(["impact", path, "--speed", repr(v)])
     info = law_info(FFI, "maugis", E_STAR, R, W, 0.55)
     dt = contact_time(v) / STEPS
-    with tempfile.NamedTemporaryFile("w", suffix=".lmp", delete=False) as f:
-        f.write(frag)
-        inc = f.name
+    inc = write_temp(frag, ".lmp")
     try:
         vel, _, sep = wall_collide([f"include {inc}"], v, dt, info.interaction_range)
     finally:
@@ -249,7 +199,7 @@ OBLIQUE = [  # (speed, angle, spin): spins about the normal (twisting) and in-pl
 def tolerances(v, pull_off):
     dt = contact_time(v) / STEPS
     fs = f_scale(v, pull_off)
-    d_max = (15 * MASS * v * v / (16 * E_STAR * math.sqrt(R))) ** 0.4
+    d_max = hertz_overlap(MASS, R, E_STAR, v)
     a_max = math.sqrt(R * d_max) * 1.5   # JKR's contact radius exceeds Hertz's: margin 1.5
     ts = (MU * R + MU_ROLL * R + 2 / 3 * MU * a_max) * fs
     return EVENTS * dt * fs / MASS, EVENTS * dt * ts / INERTIA
@@ -273,7 +223,7 @@ def oblique():
             failures.append(f"oblique v {v} angle {a} spin {spin}: tabor vs wall/gran du {du:.2e} "
                             f"(tol {tol_v:.1e}), dw {dw:.2e} (tol {tol_w:.1e})")
     # against the library on a flat (tabor impact --angle), no initial spin
-    s = scene("jkr_wall", separation="load-controlled")
+    s = load_scene("jkr_wall", separation="load-controlled")
     s["friction"] = {"coefficient": MU, "tangential": "mindlin", "tangential_damping": 0.0,
                      "rolling": {"stiffness": K_ROLL, "damping": 0.0, "coefficient": MU_ROLL},
                      "twisting": "marshall"}
@@ -307,7 +257,7 @@ def micro_slip_wall():
     twisting here)."""
     failures = []
     law = law_info(FFI, "jkr/load-controlled", E_STAR, R, W)
-    s = scene("jkr_wall", separation="load-controlled")
+    s = load_scene("jkr_wall", separation="load-controlled")
     s["friction"] = {"coefficient": MU, "tangential": "mindlin_deresiewicz"}
     path = write_toml(s)
     kappa = 2 * (1 - NU) / (2 - NU)
@@ -339,27 +289,6 @@ def micro_slip_wall():
         os.unlink(path)
     print(f"  largest difference {worst:.2f} of the time-step tolerance")
     return failures
-
-
-def lmp_exe():
-    return glob.glob(os.path.join(VENV, "lib", "python3*", "site-packages", "lammps", "lmp"))[0]
-
-
-def run_lmp(lines, tmp, tag, ranks=1):
-    inp = os.path.join(tmp, f"in.{tag}")
-    with open(inp, "w") as f:
-        f.write("\n".join(lines) + "\n")
-    log = os.path.join(tmp, f"log.{tag}")
-    subprocess.run([os.path.join(VENV, "bin", "mpirun"), "-np", str(ranks), lmp_exe(), "-in", inp, "-log", log,
-                    "-screen", "none", "-nocite"], check=True, cwd=tmp)
-    with open(log) as f:
-        return f.read()
-
-
-def read_dump(path):
-    with open(path) as f:
-        rows = [l.split() for l in f.read().splitlines()[9:]]
-    return {int(r[0]): [float(x) for x in r[1:]] for r in rows}
 
 
 DUMP = "write_dump all custom {p} id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g"
@@ -406,7 +335,7 @@ def restart():
         # read_restart does not restore regions: defined again, as the fix)
         region_box = f"region plate block {-span - 10 * R!r} {span + 10 * R!r} {-10 * R!r} {10 * R!r} 0 {20 * R!r}"
         region_fix = f"fix wall all wall/tabor/region {TABOR_JKR} plate contacts"
-        load = f"plugin load \"{PLUGIN}\""
+        load = plugin_load()
         md = plugin_wall(TABOR_MD, "contacts")
         for kind, wall, reread in (("tabor", plugin_wall(TABOR_JKR, "contacts"), plugin_wall(TABOR_JKR, "contacts")),
                                    ("granular", granular_wall("contacts"), granular_wall("contacts")),
@@ -537,7 +466,7 @@ def styles():
     dt = contact_time(v) / STEPS
     reach = law.interaction_range
     tol_v, tol_w = tolerances(v, law.pull_off_force)
-    load = f"plugin load \"{PLUGIN}\""
+    load = plugin_load()
     print(f"{'case':32} {'|du| tabor-gran':>15} {'|dw| tabor-gran':>15} {'|v| after':>10}")
     for label, ours, theirs, angle in STYLES:
         ut, wt, st = wall_collide([load, f"fix wall all wall/tabor {TABOR_JKR} {ours}"], v, dt, reach, angle)
@@ -608,7 +537,7 @@ def bad_input():
         lmp = lmp_new()
         try:
             for c in ["units si", "atom_style sphere", "boundary f f f", "region box block -1 1 -1 1 -1 1",
-                      "create_box 1 box", f"plugin load \"{PLUGIN}\""]:
+                      "create_box 1 box", plugin_load()]:
                 lmp.command(c)
             try:
                 lmp.command(f"fix w all wall/tabor {args}")
@@ -639,11 +568,7 @@ def main():
     failures += bad_input()
     print("7. tangential mindlin_deresiewicz on the wall against tabor impact --angle (the library's bed)")
     failures += micro_slip_wall()
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        return 1
-    print("fix wall/tabor tests passed")
-    return 0
+    return report(failures, "fix wall/tabor tests passed")
 
 
 if __name__ == "__main__":

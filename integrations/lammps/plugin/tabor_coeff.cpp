@@ -47,7 +47,7 @@ void LAMMPS_NS::tabor_fail_all(LAMMPS *lmp, const std::string &who, int status, 
    (Young's modulus, Poisson's ratio, surface energy per surface, as pair
    granular's jkr E eta nu gamma): E* = 1/(2 (1 - nu^2)/E) (pair granular's
    mix_stiffnessE(E, E, nu, nu); fix wall/gran's E/(2 (1 - nu^2)) for a wall),
-   w = 2 gamma (LAMMPS's JKR force 4 E* a^3/(3 R) - 2 pi a^2 sqrt(4 gamma E*/(pi a))
+   w = 2 gamma (LAMMPS's JKR force 4 E* a^3/(3 R) - 2 pi a^2 sqrt(4 gamma E* / (pi a))
    is JKR's with w = 2 gamma), k_t NULL = 8 G* with G* = 1/(4 (2 - nu)(1 + nu)/E);
    a wall's own material (wall_material E_w nu_w gamma_w) mixes as two types do.
    Every error is reported on all ranks (error->all). */
