@@ -249,6 +249,7 @@ impl ObliqueImpact {
             force,
             bed: self.micro_slip_bed(law, r_eff, length, v_n, nodes),
             normal_cache: Cell::new(None),
+            step_hint: Cell::new(None),
         };
 
         // start on the undisturbed path at the law's start overlap
@@ -446,6 +447,7 @@ impl<'a> Setup<'a> {
     /// may have changed the branch).
     fn hook<T>(&self, answer: Result<T>) -> Result<T> {
         self.forget_normal();
+        self.step_hint.set(None);
         answer
     }
 
@@ -532,9 +534,22 @@ impl<'a> Setup<'a> {
                 .map_err(&numerics)?;
             drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit)
         } else {
-            let mut stepper = DormandPrince853::new(&mut rhs, s0, yn, s_end, settings.tolerance)
-                .map_err(&numerics)?;
-            drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit)
+            // the energies are quadratures of the powers along the motion: its
+            // eighth-order steps resolve them, and they do not choose the steps
+            // (the powers in slip carry the ~10⁻¹¹ rounding of the normal law's
+            // slopes, which rejected steps of the motion at the default
+            // tolerance). The spring bed's Dormand-Prince 5(4) steps, of a
+            // piecewise smooth motion, keep them under control.
+            let mut tolerance = settings.tolerance.with_error_components(EN);
+            // the first step: the one the last segment's control proposed
+            if let Some(h) = self.step_hint.get() {
+                tolerance.initial_step = Some(h);
+            }
+            let mut stepper =
+                DormandPrince853::new(&mut rhs, s0, yn, s_end, tolerance).map_err(&numerics)?;
+            let run = drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit);
+            self.step_hint.set(Some(stepper.proposed_step()));
+            run
         }
         .map_err(&numerics)?;
         if let Some(e) = failure.take().or(g_failure.take()) {

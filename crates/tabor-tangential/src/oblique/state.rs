@@ -88,6 +88,9 @@ pub(super) struct Setup<'a> {
     pub(super) bed: Option<RefCell<MicroSlipBed>>,
     /// The normal law at the last overlap asked for ([`Setup::normal`]).
     pub(super) normal_cache: NormalCache,
+    /// The step the last segment's control proposed: the first step of the next
+    /// (normalized time; `None` at the start and after a branch change).
+    pub(super) step_hint: Cell<Option<f64>>,
 }
 
 /// Physical quantities at one state.
@@ -217,7 +220,16 @@ impl<'a> Setup<'a> {
             out.dy[EN] = f_el * rate;
             return Ok(out);
         }
-        let np = self.normal(law, overlap, rate, true)?;
+        // the slopes of the law enter only the rates of the slip conditions and
+        // `mindlin_rescale`'s shrinking of ξ while unloading
+        let slipping = [modes.tangential, modes.rolling, modes.twisting].contains(&Mode::Slip);
+        let rescaling = !modes.loading
+            && self
+                .imp
+                .friction
+                .as_ref()
+                .is_some_and(|f| f.tangential.model == TangentialModel::MindlinRescale);
+        let np = self.normal(law, overlap, rate, slipping || rescaling)?;
         let (f_el, a) = (np.force, np.radius);
         let (a_prime, f_prime) = np.slopes.unwrap_or((0.0, 0.0));
         let normal = &self.imp.normal;
