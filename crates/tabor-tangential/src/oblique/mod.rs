@@ -92,6 +92,7 @@ mod limits;
 mod modes;
 mod normal;
 mod outcome;
+mod planar;
 mod simulate;
 mod state;
 
