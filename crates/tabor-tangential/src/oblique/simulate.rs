@@ -498,13 +498,23 @@ impl<'a> Setup<'a> {
             }
         };
         let g_failure: Cell<Option<Error>> = Cell::new(None);
+        // a value within the rounding of the event values (O(1) in their units)
+        // is the zero itself: Brent's method stops there instead of bisecting
+        // the rest of the bracket down to 4 ε
         let g = |s: f64, yn: &[f64; N]| -> f64 {
             match self.event_values(law, s * self.time, &self.to_si(yn), modes) {
-                Ok(v) => v
-                    .iter()
-                    .zip(offset.iter())
-                    .map(|(g, o)| g + o)
-                    .fold(f64::INFINITY, f64::min),
+                Ok(v) => {
+                    let g = v
+                        .iter()
+                        .zip(offset.iter())
+                        .map(|(g, o)| g + o)
+                        .fold(f64::INFINITY, f64::min);
+                    if g.abs() <= EVENT_ZERO {
+                        0.0
+                    } else {
+                        g
+                    }
+                }
                 Err(e) => {
                     keep_first(&g_failure, e);
                     f64::NAN
