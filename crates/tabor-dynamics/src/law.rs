@@ -28,6 +28,11 @@ pub struct CurvePoint {
     pub force: f64,
     /// Contact radius (m), for the trajectory record.
     pub contact_radius: f64,
+    /// `(dF/dq, da/dq)` (N and m per unit of q) where the law gives them in
+    /// closed form (JKR's polynomials); `None`: a consumer that needs the slopes
+    /// of force and contact radius differences the curve (the oblique impact's
+    /// slip conditions).
+    pub slopes: Option<(f64, f64)>,
 }
 
 /// A branch of a [`ForceLaw`] in a coordinate `q` of its own in which the overlap

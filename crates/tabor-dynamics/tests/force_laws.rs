@@ -349,6 +349,7 @@ impl BranchCurve for Folded {
             overlap_slope: 2.0 * q,
             force: self.stiffness * q,
             contact_radius: q,
+            slopes: None,
         })
     }
     fn end(&self, q: f64, _rate: f64) -> Result<f64> {

@@ -134,17 +134,23 @@ impl BranchCurve for JkrForceLaw {
     }
 
     /// Seed 000 eqs. (5.33)-(5.34) in `x = √â`: `d̂ = 3x⁴ − 4x`,
-    /// `dd̂/dx = 12x³ − 4`, `F̂ = x⁶ − 2x³`, `â = x²` (polynomials, so they continue
-    /// smoothly beyond the snap-off).
+    /// `dd̂/dx = 12x³ − 4`, `F̂ = x⁶ − 2x³`, `â = x²`, and the slopes
+    /// `dF̂/dx = 6x⁵ − 6x²`, `dâ/dx = 2x` (polynomials, so they continue smoothly
+    /// beyond the snap-off).
     fn point(&self, coordinate: f64, _overlap_rate: f64) -> Result<CurvePoint> {
         let x = coordinate;
-        let x3 = x * x * x;
+        let x2 = x * x;
+        let x3 = x2 * x;
         let scales = self.sphere.scales();
         Ok(CurvePoint {
             overlap: (3.0 * x3 - 4.0) * x * scales.depth,
             overlap_slope: (12.0 * x3 - 4.0) * scales.depth,
             force: (x3 - 2.0) * x3 * scales.force,
-            contact_radius: x * x * scales.contact_radius,
+            contact_radius: x2 * scales.contact_radius,
+            slopes: Some((
+                6.0 * (x3 - 1.0) * x2 * scales.force,
+                2.0 * x * scales.contact_radius,
+            )),
         })
     }
 

@@ -430,6 +430,23 @@ fn force_law_curve_matches_the_contact_relations() {
                 (p.overlap_slope - slope).abs() <= 1e-8 * slope.abs(),
                 "{slope}"
             );
+            // the closed-form slopes of force and contact radius, likewise
+            let (df, da) = p.slopes.unwrap();
+            let (up, down) = (
+                curve.point(x + h, 0.0).unwrap(),
+                curve.point(x - h, 0.0).unwrap(),
+            );
+            let df_num = (up.force - down.force) / (2.0 * h);
+            let da_num = (up.contact_radius - down.contact_radius) / (2.0 * h);
+            let f_unit = sphere.scales().force;
+            assert!(
+                (df - df_num).abs() <= 1e-8 * df_num.abs().max(f_unit),
+                "{df} vs {df_num}"
+            );
+            assert!(
+                (da - da_num).abs() <= 1e-8 * da_num.abs(),
+                "{da} vs {da_num}"
+            );
             assert!(curve.end(x, 0.0).unwrap() > 0.0);
         }
         // the branch ends at the rule's separation state: fixed grip at the fold

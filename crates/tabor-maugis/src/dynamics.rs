@@ -344,6 +344,7 @@ impl BranchCurve for MaugisDugdaleForceLaw {
             overlap_slope: slope * self.scales.depth,
             force: force * self.scales.force,
             contact_radius: contact_radius * self.scales.contact_radius,
+            slopes: None,
         })
     }
 

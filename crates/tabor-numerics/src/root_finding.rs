@@ -178,12 +178,36 @@ where
     rec.record(lo, f_lo);
     rec.record(hi, f_hi);
     let mut conv = Convergence { tol, iterations: 0 };
+    // The crate's iteration evaluates f again at the ends of the bracket it
+    // already knows (`arrange(a, f(a), s, f(s))`): the last points used are
+    // answered from memory (the least recently used forgotten), so f is
+    // evaluated once per new point.
+    let mut known = [
+        (lo, f_lo, 0u64),
+        (hi, f_hi, 1),
+        (f64::NAN, f64::NAN, 0),
+        (f64::NAN, f64::NAN, 0),
+    ];
+    let mut clock = 2u64;
     let outcome = roots::find_root_brent(
         lo,
         hi,
         |x| {
-            let y = f(x);
-            rec.record(x, y);
+            clock += 1;
+            let y = match known.iter_mut().find(|(k, ..)| k.to_bits() == x.to_bits()) {
+                Some(entry) => {
+                    entry.2 = clock;
+                    entry.1
+                }
+                None => {
+                    let y = f(x);
+                    rec.record(x, y);
+                    if let Some(oldest) = known.iter_mut().min_by_key(|e| e.2) {
+                        *oldest = (x, y, clock);
+                    }
+                    y
+                }
+            };
             if y.is_finite() {
                 y
             } else {

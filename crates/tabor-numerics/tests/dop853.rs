@@ -148,3 +148,55 @@ fn single_event_driver_prepares_the_dense_output_for_its_observer() {
     assert!((run.solution.t - t_event).abs() < 1e-12);
     assert!(worst < 1e-10, "{worst:e}");
 }
+
+/// `error_components`: the components after the first m are integrated with the
+/// steps the first m choose. The Riccati equation with a quadrature appended
+/// takes exactly the steps of the Riccati equation alone (the same time points
+/// and values, bit for bit: the error norm and `HINIT` see only y), whatever the
+/// quadrature: `w' = y + 10⁴ sin(10³ t)` (fast and large: under full control it
+/// takes over ten times the steps) as well as `w' = y`, which the steps of the
+/// motion resolve: w is `∫ 2/(2 − s²) ds = √2 artanh(t/√2)` to 10⁻⁹ (tolerance
+/// 10⁻¹⁰ per step, ~20 steps).
+#[test]
+fn error_components_leave_trailing_quadratures_out_of_step_control() {
+    let tol = OdeTolerance::new(1e-10, 1e-12);
+    let t_end = 1.0;
+    let mut f = riccati;
+    let mut s = DormandPrince853::new(&mut f, 0.0, [1.0], t_end, tol).unwrap();
+    let mut alone = vec![];
+    while s.t() < t_end {
+        s.step(&mut f, t_end).unwrap();
+        alone.push((s.t(), s.y()[0]));
+    }
+    let steps_alone = s.steps();
+    let with_quadrature = |fast: f64, controlled: Option<usize>| {
+        let mut f = |t: f64, y: &[f64; 2]| [t * y[0] * y[0], y[0] + fast * (1e3 * t).sin()];
+        let tol = OdeTolerance {
+            error_components: controlled,
+            ..tol
+        };
+        let mut s = DormandPrince853::new(&mut f, 0.0, [1.0, 0.0], t_end, tol).unwrap();
+        let mut points = vec![];
+        while s.t() < t_end {
+            s.step(&mut f, t_end).unwrap();
+            points.push((s.t(), s.y()[0]));
+        }
+        (points, s.steps(), s.y()[1])
+    };
+    for fast in [0.0, 1e4] {
+        let (points, steps, _) = with_quadrature(fast, Some(1));
+        assert_eq!(points, alone, "the same steps and values ({fast})");
+        assert_eq!(steps, steps_alone);
+    }
+    let (_, steps_full, _) = with_quadrature(1e4, None);
+    assert!(
+        steps_full.0 > 10 * steps_alone.0,
+        "under full control the fast quadrature chooses the steps: {steps_full:?} vs {steps_alone:?}"
+    );
+    let (_, _, w) = with_quadrature(0.0, Some(1));
+    let exact = 2f64.sqrt() * (t_end / 2f64.sqrt()).atanh();
+    assert!((w - exact).abs() < 1e-9, "{w} vs {exact}");
+    // zero components: refused
+    let bad = OdeTolerance::new(1e-10, 1e-12).with_error_components(0);
+    assert!(DormandPrince853::new(&mut f, 0.0, [1.0], 1.0, bad).is_err());
+}

@@ -227,8 +227,9 @@ impl<const N: usize> DormandPrince<N> {
     fn error_norm(&self, h: f64, k: &Stages<N>, y_new: &[f64; N]) -> f64 {
         use tableau::*;
         let y = &self.core.y;
+        let m = self.core.controlled();
         let mut err = 0.0;
-        for i in 0..N {
+        for i in 0..m {
             let e = h
                 * (E1 * k[0][i]
                     + E3 * k[2][i]
@@ -239,7 +240,7 @@ impl<const N: usize> DormandPrince<N> {
             let sk = self.core.scale(y[i], y_new[i]);
             err += (e / sk).powi(2);
         }
-        (err / N.max(1) as f64).sqrt()
+        (err / m.max(1) as f64).sqrt()
     }
 
     /// The dense output (4th-order continuous extension) of the last accepted step at

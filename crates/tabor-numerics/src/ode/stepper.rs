@@ -59,6 +59,14 @@ macro_rules! one_step_method {
                 self.core.t_old
             }
 
+            /// The size of the next trial step the step-size control proposes
+            /// (after a (re)start, the first step it chose): a first step for a
+            /// restart of the same motion with a new right-hand side
+            /// ([`OdeTolerance::initial_step`](crate::ode::OdeTolerance::initial_step)).
+            pub fn proposed_step(&self) -> f64 {
+                self.core.h
+            }
+
             /// Accepted and rejected steps so far.
             pub fn steps(&self) -> (u64, u64) {
                 self.core.steps()

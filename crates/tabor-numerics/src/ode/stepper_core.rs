@@ -102,6 +102,12 @@ impl<const N: usize> StepperCore<N> {
         self.tol.error_scale(a, b)
     }
 
+    /// The number of leading components the error norm covers
+    /// ([`OdeTolerance::error_components`]).
+    pub(crate) fn controlled(&self) -> usize {
+        self.tol.controlled(N)
+    }
+
     /// The largest first step after a restart spanning `span`.
     pub(crate) fn first_step_limit(&self, span: f64) -> f64 {
         self.tol.max_step.min(span)
@@ -113,7 +119,7 @@ impl<const N: usize> StepperCore<N> {
     pub(crate) fn first_guess(&self, dy: &[f64; N]) -> (f64, f64) {
         let mut dnf = 0.0;
         let mut dny = 0.0;
-        for i in 0..N {
+        for i in 0..self.controlled() {
             let sk = self.scale(self.y[i], self.y[i]);
             dnf += (dy[i] / sk).powi(2);
             dny += (self.y[i] / sk).powi(2);
@@ -167,7 +173,8 @@ impl<const N: usize> StepperCore<N> {
     where
         F: FnMut(f64, &[f64; N]) -> [f64; N],
     {
-        let n = N.max(1) as f64;
+        let m = self.controlled();
+        let n = m.max(1) as f64;
         let (h, dnf) = self.first_guess(dy);
         let h = h.min(h_max);
         let (t, y) = (self.t, self.y);
@@ -177,7 +184,7 @@ impl<const N: usize> StepperCore<N> {
         }
         let f1 = self.eval(f, t + h, &y1);
         let mut der2 = 0.0;
-        for i in 0..N {
+        for i in 0..m {
             let sk = self.scale(y[i], y[i]);
             der2 += ((f1[i] - dy[i]) / sk).powi(2);
         }

@@ -4,7 +4,8 @@ use crate::{NumericsError, Result};
 
 /// Accuracy and limits of an integration. A step is accepted when the embedded
 /// error estimate satisfies `|err_i| ≤ absolute + relative · max(|y_i|, |y_i,new|)`
-/// in the root-mean-square norm over the components.
+/// in the root-mean-square norm over the components (the first
+/// [`OdeTolerance::error_components`] of them, when given).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct OdeTolerance {
     /// Relative tolerance (≥ 1e-15 after raising; must be finite and ≥ 0).
@@ -17,6 +18,12 @@ pub struct OdeTolerance {
     pub max_step: f64,
     /// First trial step; `None` chooses it automatically (Hairer's `HINIT`).
     pub initial_step: Option<f64>,
+    /// The number of leading components the error norm (and `HINIT`) covers;
+    /// `None`: all. The components after them are integrated with the same
+    /// steps but do not choose them: quadratures `w' = p(t, y)` of quantities of
+    /// the state (a work, a dissipated energy) that the motion's steps resolve
+    /// and that should not shorten them.
+    pub error_components: Option<usize>,
 }
 
 impl OdeTolerance {
@@ -29,7 +36,15 @@ impl OdeTolerance {
             max_steps: 1_000_000,
             max_step: f64::INFINITY,
             initial_step: None,
+            error_components: None,
         }
+    }
+
+    /// The same tolerance with the error norm over the first `components`
+    /// components only ([`OdeTolerance::error_components`]).
+    pub fn with_error_components(mut self, components: usize) -> Self {
+        self.error_components = Some(components);
+        self
     }
 
     /// The same tolerance with a largest step `max_step`.
@@ -79,6 +94,13 @@ impl OdeTolerance {
                 requirement: "must be at least 1",
             });
         }
+        if self.error_components == Some(0) {
+            return Err(NumericsError::InvalidArgument {
+                name: "error_components",
+                value: 0.0,
+                requirement: "must be at least 1",
+            });
+        }
         if let Some(h) = self.initial_step {
             if !(h.is_finite() && h > 0.0) {
                 return Err(NumericsError::InvalidArgument {
@@ -94,6 +116,11 @@ impl OdeTolerance {
     /// The error scale of a component that was `a` before and `b` after a step.
     pub(crate) fn error_scale(&self, a: f64, b: f64) -> f64 {
         self.absolute + self.relative_effective() * a.abs().max(b.abs())
+    }
+
+    /// The number of components of a state of `n` that the error norm covers.
+    pub(crate) fn controlled(&self, n: usize) -> usize {
+        self.error_components.map_or(n, |m| m.min(n)).max(1).min(n)
     }
 
     pub(crate) fn relative_effective(&self) -> f64 {

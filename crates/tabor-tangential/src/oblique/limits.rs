@@ -20,3 +20,8 @@ pub(super) const MAX_SURFACE_SPEED_RATIO: f64 = 1e6;
 /// The largest force of a friction spring at the overlap scale, in units of the
 /// normal force scale.
 pub(super) const MAX_SPRING_RATIO: f64 = 1e12;
+
+/// The event values (in their units, O(1)) within which of 0 an event function
+/// counts as at its zero: a few ulps of their terms, where the location to 4 ε
+/// in time ends anyway (`Setup::segment`).
+pub(super) const EVENT_ZERO: f64 = 1e-15;

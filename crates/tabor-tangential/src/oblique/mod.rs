@@ -61,7 +61,13 @@
 //! damping, the tangential spring (the work stored in it and released when the
 //! contact breaks, plus what `mindlin`'s radius-dependent stiffness creates or
 //! destroys), rolling, twisting and the torque-arm convention. `energy_error` is
-//! the mismatch between the change of kinetic energy and their sum. In slip the
+//! the mismatch between the change of kinetic energy and their sum. They are
+//! quadratures on the motion's steps: where the normal law's slopes are exact
+//! (JKR's branch curve) they stay outside DOP853's error control (its norm
+//! covers the motion only), elsewhere (slopes by differences, whose rounding
+//! grows toward a branch end; the spring bed) inside it; every power is smooth
+//! across the step that holds the event ending its segment (the sliding power
+//! continues with the slip rate past its zero). In slip the
 //! dashpot's force along the slip direction is capped at the limit: where the
 //! dashpot alone reaches it (`γ û·v ≥ L`) spring and slider carry nothing along
 //! `û` (else LAMMPS's history `(L û − γ v)/k` points against the force, and with
@@ -74,6 +80,10 @@
 //! undisturbed paths, from the sphere to the target; z normal to the impact plane.
 //! Before the impact the sphere's velocity relative to the target is
 //! `v (cos α, sin α, 0)`.
+//!
+//! A planar impact (relative velocity in the x-y plane, spins about z, no twist)
+//! stays planar: its out-of-plane components are exactly 0, and the integration
+//! carries only the 18 that move (module `planar`); any other integrates all 27.
 //!
 //! The motion is three-dimensional: between two spheres the line of centres
 //! turns by about `v sin α t_c/(R_i + R_j)` during the contact, so the normal
@@ -96,6 +106,8 @@ mod modes;
 mod node_bed;
 mod normal;
 mod outcome;
+mod planar;
+mod segment;
 mod simulate;
 mod state;
 

@@ -5,13 +5,14 @@
 //! ([`BranchCurve`]: the JKR root `x = √â`, the Maugis-Dugdale angle θ), as the
 //! central simulated impact integrates it, one solve for the coordinate gives the
 //! force and the radius, and the slopes are central differences along the curve
-//! (explicit, no further solve). Elsewhere (Hertz, the plastic laws) the law is
+//! (explicit, no further solve), or the curve's closed form where it gives one
+//! (JKR). Elsewhere (Hertz, the plastic laws) the law is
 //! evaluated at the overlap and the slopes are central differences of it. The last
 //! point is kept: the rates, the event values and the mode switches ask for the
 //! same overlap several times (it is forgotten whenever a hook of the law may have
 //! changed its branch, [`Setup::forget_normal`]).
 
-use super::state::{derivative, NormalPoint, Setup};
+use super::state::{derivative, Modes, NormalPoint, Setup, N};
 use tabor_dynamics::{BranchCurve, ForceLaw};
 use tabor_restitution::Result;
 
@@ -47,6 +48,22 @@ impl<'a> Setup<'a> {
         Ok(p)
     }
 
+    /// True when the segment from SI (t, y) in `modes` is in contact on a law
+    /// whose slopes are exact ([`NormalPoint::exact`]).
+    pub(super) fn exact_slopes(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &[f64; N],
+        modes: &Modes,
+    ) -> Result<bool> {
+        if !modes.in_contact || law.curve().is_none() {
+            return Ok(false);
+        }
+        let (_, overlap, rate, _) = self.geometry(t, y);
+        Ok(self.normal(law, overlap, rate, false)?.exact)
+    }
+
     /// Forgets the last point (after a hook of the law).
     pub(super) fn forget_normal(&self) {
         self.normal_cache.set(None);
@@ -70,22 +87,25 @@ impl<'a> Setup<'a> {
         {
             return Ok(None);
         }
-        let slopes = if slopes {
-            let h = self.difference_step(law, overlap, rate)? / slope.abs();
-            let up = curve.point(q + h, rate)?;
-            let down = curve.point(q - h, rate)?;
-            let dd = up.overlap - down.overlap;
-            Some((
-                (up.contact_radius - down.contact_radius) / dd,
-                (up.force - down.force) / dd,
-            ))
-        } else {
-            None
+        let slopes = match (slopes, p.slopes) {
+            (false, _) => None,
+            (true, Some((df, da))) => Some((da / slope, df / slope)),
+            (true, None) => {
+                let h = self.difference_step(law, overlap, rate)? / slope.abs();
+                let up = curve.point(q + h, rate)?;
+                let down = curve.point(q - h, rate)?;
+                let dd = up.overlap - down.overlap;
+                Some((
+                    (up.contact_radius - down.contact_radius) / dd,
+                    (up.force - down.force) / dd,
+                ))
+            }
         };
         Ok(Some(NormalPoint {
             force: p.force,
             radius: p.contact_radius.max(0.0),
             slopes,
+            exact: p.slopes.is_some(),
         }))
     }
 
@@ -104,6 +124,7 @@ impl<'a> Setup<'a> {
                 force,
                 radius: law.contact_radius(overlap, rate)?.max(0.0),
                 slopes: None,
+                exact: false,
             });
         }
         let h = self.difference_step(law, overlap, rate)?;
@@ -113,6 +134,7 @@ impl<'a> Setup<'a> {
             force,
             radius: a.max(0.0),
             slopes: Some((a_prime, f_prime)),
+            exact: false,
         })
     }
 }

@@ -21,6 +21,8 @@ pub(super) struct NormalPoint {
     pub(super) radius: f64,
     /// `(da/dδ, dF/dδ)`, when asked for.
     pub(super) slopes: Option<(f64, f64)>,
+    /// The slopes are the law's closed form (no rounding of differences).
+    pub(super) exact: bool,
 }
 
 /// The last point evaluated: `(overlap, rate)` as bits and the point.
@@ -88,6 +90,9 @@ pub(super) struct Setup<'a> {
     pub(super) bed: Option<RefCell<MicroSlipBed>>,
     /// The normal law at the last overlap asked for ([`Setup::normal`]).
     pub(super) normal_cache: NormalCache,
+    /// The step the last segment's control proposed: the first step of the next
+    /// (normalized time; `None` at the start and after a branch change).
+    pub(super) step_hint: Cell<Option<f64>>,
 }
 
 /// Physical quantities at one state.
@@ -152,9 +157,10 @@ impl<'a> Setup<'a> {
         let numerator =
             2.0 * self.r_sum * self.v_n * t - self.v * self.v * t * t - 2.0 * p.dot(&e) - e.dot(&e);
         let overlap = numerator / (self.r_sum + r);
-        let n = d / r;
+        let inv_r = 1.0 / r;
+        let n = d * inv_r;
         let rate = -n.dot(&u);
-        let n_dot = (u - n * n.dot(&u)) / r;
+        let n_dot = (u + n * rate) * inv_r;
         (n, overlap, rate, n_dot)
     }
 
@@ -217,7 +223,16 @@ impl<'a> Setup<'a> {
             out.dy[EN] = f_el * rate;
             return Ok(out);
         }
-        let np = self.normal(law, overlap, rate, true)?;
+        // the slopes of the law enter only the rates of the slip conditions and
+        // `mindlin_rescale`'s shrinking of ξ while unloading
+        let slipping = [modes.tangential, modes.rolling, modes.twisting].contains(&Mode::Slip);
+        let rescaling = !modes.loading
+            && self
+                .imp
+                .friction
+                .as_ref()
+                .is_some_and(|f| f.tangential.model == TangentialModel::MindlinRescale);
+        let np = self.normal(law, overlap, rate, slipping || rescaling)?;
         let (f_el, a) = (np.force, np.radius);
         let (a_prime, f_prime) = np.slopes.unwrap_or((0.0, 0.0));
         let normal = &self.imp.normal;
@@ -417,9 +432,17 @@ impl<'a> Setup<'a> {
                     // vanishes more slowly than k (a Tsuji damping ∝ √a at a
                     // damped Hertz separation, k ∝ a) the history (L û − γ v)/k
                     // and the sliding work g·(L − γ û·v)/k diverge, as 1/δ.
+                    // The slip rate g falls to 0 where slip ends (the event that
+                    // ends the segment): its smooth continuation beyond, not
+                    // g⁺, keeps the power smooth across the step that holds the
+                    // event, whose dense output gives the energy there (a kink
+                    // inside the step would be integrated at the motion's step
+                    // size, the energies being outside the error control). A
+                    // frozen element, whose slip has no end event, counts g⁺.
+                    let slip_rate = if modes.frozen[0] { g.max(0.0) } else { g };
                     if on_surface >= 0.0 {
                         out.dy[EN + 2] = if k > 0.0 {
-                            g.max(0.0) * on_surface / k
+                            slip_rate * on_surface / k
                         } else {
                             0.0
                         };

@@ -260,7 +260,8 @@ impl<const N: usize> DormandPrince853<N> {
 
 /// Hairer's error norm of `DOP853`: the fifth-order estimate `err5`, corrected
 /// by the third-order one `err3` as `err5² / √(err5² + 0.01 err3²)`, both in
-/// the root-mean-square norm over the error scales, times `|h|`.
+/// the root-mean-square norm over the error scales (of the controlled
+/// components, [`OdeTolerance::error_components`]), times `|h|`.
 fn error_norm<const N: usize>(
     core: &StepperCore<N>,
     h: f64,
@@ -277,8 +278,9 @@ fn error_norm<const N: usize>(
             high[i] += bj * kj[i];
         }
     }
+    let m = core.controlled();
     let (mut err5, mut err3) = (0.0, 0.0);
-    for i in 0..N {
+    for i in 0..m {
         let sk = core.scale(y[i], y_new[i]);
         let e3 = high[i] - BHH[0] * k[0][i] - BHH[1] * k[8][i] - BHH[2] * k[11][i];
         err5 += (e5[i] / sk).powi(2);
@@ -288,7 +290,7 @@ fn error_norm<const N: usize>(
     if deno <= 0.0 {
         deno = 1.0;
     }
-    h.abs() * err5 * (1.0 / (N.max(1) as f64 * deno)).sqrt()
+    h.abs() * err5 * (1.0 / (m.max(1) as f64 * deno)).sqrt()
 }
 
 /// The weights `B` as a row of the coupling matrix.

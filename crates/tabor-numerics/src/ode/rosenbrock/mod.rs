@@ -423,11 +423,12 @@ impl<const N: usize> Rosenbrock<N> {
     /// The root-mean-square of the error estimate `k_s` over the error scales.
     fn error_norm(&self, estimate: &[f64; N], y_new: &[f64; N]) -> f64 {
         let y = &self.core.y;
+        let m = self.core.controlled();
         let mut err = 0.0;
-        for n in 0..N {
+        for n in 0..m {
             err += (estimate[n] / self.core.scale(y[n], y_new[n])).powi(2);
         }
-        (err / N.max(1) as f64).sqrt()
+        (err / m.max(1) as f64).sqrt()
     }
 
     /// Accepts a step of size `h` with error `err` and controller factor `fac`

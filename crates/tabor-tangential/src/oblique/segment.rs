@@ -1,0 +1,221 @@
+//! One segment of an oblique impact: the integration from one event to the next
+//! ([`Setup::segment`]), and the spring bed's onset and commits around it.
+
+use super::elements::{keep_first, model_error};
+use super::limits::EVENT_ZERO;
+use super::simulate::Event;
+use super::state::*;
+use std::cell::Cell;
+use tabor_dynamics::{ForceLaw, SimulationSettings};
+use tabor_numerics::ode::{
+    drive_events, DenseStepper, DormandPrince, DormandPrince853, EventDirection, EventsIntegration,
+};
+use tabor_numerics::Cost;
+use tabor_restitution::{Error, Result};
+
+impl<'a> Setup<'a> {
+    /// The answer of a hook of the law, its last normal point forgotten (the hook
+    /// may have changed the branch).
+    pub(super) fn hook<T>(&self, answer: Result<T>) -> Result<T> {
+        self.forget_normal();
+        self.step_hint.set(None);
+        answer
+    }
+
+    /// Integrates from SI (t, y) to the first event.
+    pub(super) fn segment(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &[f64; N],
+        modes: &Modes,
+        settings: &SimulationSettings,
+    ) -> Result<(Event, f64, [f64; N], Cost)> {
+        // the integration starts at the normalized state; the event values there
+        // are those its event function sees (the round trip SI → normalized → SI
+        // moves a value at its zero by rounding, to either side)
+        let s0 = t / self.time;
+        let yn = self.to_normalized(y);
+        let g0 = self.event_values(law, s0 * self.time, &self.to_si(&yn), modes)?;
+        // an event function at (or, by the location tolerance or rounding, just
+        // past) its zero at the start is shifted to start a margin above it: the
+        // crossing just handled is not found again, a genuine later one is. The
+        // margin (10⁻¹² of the value's size) exceeds the rounding of the shift.
+        let mut offset = [0.0; 9];
+        for (o, g) in offset.iter_mut().zip(g0.iter()) {
+            let margin = 1e-12 * g.abs().max(1.0);
+            if g.is_finite() && *g <= margin {
+                *o = 2.0 * margin - g;
+            }
+        }
+        if g0[0].is_nan() || g0[0] < 0.0 {
+            return Err(model_error(format!(
+                "{}: branch_end = {:e} at the start of a segment",
+                law.name(),
+                g0[0]
+            )));
+        }
+        let failure: Cell<Option<Error>> = Cell::new(None);
+        // SI rates to normalized ones: times the time unit, over the state's unit
+        let rate_unit: [f64; N] = std::array::from_fn(|i| self.time / self.scale[i]);
+        let mut rhs = |s: f64, yn: &[f64; N]| -> [f64; N] {
+            let ysi = self.to_si(yn);
+            match self.evaluate(law, s * self.time, &ysi, modes) {
+                Ok(ev) => std::array::from_fn(|i| ev.dy[i] * rate_unit[i]),
+                Err(e) => {
+                    keep_first(&failure, e);
+                    [f64::NAN; N]
+                }
+            }
+        };
+        let g_failure: Cell<Option<Error>> = Cell::new(None);
+        // a value within the rounding of the event values (O(1) in their units)
+        // is the zero itself: Brent's method stops there instead of bisecting
+        // the rest of the bracket down to 4 ε
+        let g = |s: f64, yn: &[f64; N]| -> f64 {
+            match self.event_values(law, s * self.time, &self.to_si(yn), modes) {
+                Ok(v) => {
+                    let g = v
+                        .iter()
+                        .zip(offset.iter())
+                        .map(|(g, o)| g + o)
+                        .fold(f64::INFINITY, f64::min);
+                    if g.abs() <= EVENT_ZERO {
+                        0.0
+                    } else {
+                        g
+                    }
+                }
+                Err(e) => {
+                    keep_first(&g_failure, e);
+                    f64::NAN
+                }
+            }
+        };
+        let s_end = s0 + settings.max_duration;
+        let numerics = |e| failure.take().unwrap_or(Error::Numerics(e));
+        let micro_slip = self.bed.is_some() && modes.in_contact;
+        // micro-slip: the springs' state at the end of every accepted step
+        let mut commit = |stop: f64, yn: &[f64; N]| {
+            if micro_slip {
+                if let Err(e) = self.commit_bed(law, stop * self.time, &self.to_si(yn)) {
+                    keep_first(&failure, e);
+                }
+            }
+        };
+        let mut events = |s: f64, yn: &[f64; N]| [g(s, yn)];
+        // the smooth models with DOP853 (as the central simulated impact), the
+        // spring bed, piecewise smooth within a step, with Dormand-Prince 5(4)
+        // The energies are quadratures of the powers along the motion: where the
+        // law's slopes are exact (JKR's closed form) its eighth-order steps
+        // resolve them, and they do not choose the steps (DOP853's error norm over
+        // the motion only); with slopes by differences, whose rounding grows
+        // toward a branch end, and for the spring bed's Dormand-Prince 5(4) steps
+        // of a piecewise smooth motion, they stay under control.
+        let quadratures = self.exact_slopes(law, t, y, modes)?;
+        let run = if self.bed.is_some() {
+            let mut stepper = DormandPrince::new(&mut rhs, s0, yn, s_end, settings.tolerance)
+                .map_err(&numerics)?;
+            drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit)
+        } else if self.is_planar(y, modes) {
+            let mut g = g;
+            let tolerance = settings.tolerance;
+            self.planar_segment(&mut rhs, &mut g, s0, &yn, s_end, tolerance, quadratures)
+        } else {
+            let mut tolerance = settings.tolerance;
+            if quadratures {
+                tolerance = tolerance.with_error_components(EN);
+            }
+            // the first step: the one the last segment's control proposed
+            if let Some(h) = self.step_hint.get() {
+                tolerance.initial_step = Some(h);
+            }
+            let mut stepper =
+                DormandPrince853::new(&mut rhs, s0, yn, s_end, tolerance).map_err(&numerics)?;
+            let run = drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit);
+            self.step_hint.set(Some(stepper.proposed_step()));
+            run
+        }
+        .map_err(&numerics)?;
+        if let Some(e) = failure.take().or(g_failure.take()) {
+            return Err(e);
+        }
+        let sol = run.solution;
+        if !sol.event_found {
+            return Err(model_error(format!(
+                "{}: no separation within {} time units (overlap scale / normal speed)",
+                law.name(),
+                settings.max_duration
+            )));
+        }
+        let t_hit = sol.t * self.time;
+        let y_hit = self.to_si(&sol.y);
+        if micro_slip {
+            self.commit_bed(law, t_hit, &y_hit)?;
+        }
+        let mut gv = self.event_values(law, t_hit, &y_hit, modes)?;
+        for (g, o) in gv.iter_mut().zip(offset.iter()) {
+            *g += o;
+        }
+        let which = gv
+            .iter()
+            .enumerate()
+            .min_by(|a, b| a.1.total_cmp(b.1))
+            .map_or(0, |(i, _)| i);
+        let event = [
+            Event::BranchEnd,
+            Event::Turn,
+            Event::TangentialLimit,
+            Event::TangentialStick,
+            Event::RollingLimit,
+            Event::RollingStick,
+            Event::TwistingLimit,
+            Event::TwistingStick,
+            Event::FrictionOnset,
+        ][which];
+        Ok((event, t_hit, y_hit, sol.cost + run.event_cost))
+    }
+}
+
+/// One run of [`drive_events`] to the falling zero of the event function `g`, the
+/// dense output prepared only on the step that contains it; `observer` sees the
+/// end of every other accepted step.
+fn drive_to_event<S, F, G, O>(
+    stepper: &mut S,
+    f: &mut F,
+    g: &mut G,
+    t_end: f64,
+    observer: &mut O,
+) -> tabor_numerics::Result<EventsIntegration<N>>
+where
+    S: DenseStepper<N>,
+    F: FnMut(f64, &[f64; N]) -> [f64; N],
+    G: FnMut(f64, &[f64; N]) -> [f64; 1],
+    O: FnMut(f64, &[f64; N]),
+{
+    drive_events(stepper, f, g, [EventDirection::Falling], t_end, observer)
+}
+
+impl<'a> Setup<'a> {
+    /// Contact onset: the springs unstrained, the current displacement the
+    /// reference.
+    pub(super) fn reset_bed(&self, law: &dyn ForceLaw, t: f64, y: &[f64; N]) -> Result<()> {
+        if let Some(bed) = &self.bed {
+            let (n, overlap, rate, _) = self.geometry(t, y);
+            let a = law.contact_radius(overlap, rate)?.max(0.0);
+            bed.borrow_mut().reset(&v3(y, XT), &n, a);
+        }
+        Ok(())
+    }
+
+    /// Commits the spring bed at SI (t, y) (after an accepted step).
+    pub(super) fn commit_bed(&self, law: &dyn ForceLaw, t: f64, y: &[f64; N]) -> Result<()> {
+        let (Some(bed), Some(fr)) = (&self.bed, &self.imp.friction) else {
+            return Ok(());
+        };
+        let (a, fc, .., n) = self.contact(law, t, y)?;
+        bed.borrow_mut()
+            .commit(&n, &v3(y, XT), a, fr.tangential.coefficient * fc);
+        Ok(())
+    }
+}
