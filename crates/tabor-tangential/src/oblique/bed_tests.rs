@@ -163,3 +163,44 @@ fn a_history_off_the_line_takes_the_node_bed() {
     );
     assert!((fp - fnodes).norm() < 1e-6 * LIMIT, "{fp} vs {fnodes}");
 }
+
+/// An unstrained bed whose displacement moves only by rounding (a normal
+/// component of `s` of 1e-24 m, projected on a normal a rounding short of unit
+/// length, as where two spheres' contact points move together: Chung & Ooi's
+/// Test 7) has no force and stays finite: the rounding has no direction of its
+/// own. The planar bed took it for the bed's line (the normal itself), and the
+/// commit's projection of that line into the tangent plane, 0/0, made every
+/// later force NaN.
+#[test]
+fn rounding_of_an_unmoved_contact_is_no_direction() {
+    let mut bed = MicroSlipBed::new(K_T, A, 64, true);
+    bed.reset(&Vector3::zeros(), &n(), A);
+    // the states of Test 7's first steps: s along the normal by rounding, the
+    // normal once a rounding short of unit length (its projection leaves
+    // 1.5e-39 m of s in the tangent plane, along the normal)
+    let short = -Vector3::x() * 0.9999999999999999;
+    let steps = [
+        (n(), 4.398249653002504e-28),
+        (short, 3.849109048073003e-24),
+        (n(), 6.150267843089653e-24),
+        (n(), 6.150267843089653e-24),
+    ];
+    for (normal, along_normal) in steps {
+        let s = Vector3::x() * along_normal;
+        let f = bed.force(&normal, &s, A, LIMIT);
+        assert!(f.iter().all(|c| c.is_finite()), "{f:?}");
+        assert!(f.norm() < 1e-12 * LIMIT, "{f:?}");
+        bed.commit(&normal, &s, A, LIMIT);
+    }
+    let s = Vector3::x() * 6.150267843089653e-24;
+    // and the bed still loads along the first real increment, exactly
+    let x = 1e-3 * 0.75 * LIMIT / (A * 0.5 * K_T);
+    let f = bed.force(&n(), &(s + Vector3::y() * x), A, LIMIT);
+    assert!(f.iter().all(|c| c.is_finite()), "{f:?}");
+    assert!(
+        (f.norm() - cattaneo(x)).abs() < 1e-9 * cattaneo(x),
+        "{} vs {}",
+        f.norm(),
+        cattaneo(x)
+    );
+}

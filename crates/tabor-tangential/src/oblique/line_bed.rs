@@ -285,13 +285,18 @@ impl LineBed {
         ds -= n * n.dot(&ds);
         let size = ds.norm();
         // the committed direction turned with the normal: unit and in the new
-        // tangent plane to rounding (it is renormalized at the commit)
+        // tangent plane to rounding (it is renormalized at the commit). An
+        // unstrained bed takes the direction of the increment, where it is more
+        // than rounding: an increment of 1e-13 of the displacements and the cap
+        // (a normal component of s rounded into the tangent plane, as where two
+        // spheres' contact points move together) has no direction of its own.
+        let rounding = 1e-13 * (s.norm() + self.s0_norm + phi * a2);
         let e = if self.strained {
             turned(&self.n0, n, &self.e)
-        } else if size > 0.0 {
+        } else if size > rounding {
             ds / size
         } else {
-            self.e
+            turned(&self.n0, n, &self.e)
         };
         let d = ds.dot(&e);
         // rounding leaves ~1e-16 of |s| and |Δs| off the line of a planar history
@@ -478,7 +483,11 @@ impl LineBed {
         }
         self.strained |= p.d != 0.0;
         let e = p.e - n * n.dot(&p.e);
-        self.e = e / e.norm();
+        let length = e.norm();
+        // unit in the tangent plane (the probe's direction lies in it to rounding)
+        if length > 0.5 {
+            self.e = e / length;
+        }
         self.s0 = *s;
         self.s0_norm = s.norm();
         self.n0 = *n;
