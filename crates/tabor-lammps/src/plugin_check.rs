@@ -1,5 +1,6 @@
 //! `--check` of a `pair_style tabor` line (`pair_coeff I J maugis E* w Λ | range h
-//! | stress s0 …`, `jkr/fixed-grip|jkr/load-controlled E* w …`): the restitution
+//! | stress s0 …`, `jkr/fixed-grip|jkr/load-controlled E* w …`, or the material
+//! form `material E ν γ` before the model, one material against itself): the restitution
 //! LAMMPS will produce with the plugin for the scene's bodies — the plugin's own
 //! force law (`tabor_ffi`, built from the line exactly as `pair_coeff` builds it)
 //! integrated by velocity Verlet at the time step the plugin was verified at — beside
@@ -59,12 +60,17 @@ pub struct PluginCheck {
 }
 
 /// Whether `line` is a `pair_style tabor` line (`pair_coeff I J` followed by one of
-/// the plugin's adhesive models, whose names `pair_style granular` does not use).
+/// the plugin's adhesive models, whose names `pair_style granular` does not use,
+/// or by the material form `material E nu gamma` and one of them).
 pub fn is_plugin_line(line: &str) -> bool {
     let w: Vec<&str> = line.split_whitespace().collect();
-    w.len() > 3
+    let model = if w.get(3) == Some(&"material") { 7 } else { 3 };
+    w.len() > model
         && w[0] == "pair_coeff"
-        && matches!(w[3], "maugis" | "jkr/fixed-grip" | "jkr/load-controlled")
+        && matches!(
+            w[model],
+            "maugis" | "jkr/fixed-grip" | "jkr/load-controlled"
+        )
 }
 
 fn bad(message: String) -> ExportError {
@@ -75,14 +81,44 @@ fn bad(message: String) -> ExportError {
 /// parameters; the friction keywords are skipped with a note.
 fn read(line: &str, notes: &mut Vec<String>) -> Result<(PluginModel, TaborLawParams), ExportError> {
     let w: Vec<&str> = line.split_whitespace().collect();
-    let mut i = 4;
     let num = |i: &mut usize, what: &str| -> Result<f64, ExportError> {
         let t = w.get(*i).ok_or_else(|| bad(format!("missing {what}")))?;
         *i += 1;
         t.parse::<f64>()
             .map_err(|_| bad(format!("{what}: expected a number, got {t}")))
     };
-    let (model, code) = match w[3] {
+    // the material form: E, nu, gamma of one material (the pair's own line, or
+    // both types of one material), E* = E/(2(1 − nu²)) and w = 2 gamma as the
+    // plugin computes them
+    let material = if w[3] == "material" {
+        let mut j = 4;
+        let (e, nu, gamma) = (num(&mut j, "E")?, num(&mut j, "nu")?, num(&mut j, "gamma")?);
+        if !(e > 0.0 && e.is_finite()) {
+            return Err(bad(format!(
+                "material E = {e}: must be positive and finite"
+            )));
+        }
+        if !(nu > -1.0 && nu < 0.5) {
+            return Err(bad(format!("material nu = {nu}: must be in (-1, 0.5)")));
+        }
+        if !(gamma >= 0.0 && gamma.is_finite()) {
+            return Err(bad(format!(
+                "material gamma = {gamma}: must be non-negative and finite"
+            )));
+        }
+        let (e_star, w_adh) = (e / (2.0 * (1.0 - nu * nu)), 2.0 * gamma);
+        notes.push(format!(
+            "material {e} {nu} {gamma}: one material against itself, E* = E/(2(1 - nu^2)) \
+             = {e_star:e} Pa, w = 2 gamma = {w_adh:e} J/m^2 (a pair of two materials is \
+             mixed by the plugin from both types' lines)"
+        ));
+        Some((e_star, w_adh))
+    } else {
+        None
+    };
+    let at = if material.is_some() { 7 } else { 3 };
+    let mut i = at + 1;
+    let (model, code) = match w[at] {
         "maugis" => (PluginModel::Maugis, tabor_ffi::TABOR_MODEL_MAUGIS_DUGDALE),
         "jkr/fixed-grip" => (
             PluginModel::JkrFixedGrip,
@@ -95,9 +131,15 @@ fn read(line: &str, notes: &mut Vec<String>) -> Result<(PluginModel, TaborLawPar
     };
     let mut p = TaborLawParams {
         model: code,
-        effective_modulus: num(&mut i, "E*")?,
+        effective_modulus: match material {
+            Some((e_star, _)) => e_star,
+            None => num(&mut i, "E*")?,
+        },
         effective_radius: 1.0,
-        work_of_adhesion: num(&mut i, "w")?,
+        work_of_adhesion: match material {
+            Some((_, w_adh)) => w_adh,
+            None => num(&mut i, "w")?,
+        },
         tabor_parameter: 0.0,
         damping_time: 0.0,
         damping_model: tabor_ffi::TABOR_DAMPING_KUWABARA_KONO,

@@ -431,3 +431,36 @@ fn check_reads_the_exported_range_form() {
         assert!(e.contains(name), "{e}");
     }
 }
+
+/// `--check` reads the plugin's material form (`material E nu gamma MODEL …`) as
+/// the plugin does for one material: E* = E/(2(1 − ν²)) and w = 2γ, computed here
+/// from the formulas; the prediction equals that of the E*/w line with those
+/// numbers, and bad material numbers are named.
+#[test]
+fn check_reads_the_material_form() {
+    use tabor_lammps::{check_plugin, is_plugin_line};
+    let s = scene("examples/scenes/silica.toml");
+    let (e, nu, gamma) = (54e9, 0.17, 0.025);
+    let material = format!("pair_coeff * * material {e} {nu} {gamma} jkr/fixed-grip");
+    assert!(is_plugin_line(&material));
+    assert!(!is_plugin_line("pair_coeff * * material 54e9 0.17 0.025"));
+    let e_star = e / (2.0 * (1.0 - nu * nu));
+    let direct = format!("pair_coeff * * jkr/fixed-grip {e_star:e} {:e}", 2.0 * gamma);
+    let (a, b) = (
+        check_plugin(&s, &material, Some(0.2), &[]).unwrap(),
+        check_plugin(&s, &direct, Some(0.2), &[]).unwrap(),
+    );
+    assert_eq!(a.effective_modulus, e_star);
+    assert_eq!(a.work_of_adhesion, 2.0 * gamma);
+    assert_eq!(a.at_speed, b.at_speed);
+    assert!(a.notes.iter().any(|n| n.contains("w = 2 gamma")));
+    for (bad, name) in [
+        ("material 54e9 0.5 0.025", "nu = 0.5"),
+        ("material -1 0.17 0.025", "E = -1"),
+        ("material 54e9 0.17 -0.1", "gamma = -0.1"),
+    ] {
+        let line = format!("pair_coeff * * {bad} maugis 0.5");
+        let err = check_plugin(&s, &line, None, &[]).unwrap_err().to_string();
+        assert!(err.contains(name), "{err}");
+    }
+}

@@ -44,7 +44,8 @@ pub struct LammpsArgs {
     /// Predict the restitution LAMMPS produces for this pair_coeff or
     /// "fix ... wall/gran granular ..." line, with the scene's bodies; a
     /// pair_style tabor line (maugis ... [range h | stress s0], jkr/fixed-grip,
-    /// jkr/load-controlled) is run through the plugin's own force law
+    /// jkr/load-controlled, after E* w or the material form "material E nu
+    /// gamma") is run through the plugin's own force law
     #[arg(long, value_name = "LINE", conflicts_with = "plugin")]
     check: Option<String>,
     /// Write the fragment for pair_style tabor (the plugin built by
