@@ -25,3 +25,8 @@ pub(super) const MAX_SPRING_RATIO: f64 = 1e12;
 /// counts as at its zero: a few ulps of their terms, where the location to 4 ε
 /// in time ends anyway (`Setup::segment`).
 pub(super) const EVENT_ZERO: f64 = 1e-15;
+
+/// The slack of the micro-slip beds' frame, in units of the last step's change
+/// (path length of `s` plus the bound on the change of the limits): springs with
+/// more slack than this many steps' change are kept in the frame (both beds).
+pub(super) const FRAME_STEPS: f64 = 16.0;

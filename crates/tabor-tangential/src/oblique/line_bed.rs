@@ -19,13 +19,13 @@
 //! (one per step of a growing contact that sticks at its edge).
 //!
 //! **The frame.** The leading breakpoints (from the centre) whose slack (limit less
-//! displacement) exceeds [`super::node_bed::FRAME_STEPS`] steps' change translate
+//! displacement) exceeds [`super::limits::FRAME_STEPS`] steps' change translate
 //! rigidly: they are kept as `u_k + σ` with one shift `σ`, and their pieces'
 //! integral `∫ u z^{−1/2} dz` once; an evaluation visits only the pieces beyond.
 //! The bound is that of the node bed's frame (checked at every evaluation; the
 //! frame is flattened and rebuilt where it fails or half its budget is spent).
 
-use super::node_bed::FRAME_STEPS;
+use super::limits::FRAME_STEPS;
 use nalgebra::Vector3;
 
 /// `∫_p^q f z^{−1/2} dz` for `f` linear in z with `f(p) = fp`, `f(q) = fq`

@@ -21,13 +21,9 @@
 //! checked at every evaluation, and the bed falls back to visiting every spring
 //! where it fails) and is rebuilt when its budget is half spent.
 
+use super::limits::FRAME_STEPS;
 use super::line_bed::LineBed;
 use nalgebra::{Matrix3, Vector3};
-
-/// The slack of the frame, in units of the last step's change (path length of
-/// `s` plus the bound on the change of the limits): springs with more slack than
-/// this many steps' change are kept in the frame.
-pub(super) const FRAME_STEPS: f64 = 16.0;
 
 /// The MDR spring bed as nodes uniform in z (see the module doc).
 #[derive(Clone, Debug)]
