@@ -55,27 +55,32 @@ impl<'a> Setup<'a> {
         modes.twisting == Mode::Stick && OUT_OF_PLANE.iter().all(|&i| y[i] == 0.0)
     }
 
-    /// DOP853 on the [`PLANAR`] components from the normalized `(s0, yn)` to the
-    /// falling zero of `g` (or `s_end`), with the right-hand side `rhs` and the
-    /// event function `g` of the full normalized state; the result in the full
-    /// state. `quadratures`: the energies outside the error control. Starts with the last segment's proposed step and leaves its own
-    /// ([`Setup::step_hint`]).
+    /// DOP853 on the [`PLANAR`] components from the normalized state `yn` at
+    /// `ends.0` to the falling zero of `g` (or `ends.1`), with the SI rates
+    /// `rates` and the event function `g` of the full SI state at SI time; the
+    /// normalized rates are the SI ones times `rate_unit`. The result in the full
+    /// normalized state. The planar components go to SI and their rates back
+    /// without the full state's round trip: the same products (the out-of-plane
+    /// components are 0 either way), so the same numbers. `quadratures`: the
+    /// energies outside the error control. Starts with the last segment's
+    /// proposed step and leaves its own ([`Setup::step_hint`]).
     #[allow(clippy::too_many_arguments)]
     pub(super) fn planar_segment<F, G>(
         &self,
-        rhs: &mut F,
-        g: &mut G,
-        s0: f64,
+        rates: &F,
+        g: &G,
+        rate_unit: &[f64; N],
+        ends: (f64, f64),
         yn: &[f64; N],
-        s_end: f64,
         tolerance: OdeTolerance,
         quadratures: bool,
     ) -> tabor_numerics::Result<EventsIntegration<N>>
     where
-        F: FnMut(f64, &[f64; N]) -> [f64; N],
-        G: FnMut(f64, &[f64; N]) -> f64,
+        F: Fn(f64, &[f64; N]) -> [f64; N],
+        G: Fn(f64, &[f64; N]) -> f64,
     {
         const M: usize = PLANAR.len();
+        let (s0, s_end) = ends;
         let expand = |z: &[f64; M]| {
             let mut y = [0.0; N];
             for (&i, &v) in PLANAR.iter().zip(z.iter()) {
@@ -83,9 +88,19 @@ impl<'a> Setup<'a> {
             }
             y
         };
+        let si = |z: &[f64; M]| {
+            let mut y = [0.0; N];
+            for (&i, &v) in PLANAR.iter().zip(z.iter()) {
+                y[i] = v * self.scale[i];
+            }
+            y
+        };
         let compress = |y: &[f64; N]| -> [f64; M] { std::array::from_fn(|k| y[PLANAR[k]]) };
-        let mut f = |s: f64, z: &[f64; M]| compress(&rhs(s, &expand(z)));
-        let mut events = |s: f64, z: &[f64; M]| [g(s, &expand(z))];
+        let mut f = |s: f64, z: &[f64; M]| -> [f64; M] {
+            let dy = rates(s * self.time, &si(z));
+            std::array::from_fn(|k| dy[PLANAR[k]] * rate_unit[PLANAR[k]])
+        };
+        let mut events = |s: f64, z: &[f64; M]| [g(s * self.time, &si(z))];
         let mut tolerance = tolerance;
         if quadratures {
             tolerance = tolerance.with_error_components(PLANAR_MOTION);

@@ -58,22 +58,26 @@ impl<'a> Setup<'a> {
         let failure: Cell<Option<Error>> = Cell::new(None);
         // SI rates to normalized ones: times the time unit, over the state's unit
         let rate_unit: [f64; N] = std::array::from_fn(|i| self.time / self.scale[i]);
-        let mut rhs = |s: f64, yn: &[f64; N]| -> [f64; N] {
-            let ysi = self.to_si(yn);
-            match self.evaluate(law, s * self.time, &ysi, modes) {
-                Ok(ev) => std::array::from_fn(|i| ev.dy[i] * rate_unit[i]),
+        // the SI rates at SI (t, y)
+        let rates = |t: f64, ysi: &[f64; N]| -> [f64; N] {
+            match self.evaluate(law, t, ysi, modes) {
+                Ok(ev) => ev.dy,
                 Err(e) => {
                     keep_first(&failure, e);
                     [f64::NAN; N]
                 }
             }
         };
+        let mut rhs = |s: f64, yn: &[f64; N]| -> [f64; N] {
+            let dy = rates(s * self.time, &self.to_si(yn));
+            std::array::from_fn(|i| dy[i] * rate_unit[i])
+        };
         let g_failure: Cell<Option<Error>> = Cell::new(None);
         // a value within the rounding of the event values (O(1) in their units)
         // is the zero itself: Brent's method stops there instead of bisecting
         // the rest of the bracket down to 4 ε
-        let g = |s: f64, yn: &[f64; N]| -> f64 {
-            match self.event_values(law, s * self.time, &self.to_si(yn), modes) {
+        let g_si = |t: f64, ysi: &[f64; N]| -> f64 {
+            match self.event_values(law, t, ysi, modes) {
                 Ok(v) => {
                     let g = v
                         .iter()
@@ -92,6 +96,7 @@ impl<'a> Setup<'a> {
                 }
             }
         };
+        let g = |s: f64, yn: &[f64; N]| g_si(s * self.time, &self.to_si(yn));
         let s_end = s0 + settings.max_duration;
         let numerics = |e| failure.take().unwrap_or(Error::Numerics(e));
         let micro_slip = self.bed.is_some() && modes.in_contact;
@@ -118,9 +123,9 @@ impl<'a> Setup<'a> {
                 .map_err(&numerics)?;
             drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit)
         } else if self.is_planar(y, modes) {
-            let mut g = g;
+            let ends = (s0, s_end);
             let tolerance = settings.tolerance;
-            self.planar_segment(&mut rhs, &mut g, s0, &yn, s_end, tolerance, quadratures)
+            self.planar_segment(&rates, &g_si, &rate_unit, ends, &yn, tolerance, quadratures)
         } else {
             let mut tolerance = settings.tolerance;
             if quadratures {
