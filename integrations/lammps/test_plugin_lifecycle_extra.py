@@ -10,6 +10,11 @@ test_plugin_lifecycle.py:
    contact gets its state (every stamp 0): the force on every atom after `run 0`
    equals the force read from the file as written, and a 50-step run continues
    identically.
+   A file of the build before the spring bed (Thornton's incremental form, 16
+   doubles per contact, a reversal force and a mode in doubles 13 and 14) read
+   by a run with tangential mindlin_deresiewicz stops with the message that names
+   Thornton's form (it was refused as a corrupted micro-slip bed header, whose
+   check also read past a shorter record).
 2. A recycled atom ID across two MPI ranks: the one-rank case of
    test_plugin_lifecycle.py (a grain stuck to another deleted, a new one created
    with the same ID 1.5 nm away) with the two grains on different ranks
@@ -81,6 +86,49 @@ def without_stamps(data):
         section += packed
     new_count = len(section) // 8
     return data[:starts[0] - 4] + struct.pack("<i", new_count) + section + data[end:]
+
+
+def thornton_layout(data):
+    """The restart file `data` with every contact of every fix tabor/history
+    record widened to Thornton's 16 doubles, doubles 10-15 a state of its
+    incremental form (reversal force -2e-7 N in double 13, mode 2: reloading)."""
+    starts, end = atom_buffers(data)
+    section = b""
+    for a in starts:
+        m = int(struct.unpack_from("<d", data, a)[0])
+        raw = data[a:a + 8 * m]
+        rec = list(struct.unpack_from(f"<{m - FIELDS}d", raw, 8 * FIELDS))
+        n = int(rec[2])
+        width = (len(rec) - 4) // n - 2 if n else 0
+        assert width in (0, 10), f"not a 10-double record: {width}"
+        out = struct.pack("<4d", 0.0, -1.0, float(n), rec[3])
+        for k in range(n):
+            at = 8 * (FIELDS + 4 + k * (2 + width))
+            out += raw[at:at + 16] + raw[at + 16:at + 16 + 8 * width]
+            out += struct.pack("<6d", 0.0, 0.0, 0.0, -2e-7, 2.0, 0.0)
+        out = struct.pack("<d", float(len(out) // 8)) + out[8:]
+        fields = list(struct.unpack_from(f"<{FIELDS}d", raw))
+        fields[0] = float(FIELDS + len(out) // 8)
+        section += struct.pack("<d", fields[0]) + raw[8:8 * FIELDS] + out
+    return data[:starts[0] - 4] + struct.pack("<i", len(section) // 8) + section + data[end:]
+
+
+def thornton_restart(failures):
+    with tempfile.TemporaryDirectory() as tmp:
+        file = os.path.join(tmp, "bed10.restart")
+        status, out = lmp_output(HEAD + GRAINS + PAIR + ["run 20", f"write_restart {file}"])
+        if status != 0:
+            failures.append(f"Thornton restart: writing failed: {error_line(out)}")
+            return
+        old = os.path.join(tmp, "thornton.restart")
+        with open(old, "wb") as f:
+            f.write(thornton_layout(open(file, "rb").read()))
+        micro = [line.replace("tangential mindlin NULL", "tangential mindlin_deresiewicz NULL") for line in PAIR[1:]]
+        status, out = lmp_output(["units si", f"plugin load {PLUGIN}", f"read_restart {old}"] + micro + ["run 0"])
+        line = error_line(out)
+        print(f"  Thornton's 16 doubles read with mindlin_deresiewicz: exit {status}: {line[:150]}")
+        if status == 0 or "Thornton's incremental form" not in line or "ERROR on proc" in out:
+            failures.append(f"Thornton restart: not refused by name (exit {status}): {line}")
 
 
 def record_of(data, tag):
@@ -161,6 +209,7 @@ def main():
     failures = []
     print("a restart file of an older build (no creation stamps):")
     older_build(failures)
+    thornton_restart(failures)
     print("a recycled atom ID across two MPI ranks:")
     recycled_two_ranks(failures)
     return report(failures, "lifecycle (older restart, recycled ID on 2 ranks): all passed")

@@ -378,8 +378,11 @@ std::string LAMMPS_NS::tabor_history_problem(const double *h, int width)
   for (int d = 0; d < width; d++)
     if (!std::isfinite(h[d])) return fmt::format("the non-finite history value {} (double {})", h[d], d);
   if (h[0] != 0.0 && h[0] != 1.0) return fmt::format("the contact flag {} (0 or 1)", h[0]);
-  if (width > TABOR_CONTACT_HISTORY_BASE_LEN) {
+  if (width >= TABOR_CONTACT_HISTORY_LEN) {
     // the micro-slip bed's header: node spacing and last squared contact radius
+    // (only in a whole bed: a shorter record is another layout, e.g. Thornton's
+    // 16 doubles, whose doubles 13 and 14 are a reversal force and a mode, and
+    // which the callers name; reading the header there would also read past it)
     const double *bed = h + TABOR_CONTACT_HISTORY_BASE_LEN;
     double dz = bed[3], a0_sq = bed[4];
     int nodes = (TABOR_MICRO_SLIP_LEN - 5) / 2;

@@ -108,8 +108,9 @@ int tabor_restart_offset(LAMMPS *lmp, int nlocal, int nth, std::string &problem)
 
 /* Why the `width` stored doubles of a contact history cannot be handed to
    tabor_contact_step ("" if they can): tabor-ffi's own rules (the contact flag
-   0 or 1, every value finite, the micro-slip bed's spacing and last squared
-   contact radius >= 0 and the radius inside the bed). */
+   0 or 1, every value finite, and in a whole micro-slip history of
+   TABOR_CONTACT_HISTORY_LEN doubles the bed's spacing and last squared contact
+   radius >= 0 and the radius inside the bed). */
 std::string tabor_history_problem(const double *h, int width);
 
 /* The atoms a contact law will see, checked before a run: type in 1..ntypes,
