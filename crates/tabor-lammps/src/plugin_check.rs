@@ -106,7 +106,9 @@ fn read(line: &str, notes: &mut Vec<String>) -> Result<(PluginModel, TaborLawPar
                 "material gamma = {gamma}: must be non-negative and finite"
             )));
         }
-        let (e_star, w_adh) = (e / (2.0 * (1.0 - nu * nu)), 2.0 * gamma);
+        // as the plugin's tabor_mix_modulus of a material with itself, to the bit
+        let f = (1.0 - nu * nu) / e;
+        let (e_star, w_adh) = (1.0 / (f + f), 2.0 * gamma);
         notes.push(format!(
             "material {e} {nu} {gamma}: one material against itself, E* = E/(2(1 - nu^2)) \
              = {e_star:e} Pa, w = 2 gamma = {w_adh:e} J/m^2 (a pair of two materials is \

@@ -440,11 +440,15 @@ fn check_reads_the_exported_range_form() {
 fn check_reads_the_material_form() {
     use tabor_lammps::{check_plugin, is_plugin_line};
     let s = scene("examples/scenes/silica.toml");
-    let (e, nu, gamma) = (54e9, 0.17, 0.025);
+    let (e, nu, gamma): (f64, f64, f64) = (54e9, 0.17, 0.025);
     let material = format!("pair_coeff * * material {e} {nu} {gamma} jkr/fixed-grip");
     assert!(is_plugin_line(&material));
     assert!(!is_plugin_line("pair_coeff * * material 54e9 0.17 0.025"));
-    let e_star = e / (2.0 * (1.0 - nu * nu));
+    // E* = E/(2(1 − ν²)), in the plugin's order of operations (tabor_mix_modulus
+    // in plugin/tabor_coeff.cpp: 1/((1 − ν²)/E + (1 − ν²)/E)), so that the
+    // prediction is of the plugin's law to the bit
+    let e_star = 1.0 / ((1.0 - nu * nu) / e + (1.0 - nu * nu) / e);
+    assert!((e_star / (e / (2.0 * (1.0 - nu * nu))) - 1.0).abs() < 1e-15);
     let direct = format!("pair_coeff * * jkr/fixed-grip {e_star:e} {:e}", 2.0 * gamma);
     let (a, b) = (
         check_plugin(&s, &material, Some(0.2), &[]).unwrap(),

@@ -43,7 +43,9 @@
 //! `z = x²` ([`super::line_bed`]): no discretization in z, the cost of an
 //! evaluation the breakpoints near the stick/slip boundaries. Any other history
 //! takes the nodes uniform in z of [`super::node_bed`] (the planar bed hands its
-//! profile over, sampled at the nodes, at the first increment off its line).
+//! profile over, sampled at the nodes, at the first increment off its line: the
+//! first evaluation off the line, even the trial of a step the integrator then
+//! rejects, so the rest of that contact keeps the node bed's 1/nodes² accuracy).
 //! [`ObliqueImpact::simulate_with_nodes`] takes the node bed throughout.
 
 use super::bodies::ObliqueImpact;
