@@ -223,6 +223,13 @@ impl LineBed {
         self.acc = vec![0.0; self.z.len()];
         self.acc_from = 0;
         self.strained = false;
+        // a unit direction in the new tangent plane (the old one, or an axis,
+        // projected): the default of an unstrained bed
+        self.e = [self.e, Vector3::y(), Vector3::z()]
+            .into_iter()
+            .map(|v| v - n * n.dot(&v))
+            .find(|v| v.norm() > 0.5)
+            .map_or(self.e, |v| v.normalize());
         self.clear_frame();
         self.s0 = *s;
         self.s0_norm = s.norm();
