@@ -101,13 +101,7 @@ impl<'a> Setup<'a> {
             std::array::from_fn(|k| dy[PLANAR[k]] * rate_unit[PLANAR[k]])
         };
         let mut events = |s: f64, z: &[f64; M]| [g(s * self.time, &si(z))];
-        let mut tolerance = tolerance;
-        if quadratures {
-            tolerance = tolerance.with_error_components(PLANAR_MOTION);
-        }
-        if let Some(h) = self.step_hint.get() {
-            tolerance.initial_step = Some(h);
-        }
+        let tolerance = self.dop853_tolerance(tolerance, quadratures, PLANAR_MOTION);
         let mut stepper = DormandPrince853::new(&mut f, s0, compress(yn), s_end, tolerance)?;
         let run = drive_events(
             &mut stepper,

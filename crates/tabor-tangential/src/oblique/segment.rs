@@ -9,6 +9,7 @@ use std::cell::Cell;
 use tabor_dynamics::{ForceLaw, SimulationSettings};
 use tabor_numerics::ode::{
     drive_events, DenseStepper, DormandPrince, DormandPrince853, EventDirection, EventsIntegration,
+    OdeTolerance,
 };
 use tabor_numerics::Cost;
 use tabor_restitution::{Error, Result};
@@ -20,6 +21,24 @@ impl<'a> Setup<'a> {
         self.forget_normal();
         self.step_hint.set(None);
         answer
+    }
+
+    /// The tolerance of a DOP853 segment: with `quadratures`, the error control
+    /// over the first `motion` components only (the energies after them are
+    /// quadratures); the first step the one the last segment's control proposed.
+    pub(super) fn dop853_tolerance(
+        &self,
+        mut tolerance: OdeTolerance,
+        quadratures: bool,
+        motion: usize,
+    ) -> OdeTolerance {
+        if quadratures {
+            tolerance = tolerance.with_error_components(motion);
+        }
+        if let Some(h) = self.step_hint.get() {
+            tolerance.initial_step = Some(h);
+        }
+        tolerance
     }
 
     /// Integrates from SI (t, y) to the first event.
@@ -127,14 +146,7 @@ impl<'a> Setup<'a> {
             let tolerance = settings.tolerance;
             self.planar_segment(&rates, &g_si, &rate_unit, ends, &yn, tolerance, quadratures)
         } else {
-            let mut tolerance = settings.tolerance;
-            if quadratures {
-                tolerance = tolerance.with_error_components(EN);
-            }
-            // the first step: the one the last segment's control proposed
-            if let Some(h) = self.step_hint.get() {
-                tolerance.initial_step = Some(h);
-            }
+            let tolerance = self.dop853_tolerance(settings.tolerance, quadratures, EN);
             let mut stepper =
                 DormandPrince853::new(&mut rhs, s0, yn, s_end, tolerance).map_err(&numerics)?;
             let run = drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit);
