@@ -320,23 +320,22 @@ void FixTaborHistory::unpack_restart(int nlocal, int nth)
     if (!bad.empty()) return refuse(fmt::format("holds {} for its contact with atom {}", bad, t));
   }
   // an older model's contact: the dropped doubles must be zero
-  // Thornton's incremental state (builds before the spring bed): doubles 10-15
-  int thornton = stored == 16 && TABOR_CONTACT_HISTORY_LEN != 16;
   entry = &rec[head];
-  for (int k = 0; k < n; k++, entry += per + stored)
-    for (int d = thornton ? TABOR_CONTACT_HISTORY_BASE_LEN : dnum; d < stored; d++)
-      if (entry[per + d] != 0.0) {
-        if (bad_record.empty())
-          bad_record = thornton
-              ? std::string("fix tabor/history: the restart file holds the micro-slip state of Thornton's "
-                            "incremental form (16 doubles per contact), which this build of pair tabor replaced by "
-                            "a spring bed; restart that run from its data file")
-              : fmt::format("fix tabor/history: the restart file holds {} doubles per contact, this build of pair "
-                            "tabor keeps {} for these pair coefficients and cannot drop the rest (a micro-slip bed, "
-                            "or a newer tabor's state)",
-                            stored, dnum);
-        return;
-      }
+  for (int k = 0; k < n; k++, entry += per + stored) {
+    TaborHistoryFit fit = tabor_history_fit(entry + per, stored, dnum);
+    if (fit != TABOR_HISTORY_FITS) {
+      if (bad_record.empty())
+        bad_record = fit == TABOR_HISTORY_THORNTON
+            ? std::string("fix tabor/history: the restart file holds the micro-slip state of Thornton's "
+                          "incremental form (16 doubles per contact), which this build of pair tabor replaced by "
+                          "a spring bed; restart that run from its data file")
+            : fmt::format("fix tabor/history: the restart file holds {} doubles per contact, this build of pair "
+                          "tabor keeps {} for these pair coefficients and cannot drop the rest (a micro-slip bed, "
+                          "or a newer tabor's state)",
+                          stored, dnum);
+      return;
+    }
+  }
   while (n > capacity) grow_capacity();
   npartner[nlocal] = n;
   stamp[nlocal] = own;

@@ -555,18 +555,17 @@ void FixWallTabor::unpack_restart(int nlocal, int nth)
     std::string bad = tabor_history_problem(buf + k0 + 1, MIN(width, hlen));
     if (!bad.empty()) return refuse(fmt::format("holds {} (contact {}): a corrupted restart file", bad, k));
   }
-  // Thornton's incremental state (builds before the spring bed): doubles 10-15
-  bool thornton = width == 16 && HLEN != 16;
-  for (int k = 0, k0 = 3; k < n; k++, k0 += 1 + width)
-    for (int d = thornton ? HBASE : hlen; d < width; d++)
-      if (buf[k0 + 1 + d] != 0.0) {
-        if (thornton)
-          return refuse("holds the micro-slip state of Thornton's incremental form (16 doubles per wall "
-                        "contact), which this build replaced by a spring bed; restart that run from its data file");
-        return refuse(fmt::format("holds {} doubles per wall contact, this fix keeps {} for its model and cannot "
-                                  "drop the rest (a micro-slip bed of tangential mindlin_deresiewicz, or a newer "
-                                  "tabor's state)", width, hlen));
-      }
+  // an older model's contact: the dropped doubles must be zero
+  for (int k = 0, k0 = 3; k < n; k++, k0 += 1 + width) {
+    TaborHistoryFit fit = tabor_history_fit(buf + k0 + 1, width, hlen);
+    if (fit == TABOR_HISTORY_THORNTON)
+      return refuse("holds the micro-slip state of Thornton's incremental form (16 doubles per wall "
+                    "contact), which this build replaced by a spring bed; restart that run from its data file");
+    if (fit == TABOR_HISTORY_DROPPED)
+      return refuse(fmt::format("holds {} doubles per wall contact, this fix keeps {} for its model and cannot "
+                                "drop the rest (a micro-slip bed of tangential mindlin_deresiewicz, or a newer "
+                                "tabor's state)", width, hlen));
+  }
   ncontact[nlocal] = n;
   int k0 = 3;
   for (int k = 0; k < n; k++) {

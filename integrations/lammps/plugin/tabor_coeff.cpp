@@ -393,6 +393,14 @@ std::string LAMMPS_NS::tabor_history_problem(const double *h, int width)
   return "";
 }
 
+LAMMPS_NS::TaborHistoryFit LAMMPS_NS::tabor_history_fit(const double *h, int stored, int kept)
+{
+  bool thornton = stored == 16 && TABOR_CONTACT_HISTORY_LEN != 16;
+  for (int d = thornton ? TABOR_CONTACT_HISTORY_BASE_LEN : kept; d < stored; d++)
+    if (h[d] != 0.0) return thornton ? TABOR_HISTORY_THORNTON : TABOR_HISTORY_DROPPED;
+  return TABOR_HISTORY_FITS;
+}
+
 void LAMMPS_NS::tabor_check_atoms(LAMMPS *lmp, const std::string &who, int groupbit)
 {
   Atom *atom = lmp->atom;

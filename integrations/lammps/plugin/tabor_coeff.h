@@ -113,6 +113,17 @@ int tabor_restart_offset(LAMMPS *lmp, int nlocal, int nth, std::string &problem)
    radius >= 0 and the radius inside the bed). */
 std::string tabor_history_problem(const double *h, int width);
 
+/* Whether a stored contact history of `stored` doubles can be kept in `kept`:
+   TABOR_HISTORY_FITS when every double beyond the kept ones is zero (a contact
+   that did not use them; fewer doubles start the rest at zero),
+   TABOR_HISTORY_THORNTON for a 16-double history with a value beyond the 10th
+   (Thornton's incremental micro-slip state of builds before the spring bed,
+   which this build cannot continue), TABOR_HISTORY_DROPPED for another value
+   that would be dropped (a micro-slip bed the model cannot continue, or a newer
+   tabor's state). The rule of fix tabor/history and fix wall/tabor. */
+enum TaborHistoryFit { TABOR_HISTORY_FITS, TABOR_HISTORY_THORNTON, TABOR_HISTORY_DROPPED };
+TaborHistoryFit tabor_history_fit(const double *h, int stored, int kept);
+
 /* The atoms a contact law will see, checked before a run: type in 1..ntypes,
    a finite radius > 0 and mass > 0, finite position, velocity and spin. The
    first bad atom (lowest ID) of `groupbit` stops the run on every rank
