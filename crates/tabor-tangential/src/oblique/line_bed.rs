@@ -297,10 +297,9 @@ impl LineBed {
         // than rounding: an increment of 1e-13 of the displacements and the cap
         // (a normal component of s rounded into the tangent plane, as where two
         // spheres' contact points move together) has no direction of its own.
-        let rounding = 1e-13 * (s.norm() + self.s0_norm + phi * a2);
         let e = if self.strained {
             turned(&self.n0, n, &self.e)
-        } else if size > rounding {
+        } else if size > 1e-13 * (s.norm() + self.s0_norm + phi * a2) {
             ds / size
         } else {
             turned(&self.n0, n, &self.e)
