@@ -77,10 +77,30 @@ CASES = [  # (speed m/s, angle degrees, sphere spin (rad/s))
 ]
 
 
-def tabor_oblique(speed, angle, spin, adhesive=True):
+# A damped Hertz contact (`damping tsuji`, tangential damping x_gamma,t): its
+# total normal force falls below 0 (the dashpot pulls) before the overlap
+# vanishes, and every Coulomb limit mu |F_n| touches 0 there. Before stop 37
+# the library mistook that point for the separation at small angles (e_t
+# -0.4329 at 0.5, 1 and 3 degrees alike, the elastic energy left in the
+# contact booked as a loss) when a twisting element was present.
+# At 40 degrees a stick/slip switch near that point makes LAMMPS's sequence
+# erratic at these time steps (sphere v_y = 0.06413700, 0.06390096, 0.06235419,
+# 0.06305169, 0.06244193, 0.06235405, 0.06235404 m/s at t_c/8000 ... /512000,
+# tabor 0.06235423): it converges to tabor's value, but not geometrically, so
+# it is not one of these cases.
+DAMPED_CASES = [(0.3, 1.0, (0.0, 0.0, 0.0)), (0.3, 3.0, (0.0, 0.0, 0.0)),
+                (0.3, 10.0, (0.0, 0.0, 0.0))]
+TSUJI = 0.5           # LAMMPS's damping tsuji value (a restitution)
+X_GAMMA_T = 0.5       # tangential damping, in units of the normal damping
+
+
+def tabor_oblique(speed, angle, spin, adhesive=True, damped=False):
     scene = SCENE.replace("SPIN", repr(list(spin)))
-    if not adhesive:
+    if not adhesive or damped:
         scene = scene.replace(f"[adhesion]\nwork_of_adhesion = {W}\nseparation = \"load-controlled\"\n", "")
+    if damped:
+        scene = scene.replace("[friction]\n", f"[friction]\ntangential_damping = {X_GAMMA_T}\n")
+        scene += f"[damping]\nmodel = \"tsuji\"\ncoefficient = {TSUJI}\n"
     path = write_temp(scene, ".toml")
     try:
         return tabor_json(["impact", path, "--speed", repr(speed), "--angle", repr(angle)])
@@ -88,14 +108,18 @@ def tabor_oblique(speed, angle, spin, adhesive=True):
         os.unlink(path)
 
 
-def lammps_oblique(speed, angle, spin, dt, contact_time, normal=None):
+def lammps_oblique(speed, angle, spin, dt, contact_time, normal=None, damped=False):
     """One collision in LAMMPS (`collide.collide_oblique`); returns the CoM-frame
-    velocity and spin of both spheres after they have parted."""
+    velocity and spin of both spheres after they have parted. `damped`: Hertz
+    with `damping tsuji` and tangential damping (`DAMPED_CASES`)."""
     gamma = W / 2.0  # LAMMPS's jkr takes the surface energy per surface
+    damping, x_gamma = "viscoelastic", 0.0
+    if damped:
+        normal, damping, x_gamma = f"hertz/material {E} {TSUJI} {NU}", "tsuji", X_GAMMA_T
     fragment = [
         "pair_style granular",
-        f"pair_coeff * * {normal or f'jkr {E} 0.0 {NU} {gamma}'} damping viscoelastic "
-        f"tangential mindlin NULL 0.0 {MU} rolling sds {K_ROLL} 0.0 {MU_ROLL} twisting marshall",
+        f"pair_coeff * * {normal or f'jkr {E} 0.0 {NU} {gamma}'} damping {damping} "
+        f"tangential mindlin NULL {x_gamma} {MU} rolling sds {K_ROLL} 0.0 {MU_ROLL} twisting marshall",
     ]
     # beyond the load-controlled pull-off separation of LAMMPS's jkr
     pulloff = (3.0 * math.pi ** 2 * W ** 2 * (R / 2.0) / (64.0 * E_STAR ** 2)) ** (1.0 / 3.0)
@@ -108,15 +132,15 @@ def lammps_oblique(speed, angle, spin, dt, contact_time, normal=None):
 RESULTS = []
 
 
-def check(speed, angle, spin):
-    t = tabor_oblique(speed, angle, spin)
+def check(speed, angle, spin, damped=False):
+    t = tabor_oblique(speed, angle, spin, damped=damped)
     assert not t["oblique"]["sticks"], t
     tc = t["oblique"]["contact_time"]
     dt = tc / STEPS_PER_CONTACT
-    runs = [lammps_oblique(speed, angle, spin, dt / h, tc) for h in (1.0, 2.0, 4.0)]
+    runs = [lammps_oblique(speed, angle, spin, dt / h, tc, damped=damped) for h in (1.0, 2.0, 4.0)]
     rows = extrapolated_errors(t["after"], runs, speed, R, TOLERANCE)
     limit = {name: lim for name, _, lim, *_ in rows}
-    RESULTS.append((speed, angle, spin, t["after"]["sphere"]["velocity"][:2],
+    RESULTS.append((speed, angle, "tsuji" if damped else spin, t["after"]["sphere"]["velocity"][:2],
                     t["after"]["sphere"]["angular_velocity"],
                     [limit["sphere.velocity[0]"], limit["sphere.velocity[1]"]],
                     max(diff / tol for *_, diff, tol in rows)))
@@ -145,11 +169,16 @@ def test_twisting_and_spin_in_any_direction():
         check(*case)
 
 
+def test_damped_hertz():
+    for case in DAMPED_CASES:
+        check(*case, damped=True)
+
+
 def main():
     failed = 0
-    for case in CASES:
+    for case in [(c, False) for c in CASES] + [(c, True) for c in DAMPED_CASES]:
         try:
-            check(*case)
+            check(*case[0], damped=case[1])
         except AssertionError as e:
             failed += 1
             print(f"FAIL {e}")
@@ -158,7 +187,8 @@ def main():
     for s, a, w, tv, tw, lv, worst in RESULTS:
         print(f"{s:<6} {a:<6} {str(w):<26} ({tv[0]:+.8f}, {tv[1]:+.8f})  "
               f"({lv[0]:+.8f}, {lv[1]:+.8f})  {worst:.3f}")
-    print(f"oblique: {len(CASES) - failed}/{len(CASES)} collisions within {TOLERANCE:g} of LAMMPS's limit")
+    total = len(CASES) + len(DAMPED_CASES)
+    print(f"oblique: {total - failed}/{total} collisions within {TOLERANCE:g} of LAMMPS's limit")
     return 1 if failed else 0
 
 

@@ -30,3 +30,21 @@ pub(super) const EVENT_ZERO: f64 = 1e-15;
 /// (path length of `s` plus the bound on the change of the limits): springs with
 /// more slack than this many steps' change are kept in the frame (both beds).
 pub(super) const FRAME_STEPS: f64 = 16.0;
+
+/// The number of event functions of a segment (`Setup::event_values`).
+pub(super) const EVENTS: usize = 10;
+
+/// The index of the zero of a damped contact's normal force among them.
+pub(super) const NORMAL_FORCE_ZERO: usize = 9;
+
+/// The event values (in their units, O(1)) at which the normal force's zero is
+/// taken as the event that ended a segment, before an element whose limit
+/// touches 0 with it: the margin by which a segment starts above a zero
+/// (`Setup::segment`).
+pub(super) const ZERO_EVENT_VALUE: f64 = 1e-12;
+
+/// The largest event value (in their units, O(1)) at the end of a segment that
+/// identifies its event: the located zero is within a few ulps of time of the
+/// crossing, where a value is far below this; above it some value jumped across
+/// 0 instead of crossing it, which is an error, not a guess.
+pub(super) const IDENTIFIED_EVENT_VALUE: f64 = 1e-9;

@@ -259,6 +259,44 @@ impl<'a> Setup<'a> {
         Ok(())
     }
 
+    /// At the zero of a damped contact's normal force, where the Coulomb limits
+    /// `μ |F_n|` touch 0 and grow again ([`Modes::tensile`] switched): each
+    /// slipping element whose trial force no longer outgrows its limit there
+    /// (its slip rate with the limit's new rate ≤ 0) sticks. A sticking element
+    /// carries no trial force here (a force above 0 would have met its falling
+    /// limit before) and keeps sticking. Returns the number of switches.
+    pub(super) fn decide_after_limit_zero(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &mut [f64; N],
+        modes: &mut Modes,
+    ) -> Result<usize> {
+        if self.imp.friction.is_none() || !modes.in_contact || modes.warmup {
+            return Ok(0);
+        }
+        let ev = self.evaluate(law, t, y, modes)?;
+        let mut switches = 0;
+        if modes.tangential == Mode::Slip
+            && !modes.frozen[0]
+            && self.bed.is_none()
+            && ev.slip_rate_t <= 0.0
+        {
+            modes.tangential = Mode::Stick;
+            self.leave_slip(law, t, y, modes, XT)?;
+            switches += 1;
+        }
+        if modes.rolling == Mode::Slip && !modes.frozen[1] && ev.slip_rate_r <= 0.0 {
+            modes.rolling = Mode::Stick;
+            self.leave_slip(law, t, y, modes, XR)?;
+        }
+        if modes.twisting == Mode::Slip && !modes.frozen[2] && ev.slip_rate_w <= 0.0 {
+            modes.twisting = Mode::Stick;
+            self.leave_twist_slip(law, t, y, modes)?;
+        }
+        Ok(switches)
+    }
+
     /// The event values at SI (t, y): all positive while the modes hold.
     pub(super) fn event_values(
         &self,
@@ -266,9 +304,9 @@ impl<'a> Setup<'a> {
         t: f64,
         y: &[f64; N],
         modes: &Modes,
-    ) -> Result<[f64; 9]> {
+    ) -> Result<[f64; EVENTS]> {
         let (_, overlap, rate, _) = self.geometry(t, y);
-        let mut g = [f64::INFINITY; 9];
+        let mut g = [f64::INFINITY; EVENTS];
         g[0] = law.branch_end(overlap, rate)? / self.length;
         if modes.in_contact {
             g[1] = if modes.loading { rate } else { -rate } / self.v_n;
@@ -279,6 +317,12 @@ impl<'a> Setup<'a> {
         }
         if !modes.in_contact || self.imp.friction.is_none() || modes.frozen == [true; 3] {
             return Ok(g);
+        }
+        let normal = &self.imp.normal;
+        if normal.pull_off_force <= 0.0 && normal.damping > 0.0 {
+            let np = self.normal(law, overlap, rate, false)?;
+            let f_n = np.force + normal.damping_at(np.radius) * rate;
+            g[NORMAL_FORCE_ZERO] = if modes.tensile { -f_n } else { f_n } / self.force;
         }
         let fr = self
             .imp

@@ -2,7 +2,9 @@
 //! ([`Setup::segment`]), and the spring bed's onset and commits around it.
 
 use super::elements::{keep_first, model_error};
-use super::limits::EVENT_ZERO;
+use super::limits::{
+    EVENTS, EVENT_ZERO, IDENTIFIED_EVENT_VALUE, NORMAL_FORCE_ZERO, ZERO_EVENT_VALUE,
+};
 use super::simulate::Event;
 use super::state::*;
 use std::cell::Cell;
@@ -60,7 +62,7 @@ impl<'a> Setup<'a> {
         // past) its zero at the start is shifted to start a margin above it: the
         // crossing just handled is not found again, a genuine later one is. The
         // margin (10⁻¹² of the value's size) exceeds the rounding of the shift.
-        let mut offset = [0.0; 9];
+        let mut offset = [0.0; EVENTS];
         for (o, g) in offset.iter_mut().zip(g0.iter()) {
             let margin = 1e-12 * g.abs().max(1.0);
             if g.is_finite() && *g <= margin {
@@ -174,11 +176,33 @@ impl<'a> Setup<'a> {
         for (g, o) in gv.iter_mut().zip(offset.iter()) {
             *g += o;
         }
-        let which = gv
+        if std::env::var("TRACE").is_ok() {
+            eprintln!("  gv={gv:?} g0={g0:?} t0={t:e} t_hit={t_hit:e}");
+        }
+        let mut which = gv
             .iter()
             .enumerate()
             .min_by(|a, b| a.1.total_cmp(b.1))
             .map_or(0, |(i, _)| i);
+        // the zero of a damped contact's normal force is where the limits of
+        // the elements touch 0 with it (an element without a trial force meets
+        // its limit there too): it is handled before them; the end of the
+        // branch (where a Hertz contact's force vanishes with it) before all
+        if gv[0] <= ZERO_EVENT_VALUE {
+            which = 0;
+        } else if gv[NORMAL_FORCE_ZERO] <= ZERO_EVENT_VALUE {
+            which = NORMAL_FORCE_ZERO;
+        }
+        // the located zero is one of the event values: a crossing without one
+        // near 0 (a value that jumped) is not guessed at
+        if gv[which].is_nan() || gv[which] > IDENTIFIED_EVENT_VALUE {
+            return Err(model_error(format!(
+                "{}: the event that ended a segment at t = {t_hit:e} s could not be \
+                 identified (the smallest event value there is {:e})",
+                law.name(),
+                gv[which]
+            )));
+        }
         let event = [
             Event::BranchEnd,
             Event::Turn,
@@ -189,6 +213,7 @@ impl<'a> Setup<'a> {
             Event::TwistingLimit,
             Event::TwistingStick,
             Event::FrictionOnset,
+            Event::NormalForceZero,
         ][which];
         Ok((event, t_hit, y_hit, sol.cost + run.event_cost))
     }

@@ -26,6 +26,9 @@ pub(super) enum Event {
     TwistingLimit,
     TwistingStick,
     FrictionOnset,
+    /// The total normal force of a damped contact without adhesion crosses 0
+    /// (the Coulomb limits `μ |F_n|` touch 0 and their rates jump).
+    NormalForceZero,
 }
 
 /// `x ≤ limit`, false for NaN.
@@ -291,6 +294,7 @@ impl ObliqueImpact {
             rolling: Mode::Stick,
             twisting: Mode::Stick,
             twist_sign: 1.0,
+            tensile: false,
         };
         let mut t = t0;
         let mut onset = modes.in_contact.then_some(t0);
@@ -316,7 +320,15 @@ impl ObliqueImpact {
                 )));
             }
             let (_, overlap, rate, _) = setup.geometry(t, &y);
-            if !matches!(event, Event::BranchEnd | Event::Turn | Event::FrictionOnset) {
+            if std::env::var("TRACE").is_ok() {
+                eprintln!(
+                    "event {event:?} t={t:e} overlap={overlap:e} rate={rate:e} modes={modes:?}"
+                );
+            }
+            if !matches!(
+                event,
+                Event::BranchEnd | Event::Turn | Event::FrictionOnset | Event::NormalForceZero
+            ) {
                 // Stick/slip switches at a vanishing contact (the branch within
                 // 10⁻⁶ of its end, where every limit and spring is ~10⁻⁹ of its
                 // size) are chattering of a law whose limit vanishes with the
@@ -390,6 +402,10 @@ impl ObliqueImpact {
                 Event::FrictionOnset => {
                     modes.warmup = false;
                     setup.decide_modes(law, t, &mut y, &mut modes)?;
+                }
+                Event::NormalForceZero => {
+                    modes.tensile = !modes.tensile;
+                    slip_switches += setup.decide_after_limit_zero(law, t, &mut y, &mut modes)?;
                 }
                 Event::TangentialLimit => {
                     let mut trial = modes;

@@ -63,6 +63,12 @@ pub(super) struct Modes {
     pub(super) rolling: Mode,
     pub(super) twisting: Mode,
     pub(super) twist_sign: f64,
+    /// The total normal force of a contact without adhesion is below 0 (a
+    /// damping that pulls while the bodies separate): its Coulomb limit
+    /// `|F_n|` grows as `F_n` falls. Switched at the zero of `F_n`
+    /// ([`Event::NormalForceZero`](super::simulate::Event)), where the limits'
+    /// rates jump, so that every event value is smooth within a segment.
+    pub(super) tensile: bool,
 }
 
 /// Everything fixed during one impact.
@@ -369,7 +375,8 @@ impl<'a> Setup<'a> {
             if !cohesive {
                 d += c_n_dot * rate + c_n * accel_normal;
             }
-            if raw < 0.0 {
+            let tensile = if cohesive { raw < 0.0 } else { modes.tensile };
+            if tensile {
                 -d
             } else {
                 d
