@@ -385,7 +385,8 @@ fn trajectory_json_says_which_model_it_simulates() {
 fn grazing_impacts_answer_in_the_turned_line_of_centres_or_are_refused() {
     // issue 33: at 89.999999° the normal branch used to end while the bodies still
     // approached, reported as a rebound with normal_restitution −8.9e6: refused now,
-    // with the angle named
+    // with the angle named (since stop 37 a segment there ends where no event
+    // value is at 0, in units of v cos α: refused as such)
     let out = tabor(&[
         "impact",
         &scene("silica_oblique.toml"),
@@ -397,7 +398,8 @@ fn grazing_impacts_answer_in_the_turned_line_of_centres_or_are_refused() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(err.trim().lines().count(), 1, "{err}");
     assert!(
-        err.contains("angle 89.999999") && err.contains("approach"),
+        err.contains("angle 89.999999")
+            && (err.contains("approach") || err.contains("not answered")),
         "{err}"
     );
     // a rebound at 88° and 3 m/s: the line of centres turns by about a degree; the

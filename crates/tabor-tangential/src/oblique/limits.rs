@@ -37,14 +37,18 @@ pub(super) const EVENTS: usize = 10;
 /// The index of the zero of a damped contact's normal force among them.
 pub(super) const NORMAL_FORCE_ZERO: usize = 9;
 
-/// The event values (in their units, O(1)) at which the normal force's zero is
+/// The event values (relative, as [`IDENTIFIED_EVENT_VALUE`]) at which the normal force's zero is
 /// taken as the event that ended a segment, before an element whose limit
 /// touches 0 with it: the margin by which a segment starts above a zero
 /// (`Setup::segment`).
 pub(super) const ZERO_EVENT_VALUE: f64 = 1e-12;
 
-/// The largest event value (in their units, O(1)) at the end of a segment that
-/// identifies its event: the located zero is within a few ulps of time of the
-/// crossing, where a value is far below this; above it some value jumped across
-/// 0 instead of crossing it, which is an error, not a guess.
-pub(super) const IDENTIFIED_EVENT_VALUE: f64 = 1e-9;
+/// The largest event value at the end of a segment, relative to its size at the
+/// segment's start (at least 1 of its unit), that identifies the segment's
+/// event. The located zero is within a few ulps of time of the crossing: that
+/// leaves a value of ~10⁻¹⁵, up to ~10⁻⁹ where the values change fast in their
+/// units (a grazing impact, the units scaled by v cos α: 1.6e-9 at 89.995°). A
+/// value that jumped across 0 instead of crossing it leaves every value far
+/// from 0 (0.05 and more where a damped contact's limits touched 0 before stop
+/// 37; 0.016 at 89.999999°): that is an error, not a guess.
+pub(super) const IDENTIFIED_EVENT_VALUE: f64 = 1e-6;

@@ -176,10 +176,18 @@ impl<'a> Setup<'a> {
         for (g, o) in gv.iter_mut().zip(offset.iter()) {
             *g += o;
         }
-        if std::env::var("TRACE").is_ok() {
-            eprintln!("  gv={gv:?} g0={g0:?} t0={t:e} t_hit={t_hit:e}");
-        }
-        let mut which = gv
+        // each value in its own size at the segment's start (a value that
+        // starts at 10⁸ of its unit, as the slip rates of a grazing impact in
+        // units of v cos α, is located as accurately in time, not in value)
+        let relative: [f64; EVENTS] = std::array::from_fn(|i| {
+            let size = if g0[i].is_finite() {
+                g0[i].abs().max(1.0)
+            } else {
+                1.0
+            };
+            gv[i] / size
+        });
+        let mut which = relative
             .iter()
             .enumerate()
             .min_by(|a, b| a.1.total_cmp(b.1))
@@ -188,20 +196,15 @@ impl<'a> Setup<'a> {
         // the elements touch 0 with it (an element without a trial force meets
         // its limit there too): it is handled before them; the end of the
         // branch (where a Hertz contact's force vanishes with it) before all
-        if gv[0] <= ZERO_EVENT_VALUE {
+        if relative[0] <= ZERO_EVENT_VALUE {
             which = 0;
-        } else if gv[NORMAL_FORCE_ZERO] <= ZERO_EVENT_VALUE {
+        } else if relative[NORMAL_FORCE_ZERO] <= ZERO_EVENT_VALUE {
             which = NORMAL_FORCE_ZERO;
         }
         // the located zero is one of the event values: a crossing without one
-        // near 0 (a value that jumped) is not guessed at
-        if gv[which].is_nan() || gv[which] > IDENTIFIED_EVENT_VALUE {
-            return Err(model_error(format!(
-                "{}: the event that ended a segment at t = {t_hit:e} s could not be \
-                 identified (the smallest event value there is {:e})",
-                law.name(),
-                gv[which]
-            )));
+        // near 0 (a value that jumped across it) is not guessed at
+        if relative[which].is_nan() || relative[which] > IDENTIFIED_EVENT_VALUE {
+            return Ok((Event::Unidentified, t_hit, y_hit, sol.cost + run.event_cost));
         }
         let event = [
             Event::BranchEnd,

@@ -29,6 +29,9 @@ pub(super) enum Event {
     /// The total normal force of a damped contact without adhesion crosses 0
     /// (the Coulomb limits `μ |F_n|` touch 0 and their rates jump).
     NormalForceZero,
+    /// A segment ended where no event value is at 0 (one jumped across it):
+    /// an error, named by the driver.
+    Unidentified,
 }
 
 /// `x ≤ limit`, false for NaN.
@@ -320,14 +323,13 @@ impl ObliqueImpact {
                 )));
             }
             let (_, overlap, rate, _) = setup.geometry(t, &y);
-            if std::env::var("TRACE").is_ok() {
-                eprintln!(
-                    "event {event:?} t={t:e} overlap={overlap:e} rate={rate:e} modes={modes:?}"
-                );
-            }
             if !matches!(
                 event,
-                Event::BranchEnd | Event::Turn | Event::FrictionOnset | Event::NormalForceZero
+                Event::BranchEnd
+                    | Event::Turn
+                    | Event::FrictionOnset
+                    | Event::NormalForceZero
+                    | Event::Unidentified
             ) {
                 // Stick/slip switches at a vanishing contact (the branch within
                 // 10⁻⁶ of its end, where every limit and spring is ~10⁻⁹ of its
@@ -354,7 +356,31 @@ impl ObliqueImpact {
                     continue;
                 }
             }
+            // the law's branch ended while the bodies still approach: not a
+            // separation (seen at grazing adhesive impacts, α within 10⁻³
+            // degrees of 90°, where the branch set up for the normal speed
+            // v cos α is left by a normal motion the tangential one drives; there
+            // the event values, in units of v cos α, are 10⁶-10¹⁶ and a
+            // segment may end where none of them is at 0): refused, not answered
+            let grazing = move |name: String| {
+                model_error(format!(
+                    "{}: at angle {alpha_deg} degrees the normal branch ended while the \
+                     bodies still approach (overlap rate {rate:e} m/s): a grazing impact \
+                     the simulation does not resolve",
+                    name
+                ))
+            };
             match event {
+                Event::Unidentified if rate > 0.0 => return Err(grazing(law.name())),
+                Event::Unidentified => {
+                    return Err(model_error(format!(
+                        "{}: at angle {alpha_deg} degrees a segment ended at t = {t:e} s where \
+                         none of its event values is at 0 (one jumped across it, or, near \
+                         grazing incidence, they change too fast in units of the normal speed \
+                         to be resolved): not answered",
+                        law.name()
+                    )))
+                }
                 Event::BranchEnd => match setup.hook(law.on_branch_end(overlap, rate))? {
                     BranchChange::Continue => {
                         if !modes.in_contact && law.in_contact() {
@@ -373,19 +399,7 @@ impl ObliqueImpact {
                             )));
                         }
                     }
-                    BranchChange::Separate if rate > 0.0 => {
-                        // the law's branch ended while the bodies still approach:
-                        // not a separation (seen at grazing adhesive impacts,
-                        // α within 10⁻³ degrees of 90°, where the branch set up for
-                        // the normal speed v cos α is left by a normal motion the
-                        // tangential one drives): refused, not answered
-                        return Err(model_error(format!(
-                            "{}: at angle {alpha_deg} degrees the normal branch ended while the \
-                             bodies still approach (overlap rate {rate:e} m/s): a grazing impact \
-                             the simulation does not resolve",
-                            law.name()
-                        )));
-                    }
+                    BranchChange::Separate if rate > 0.0 => return Err(grazing(law.name())),
                     other => break other,
                 },
                 Event::Turn => {
