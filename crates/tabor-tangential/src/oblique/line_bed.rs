@@ -28,6 +28,14 @@
 use super::limits::FRAME_STEPS;
 use nalgebra::Vector3;
 
+#[cfg(test)]
+thread_local! {
+    /// Tests: `.0` makes every piece tested ([`LineBed::untested`] skips none),
+    /// the reference; `.1` counts the calls that skipped some.
+    pub(super) static UNTESTED: std::cell::Cell<(bool, usize)> =
+        const { std::cell::Cell::new((false, 0)) };
+}
+
 /// `∫_p^q f z^{−1/2} dz` for `f` linear in z with `f(p) = fp`, `f(q) = fq`
 /// (with `z = r²`: `2 ∫ f(r²) dr`, in a form without cancellation).
 pub(super) fn piece_integral(p: f64, q: f64, fp: f64, fq: f64) -> f64 {
@@ -439,13 +447,22 @@ impl LineBed {
     /// above their rounding) leaves the piece unclipped; the pieces the loop of
     /// [`LineBed::integral`] would test and pass.
     fn untested(&self, from: usize, p: &LineProbe) -> usize {
+        #[cfg(test)]
+        let (all, skipped) = UNTESTED.get();
+        #[cfg(test)]
+        if all {
+            return from;
+        }
         let bound =
             p.d.abs() + (p.phi - self.phi0).abs() * self.a0_sq + p.phi * (p.a2 - self.a0_sq).abs();
         let size = bound + p.d.abs() + p.phi * p.a2 + self.phi0 * self.a0_sq;
         let threshold = bound + 1e-9 * size;
         let count = self.slack[from..].partition_point(|&s| s > threshold);
         let inside = self.z.partition_point(|&z| z <= p.a2);
-        (from + count).min(inside).saturating_sub(1).max(from)
+        let last = (from + count).min(inside).saturating_sub(1).max(from);
+        #[cfg(test)]
+        UNTESTED.set((all, skipped + usize::from(last > from)));
+        last
     }
 
     /// `∫ (w + d) z^{−1/2} dz` over the committed pieces from breakpoint `a` to
@@ -497,15 +514,23 @@ impl LineBed {
             self.flatten();
         }
         let start = if holds { self.frame - 1 } else { 0 };
-        // the new profile beyond `start`: points with the regime of the
+        // the leading pieces within their limits by the committed slack
+        // ([`LineBed::untested`]) keep their breakpoints, translated: the map
+        // starts at the last of them
+        let begin = if start == self.acc_from {
+            self.untested(start, p)
+        } else {
+            start
+        };
+        // the new profile beyond `begin`: points with the regime of the
         // sub-interval ending at them; a point between two runs on one cap is
         // dropped (the cap is one line)
         let mut points = std::mem::take(&mut self.scratch);
         points.clear();
-        let c0 = p.phi * (p.a2 - self.z[start]);
-        let first = (self.value(start) + p.d).clamp(-c0, c0);
-        points.push((self.z[start], first, Regime::Free));
-        self.map_from(start, p, |_, z1, _, f1, regime| {
+        let c0 = p.phi * (p.a2 - self.z[begin]);
+        let first = (self.value(begin) + p.d).clamp(-c0, c0);
+        points.push((self.z[begin], first, Regime::Free));
+        self.map_from(begin, p, |_, z1, _, f1, regime| {
             if points.len() > 1 && regime != Regime::Free {
                 if let Some(last) = points.last() {
                     if last.2 == regime {
@@ -517,10 +542,18 @@ impl LineBed {
         });
         // the frame's last point moves with the frame (its value is not stored)
         let keep = if holds { start + 1 } else { start };
+        let (keep, skip) = if begin > start {
+            // beyond the frame (`frame ≤ keep`), as the map would translate them
+            for k in keep..=begin {
+                self.u[k] = self.value(k) + p.d;
+            }
+            (begin + 1, 1)
+        } else {
+            (keep, if holds { 1 } else { 0 })
+        };
         self.z.truncate(keep);
         self.root.truncate(keep);
         self.u.truncate(keep);
-        let skip = if holds { 1 } else { 0 };
         for &(z, f, _) in &points[skip..] {
             self.z.push(z);
             self.root.push(z.sqrt());
