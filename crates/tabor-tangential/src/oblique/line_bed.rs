@@ -458,7 +458,12 @@ impl LineBed {
         let size = bound + p.d.abs() + p.phi * p.a2 + self.phi0 * self.a0_sq;
         let threshold = bound + 1e-9 * size;
         let count = self.slack[from..].partition_point(|&s| s > threshold);
-        let inside = self.z.partition_point(|&z| z <= p.a2);
+        // every breakpoint lies within the committed contact
+        let inside = if p.a2 >= self.a0_sq {
+            self.z.len()
+        } else {
+            self.z.partition_point(|&z| z <= p.a2)
+        };
         let last = (from + count).min(inside).saturating_sub(1).max(from);
         #[cfg(test)]
         UNTESTED.set((all, skipped + usize::from(last > from)));
