@@ -75,8 +75,11 @@ pub(super) struct MicroSlipBed {
     line: Option<LineBed>,
     /// Whether the planar bed holds the state (else the node bed does).
     planar: Cell<bool>,
-    /// The node bed, loaded from the planar one where a history leaves its line.
-    nodes: RefCell<NodeBed>,
+    /// The node bed, loaded from the planar one where a history leaves its line
+    /// (built then: a planar impact never pays for its grid).
+    nodes: RefCell<Option<NodeBed>>,
+    /// `(k_t, a_ref, nodes)` of the node bed, for building it.
+    grid: (f64, f64, usize),
 }
 
 impl MicroSlipBed {
@@ -88,8 +91,17 @@ impl MicroSlipBed {
             k_line: 0.5 * k_t,
             line: exact.then(LineBed::new),
             planar: Cell::new(exact),
-            nodes: RefCell::new(NodeBed::new(k_t, a_ref, nodes)),
+            nodes: RefCell::new((!exact).then(|| NodeBed::new(k_t, a_ref, nodes))),
+            grid: (k_t, a_ref, nodes),
         }
+    }
+
+    /// The node bed, built (unstrained) where it was not yet.
+    fn node_bed(
+        nodes: &mut Option<NodeBed>,
+        (k_t, a_ref, count): (f64, f64, usize),
+    ) -> &mut NodeBed {
+        nodes.get_or_insert_with(|| NodeBed::new(k_t, a_ref, count))
     }
 
     /// Resets the bed at contact onset (contact radius `a`): no spring strained,
@@ -99,7 +111,9 @@ impl MicroSlipBed {
             line.reset(s, n, a);
             self.planar.set(true);
         }
-        self.nodes.get_mut().reset(s, n, a);
+        if self.line.is_none() || self.nodes.get_mut().is_some() {
+            Self::node_bed(self.nodes.get_mut(), self.grid).reset(s, n, a);
+        }
     }
 
     /// The slip displacement per unit of `a² − z` at contact radius `a` (m) and
@@ -127,7 +141,7 @@ impl MicroSlipBed {
         match line.probe(n, s, a * a, self.slope(a, limit)) {
             Some(p) => Ok(Some((line, p))),
             None => {
-                self.nodes.borrow_mut().load(line);
+                Self::node_bed(&mut self.nodes.borrow_mut(), self.grid).load(line);
                 self.planar.set(false);
                 Ok(None)
             }
@@ -146,7 +160,9 @@ impl MicroSlipBed {
         match self.planar_probe(n, s, a, limit) {
             Err(()) => Vector3::zeros(),
             Ok(Some((line, p))) => -LineBed::direction(&p) * (self.k_line * line.integral(&p)),
-            Ok(None) => self.nodes.borrow().force(n, s, a, limit),
+            Ok(None) => {
+                Self::node_bed(&mut self.nodes.borrow_mut(), self.grid).force(n, s, a, limit)
+            }
         }
     }
 
@@ -163,7 +179,7 @@ impl MicroSlipBed {
         };
         match (probe, self.line.as_mut()) {
             (Some(p), Some(line)) => line.commit(&p, n, s),
-            _ => self.nodes.get_mut().commit(n, s, a, limit),
+            _ => Self::node_bed(self.nodes.get_mut(), self.grid).commit(n, s, a, limit),
         }
     }
 
@@ -173,7 +189,7 @@ impl MicroSlipBed {
     pub(super) fn stored_energy(&self, a: f64) -> f64 {
         match self.line.as_ref().filter(|_| self.planar.get()) {
             Some(line) => 0.5 * self.k_line * line.square_integral(a * a),
-            None => self.nodes.borrow().stored_energy(a),
+            None => Self::node_bed(&mut self.nodes.borrow_mut(), self.grid).stored_energy(a),
         }
     }
 }

@@ -204,3 +204,61 @@ fn rounding_of_an_unmoved_contact_is_no_direction() {
         cattaneo(x)
     );
 }
+
+/// The pieces that the committed slack alone shows within their limits
+/// (`LineBed::untested`) give the forces and commits of testing every piece,
+/// bit for bit: two beds in step through a contact that grows sticking at its
+/// edge (a breakpoint per step), reverses, slips and shrinks, probed within
+/// every step, one of them testing every piece. The shortcut is taken (count).
+#[test]
+fn pieces_within_their_limits_by_their_slack_need_no_test() {
+    use super::line_bed::UNTESTED;
+    let x_star = 0.75 * LIMIT / (A * 0.5 * K_T);
+    // Hertz-like: the limit ∝ a³ (φ constant); s then a² at the step's end
+    let state = |j: usize| -> (f64, f64) {
+        let t = j as f64;
+        match j {
+            0..=40 => (0.2 + 0.02 * t, 0.5 * x_star * t / 40.0),
+            41..=60 => (1.0, 0.5 * x_star - 0.06 * x_star * (t - 40.0)),
+            _ => (
+                1.0 - 0.03 * (t - 60.0),
+                -0.7 * x_star + 0.02 * x_star * (t - 60.0),
+            ),
+        }
+    };
+    let limit = |a: f64| LIMIT * a * a * a;
+    let mut fast = MicroSlipBed::new(K_T, A, 64, true);
+    let (a0, s0) = state(0);
+    fast.reset(&along(s0), &n(), a0 * A);
+    let mut reference = fast.clone();
+    let all = |on: bool| UNTESTED.set((on, UNTESTED.get().1));
+    UNTESTED.set((false, 0));
+    for j in 1..=80 {
+        let (a_prev, s_prev) = state(j - 1);
+        let (a_next, s_next) = state(j);
+        for lambda in [0.2, 0.5, 0.9, 1.0] {
+            let a = A * (a_prev + lambda * (a_next - a_prev));
+            let s = along(s_prev + lambda * (s_next - s_prev));
+            let f = fast.force(&n(), &s, a, limit(a / A));
+            all(true);
+            let g = reference.force(&n(), &s, a, limit(a / A));
+            all(false);
+            assert_eq!(f, g, "step {j}, λ = {lambda}");
+        }
+        let a = A * a_next;
+        fast.commit(&n(), &along(s_next), a, limit(a_next));
+        all(true);
+        reference.commit(&n(), &along(s_next), a, limit(a_next));
+        all(false);
+        assert_eq!(
+            fast.stored_energy(a),
+            reference.stored_energy(a),
+            "step {j}"
+        );
+    }
+    assert!(
+        UNTESTED.get().1 > 100,
+        "shortcut taken {} times",
+        UNTESTED.get().1
+    );
+}
