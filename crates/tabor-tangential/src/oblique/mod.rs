@@ -107,6 +107,9 @@ mod node_bed;
 mod normal;
 mod outcome;
 mod planar;
+mod plane;
+#[cfg(test)]
+mod plane_tests;
 mod segment;
 mod simulate;
 mod state;
