@@ -79,6 +79,7 @@ impl<'a> Setup<'a> {
     }
 
     /// The reduced state of the full one `y` (either units).
+    #[cfg(test)]
     pub(super) fn planar_of(y: &[f64; N]) -> [f64; PM] {
         std::array::from_fn(|k| y[PLANAR[k]])
     }
@@ -92,14 +93,36 @@ impl<'a> Setup<'a> {
         y
     }
 
+    /// The energies (in the order of [`EN`]) whose rates can differ from 0 on a
+    /// planar segment in `modes`: the rest stay constant (their rates are exact
+    /// zeros; `planar_rates_match_the_full_ones` checks it) and need no steps.
+    pub(super) fn active_energies(&self, modes: &Modes) -> [bool; 8] {
+        let contact = modes.in_contact;
+        let acting = contact && !modes.warmup;
+        let fr = self.imp.friction.as_ref();
+        let friction = acting && fr.is_some();
+        let damped = self.imp.normal.damping != 0.0;
+        [
+            true,
+            contact && damped,
+            friction && self.bed.is_none() && modes.tangential == Mode::Slip,
+            friction && damped && fr.is_some_and(|f| f.tangential.damping_ratio != 0.0),
+            friction,
+            acting && fr.is_some_and(|f| f.rolling.is_some()),
+            false,
+            friction && !self.flat,
+        ]
+    }
+
     /// The planar segment from the normalized state `yn` at `ends.0` to the
     /// falling zero of the event function (or `ends.1`) in `modes`: the rates of
     /// [`Setup::planar_evaluate`], the event function `combine` of the values of
     /// [`Setup::planar_event_values`] (the first error of each kept in `failure`
     /// and `g_failure`, the value then NaN). The result in the full normalized
     /// state. DOP853 as the full path (`quadratures`: the energies outside the
-    /// error control; starts with the last segment's proposed step and leaves its
-    /// own, [`Setup::step_hint`]), or, with the spring bed of micro-slip,
+    /// error control, and only those of [`Setup::active_energies`] integrated:
+    /// the same numbers; starts with the last segment's proposed step and leaves
+    /// its own, [`Setup::step_hint`]), or, with the spring bed of micro-slip,
     /// Dormand-Prince 5(4) with the bed committed after every accepted step.
     #[allow(clippy::too_many_arguments)]
     pub(super) fn planar_segment(
@@ -113,92 +136,196 @@ impl<'a> Setup<'a> {
         tolerance: OdeTolerance,
         quadratures: bool,
     ) -> tabor_numerics::Result<EventsIntegration<N>> {
-        let (s0, s_end) = ends;
-        let (failure, g_failure) = failures;
         let scale: [f64; PM] = std::array::from_fn(|k| self.scale[PLANAR[k]]);
-        // SI rates to normalized ones: times the time unit, over the state's unit
-        let rate_unit: [f64; PM] = std::array::from_fn(|k| self.time / scale[k]);
-        let si = |z: &[f64; PM]| -> [f64; PM] { std::array::from_fn(|k| z[k] * scale[k]) };
-        let mut f = |s: f64, z: &[f64; PM]| -> [f64; PM] {
-            match self.planar_evaluate(law, s * self.time, &si(z), modes) {
-                Ok(ev) => std::array::from_fn(|k| ev.dz[k] * rate_unit[k]),
+        let run = Run {
+            setup: self,
+            law,
+            modes,
+            combine,
+            failure: failures.0,
+            g_failure: failures.1,
+            scale,
+            // SI rates to normalized ones: times the time unit, over the state's unit
+            rate_unit: std::array::from_fn(|k| self.time / scale[k]),
+        };
+        let all: [usize; PM] = std::array::from_fn(|k| k);
+        if self.bed.is_some() {
+            return run.micro_slip(all, ends, yn, tolerance);
+        }
+        let tolerance = self.dop853_tolerance(tolerance, quadratures, PLANAR_MOTION);
+        if !quadratures {
+            return run.dop853(all, ends, yn, tolerance);
+        }
+        // the motion, then the energies that move
+        let active = self.active_energies(modes);
+        let mut slots = all;
+        let mut m = PLANAR_MOTION;
+        for (k, _) in active.iter().enumerate().filter(|(_, &a)| a) {
+            slots[m] = P_EN + k;
+            m += 1;
+        }
+        macro_rules! dispatch {
+            ($($size:literal)*) => {
+                match m {
+                    $($size => run.dop853::<$size>(
+                        std::array::from_fn(|j| slots[j]), ends, yn, tolerance),)*
+                    _ => run.dop853(all, ends, yn, tolerance),
+                }
+            };
+        }
+        dispatch!(11 12 13 14 15 16 17)
+    }
+}
+
+/// One planar segment: the setup, the law, the modes, the event function's
+/// combination of the values, the first errors, the units of the reduced state.
+struct Run<'s, 'a> {
+    setup: &'s Setup<'a>,
+    law: &'s dyn ForceLaw,
+    modes: &'s Modes,
+    combine: &'s dyn Fn([f64; 9]) -> f64,
+    failure: &'s Cell<Option<Error>>,
+    g_failure: &'s Cell<Option<Error>>,
+    /// SI value of one normalized unit of each reduced component.
+    scale: [f64; PM],
+    /// SI rates to normalized ones, per reduced component.
+    rate_unit: [f64; PM],
+}
+
+impl Run<'_, '_> {
+    /// The reduced SI state of the motion components of `x` (the first
+    /// [`PLANAR_MOTION`]), the energies 0 (no rate, event value or commit reads
+    /// them).
+    fn si<const M: usize>(&self, x: &[f64; M]) -> [f64; PM] {
+        let mut z = [0.0; PM];
+        for k in 0..PLANAR_MOTION {
+            z[k] = x[k] * self.scale[k];
+        }
+        z
+    }
+
+    /// The normalized rates of the integrated components `x` (reduced
+    /// components `slots`, the motion first; `units`: their SI rates to
+    /// normalized ones) at normalized time `s`.
+    fn rates<const M: usize>(
+        &self,
+        (slots, units): (&[usize; M], &[f64; M]),
+        s: f64,
+        x: &[f64; M],
+    ) -> [f64; M] {
+        let t = s * self.setup.time;
+        let mut dz = [0.0; PM];
+        match self
+            .setup
+            .planar_rates(self.law, t, &self.si(x), self.modes, &mut dz)
+        {
+            Ok(_) => std::array::from_fn(|j| dz[slots[j]] * units[j]),
+            Err(e) => {
+                keep_first(self.failure, e);
+                [f64::NAN; M]
+            }
+        }
+    }
+
+    /// The event function at the integrated components `x` at normalized time `s`.
+    fn event<const M: usize>(&self, s: f64, x: &[f64; M]) -> [f64; 1] {
+        let t = s * self.setup.time;
+        let z = self.si(x);
+        [
+            match self.setup.planar_event_values(self.law, t, &z, self.modes) {
+                Ok(v) => (self.combine)(v),
                 Err(e) => {
-                    keep_first(failure, e);
-                    [f64::NAN; PM]
+                    keep_first(self.g_failure, e);
+                    f64::NAN
+                }
+            },
+        ]
+    }
+
+    /// DOP853 on the reduced components `slots` (the motion first) from the
+    /// normalized full state `yn`; the components left out keep their values.
+    fn dop853<const M: usize>(
+        &self,
+        slots: [usize; M],
+        (s0, s_end): (f64, f64),
+        yn: &[f64; N],
+        tolerance: OdeTolerance,
+    ) -> tabor_numerics::Result<EventsIntegration<N>> {
+        let units = std::array::from_fn(|j| self.rate_unit[slots[j]]);
+        let mut f = |s: f64, x: &[f64; M]| self.rates((&slots, &units), s, x);
+        let mut g = |s: f64, x: &[f64; M]| self.event(s, x);
+        let x0 = std::array::from_fn(|j| yn[PLANAR[slots[j]]]);
+        let mut stepper = DormandPrince853::new(&mut f, s0, x0, s_end, tolerance)?;
+        let falling = [EventDirection::Falling];
+        let mut observer = |_: f64, _: &[f64; M]| {};
+        let run = drive_events(&mut stepper, &mut f, &mut g, falling, s_end, &mut observer);
+        self.setup.step_hint.set(Some(stepper.proposed_step()));
+        Ok(expand(yn, &slots, run?))
+    }
+
+    /// Dormand-Prince 5(4) on the reduced components `slots` with the spring bed
+    /// committed at the end of every accepted step (micro-slip in contact).
+    fn micro_slip<const M: usize>(
+        &self,
+        slots: [usize; M],
+        (s0, s_end): (f64, f64),
+        yn: &[f64; N],
+        tolerance: OdeTolerance,
+    ) -> tabor_numerics::Result<EventsIntegration<N>> {
+        let setup = self.setup;
+        let units = std::array::from_fn(|j| self.rate_unit[slots[j]]);
+        let mut f = |s: f64, x: &[f64; M]| self.rates((&slots, &units), s, x);
+        let mut g = |s: f64, x: &[f64; M]| self.event(s, x);
+        let in_contact = self.modes.in_contact;
+        let mut commit = |stop: f64, x: &[f64; M]| {
+            if in_contact {
+                let y = Setup::full_of(&self.si(x));
+                if let Err(e) = setup.commit_bed(self.law, stop * setup.time, &y) {
+                    keep_first(self.failure, e);
                 }
             }
         };
-        let mut events = |s: f64, z: &[f64; PM]| {
-            [
-                match self.planar_event_values(law, s * self.time, &si(z), modes) {
-                    Ok(v) => combine(v),
-                    Err(e) => {
-                        keep_first(g_failure, e);
-                        f64::NAN
-                    }
-                },
-            ]
+        // the full state's error norm: its root-mean-square over 27 components,
+        // 9 of whose errors are exactly 0, is that over these 18 with the
+        // tolerance scaled by √(27/18) (so are Hairer's first-step norms): the
+        // same steps, to rounding (the bed's state depends on them)
+        let c = (N as f64 / M as f64).sqrt();
+        let tolerance = OdeTolerance {
+            relative: tolerance.relative * c,
+            absolute: tolerance.absolute * c,
+            ..tolerance
         };
-        let z0 = Self::planar_of(yn);
+        let x0 = std::array::from_fn(|j| yn[PLANAR[slots[j]]]);
+        let mut stepper = DormandPrince::new(&mut f, s0, x0, s_end, tolerance)?;
         let falling = [EventDirection::Falling];
-        let run = if self.bed.is_some() {
-            // micro-slip: the springs' state at the end of every accepted step
-            let micro_slip = modes.in_contact;
-            let mut commit = |stop: f64, z: &[f64; PM]| {
-                if micro_slip {
-                    let y = Self::full_of(&si(z));
-                    if let Err(e) = self.commit_bed(law, stop * self.time, &y) {
-                        keep_first(failure, e);
-                    }
-                }
-            };
-            // the full state's error norm: its root-mean-square over 27 components,
-            // 9 of whose errors are exactly 0, is that over these 18 with the
-            // tolerance scaled by √(27/18) (so are Hairer's first-step norms): the
-            // same steps, to rounding (the bed's state depends on them)
-            let c = (N as f64 / PM as f64).sqrt();
-            let tolerance = OdeTolerance {
-                relative: tolerance.relative * c,
-                absolute: tolerance.absolute * c,
-                ..tolerance
-            };
-            let mut stepper = DormandPrince::new(&mut f, s0, z0, s_end, tolerance)?;
-            drive_events(
-                &mut stepper,
-                &mut f,
-                &mut events,
-                falling,
-                s_end,
-                &mut commit,
-            )
-        } else {
-            let tolerance = self.dop853_tolerance(tolerance, quadratures, PLANAR_MOTION);
-            let mut stepper = DormandPrince853::new(&mut f, s0, z0, s_end, tolerance)?;
-            let mut observer = |_: f64, _: &[f64; PM]| {};
-            let run = drive_events(
-                &mut stepper,
-                &mut f,
-                &mut events,
-                falling,
-                s_end,
-                &mut observer,
-            );
-            self.step_hint.set(Some(stepper.proposed_step()));
-            run
-        }?;
-        let sol = run.solution;
-        Ok(EventsIntegration {
-            solution: OdeSolution {
-                t: sol.t,
-                y: Self::full_of(&sol.y),
-                event_found: sol.event_found,
-                accepted_steps: sol.accepted_steps,
-                rejected_steps: sol.rejected_steps,
-                cost: sol.cost,
-            },
-            event: run.event,
-            event_cost: run.event_cost,
-        })
+        let run = drive_events(&mut stepper, &mut f, &mut g, falling, s_end, &mut commit)?;
+        Ok(expand(yn, &slots, run))
+    }
+}
+
+/// The run on the reduced components `slots` in the full normalized state: the
+/// components it left out keep their values in `yn` (out of the plane: 0).
+fn expand<const M: usize>(
+    yn: &[f64; N],
+    slots: &[usize; M],
+    run: EventsIntegration<M>,
+) -> EventsIntegration<N> {
+    let sol = run.solution;
+    let mut y = *yn;
+    for (&k, &v) in slots.iter().zip(sol.y.iter()) {
+        y[PLANAR[k]] = v;
+    }
+    EventsIntegration {
+        solution: OdeSolution {
+            t: sol.t,
+            y,
+            event_found: sol.event_found,
+            accepted_steps: sol.accepted_steps,
+            rejected_steps: sol.rejected_steps,
+            cost: sol.cost,
+        },
+        event: run.event,
+        event_cost: run.event_cost,
     }
 }
 

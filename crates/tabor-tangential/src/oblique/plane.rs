@@ -22,6 +22,7 @@ use tabor_restitution::Result;
 type V2 = Vector2<f64>;
 
 /// The rates of a planar state and the slip rates its event values need.
+#[cfg(test)]
 pub(super) struct PlaneEval {
     /// SI rates of the reduced state.
     pub(super) dz: [f64; PM],
@@ -136,6 +137,7 @@ impl<'a> Setup<'a> {
     }
 
     /// [`Setup::evaluate`] of the reduced SI state `z` (planar: twisting sticks).
+    #[cfg(test)]
     pub(super) fn planar_evaluate(
         &self,
         law: &dyn ForceLaw,
@@ -143,19 +145,35 @@ impl<'a> Setup<'a> {
         z: &[f64; PM],
         modes: &Modes,
     ) -> Result<PlaneEval> {
+        let mut dz = [0.0; PM];
+        let (slip_rate_t, slip_rate_r) = self.planar_rates(law, t, z, modes, &mut dz)?;
+        Ok(PlaneEval {
+            dz,
+            slip_rate_t,
+            slip_rate_r,
+        })
+    }
+
+    /// [`Setup::planar_evaluate`] into `dz` (zeros on entry): the SI rates, and
+    /// the tangential and rolling slip rates returned (∞ where an element
+    /// sticks).
+    pub(super) fn planar_rates(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        z: &[f64; PM],
+        modes: &Modes,
+        dz: &mut [f64; PM],
+    ) -> Result<(f64, f64)> {
         let (n, overlap, rate, n_dot) = self.planar_geometry(t, z);
         let u = v2(z, P_U);
         let (wi, wj) = self.planar_spins(z);
-        let mut out = PlaneEval {
-            dz: [0.0; PM],
-            slip_rate_t: f64::INFINITY,
-            slip_rate_r: f64::INFINITY,
-        };
-        put2(&mut out.dz, P_E, &(u - self.u0.xy()));
+        let mut out = (f64::INFINITY, f64::INFINITY);
+        put2(dz, P_E, &(u - self.u0.xy()));
         if !modes.in_contact {
             let f_el = law.force(overlap, rate)?;
-            put2(&mut out.dz, P_U, &(n * (f_el / self.m_eff)));
-            out.dz[P_EN] = f_el * rate;
+            put2(dz, P_U, &(n * (f_el / self.m_eff)));
+            dz[P_EN] = f_el * rate;
             return Ok(out);
         }
         let fr = self.imp.friction.as_ref();
@@ -181,11 +199,11 @@ impl<'a> Setup<'a> {
         let v_rl = spin_cross(w_rel, &n) * self.r_eff;
 
         if modes.warmup {
-            put2(&mut out.dz, P_U, &(n * (f_n / self.m_eff)));
-            put2(&mut out.dz, P_XT, &v_tr);
-            put2(&mut out.dz, P_XR, &v_rl);
-            out.dz[P_EN] = f_el * rate;
-            out.dz[P_EN + 1] = f_d * rate;
+            put2(dz, P_U, &(n * (f_n / self.m_eff)));
+            put2(dz, P_XT, &v_tr);
+            put2(dz, P_XR, &v_rl);
+            dz[P_EN] = f_el * rate;
+            dz[P_EN + 1] = f_d * rate;
             return Ok(out);
         }
         let mut f_t = V2::zeros();
@@ -201,8 +219,8 @@ impl<'a> Setup<'a> {
                 let f_bed = bed.borrow().force(&lift(&n), &lift(&xi), a, limit);
                 let s = dashpot_share(&f_bed, &lift(&(v_tr * gamma)), limit);
                 f_t = f_bed.xy() - v_tr * (gamma * s);
-                put2(&mut out.dz, P_XT, &(v_tr - n * xi.dot(&n_dot)));
-                out.dz[P_EN + 3] = s * gamma * v_tr.norm_squared();
+                put2(dz, P_XT, &(v_tr - n * xi.dot(&n_dot)));
+                dz[P_EN + 3] = s * gamma * v_tr.norm_squared();
             } else {
                 f_t = match modes.tangential {
                     Mode::Stick => cap2(-(xi * k + v_tr * gamma), limit, modes.frozen[0]),
@@ -234,42 +252,49 @@ impl<'a> Setup<'a> {
         } else {
             (-n_cross_ft * arm_j - torque_roll) * self.inv_i_j
         };
-        put2(&mut out.dz, P_U, &u_dot);
-        out.dz[P_WI] = wi_dot;
-        out.dz[P_WJ] = wj_dot;
+        put2(dz, P_U, &u_dot);
+        dz[P_WI] = wi_dot;
+        dz[P_WJ] = wj_dot;
 
         // energies (power removed from the bodies; twisting's is 0)
-        out.dz[P_EN] = f_el * rate;
-        out.dz[P_EN + 1] = f_d * rate;
-        out.dz[P_EN + 4] = -f_t.dot(&v_tr);
-        out.dz[P_EN + 5] = -f_r.dot(&v_rl);
+        dz[P_EN] = f_el * rate;
+        dz[P_EN + 1] = f_d * rate;
+        dz[P_EN + 4] = -f_t.dot(&v_tr);
+        dz[P_EN + 5] = -f_r.dot(&v_rl);
         let arm_gain = f_t.dot(&spin_cross(wi * (r_i - arm_i) + wj * (r_j - arm_j), &n));
-        out.dz[P_EN + 7] = -arm_gain;
+        dz[P_EN + 7] = -arm_gain;
 
         let Some(fr) = fr else {
             return Ok(out);
         };
 
-        // rates of the quantities the slip conditions need
-        let accel_normal = -n_dot.dot(&u) - n.dot(&u_dot);
+        // rates of the quantities the slip conditions need (only a slip asks:
+        // the same operations, where they are used; 0 where none slips)
         let a_dot = a_prime * rate;
         let c_n_dot = normal.damping_rate(a, a_dot);
-        let fc_dot = {
-            let raw = if cohesive { f_el + 2.0 * pull_off } else { f_n };
-            let mut d = f_prime * rate;
-            if !cohesive {
-                d += c_n_dot * rate + c_n * accel_normal;
-            }
-            if raw < 0.0 {
-                -d
-            } else {
-                d
-            }
+        let (fc_dot, v_tr_dot, v_rl_dot) = if slipping {
+            let accel_normal = -n_dot.dot(&u) - n.dot(&u_dot);
+            let fc_dot = {
+                let raw = if cohesive { f_el + 2.0 * pull_off } else { f_n };
+                let mut d = f_prime * rate;
+                if !cohesive {
+                    d += c_n_dot * rate + c_n * accel_normal;
+                }
+                if raw < 0.0 {
+                    -d
+                } else {
+                    d
+                }
+            };
+            let vt_dot = u_dot - n_dot * n.dot(&u) - n * (n_dot.dot(&u) + n.dot(&u_dot));
+            let v_tr_dot =
+                vt_dot - spin_cross(wi_dot * r_i + wj_dot * r_j, &n) - spin_cross(wr, &n_dot);
+            let v_rl_dot =
+                (spin_cross(wi_dot - wj_dot, &n) + spin_cross(w_rel, &n_dot)) * self.r_eff;
+            (fc_dot, v_tr_dot, v_rl_dot)
+        } else {
+            (0.0, V2::zeros(), V2::zeros())
         };
-        let vt_dot = u_dot - n_dot * n.dot(&u) - n * (n_dot.dot(&u) + n.dot(&u_dot));
-        let v_tr_dot =
-            vt_dot - spin_cross(wi_dot * r_i + wj_dot * r_j, &n) - spin_cross(wr, &n_dot);
-        let v_rl_dot = (spin_cross(wi_dot - wj_dot, &n) + spin_cross(w_rel, &n_dot)) * self.r_eff;
 
         if let Some((k, gamma, limit, xi)) = tang {
             let t = &fr.tangential;
@@ -278,7 +303,6 @@ impl<'a> Setup<'a> {
                 _ => t.stiffness * a_dot,
             };
             let gamma_dot = t.damping_ratio * c_n_dot;
-            let limit_dot = t.coefficient * fc_dot;
             let rescale = t.model == TangentialModel::MindlinRescale && !modes.loading;
             let rescale_rate = if rescale && a > 0.0 {
                 (a_dot / a).max(-RATE_CAP / self.time)
@@ -288,19 +312,16 @@ impl<'a> Setup<'a> {
             match modes.tangential {
                 Mode::Stick => {
                     let d = v_tr - n * xi.dot(&n_dot) + xi * rescale_rate;
-                    put2(&mut out.dz, P_XT, &d);
-                    out.dz[P_EN + 3] = gamma * v_tr.norm_squared();
+                    put2(dz, P_XT, &d);
+                    dz[P_EN + 3] = gamma * v_tr.norm_squared();
                 }
                 Mode::Slip => {
+                    let limit_dot = t.coefficient * fc_dot;
                     let uhat = direction2(&xi, &v_tr);
                     let drive =
                         v_tr * k + v_tr * (gamma_dot - k_dot * ratio(gamma, k)) + v_tr_dot * gamma;
                     let turn = turn_rate2(&drive, &uhat, &n, limit, self.time);
-                    put2(
-                        &mut out.dz,
-                        P_XT,
-                        &((turn - n * uhat.dot(&n_dot)) * xi.norm()),
-                    );
+                    put2(dz, P_XT, &((turn - n * uhat.dot(&n_dot)) * xi.norm()));
                     // the slip rate and the sliding work as in `Setup::evaluate`
                     let uv = uhat.dot(&v_tr);
                     let on_surface = limit - gamma * uv;
@@ -310,17 +331,17 @@ impl<'a> Setup<'a> {
                         + gamma_dot * uv
                         + gamma * uhat.dot(&v_tr_dot)
                         - limit_dot;
-                    out.slip_rate_t = g;
+                    out.0 = g;
                     let slip_rate = if modes.frozen[0] { g.max(0.0) } else { g };
                     if on_surface >= 0.0 {
-                        out.dz[P_EN + 2] = if k > 0.0 {
+                        dz[P_EN + 2] = if k > 0.0 {
                             slip_rate * on_surface / k
                         } else {
                             0.0
                         };
-                        out.dz[P_EN + 3] = gamma * v_tr.norm_squared();
+                        dz[P_EN + 3] = gamma * v_tr.norm_squared();
                     } else {
-                        out.dz[P_EN + 3] = gamma * v_tr.norm_squared() + on_surface * uv;
+                        dz[P_EN + 3] = gamma * v_tr.norm_squared() + on_surface * uv;
                     }
                 }
             }
@@ -329,17 +350,13 @@ impl<'a> Setup<'a> {
             let psi = v2(z, P_XR);
             let limit_r = r.coefficient * fc;
             match modes.rolling {
-                Mode::Stick => put2(&mut out.dz, P_XR, &(v_rl - n * psi.dot(&n_dot))),
+                Mode::Stick => put2(dz, P_XR, &(v_rl - n * psi.dot(&n_dot))),
                 Mode::Slip => {
                     let uhat = direction2(&psi, &v_rl);
                     let drive = v_rl * r.stiffness + v_rl_dot * r.damping;
                     let turn = turn_rate2(&drive, &uhat, &n, limit_r, self.time);
-                    put2(
-                        &mut out.dz,
-                        P_XR,
-                        &((turn - n * uhat.dot(&n_dot)) * psi.norm()),
-                    );
-                    out.slip_rate_r = uhat.dot(&drive) - r.coefficient * fc_dot;
+                    put2(dz, P_XR, &((turn - n * uhat.dot(&n_dot)) * psi.norm()));
+                    out.1 = uhat.dot(&drive) - r.coefficient * fc_dot;
                 }
             }
         }
@@ -373,8 +390,7 @@ impl<'a> Setup<'a> {
         }
         let rate_unit = self.force / self.time;
         let slip_rates = if modes.tangential == Mode::Slip || modes.rolling == Mode::Slip {
-            let ev = self.planar_evaluate(law, t, z, modes)?;
-            (ev.slip_rate_t, ev.slip_rate_r)
+            self.planar_rates(law, t, z, modes, &mut [0.0; PM])?
         } else {
             (f64::INFINITY, f64::INFINITY)
         };

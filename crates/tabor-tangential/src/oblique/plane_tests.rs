@@ -5,7 +5,7 @@
 #![allow(clippy::unwrap_used)]
 
 use super::bodies::{Body, NormalContact, ObliqueImpact};
-use super::planar::{PLANAR, PM};
+use super::planar::{PLANAR, PM, P_EN};
 use super::state::*;
 use crate::{EffectiveShear, Friction, Rolling, Tangential, TangentialModel, Twisting};
 use nalgebra::Vector3;
@@ -199,8 +199,9 @@ fn agree(a: f64, b: f64, what: &str) {
 /// At 40 random planar states of each scene (pair or flat; every tangential
 /// model; twisting `marshall` or `sds`; with and without damping) and in every
 /// planar mode, the 2-D rates, slip rates and event values equal the 3-D ones,
-/// and the 3-D rates of every out-of-plane component are exactly 0 (the premise
-/// of the reduced state).
+/// the 3-D rates of every out-of-plane component are exactly 0 (the premise
+/// of the reduced state), and so are those of the energies a segment leaves out
+/// ([`Setup::active_energies`]).
 #[test]
 fn planar_rates_match_the_full_ones() {
     let mut seed = 0x9e37_79b9_7f4a_7c15u64;
@@ -261,6 +262,12 @@ fn compare(s: &Setup, law: &JkrForceLaw, t: f64, y: &[f64; N], z: &[f64; PM], mo
         assert_eq!(full.dy[i], 0.0, "out-of-plane rate {i} in {modes:?}");
     }
     assert_eq!(full.dy[EN + 6], 0.0, "twisting power in {modes:?}");
+    // the energies a planar segment leaves out do not move
+    for (k, active) in s.active_energies(modes).iter().enumerate() {
+        if !active {
+            assert_eq!(plane.dz[P_EN + k], 0.0, "energy {k} in {modes:?}");
+        }
+    }
     agree(plane.slip_rate_t, full.slip_rate_t, "tangential slip rate");
     agree(plane.slip_rate_r, full.slip_rate_r, "rolling slip rate");
     let g_full = s.event_values(&fresh(), t, y, modes).unwrap();
