@@ -83,7 +83,9 @@
 //!
 //! A planar impact (relative velocity in the x-y plane, spins about z, no twist)
 //! stays planar: its out-of-plane components are exactly 0, and the integration
-//! carries only the 18 that move (module `planar`); any other integrates all 27.
+//! carries only the 18 that move (module `planar`; of the energies only those that
+//! can move in the segment), with their rates and the event values in two
+//! dimensions (module `plane`); any other integrates all 27.
 //!
 //! The motion is three-dimensional: between two spheres the line of centres
 //! turns by about `v sin α t_c/(R_i + R_j)` during the contact, so the normal
@@ -107,6 +109,9 @@ mod node_bed;
 mod normal;
 mod outcome;
 mod planar;
+mod plane;
+#[cfg(test)]
+mod plane_tests;
 mod segment;
 mod simulate;
 mod state;

@@ -97,20 +97,21 @@ impl<'a> Setup<'a> {
         // a value within the rounding of the event values (O(1) in their units)
         // is the zero itself: Brent's method stops there instead of bisecting
         // the rest of the bracket down to 4 ε
+        let combine = |v: [f64; EVENTS]| -> f64 {
+            let g = v
+                .iter()
+                .zip(offset.iter())
+                .map(|(g, o)| g + o)
+                .fold(f64::INFINITY, f64::min);
+            if g.abs() <= EVENT_ZERO {
+                0.0
+            } else {
+                g
+            }
+        };
         let g_si = |t: f64, ysi: &[f64; N]| -> f64 {
             match self.event_values(law, t, ysi, modes) {
-                Ok(v) => {
-                    let g = v
-                        .iter()
-                        .zip(offset.iter())
-                        .map(|(g, o)| g + o)
-                        .fold(f64::INFINITY, f64::min);
-                    if g.abs() <= EVENT_ZERO {
-                        0.0
-                    } else {
-                        g
-                    }
-                }
+                Ok(v) => combine(v),
                 Err(e) => {
                     keep_first(&g_failure, e);
                     f64::NAN
@@ -139,14 +140,23 @@ impl<'a> Setup<'a> {
         // toward a branch end, and for the spring bed's Dormand-Prince 5(4) steps
         // of a piecewise smooth motion, they stay under control.
         let quadratures = self.exact_slopes(law, t, y, modes)?;
-        let run = if self.bed.is_some() {
+        let run = if self.is_planar(y, modes) {
+            let failures = (&failure, &g_failure);
+            let (ends, tolerance) = ((s0, s_end), settings.tolerance);
+            self.planar_segment(
+                law,
+                modes,
+                &combine,
+                failures,
+                ends,
+                &yn,
+                tolerance,
+                quadratures,
+            )
+        } else if self.bed.is_some() {
             let mut stepper = DormandPrince::new(&mut rhs, s0, yn, s_end, settings.tolerance)
                 .map_err(&numerics)?;
             drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit)
-        } else if self.is_planar(y, modes) {
-            let ends = (s0, s_end);
-            let tolerance = settings.tolerance;
-            self.planar_segment(&rates, &g_si, &rate_unit, ends, &yn, tolerance, quadratures)
         } else {
             let tolerance = self.dop853_tolerance(settings.tolerance, quadratures, EN);
             let mut stepper =
