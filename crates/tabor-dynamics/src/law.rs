@@ -29,7 +29,7 @@ pub struct CurvePoint {
     /// Contact radius (m), for the trajectory record.
     pub contact_radius: f64,
     /// `(dF/dq, da/dq)` (N and m per unit of q) where the law gives them in
-    /// closed form (JKR's polynomials); `None`: a consumer that needs the slopes
+    /// closed form (JKR's polynomials, Maugis-Dugdale's θ-derivatives); `None`: a consumer that needs the slopes
     /// of force and contact radius differences the curve (the oblique impact's
     /// slip conditions).
     pub slopes: Option<(f64, f64)>,

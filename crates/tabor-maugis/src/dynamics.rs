@@ -328,23 +328,42 @@ impl BranchCurve for MaugisDugdaleForceLaw {
 
     /// The state at θ ([`contact_state`], seed 000 section 5.3.2) or at b̂
     /// ([`no_contact_state`], (5.41), (5.44); dd̂/db̂ = 3b̂ − 32Λ/π², â = 0), in SI
-    /// units.
+    /// units, with the slopes of force and contact radius in the coordinate in
+    /// closed form (θ: [`contact_state`]'s implicit derivatives; b̂: dF̂/db̂ =
+    /// −4Λb̂, dâ/db̂ = 0). Near the junction θ → π/2 both the overlap and the
+    /// force are even in π/2 − θ: a central difference in θ of the step the
+    /// overlap asks for crosses π/2 (the oblique impact's slip conditions read
+    /// garbage there), the closed form does not.
     fn point(&self, coordinate: f64, _overlap_rate: f64) -> Result<CurvePoint> {
-        let (depth, slope, force, contact_radius) = if self.part == Part::NoContact {
-            let lambda = self.path.lambda;
-            let b = coordinate;
-            let s = no_contact_state(lambda, b);
-            (s.depth, 3.0 * (b - self.no_contact_radii.0), s.force, 0.0)
-        } else {
-            let s = contact_state(self.path.lambda, coordinate);
-            (s.depth, s.depth_slope, s.force, s.contact_radius)
-        };
+        let lambda = self.path.lambda;
+        // (d̂, dd̂/dq, F̂, â, dF̂/dq, dâ/dq)
+        let (depth, slope, force, contact_radius, force_slope, radius_slope) =
+            if self.part == Part::NoContact {
+                let b = coordinate;
+                let s = no_contact_state(lambda, b);
+                let slope = 3.0 * (b - self.no_contact_radii.0);
+                (s.depth, slope, s.force, 0.0, -4.0 * lambda * b, 0.0)
+            } else {
+                let s = contact_state(lambda, coordinate);
+                let (d, a) = (s.depth, s.contact_radius);
+                (
+                    d,
+                    s.depth_slope,
+                    s.force,
+                    a,
+                    s.force_slope,
+                    s.contact_radius_slope,
+                )
+            };
         Ok(CurvePoint {
             overlap: depth * self.scales.depth,
             overlap_slope: slope * self.scales.depth,
             force: force * self.scales.force,
             contact_radius: contact_radius * self.scales.contact_radius,
-            slopes: None,
+            slopes: Some((
+                force_slope * self.scales.force,
+                radius_slope * self.scales.contact_radius,
+            )),
         })
     }
 

@@ -458,6 +458,24 @@ fn force_law_curve_matches_the_traced_branch() {
                 (p.overlap_slope - slope).abs() <= 1e-7 * slope.abs(),
                 "{slope}"
             );
+            // the closed-form slopes of force and contact radius, likewise
+            // (central differences: truncation ~h², rounding ~10⁻¹⁶/h ~ 10⁻¹⁰)
+            let (df, da) = p.slopes.unwrap();
+            let (up, down) = (
+                curve.point(q + h, 0.0).unwrap(),
+                curve.point(q - h, 0.0).unwrap(),
+            );
+            let df_num = (up.force - down.force) / (2.0 * h);
+            let da_num = (up.contact_radius - down.contact_radius) / (2.0 * h);
+            assert!(
+                (df - df_num).abs() <= 1e-7 * df_num.abs().max(f_n),
+                "{lambda} {d}: dF/dq {df} vs {df_num}"
+            );
+            let a_c = model.scales().contact_radius;
+            assert!(
+                (da - da_num).abs() <= 1e-7 * da_num.abs().max(a_c),
+                "{lambda} {d}: da/dq {da} vs {da_num}"
+            );
             assert!(curve.end(q, -1.0).unwrap() > 0.0);
         }
         // the end the unloading meets: 0 at q_end = q + end(q)·(dq/d(end))
@@ -480,6 +498,33 @@ fn force_law_curve_matches_the_traced_branch() {
             assert!(at_end.contact_radius.abs() <= 1e-15 * model.scales().contact_radius);
             let f = law.force(at_end.overlap, 0.0).unwrap();
             assert!((at_end.force - f).abs() <= 1e-12 * f_n.max(f.abs()));
+            // approaching the junction, d̂ − d̂_j and F̂ − F̂_j are both even in
+            // ε = π/2 − θ: dF/dd from the closed-form slopes stays finite (0/0 in
+            // the limit) and equals the secant of F against d over θ ± ε/10 at
+            // ε = 10⁻³ (truncation ~10⁻²·…, so 10⁻³ relative; 10⁻⁵ between ε's)
+            let stiffness = |eps: f64| {
+                let p = curve.point(q_end - eps, 0.0).unwrap();
+                p.slopes.unwrap().0 / p.overlap_slope
+            };
+            let eps = 1e-3;
+            let (up, down) = (
+                curve.point(q_end - 0.9 * eps, 0.0).unwrap(),
+                curve.point(q_end - 1.1 * eps, 0.0).unwrap(),
+            );
+            let secant = (up.force - down.force) / (up.overlap - down.overlap);
+            let k = stiffness(eps);
+            assert!(
+                (k - secant).abs() <= 1e-3 * secant.abs(),
+                "{lambda}: {k} vs {secant}"
+            );
+            for eps in [1e-6, 1e-9, 1e-12] {
+                let k_eps = stiffness(eps);
+                assert!(k_eps.is_finite(), "{lambda}: dF/dd at {eps}: {k_eps}");
+                assert!(
+                    (k_eps - k).abs() <= 1e-2 * k.abs(),
+                    "{lambda}: {k_eps} vs {k}"
+                );
+            }
         }
     }
 }

@@ -328,3 +328,57 @@ fn the_scene_accuracy_reaches_the_oblique_impact() {
         "{named:?}"
     );
 }
+
+/// A constant tangential stiffness (`linear_history`) on Maugis-Dugdale with a
+/// 1 nm range (Λ ≈ 0.09): the contact starts on the no-contact branch (friction
+/// already acts on the cohesive zone's pull), slides, and passes the junction
+/// with the contact branch, where the overlap and the force are both even in
+/// π/2 − θ. Until stop 37 the slopes there were central differences in θ whose
+/// step crossed π/2: dF/dδ of −6·10¹⁰ N/m and noise of 30 % from one
+/// evaluation to the next (the law's stiffness there is −160 N/m), a sliding
+/// power of 1.5 W instead of 10⁻⁸ W, and the integration stopped ("step size
+/// underflow"; an earlier form, "NaN"). Now: the answer, its bookkeeping
+/// closed to 10⁻⁹ of the kinetic energy, and the same impact with a twisting
+/// element (the full 3-D rates instead of the planar ones) equal to 10⁻⁹.
+#[test]
+fn a_constant_tangential_stiffness_passes_the_maugis_dugdale_junction() {
+    let md = SILICA.replace("separation = \"load-controlled\"", "range = 1e-9");
+    let friction =
+        "[friction]\ncoefficient = 0.3\ntangential = \"linear_history\"\ntangential_stiffness = 1e3\n";
+    let planar = Scene::from_str(&format!("{md}{friction}"), Format::Toml).unwrap();
+    let twisting = Scene::from_str(
+        &format!("{md}{friction}twisting = \"marshall\"\n"),
+        Format::Toml,
+    )
+    .unwrap();
+    for (v, angle) in [(2.0135, 8.048), (0.3, 10.0), (1.0, 45.0)] {
+        let a = planar.oblique(v, angle).unwrap();
+        let b = twisting.oblique(v, angle).unwrap();
+        let kinetic = a.kinetic_energy;
+        assert!(
+            (a.losses.total() - a.energy_loss).abs() <= 1e-9 * kinetic,
+            "{v} m/s {angle}°: losses {:e} J, kinetic energy lost {:e} J",
+            a.losses.total(),
+            a.energy_loss
+        );
+        assert!(a.losses.sliding_friction >= 0.0 && a.losses.sliding_friction < kinetic);
+        for (what, x, y) in [
+            ("e_n", a.normal_restitution, b.normal_restitution),
+            (
+                "e_t",
+                a.tangential_restitution.unwrap_or(0.0),
+                b.tangential_restitution.unwrap_or(0.0),
+            ),
+            (
+                "sliding / kinetic",
+                a.losses.sliding_friction / kinetic,
+                b.losses.sliding_friction / kinetic,
+            ),
+        ] {
+            assert!(
+                (x - y).abs() <= 1e-9 * x.abs().max(y.abs()).max(1.0),
+                "{v} m/s {angle}° {what}: planar {x:e}, with twisting {y:e}"
+            );
+        }
+    }
+}

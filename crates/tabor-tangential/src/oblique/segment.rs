@@ -120,7 +120,14 @@ impl<'a> Setup<'a> {
         };
         let g = |s: f64, yn: &[f64; N]| g_si(s * self.time, &self.to_si(yn));
         let s_end = s0 + settings.max_duration;
-        let numerics = |e| failure.take().unwrap_or(Error::Numerics(e));
+        // a failure of the rates or of the event values (the law's own error)
+        // is the cause of the integrator's or the event location's NaN
+        let numerics = |e| {
+            failure
+                .take()
+                .or(g_failure.take())
+                .unwrap_or(Error::Numerics(e))
+        };
         let micro_slip = self.bed.is_some() && modes.in_contact;
         // micro-slip: the springs' state at the end of every accepted step
         let mut commit = |stop: f64, yn: &[f64; N]| {
