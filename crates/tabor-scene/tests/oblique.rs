@@ -439,3 +439,59 @@ fn a_soft_spring_slides_through_the_tensile_end_of_a_damped_contact() {
         }
     }
 }
+
+/// `coeff_restitution` with adhesion, obliquely (45°), for every tangential
+/// model on JKR and on Maugis-Dugdale with a 3 nm range: an answer at every
+/// speed from 10⁻³ v_c to 10 v_c (v_c the scene's central sticking velocity),
+/// sticking at and below 10⁻¹ v_c (the normal speed is below v_c there),
+/// rebounding at 10 v_c, the bookkeeping closed to 10⁻⁶ of the kinetic
+/// energy. Without a tangential dashpot: with one (x_γ = 0.5),
+/// `linear_history` on Maugis-Dugdale closes its bookkeeping only to ~5·10⁻⁴
+/// at and above v_c, an open defect named in the closing note of stop 37. Until stop 37 micro-slip on Maugis-Dugdale failed at 10⁻³ v_c
+/// ("step size underflow"): the attraction raises the kinetic energy 10⁶-fold
+/// before contact, and the damping power that starts with the adhesive contact
+/// radius (∝ (t − t₀)^¼) was held to 10⁻¹⁰ of the impact's own kinetic energy.
+#[test]
+fn adhesive_coeff_restitution_answers_obliquely_for_every_tangential_model() {
+    let damping = "[damping]\nmodel = \"coeff_restitution\"\nrestitution = 0.5\n";
+    let laws = [
+        ("JKR", SILICA.to_string()),
+        (
+            "Maugis-Dugdale",
+            SILICA.replace("separation = \"load-controlled\"", "range = 3e-9"),
+        ),
+    ];
+    for (law, base) in &laws {
+        let central = Scene::from_str(&format!("{base}{damping}"), Format::Toml).unwrap();
+        let vc = central.sticking_velocity().unwrap().expect("sticks");
+        for (tangential, stiffness) in [
+            ("mindlin", ""),
+            ("mindlin_rescale", ""),
+            ("linear_history", "tangential_stiffness = 1e3\n"),
+            ("mindlin_deresiewicz", ""),
+        ] {
+            let friction = format!(
+                "[friction]\ncoefficient = 0.4\ntangential = \"{tangential}\"\n{stiffness}"
+            );
+            let s = Scene::from_str(&format!("{base}{damping}{friction}"), Format::Toml).unwrap();
+            for k in -3..=1 {
+                let v = vc * 10f64.powi(k);
+                let o = s
+                    .oblique(v, 45.0)
+                    .unwrap_or_else(|e| panic!("{law} {tangential} at {v:e} m/s: {e}"));
+                let what = format!("{law} {tangential} at {v:e} m/s (v_c {vc:e})");
+                assert!(o.normal_restitution.is_finite(), "{what}: {o:?}");
+                assert!(
+                    o.energy_error <= 1e-6,
+                    "{what}: bookkeeping {:e}",
+                    o.energy_error
+                );
+                if k <= -1 {
+                    assert!(o.sticks, "{what}: rebounds");
+                } else if k >= 1 {
+                    assert!(!o.sticks && o.normal_restitution > 0.0, "{what}: sticks");
+                }
+            }
+        }
+    }
+}

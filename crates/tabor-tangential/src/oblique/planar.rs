@@ -63,7 +63,7 @@ pub(super) const P_EN: usize = 10;
 const OUT_OF_PLANE: [usize; 9] = [E + 2, U + 2, WI, WI + 1, WJ, WJ + 1, XT + 2, XR + 2, XW];
 
 /// The motion components of [`PLANAR`] (the error control's).
-const PLANAR_MOTION: usize = 10;
+pub(super) const PLANAR_MOTION: usize = 10;
 
 impl<'a> Setup<'a> {
     /// True when the state `y` in `modes` stays planar: every out-of-plane
