@@ -322,7 +322,8 @@ impl<'a> Setup<'a> {
                     let drive =
                         v_tr * k + v_tr * (gamma_dot - k_dot * ratio(gamma, k)) + v_tr_dot * gamma;
                     let turn = turn_rate2(&drive, &uhat, &n, limit, self.time);
-                    put2(dz, P_XT, &((turn - n * uhat.dot(&n_dot)) * xi.norm()));
+                    let w = turn - n * uhat.dot(&n_dot);
+                    put2(dz, P_XT, &(w * xi.norm()));
                     // the slip rate and the sliding work as in `Setup::evaluate`
                     let uv = uhat.dot(&v_tr);
                     let on_surface = limit - gamma * uv;
@@ -335,11 +336,12 @@ impl<'a> Setup<'a> {
                     out.0 = g;
                     let slip_rate = if modes.frozen[0] { g.max(0.0) } else { g };
                     if on_surface >= 0.0 {
-                        dz[P_EN + 2] = if k > 0.0 {
-                            slip_rate * on_surface / k
-                        } else {
-                            0.0
-                        };
+                        // as `Setup::evaluate` ([`slip_power`])
+                        let udot_v = (w - uhat * uhat.dot(&w)).dot(&v_tr);
+                        let exact = t.model == TangentialModel::LinearHistory && !modes.frozen[0];
+                        let (power, _) =
+                            slip_power(exact, (on_surface, slip_rate, k), (uv, gamma, udot_v));
+                        dz[P_EN + 2] = power;
                         dz[P_EN + 3] = gamma * v_tr.norm_squared();
                     } else {
                         dz[P_EN + 3] = gamma * v_tr.norm_squared() + on_surface * uv;

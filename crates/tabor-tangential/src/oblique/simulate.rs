@@ -310,10 +310,21 @@ impl ObliqueImpact {
         let mut slip_switches = 0usize;
         let mut last_switch: [Option<f64>; 3] = [None; 3];
         let decision = loop {
+            // a slipping linear_history spring's energy, left out of the sliding
+            // work's quadrature ([`slip_power`](super::state::slip_power)),
+            // enters at the segment's ends
+            let slipping = modes.in_contact && modes.tangential == Mode::Slip;
+            let spring_before = match slipping {
+                true => setup.evaluate(law, t, &y, &modes)?.slip_energy,
+                false => 0.0,
+            };
             let (event, t_hit, y_hit, spent) = setup.segment(law, t, &y, &modes, settings)?;
             cost += spent;
             t = t_hit;
             y = y_hit;
+            if slipping {
+                y[EN + 2] -= setup.evaluate(law, t, &y, &modes)?.slip_energy - spring_before;
+            }
             events += 1;
             if events > settings.max_events {
                 return Err(model_error(format!(
