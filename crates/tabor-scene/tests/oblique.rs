@@ -4,6 +4,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use tabor_scene::{Format, Scene};
+use tabor_tangential::oblique::ObliqueOutcome;
 
 const SILICA: &str = r#"
 name = "silica"
@@ -345,41 +346,53 @@ fn a_constant_tangential_stiffness_passes_the_maugis_dugdale_junction() {
     let md = SILICA.replace("separation = \"load-controlled\"", "range = 1e-9");
     let friction =
         "[friction]\ncoefficient = 0.3\ntangential = \"linear_history\"\ntangential_stiffness = 1e3\n";
-    let planar = Scene::from_str(&format!("{md}{friction}"), Format::Toml).unwrap();
-    let twisting = Scene::from_str(
-        &format!("{md}{friction}twisting = \"marshall\"\n"),
-        Format::Toml,
-    )
-    .unwrap();
+    let (planar, full) = planar_and_full(&format!("{md}{friction}"));
     for (v, angle) in [(2.0135, 8.048), (0.3, 10.0), (1.0, 45.0)] {
         let a = planar.oblique(v, angle).unwrap();
-        let b = twisting.oblique(v, angle).unwrap();
-        let kinetic = a.kinetic_energy;
+        let b = full.oblique(v, angle).unwrap();
+        assert!(a.losses.sliding_friction >= 0.0 && a.losses.sliding_friction < a.kinetic_energy);
+        assert_closed_and_alike(&a, &b, &format!("{v} m/s {angle}°"));
+    }
+}
+
+/// The scene (its last section `[friction]`) without and with a twisting
+/// element: a planar impact on the 2-D rates, and on the full 3-D ones.
+fn planar_and_full(text: &str) -> (Scene, Scene) {
+    let full = format!("{text}twisting = \"marshall\"\n");
+    (
+        Scene::from_str(text, Format::Toml).unwrap(),
+        Scene::from_str(&full, Format::Toml).unwrap(),
+    )
+}
+
+/// The bookkeeping of `a` closed to 10⁻⁹ of the kinetic energy (the kinetic
+/// energy from the motion, the losses from the quadratures), and e_n, e_t and
+/// the sliding work of the planar `a` and the full `b` equal to 10⁻⁹.
+fn assert_closed_and_alike(a: &ObliqueOutcome, b: &ObliqueOutcome, case: &str) {
+    let kinetic = a.kinetic_energy;
+    assert!(
+        (a.losses.total() - a.energy_loss).abs() <= 1e-9 * kinetic,
+        "{case}: losses {:e} J, kinetic energy lost {:e} J",
+        a.losses.total(),
+        a.energy_loss
+    );
+    for (what, x, y) in [
+        ("e_n", a.normal_restitution, b.normal_restitution),
+        (
+            "e_t",
+            a.tangential_restitution.unwrap_or(0.0),
+            b.tangential_restitution.unwrap_or(0.0),
+        ),
+        (
+            "sliding / kinetic",
+            a.losses.sliding_friction / kinetic,
+            b.losses.sliding_friction / kinetic,
+        ),
+    ] {
         assert!(
-            (a.losses.total() - a.energy_loss).abs() <= 1e-9 * kinetic,
-            "{v} m/s {angle}°: losses {:e} J, kinetic energy lost {:e} J",
-            a.losses.total(),
-            a.energy_loss
+            (x - y).abs() <= 1e-9 * x.abs().max(y.abs()).max(1.0),
+            "{case} {what}: planar {x:e}, with twisting {y:e}"
         );
-        assert!(a.losses.sliding_friction >= 0.0 && a.losses.sliding_friction < kinetic);
-        for (what, x, y) in [
-            ("e_n", a.normal_restitution, b.normal_restitution),
-            (
-                "e_t",
-                a.tangential_restitution.unwrap_or(0.0),
-                b.tangential_restitution.unwrap_or(0.0),
-            ),
-            (
-                "sliding / kinetic",
-                a.losses.sliding_friction / kinetic,
-                b.losses.sliding_friction / kinetic,
-            ),
-        ] {
-            assert!(
-                (x - y).abs() <= 1e-9 * x.abs().max(y.abs()).max(1.0),
-                "{v} m/s {angle}° {what}: planar {x:e}, with twisting {y:e}"
-            );
-        }
     }
 }
 
@@ -402,22 +415,11 @@ fn a_soft_spring_slides_through_the_tensile_end_of_a_damped_contact() {
     assert!(!hertz.contains("adhesion"));
     let keys = "[damping]\nmodel = \"coeff_restitution\"\nrestitution = 0.5\n[friction]\n\
                 coefficient = 0.6\ntangential = \"linear_history\"\ntangential_stiffness = 100\n";
-    let planar = Scene::from_str(&format!("{hertz}{keys}"), Format::Toml).unwrap();
-    let twisting = Scene::from_str(
-        &format!("{hertz}{keys}twisting = \"marshall\"\n"),
-        Format::Toml,
-    )
-    .unwrap();
+    let (planar, full) = planar_and_full(&format!("{hertz}{keys}"));
     for angle in [30.0, 50.0, 70.0] {
         let a = planar.oblique(0.15, angle).unwrap();
-        let b = twisting.oblique(0.15, angle).unwrap();
-        let kinetic = a.kinetic_energy;
-        assert!(
-            (a.losses.total() - a.energy_loss).abs() <= 1e-9 * kinetic,
-            "{angle}°: losses {:e} J, kinetic energy lost {:e} J",
-            a.losses.total(),
-            a.energy_loss
-        );
+        let b = full.oblique(0.15, angle).unwrap();
+        assert_closed_and_alike(&a, &b, &format!("{angle}°"));
         assert!(a.losses.sliding_friction > 0.0 && a.losses.normal_damping > 0.0);
         // at the separation F_n = 0: the limit, and the constant spring's
         // force and energy with it, are 0; to the quadrature's accuracy outside
@@ -425,28 +427,10 @@ fn a_soft_spring_slides_through_the_tensile_end_of_a_damped_contact() {
         // 3·10⁻¹³ at 50°; before stop 37's exact differential the quadrature
         // left 2.7·10⁻⁶ at 50°)
         assert!(
-            a.losses.tangential_spring.abs() <= 1e-8 * kinetic,
+            a.losses.tangential_spring.abs() <= 1e-8 * a.kinetic_energy,
             "{angle}°: {:e} J left in the spring",
             a.losses.tangential_spring
         );
-        for (what, x, y) in [
-            ("e_n", a.normal_restitution, b.normal_restitution),
-            (
-                "e_t",
-                a.tangential_restitution.unwrap_or(0.0),
-                b.tangential_restitution.unwrap_or(0.0),
-            ),
-            (
-                "sliding / kinetic",
-                a.losses.sliding_friction / kinetic,
-                b.losses.sliding_friction / kinetic,
-            ),
-        ] {
-            assert!(
-                (x - y).abs() <= 1e-9 * x.abs().max(y.abs()).max(1.0),
-                "{angle}° {what}: planar {x:e}, with twisting {y:e}"
-            );
-        }
     }
 }
 
