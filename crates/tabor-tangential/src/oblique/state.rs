@@ -128,15 +128,13 @@ pub(super) fn slip_power(
     (on_surface, slip_rate, k): (f64, f64, f64),
     (uv, gamma, udot_v): (f64, f64, f64),
 ) -> (f64, f64) {
-    if !(k > 0.0) {
-        (0.0, 0.0)
-    } else if exact {
-        (
+    match (k > 0.0, exact) {
+        (false, _) => (0.0, 0.0),
+        (true, true) => (
             on_surface * (uv - gamma * udot_v / k),
             on_surface * on_surface / (2.0 * k),
-        )
-    } else {
-        (slip_rate * on_surface / k, 0.0)
+        ),
+        (true, false) => (slip_rate * on_surface / k, 0.0),
     }
 }
 
