@@ -309,11 +309,15 @@ impl ObliqueImpact {
         let mut events = 0usize;
         let mut slip_switches = 0usize;
         let mut last_switch: [Option<f64>; 3] = [None; 3];
+        let linear_history = self
+            .friction
+            .as_ref()
+            .is_some_and(|f| f.tangential.model == crate::model::TangentialModel::LinearHistory);
         let decision = loop {
             // a slipping linear_history spring's energy, left out of the sliding
             // work's quadrature ([`slip_power`](super::state::slip_power)),
             // enters at the segment's ends
-            let slipping = modes.in_contact && modes.tangential == Mode::Slip;
+            let slipping = modes.in_contact && modes.tangential == Mode::Slip && linear_history;
             let spring_before = match slipping {
                 true => setup.evaluate(law, t, &y, &modes)?.slip_energy,
                 false => 0.0,
