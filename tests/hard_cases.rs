@@ -6,7 +6,7 @@
 //! sign changes of F̂_Y(Φ); bodies from nanometres to metres with moduli from 1e5 to
 //! 1e12 Pa. Every result finite, restitution in [0, 1], continuous across the
 //! boundaries, monotone where the physics says so. Plus the regression tests of the
-//! overflow fixes found by `tests/fuzz_api.rs`.
+//! overflow fixes found by `tests/fuzz_api*.rs`.
 
 use tabor::jkr::{GradedSphere, JkrImpact, JkrSphere, PowerLawProfile};
 use tabor::maugis::{
@@ -463,7 +463,7 @@ fn scenes_over_sizes_and_moduli() {
 }
 
 // ---------------------------------------------------------------------------
-// Regression tests of the fixes found by tests/fuzz_api.rs
+// Regression tests of the fixes found by tests/fuzz_api*.rs
 
 #[test]
 fn regression_effective_quantities_do_not_overflow() {

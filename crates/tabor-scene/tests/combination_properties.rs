@@ -20,6 +20,10 @@
 //! the search cannot find fails too. Each property counts the allowed cases and
 //! prints them.
 //!
+//! The scenes the large runs found are regression tests in
+//! `combination_regressions.rs`; the random scene (`Spec`) and the properties of
+//! every outcome are in `tests/common/mod.rs`.
+//!
 //! The number of cases follows `PROPTEST_CASES` (64 in CI; the opt-in run uses 1e4,
 //! README).
 #![allow(clippy::unwrap_used, clippy::expect_used)]
@@ -28,97 +32,14 @@ use proptest::prelude::*;
 use proptest::test_runner::{TestCaseError, TestRunner};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use tabor_maugis::{LAMBDA_1, LAMBDA_2};
-use tabor_scene::{Combination, Format, Outcome, Scene, SceneError, SweepParameter};
+use tabor_scene::{Combination, Scene, SceneError, SweepParameter};
 
-/// A random scene as TOML pieces.
-#[derive(Clone, Debug)]
-struct Spec {
-    radius: f64,
-    density: f64,
-    modulus: f64,
-    poisson: f64,
-    target_sphere: bool,
-    target_modulus: f64,
-    target_poisson: f64,
-    work_of_adhesion: Option<f64>,
-    range: Option<f64>,
-    load_controlled: bool,
-    yield_stress: Option<f64>,
-    plastic_model: &'static str,
-    superposition: bool,
-    sphere_viscosity: Option<f64>,
-    target_viscosity: Option<f64>,
-    accuracy: f64,
-}
+mod common;
+
+use common::{jump, outcome_is_consistent, Spec};
 
 fn contact_modulus(e: f64, nu: f64) -> f64 {
     e / (1.0 - nu * nu)
-}
-
-impl Spec {
-    fn toml(&self) -> String {
-        let mut s = format!(
-            "accuracy = {:e}\n[sphere]\nradius = {:e}\ndensity = {:e}\nyoungs_modulus = {:e}\npoisson_ratio = {}\n",
-            self.accuracy, self.radius, self.density, self.modulus, self.poisson
-        );
-        if let Some(eta) = self.sphere_viscosity {
-            s += &format!("viscosity = {eta:e}\n");
-        }
-        s += &format!(
-            "[target]\nyoungs_modulus = {:e}\npoisson_ratio = {}\ndensity = {:e}\n",
-            self.target_modulus, self.target_poisson, self.density
-        );
-        if self.target_sphere {
-            s += &format!("radius = {:e}\n", self.radius);
-        }
-        if let Some(sy) = self.yield_stress {
-            s += &format!("yield_stress = {sy:e}\n");
-        }
-        if let Some(eta) = self.target_viscosity {
-            s += &format!("viscosity = {eta:e}\n");
-        }
-        if let Some(w) = self.work_of_adhesion {
-            s += &format!("[adhesion]\nwork_of_adhesion = {w:e}\n");
-            if let Some(h) = self.range {
-                s += &format!("range = {h:e}\n");
-            } else if self.load_controlled {
-                s += "separation = \"load-controlled\"\n";
-            }
-        }
-        if self.yield_stress.is_some() {
-            s += &format!("[plasticity]\nmodel = \"{}\"\n", self.plastic_model);
-            if self.superposition {
-                s += "adhesive_model = \"superposition\"\n";
-            }
-        }
-        s
-    }
-
-    fn scene(&self) -> Result<Scene, SceneError> {
-        Scene::from_str(&self.toml(), Format::Toml)
-    }
-
-    /// Whether contact mechanics is small-strain at `speed`: the Hertz overlap
-    /// d_max = (15 m v²/(16 E* √R))^(2/5) of seed 000 (5.8) at most R, with E*, R
-    /// and m written out here.
-    fn small_strain(&self, speed: f64) -> bool {
-        let e = 1.0
-            / ((1.0 - self.poisson * self.poisson) / self.modulus
-                + (1.0 - self.target_poisson * self.target_poisson) / self.target_modulus);
-        let r = if self.target_sphere {
-            self.radius / 2.0
-        } else {
-            self.radius
-        };
-        let m_sphere = 4.0 / 3.0 * std::f64::consts::PI * self.radius.powi(3) * self.density;
-        let m = if self.target_sphere {
-            m_sphere / 2.0
-        } else {
-            m_sphere
-        };
-        let d_max = (15.0 * m * speed * speed / (16.0 * e * r.sqrt())).powf(0.4);
-        d_max <= r
-    }
 }
 
 /// The errors a property met: outside small strain (allowed), the documented
@@ -191,53 +112,6 @@ fn run<S: Strategy>(
         panic!("{name}: {e}");
     }
     counts.report(name);
-}
-
-/// The properties every outcome has: ε ∈ [0, 1], the loss at most the kinetic
-/// energy, `sticks` ⇔ v < v_stick (or at every speed up to the validity limit),
-/// and the shares of a sum adding up to the total.
-/// A sticking velocity that could not be found fails the property.
-fn outcome_is_consistent(o: &Outcome, speed: f64) -> Result<(), TestCaseError> {
-    prop_assert!((0.0..=1.0).contains(&o.restitution), "{}", o.restitution);
-    prop_assert!(o.energy_loss <= o.kinetic_energy * (1.0 + 1e-12));
-    prop_assert!(
-        !o.warnings
-            .iter()
-            .any(|w| w.code == "sticking-velocity-unknown"),
-        "{:?}",
-        o.warnings
-    );
-    let up_to_limit = o.warnings.iter().any(|w| w.code == "sticks-up-to-limit");
-    match o.sticking_velocity {
-        None if up_to_limit => prop_assert!(o.sticks, "sticks at every speed, yet rebounds"),
-        None => prop_assert!(!o.sticks),
-        Some(vc) => {
-            // where ε(v) is not monotone (a warning says so), the bodies may rebound in
-            // a window below v_c; above v_c they never stick
-            let not_monotone = o
-                .warnings
-                .iter()
-                .any(|w| w.code == "restitution-not-monotone");
-            if (speed / vc - 1.0).abs() > 1e-6 && !(not_monotone && speed < vc) {
-                prop_assert_eq!(o.sticks, speed < vc, "v = {}, v_c = {}", speed, vc);
-            }
-        }
-    }
-    // the shares of a sum add up to the total loss, sticking included
-    if o.effects
-        .iter()
-        .filter(|e| e.used)
-        .all(|e| e.energy_loss.is_some())
-    {
-        let sum: f64 = o.effects.iter().filter_map(|e| e.energy_loss).sum();
-        prop_assert!(
-            (sum - o.energy_loss).abs() <= 1e-9 * o.kinetic_energy,
-            "shares {} vs total {}",
-            sum,
-            o.energy_loss
-        );
-    }
-    Ok(())
 }
 
 fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
@@ -314,14 +188,6 @@ fn spec() -> impl Strategy<Value = Spec> {
 
 fn signature(c: &Combination) -> (tabor_scene::Rule, Vec<tabor_scene::EffectKind>) {
     (c.rule, c.effects.clone())
-}
-
-/// The jump of 1 − ε² (the loss over the kinetic energy) across x, by `eps_at`
-/// (ε and the error estimate of 1 − ε²), less the two error estimates.
-fn jump(x: f64, eps_at: &dyn Fn(f64) -> Option<(f64, f64)>) -> Option<f64> {
-    let (lo, e_lo) = eps_at(x * (1.0 - 1e-9))?;
-    let (hi, e_hi) = eps_at(x * (1.0 + 1e-9))?;
-    Some(((1.0 - lo * lo) - (1.0 - hi * hi)).abs() - e_lo - e_hi)
 }
 
 /// A change of the model that answers, bisected between speeds a < b whose
@@ -530,7 +396,7 @@ fn restitution_never_rises_with_adhesion_viscosity_or_cohesive_stress() {
             // σ0 = Δγ/h grows as h shrinks at fixed Δγ. Not with the coupled
             // viscous-adhesive model: there a longer range keeps the bodies in (tensile)
             // contact longer while the viscous force dissipates, so a larger σ0 can
-            // raise ε (by about 7e-5 in ε, test in combinations.rs).
+            // raise ε (by about 7e-5 in ε, test in combinations_bundled.rs).
             let coupled = spec.work_of_adhesion.is_some()
                 && spec.sphere_viscosity.is_some()
                 && spec.target_viscosity.is_some();
@@ -583,110 +449,5 @@ fn restitution_never_rises_with_adhesion_viscosity_or_cohesive_stress() {
             }
             Ok(())
         },
-    );
-}
-
-/// Two scenes the 10⁵-case run of the properties above drew (both viscous-adhesive
-/// with a Maugis-Dugdale range; the simulator had stepped over the kink of F(d) at
-/// the junction of the contact and no-contact branches): the restitution jumped by
-/// 2.1e-7 in 1 − ε² across Λ1 at accuracy 1e-8; and a depth a hair above the
-/// junction (between its two formulas' roundings) had no θ, so the scene erred.
-#[test]
-fn regressions_of_the_large_run_at_the_branch_junction() {
-    let across_lambda_1 = Spec {
-        radius: 7.22375356290814e-5,
-        density: 3233.3929795284107,
-        modulus: 59905978.14744807,
-        poisson: 0.014353026411759121,
-        target_sphere: true,
-        target_modulus: 52078452566.35248,
-        target_poisson: 0.1333114673475124,
-        work_of_adhesion: Some(0.01750662635956151),
-        range: None,
-        load_controlled: false,
-        yield_stress: None,
-        plastic_model: "auto",
-        superposition: false,
-        sphere_viscosity: Some(6.033105208892428),
-        target_viscosity: Some(5338.595241121118),
-        accuracy: 1e-8,
-    };
-    let scene = across_lambda_1.scene().unwrap();
-    let speed = 0.02263378821607054;
-    let eps_at = |l: f64| {
-        scene
-            .with_parameter(SweepParameter::TaborParameter, l)
-            .and_then(|s| s.restitution_with_error(speed))
-            .ok()
-    };
-    let j = jump(LAMBDA_1, &eps_at).unwrap();
-    assert!(j <= 3.0 * across_lambda_1.accuracy + 1e-8, "jump {j}");
-    let at_the_junction = Spec {
-        radius: 1.2591593048519706e-6,
-        density: 899.9999999999998,
-        modulus: 159653413622.7527,
-        poisson: 0.0,
-        target_sphere: false,
-        target_modulus: 137638487902.3963,
-        target_poisson: 0.19358995422374248,
-        work_of_adhesion: Some(0.0037716384588271095),
-        range: Some(2.3170040751989438e-9),
-        load_controlled: false,
-        yield_stress: None,
-        plastic_model: "auto",
-        superposition: false,
-        sphere_viscosity: Some(3991335.340568817),
-        target_viscosity: Some(3574940.4940465568),
-        accuracy: 1e-10,
-    };
-    let o = at_the_junction.scene().unwrap().outcome_at(1.0).unwrap();
-    outcome_is_consistent(&o, 1.0).unwrap();
-    assert!(
-        o.warnings
-            .iter()
-            .all(|w| w.code != "sticking-velocity-unknown"),
-        "{:?}",
-        o.warnings
-    );
-}
-
-/// A third scene of the 10⁵-case run (superposition of JKR, interpolation-model
-/// plasticity and Kelvin-Voigt viscosity): ε(v) is 0 below 0.161 m/s, positive
-/// up to about 0.23 m/s, 0 again up to about 0.31 m/s; the upper edge of the
-/// sticking set was missed by the check on the grid 0.161·2^k (a window of a
-/// factor 1.35), and the scene stuck above its reported sticking velocity.
-#[test]
-fn regression_of_the_large_run_a_narrow_sticking_window() {
-    let spec = Spec {
-        radius: 2.2205446423411198e-6,
-        density: 1615.5880707248239,
-        modulus: 48515218164.397064,
-        poisson: 0.0,
-        target_sphere: true,
-        target_modulus: 11915485.669428578,
-        target_poisson: 0.1360975746839234,
-        work_of_adhesion: Some(0.0071121177584400515),
-        range: None,
-        load_controlled: false,
-        yield_stress: Some(92094.07599852623),
-        plastic_model: "interpolation",
-        superposition: false,
-        sphere_viscosity: Some(14.008992289623903),
-        target_viscosity: Some(0.00350558361469889),
-        accuracy: 1e-10,
-    };
-    let scene = spec.scene().unwrap();
-    for speed in [0.1, 0.2, 0.261201787320265, 0.35] {
-        let o = scene.outcome_at(speed).unwrap();
-        outcome_is_consistent(&o, speed).unwrap();
-    }
-    let o = scene.outcome_at(0.2).unwrap();
-    assert!(!o.sticks, "rebounds inside the window's gap");
-    assert!(
-        o.warnings
-            .iter()
-            .any(|w| w.code == "restitution-not-monotone"),
-        "{:?}",
-        o.warnings
     );
 }

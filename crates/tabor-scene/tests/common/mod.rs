@@ -1,9 +1,15 @@
 //! Shared by the integration tests: a classical RK4 integrator and the coupled
 //! JKR + Kuwabara-Kono contact of the bundled polymer grains, written out in SI
-//! (independent of tabor's force laws).
+//! (independent of tabor's force laws); the effective quantities and the silica
+//! pair of the combination tests (`combinations.rs`, `combinations_bundled.rs`);
+//! the random scenes of the combination property tests and the properties every
+//! outcome has (`combination_properties.rs`, `combination_regressions.rs`).
 #![allow(dead_code)]
 
+use proptest::prelude::*;
+use proptest::test_runner::TestCaseError;
 use std::f64::consts::PI;
+use tabor_scene::{Format, Outcome, Scene, SceneError};
 
 /// One classical Runge-Kutta step of ẍ = acc(x, ẋ).
 pub fn rk4(x: f64, u: f64, h: f64, acc: &dyn Fn(f64, f64) -> f64) -> (f64, f64) {
@@ -159,4 +165,171 @@ impl Grains {
             &|d, u| self.end(d, u),
         )
     }
+}
+
+// ------------------------------------------------- the combination tests' scenes
+
+/// 1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2, written out here.
+pub fn e_star(e1: f64, nu1: f64, e2: f64, nu2: f64) -> f64 {
+    1.0 / ((1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2)
+}
+
+pub fn mass(radius: f64, density: f64) -> f64 {
+    4.0 / 3.0 * PI * radius.powi(3) * density
+}
+
+pub fn scene(text: &str) -> Scene {
+    Scene::from_str(text, Format::Toml).unwrap_or_else(|e| panic!("{e}\n{text}"))
+}
+
+pub fn silica_e() -> f64 {
+    e_star(54e9, 0.17, 54e9, 0.17)
+}
+
+pub fn silica_m() -> f64 {
+    mass(1e-6, 2650.0) / 2.0
+}
+
+// -------------------------------------------- the scenes of the property tests
+
+/// A random scene as TOML pieces.
+#[derive(Clone, Debug)]
+pub struct Spec {
+    pub radius: f64,
+    pub density: f64,
+    pub modulus: f64,
+    pub poisson: f64,
+    pub target_sphere: bool,
+    pub target_modulus: f64,
+    pub target_poisson: f64,
+    pub work_of_adhesion: Option<f64>,
+    pub range: Option<f64>,
+    pub load_controlled: bool,
+    pub yield_stress: Option<f64>,
+    pub plastic_model: &'static str,
+    pub superposition: bool,
+    pub sphere_viscosity: Option<f64>,
+    pub target_viscosity: Option<f64>,
+    pub accuracy: f64,
+}
+
+impl Spec {
+    pub fn toml(&self) -> String {
+        let mut s = format!(
+            "accuracy = {:e}\n[sphere]\nradius = {:e}\ndensity = {:e}\nyoungs_modulus = {:e}\npoisson_ratio = {}\n",
+            self.accuracy, self.radius, self.density, self.modulus, self.poisson
+        );
+        if let Some(eta) = self.sphere_viscosity {
+            s += &format!("viscosity = {eta:e}\n");
+        }
+        s += &format!(
+            "[target]\nyoungs_modulus = {:e}\npoisson_ratio = {}\ndensity = {:e}\n",
+            self.target_modulus, self.target_poisson, self.density
+        );
+        if self.target_sphere {
+            s += &format!("radius = {:e}\n", self.radius);
+        }
+        if let Some(sy) = self.yield_stress {
+            s += &format!("yield_stress = {sy:e}\n");
+        }
+        if let Some(eta) = self.target_viscosity {
+            s += &format!("viscosity = {eta:e}\n");
+        }
+        if let Some(w) = self.work_of_adhesion {
+            s += &format!("[adhesion]\nwork_of_adhesion = {w:e}\n");
+            if let Some(h) = self.range {
+                s += &format!("range = {h:e}\n");
+            } else if self.load_controlled {
+                s += "separation = \"load-controlled\"\n";
+            }
+        }
+        if self.yield_stress.is_some() {
+            s += &format!("[plasticity]\nmodel = \"{}\"\n", self.plastic_model);
+            if self.superposition {
+                s += "adhesive_model = \"superposition\"\n";
+            }
+        }
+        s
+    }
+
+    pub fn scene(&self) -> Result<Scene, SceneError> {
+        Scene::from_str(&self.toml(), Format::Toml)
+    }
+
+    /// Whether contact mechanics is small-strain at `speed`: the Hertz overlap
+    /// d_max = (15 m v²/(16 E* √R))^(2/5) of seed 000 (5.8) at most R, with E*, R
+    /// and m written out here.
+    pub fn small_strain(&self, speed: f64) -> bool {
+        let e = 1.0
+            / ((1.0 - self.poisson * self.poisson) / self.modulus
+                + (1.0 - self.target_poisson * self.target_poisson) / self.target_modulus);
+        let r = if self.target_sphere {
+            self.radius / 2.0
+        } else {
+            self.radius
+        };
+        let m_sphere = 4.0 / 3.0 * std::f64::consts::PI * self.radius.powi(3) * self.density;
+        let m = if self.target_sphere {
+            m_sphere / 2.0
+        } else {
+            m_sphere
+        };
+        let d_max = (15.0 * m * speed * speed / (16.0 * e * r.sqrt())).powf(0.4);
+        d_max <= r
+    }
+}
+
+/// The properties every outcome has: ε ∈ [0, 1], the loss at most the kinetic
+/// energy, `sticks` ⇔ v < v_stick (or at every speed up to the validity limit),
+/// and the shares of a sum adding up to the total.
+/// A sticking velocity that could not be found fails the property.
+pub fn outcome_is_consistent(o: &Outcome, speed: f64) -> Result<(), TestCaseError> {
+    prop_assert!((0.0..=1.0).contains(&o.restitution), "{}", o.restitution);
+    prop_assert!(o.energy_loss <= o.kinetic_energy * (1.0 + 1e-12));
+    prop_assert!(
+        !o.warnings
+            .iter()
+            .any(|w| w.code == "sticking-velocity-unknown"),
+        "{:?}",
+        o.warnings
+    );
+    let up_to_limit = o.warnings.iter().any(|w| w.code == "sticks-up-to-limit");
+    match o.sticking_velocity {
+        None if up_to_limit => prop_assert!(o.sticks, "sticks at every speed, yet rebounds"),
+        None => prop_assert!(!o.sticks),
+        Some(vc) => {
+            // where ε(v) is not monotone (a warning says so), the bodies may rebound in
+            // a window below v_c; above v_c they never stick
+            let not_monotone = o
+                .warnings
+                .iter()
+                .any(|w| w.code == "restitution-not-monotone");
+            if (speed / vc - 1.0).abs() > 1e-6 && !(not_monotone && speed < vc) {
+                prop_assert_eq!(o.sticks, speed < vc, "v = {}, v_c = {}", speed, vc);
+            }
+        }
+    }
+    // the shares of a sum add up to the total loss, sticking included
+    if o.effects
+        .iter()
+        .filter(|e| e.used)
+        .all(|e| e.energy_loss.is_some())
+    {
+        let sum: f64 = o.effects.iter().filter_map(|e| e.energy_loss).sum();
+        prop_assert!(
+            (sum - o.energy_loss).abs() <= 1e-9 * o.kinetic_energy,
+            "shares {} vs total {}",
+            sum,
+            o.energy_loss
+        );
+    }
+    Ok(())
+}
+
+/// The jump of 1 − ε² (the loss over the kinetic energy) across x, by `eps_at`
+/// (ε and the error estimate of 1 − ε²), less the two error estimates.
+pub fn jump(x: f64, eps_at: &dyn Fn(f64) -> Option<(f64, f64)>) -> Option<f64> {
+    let (lo, e_lo) = eps_at(x * (1.0 - 1e-9))?;
+    let (hi, e_hi) = eps_at(x * (1.0 + 1e-9))?;
+    Some(((1.0 - lo * lo) - (1.0 - hi * hi)).abs() - e_lo - e_hi)
 }
