@@ -95,16 +95,10 @@ impl<'a> Setup<'a> {
                 let up = curve.point(q + h, rate)?;
                 let down = curve.point(q - h, rate)?;
                 let dd = up.overlap - down.overlap;
-                let da = (up.contact_radius - down.contact_radius) / dd;
-                let df = (up.force - down.force) / dd;
-                // where the curve is nearly vertical in the overlap (Maugis-
-                // Dugdale's θ → π/2 as the contact radius vanishes: dδ/dθ
-                // ~ 1e-25 m) the step in the coordinate leaves the curve's
-                // domain: the law is differenced in the overlap instead
-                if !(da.is_finite() && df.is_finite()) {
-                    return Ok(None);
-                }
-                Some((da, df))
+                Some((
+                    (up.contact_radius - down.contact_radius) / dd,
+                    (up.force - down.force) / dd,
+                ))
             }
         };
         Ok(Some(NormalPoint {

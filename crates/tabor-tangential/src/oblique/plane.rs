@@ -338,9 +338,11 @@ impl<'a> Setup<'a> {
                     if on_surface >= 0.0 {
                         // as `Setup::evaluate` ([`slip_power`])
                         let udot_v = (w - uhat * uhat.dot(&w)).dot(&v_tr);
-                        let exact = t.model == TangentialModel::LinearHistory && !modes.frozen[0];
-                        let (power, _) =
-                            slip_power(exact, (on_surface, slip_rate, k), (uv, gamma, udot_v));
+                        let (power, _) = slip_power(
+                            (t.model, modes.frozen[0]),
+                            (on_surface, slip_rate, k),
+                            (uv, gamma, udot_v),
+                        );
                         dz[P_EN + 2] = power;
                         dz[P_EN + 3] = gamma * v_tr.norm_squared();
                     } else {

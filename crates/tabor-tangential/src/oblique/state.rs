@@ -116,7 +116,7 @@ pub(super) struct Eval {
 
 /// The sliding power of a slipping spring, `g (L − γ û·v)/k` (`on_surface` =
 /// L − γ û·v, `slip_rate` = g), and the spring's energy it leaves to the segment
-/// ends. For `linear_history` (k constant, `exact`) g = k û·v − d(L − γ û·v)/dt
+/// ends. For `linear_history` (k constant; not frozen) g = k û·v − d(L − γ û·v)/dt
 /// − γ û̇·v, so the power is `(L − γ û·v)(û·v − γ û̇·v/k)` less the rate of the
 /// exact differential `(L − γ û·v)²/2k`: its quadrature does not see γ̇, which
 /// diverges where γ ∝ √a starts with the contact radius (Tsuji's or
@@ -124,10 +124,12 @@ pub(super) struct Eval {
 /// sampled there, 4·10⁻³ J of sliding work in an impact of 10⁻¹⁵ J).
 /// Returns (power, energy).
 pub(super) fn slip_power(
-    exact: bool,
+    (model, frozen): (TangentialModel, bool),
     (on_surface, slip_rate, k): (f64, f64, f64),
     (uv, gamma, udot_v): (f64, f64, f64),
 ) -> (f64, f64) {
+    // a frozen element counts g⁺, not g: no exact differential
+    let exact = model == TangentialModel::LinearHistory && !frozen;
     match (k > 0.0, exact) {
         (false, _) => (0.0, 0.0),
         (true, true) => (
@@ -480,9 +482,11 @@ impl<'a> Setup<'a> {
                     if on_surface >= 0.0 {
                         // û̇ = the turning of ξ's direction
                         let udot_v = (w - uhat * uhat.dot(&w)).dot(&v_tr);
-                        let exact = t.model == TangentialModel::LinearHistory && !modes.frozen[0];
-                        let (power, energy) =
-                            slip_power(exact, (on_surface, slip_rate, k), (uv, gamma, udot_v));
+                        let (power, energy) = slip_power(
+                            (t.model, modes.frozen[0]),
+                            (on_surface, slip_rate, k),
+                            (uv, gamma, udot_v),
+                        );
                         out.dy[EN + 2] = power;
                         out.slip_energy = energy;
                         out.dy[EN + 3] = gamma * v_tr.norm_squared();
