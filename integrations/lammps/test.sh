@@ -8,7 +8,7 @@ HERE="$(cd "$(dirname "$0")" && pwd)"
 ROOT="$(cd "$HERE/../.." && pwd)"
 TARGET="${CARGO_TARGET_DIR:-$ROOT/target}"
 VENV="$("$HERE/setup.sh")"
-(cd "$ROOT" && CARGO_TARGET_DIR="$TARGET" cargo build --release -q -p tabor-cli)
+(cd "$ROOT" && CARGO_TARGET_DIR="$TARGET" cargo xtask binaries >/dev/null)
 export TABOR="$TARGET/release/tabor"
 export LD_LIBRARY_PATH="$VENV/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 "$VENV/bin/python" "$HERE/test_lammps.py" "$@"

@@ -11,7 +11,7 @@ TARGET="${CARGO_TARGET_DIR:-$ROOT/target}"
 export CARGO_TARGET_DIR="$TARGET"
 PLUGIN="$(cd "$ROOT" && cargo xtask lammps-plugin | tail -n 1)"
 VENV="$("$HERE/setup.sh")"
-(cd "$ROOT" && cargo build --release -q -p tabor-cli)
+(cd "$ROOT" && cargo xtask binaries >/dev/null)
 export TABOR="$TARGET/release/tabor" TABOR_PLUGIN="$PLUGIN" LAMMPS_VENV="$VENV"
 export LD_LIBRARY_PATH="$VENV/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 "$VENV/bin/python" "$HERE/time_plugin.py" "$@"

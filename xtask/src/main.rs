@@ -22,6 +22,14 @@
 //! `cargo xtask lammps-plugin` builds the plugin alone (module [`lammps_plugin`]);
 //! the last line of its standard output is the path of the `.so`.
 //!
+//! `cargo xtask binaries` builds, in one release build, every artifact the
+//! `python`, `lammps` and `lammps-plugin` steps run ([`release_binaries`]): the
+//! `tabor` CLI, `tabor-ffi`'s libraries and its two oblique-impact examples; the
+//! last line of its standard output is the release directory. One command for all
+//! (the steps and `integrations/lammps/*.sh` call it), so the dependencies are
+//! compiled once with one feature set: separate `-p` builds resolve different
+//! features and recompile them (three release builds and a debug one before).
+//!
 //! To add a suite, write a `fn(&Context) -> Result<(), String>` and add one
 //! [`Step`] to [`steps`]. Options: `--skip NAME` (repeatable; `--skip-rust`,
 //! `--skip-python` as shorthands), `--only NAME` (repeatable), `--list`. Arguments
@@ -90,7 +98,8 @@ fn main() -> ExitCode {
 fn usage() -> String {
     let mut text = String::from(
         "usage: cargo xtask test [--skip NAME]... [--only NAME]... [--skip-rust] [--skip-python] \
-         [--list] [-- PYTEST_ARGS...]\n       cargo xtask wheel\n       cargo xtask lammps-plugin\n\nsteps:\n",
+         [--list] [-- PYTEST_ARGS...]\n       cargo xtask wheel\n       cargo xtask lammps-plugin\n       \
+         cargo xtask binaries\n\nsteps:\n",
     );
     for s in steps() {
         text.push_str(&format!("  {:<14} {}\n", s.name, s.about));
@@ -113,6 +122,18 @@ fn run(args: &[String]) -> Result<(), String> {
             .unwrap_or_else(|| root.join("target"));
         let path = python::wheel(&root, &target)?;
         println!("{}", path.display());
+        return Ok(());
+    }
+    if command == "binaries" {
+        let root = repository_root()?;
+        let target = std::env::var_os("CARGO_TARGET_DIR")
+            .map(PathBuf::from)
+            .unwrap_or_else(|| root.join("target"));
+        let target = std::env::current_dir()
+            .map_err(|e| e.to_string())?
+            .join(target);
+        let release = release_binaries(&root, &target)?;
+        println!("{}", release.display());
         return Ok(());
     }
     if command == "lammps-plugin" {
@@ -203,6 +224,36 @@ fn target_dir(ctx: &Context) -> PathBuf {
     std::env::var_os("CARGO_TARGET_DIR")
         .map(PathBuf::from)
         .unwrap_or_else(|| ctx.root.join("target"))
+}
+
+/// The release build of everything the Python and LAMMPS steps run (module doc:
+/// `cargo xtask binaries`) into `target`; returns `target/release`. Its
+/// standard output goes to standard error (the callers print paths on standard
+/// output).
+pub(crate) fn release_binaries(root: &Path, target: &Path) -> Result<PathBuf, String> {
+    let mut cmd = Command::new(cargo());
+    cmd.args([
+        "build",
+        "--release",
+        "--quiet",
+        "-p",
+        "tabor-cli",
+        "-p",
+        "tabor-ffi",
+    ])
+    .args(["--lib", "--bins"])
+    .args(["--example", "oblique_library", "--example", "oblique_dem"])
+    .env("CARGO_TARGET_DIR", target)
+    .current_dir(root)
+    .stdout(std::io::stderr());
+    eprintln!("$ {}", shown(&cmd));
+    let st = cmd
+        .status()
+        .map_err(|e| format!("cannot run {}: {e}", shown(&cmd)))?;
+    if !st.success() {
+        return Err(format!("{} exited with {:?}", shown(&cmd), st.code()));
+    }
+    Ok(target.join("release"))
 }
 
 /// Runs `cmd`, echoing it; an exit code other than 0 is an error.

@@ -181,15 +181,13 @@ fn test_requirements(python: &Path, target: &Path, requirements: &str) -> Result
 pub fn tests(root: &Path, target: &Path, pytest_args: &[String]) -> Result<(), String> {
     let wheel = wheel(root, target)?;
     let wheel_arg = wheel.to_string_lossy().into_owned();
-    // the CLI the scene round trip compares against, from the same tree
-    crate::checked(
-        Command::new(crate::cargo())
-            .args(["build", "--quiet", "--package", "tabor-cli"])
-            .current_dir(root),
-    )?;
-    let cli = target
-        .join("debug")
-        .join(if cfg!(windows) { "tabor.exe" } else { "tabor" });
+    // the CLI the scene round trip compares against, from the same tree (the
+    // release build the LAMMPS steps use too)
+    let cli = crate::release_binaries(root, target)?.join(if cfg!(windows) {
+        "tabor.exe"
+    } else {
+        "tabor"
+    });
     let fresh = std::env::var("TABOR_FRESH_VENV").is_ok_and(|v| v == "1");
     // 1. the development venv, numpy 2.x
     let python = venv(&target.join("python-venv"), fresh, target)?;
