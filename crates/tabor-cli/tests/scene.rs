@@ -384,23 +384,33 @@ fn trajectory_json_says_which_model_it_simulates() {
 #[test]
 fn grazing_impacts_answer_in_the_turned_line_of_centres_or_are_refused() {
     // issue 33: at 89.999999° the normal branch used to end while the bodies still
-    // approached, reported as a rebound with normal_restitution −8.9e6: refused now,
-    // with the angle named (since stop 37 a segment there ends where no event
-    // value is at 0, in units of v cos α: refused as such)
-    let out = tabor(&[
-        "impact",
-        &scene("silica_oblique.toml"),
-        "--angle",
-        "89.999999",
-        "--json",
-    ]);
-    assert_eq!(out.status.code(), Some(2));
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    // approached, reported as a rebound with normal_restitution −8.9e6; from stop
+    // 37 a segment there ended where no event value was at 0 in units of v cos α
+    // (refused). Since stop 38 the value that reaches 0 just beyond the located
+    // point is the event: the impact answers, and as the angles before it do (the
+    // normal speed 5 nm/s sticks; the line of centres turns by the limit of
+    // 89.99°…89.99999°: 0.130051°, 0.130068°, 0.1300699°, 0.13007009°)
+    let at = |angle: &str| {
+        json(&tabor(&[
+            "impact",
+            &scene("silica_oblique.toml"),
+            "--angle",
+            angle,
+            "--json",
+        ]))
+    };
+    let (grazing, before) = (at("89.999999"), at("89.99999"));
+    for v in [&grazing, &before] {
+        assert_eq!(v["oblique"]["sticks"], true, "{v}");
+        assert_eq!(v["normal_restitution"].as_f64(), Some(0.0), "{v}");
+        assert!(v["oblique"]["energy_error"].as_f64().unwrap() < 1e-9, "{v}");
+    }
+    let turn = |v: &serde_json::Value| v["oblique"]["normal_turn"].as_f64().unwrap();
     assert!(
-        err.contains("angle 89.999999")
-            && (err.contains("approach") || err.contains("not answered")),
-        "{err}"
+        (turn(&grazing) - turn(&before)).abs() <= 1e-5 * turn(&before),
+        "normal turn {} at 89.999999°, {} at 89.99999°",
+        turn(&grazing),
+        turn(&before)
     );
     // a rebound at 88° and 3 m/s: the line of centres turns by about a degree; the
     // rebound quantities are read in it (physical range), and a warning says so

@@ -494,3 +494,56 @@ fn adhesive_coeff_restitution_answers_obliquely_for_every_tangential_model() {
         }
     }
 }
+
+/// A steel sphere (43.5 µm) on a silica flat, Maugis-Dugdale (Λ = 0.118) with
+/// Tsuji damping and `mindlin_rescale` friction with a dashpot, at 1.025 m/s and
+/// 79.34°, spinning: as the contact radius vanishes at Maugis-Dugdale's junction
+/// the slipping element's slip rate falls through 0 by ~10³ of its unit per
+/// 10⁻¹⁵ s, 6·10⁻⁹ of the overlap scale before the junction. Until stop 38 the
+/// event there was taken by the smallest value at the located point, the branch
+/// end's (6·10⁻⁹, not yet at its zero): the law changed its branch before the
+/// junction, e_t came out 1.0·10⁻⁴ too high without a twisting element and the
+/// impact stopped with one ("none of its event values is at 0"). Now the value
+/// that reaches 0 just beyond the located point is the event (the element
+/// sticks). Independent checks: e_t converges with the accuracy (1e-10 against
+/// 1e-13: 3·10⁻¹¹; bound 10⁻⁹), e_n on a flat is the central restitution at
+/// v cos α (the friction does not turn the line of centres; 10⁻⁹), and the 2-D
+/// and 3-D rates agree (10⁻⁹).
+#[test]
+fn a_steep_slip_to_stick_at_the_maugis_dugdale_junction_is_that_event() {
+    let text = |accuracy: &str| {
+        format!(
+            "name = \"steel on silica\"\naccuracy = {accuracy}\n\
+             [sphere]\nradius = 4.352829948721039e-05\ndensity = 7850\n\
+             youngs_modulus = 210e9\npoisson_ratio = 0.3\n\
+             [target]\nyoungs_modulus = 54e9\npoisson_ratio = 0.17\n\
+             [adhesion]\nwork_of_adhesion = 0.0665507\nrange = 3e-9\n\
+             [damping]\nmodel = \"tsuji\"\ncoefficient = 0.703096\n\
+             [impact]\nsphere_spin = [0.0, 0.0, 17575.20120545195]\n\
+             [friction]\ncoefficient = 0.311312\ntangential = \"mindlin_rescale\"\n\
+             tangential_damping = 0.338449\n"
+        )
+    };
+    let (speed, angle) = (1.0249304588296544, 79.34144894096829);
+    let (planar, full) = planar_and_full(&text("1e-10"));
+    let a = planar.oblique(speed, angle).unwrap();
+    let b = full.oblique(speed, angle).unwrap();
+    assert_closed_and_alike(&a, &b, "default accuracy");
+    let (fine, _) = planar_and_full(&text("1e-13"));
+    let reference = fine.oblique(speed, angle).unwrap();
+    let (e_t, e_t_ref) = (
+        a.tangential_restitution.unwrap(),
+        reference.tangential_restitution.unwrap(),
+    );
+    assert!(
+        (e_t - e_t_ref).abs() <= 1e-9,
+        "e_t {e_t} at 1e-10, {e_t_ref} at 1e-13"
+    );
+    let normal_speed = speed * angle.to_radians().cos();
+    let central = planar.outcome_at(normal_speed).unwrap().restitution;
+    assert!(
+        (a.normal_restitution - central).abs() <= 1e-9,
+        "e_n {} obliquely, {central} centrally",
+        a.normal_restitution
+    );
+}

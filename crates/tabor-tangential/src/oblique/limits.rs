@@ -47,8 +47,12 @@ pub(super) const ZERO_EVENT_VALUE: f64 = 1e-12;
 /// segment's start (at least 1 of its unit), that identifies the segment's
 /// event. The located zero is within a few ulps of time of the crossing: that
 /// leaves a value of ~10⁻¹⁵, up to ~10⁻⁹ where the values change fast in their
-/// units (a grazing impact, the units scaled by v cos α: 1.6e-9 at 89.995°). A
-/// value that jumped across 0 instead of crossing it leaves every value far
-/// from 0 (0.05 and more where a damped contact's limits touched 0 before stop
-/// 37; 0.016 at 89.999999°): that is an error, not a guess.
+/// units (a grazing impact, the units scaled by v cos α: 1.6e-9 at 89.995°).
+/// Where every value is still above 0 at the located point, the value that
+/// reaches 0 within 256 ulps of time beyond it is the event, however large it
+/// is at the point (a steep crossing, `Setup::crossing_ahead`: 0.016 at
+/// 89.999999°, refused until stop 38; a slip rate as Maugis-Dugdale's contact
+/// radius vanishes). A segment whose values neither are near 0 nor reach it
+/// just beyond (one jumped across it: 0.05 and more where a damped contact's
+/// limits touched 0 before stop 37) ends in an error, not a guess.
 pub(super) const IDENTIFIED_EVENT_VALUE: f64 = 1e-6;
