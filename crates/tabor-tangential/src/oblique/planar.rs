@@ -152,7 +152,8 @@ impl<'a> Setup<'a> {
         if self.bed.is_some() {
             return run.micro_slip(all, ends, yn, tolerance);
         }
-        let tolerance = self.dop853_tolerance(tolerance, quadratures, PLANAR_MOTION);
+        let controlled = self.controlled_motion(modes, true);
+        let tolerance = self.dop853_tolerance(tolerance, quadratures, controlled);
         if !quadratures {
             return run.dop853(all, ends, yn, tolerance);
         }

@@ -5,7 +5,7 @@ use super::elements::{keep_first, model_error};
 use super::limits::{
     EVENTS, EVENT_ZERO, IDENTIFIED_EVENT_VALUE, NORMAL_FORCE_ZERO, ZERO_EVENT_VALUE,
 };
-use super::planar::PLANAR_MOTION;
+use super::planar::{PLANAR_MOTION, P_XT};
 use super::simulate::Event;
 use super::state::*;
 use std::cell::Cell;
@@ -46,6 +46,26 @@ impl<'a> Setup<'a> {
             tolerance.initial_step = Some(h);
         }
         tolerance
+    }
+
+    /// The number of leading components of the state (the reduced one where
+    /// `planar`) under the step control when the energies leave it: the motion
+    /// ([`PLANAR_MOTION`], [`EN`]); in the tensile end of a damped contact
+    /// without adhesion the bodies' motion alone (positions, velocities, spins:
+    /// [`P_XT`], [`XT`]). There every element's limit `μ|F_n|` falls to 0 as
+    /// δ^¼ and a slipping element's direction turns at a rate ∝ 1/L, ∝ (t_e −
+    /// t)^(−¼) (its cap 10⁴ per time unit binds only within ~10⁻¹⁶ of the
+    /// separation): integrable, but the error control of the displacements
+    /// asked for steps below the rounding of t (a spin out of the impact plane
+    /// turning a rolling element's slip direction: "step size underflow"). Their
+    /// forces are bounded by the limit, and at the separation by 0.
+    pub(super) fn controlled_motion(&self, modes: &Modes, planar: bool) -> usize {
+        match (modes.tensile, planar) {
+            (true, true) => P_XT,
+            (true, false) => XT,
+            (false, true) => PLANAR_MOTION,
+            (false, false) => EN,
+        }
     }
 
     /// Integrates from SI (t, y) to the first event.
@@ -172,7 +192,8 @@ impl<'a> Setup<'a> {
         };
         let run = if self.is_planar(y, modes) {
             let failures = (&failure, &g_failure);
-            let (ends, tolerance) = ((s0, s_end), bed_tolerance(PLANAR_MOTION));
+            let motion = self.controlled_motion(modes, true);
+            let (ends, tolerance) = ((s0, s_end), bed_tolerance(motion));
             self.planar_segment(
                 law,
                 modes,
@@ -184,11 +205,13 @@ impl<'a> Setup<'a> {
                 quadratures,
             )
         } else if self.bed.is_some() {
-            let mut stepper = DormandPrince::new(&mut rhs, s0, yn, s_end, bed_tolerance(EN))
-                .map_err(&numerics)?;
+            let tolerance = bed_tolerance(self.controlled_motion(modes, false));
+            let mut stepper =
+                DormandPrince::new(&mut rhs, s0, yn, s_end, tolerance).map_err(&numerics)?;
             drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit)
         } else {
-            let tolerance = self.dop853_tolerance(settings.tolerance, quadratures, EN);
+            let motion = self.controlled_motion(modes, false);
+            let tolerance = self.dop853_tolerance(settings.tolerance, quadratures, motion);
             let mut stepper =
                 DormandPrince853::new(&mut rhs, s0, yn, s_end, tolerance).map_err(&numerics)?;
             let run = drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit);
