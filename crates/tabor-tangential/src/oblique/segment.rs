@@ -242,14 +242,14 @@ impl<'a> Setup<'a> {
         // each value in its own size at the segment's start (a value that
         // starts at 10⁸ of its unit, as the slip rates of a grazing impact in
         // units of v cos α, is located as accurately in time, not in value)
-        let relative: [f64; EVENTS] = std::array::from_fn(|i| {
-            let size = if g0[i].is_finite() {
+        let sizes: [f64; EVENTS] = std::array::from_fn(|i| {
+            if g0[i].is_finite() {
                 g0[i].abs().max(1.0)
             } else {
                 1.0
-            };
-            gv[i] / size
+            }
         });
+        let relative: [f64; EVENTS] = std::array::from_fn(|i| gv[i] / sizes[i]);
         let mut crossed_ahead = false;
         let mut which = relative
             .iter()
@@ -272,7 +272,7 @@ impl<'a> Setup<'a> {
             // slip rate falling by ~10³ of its unit per 10⁻¹⁵ s as
             // Maugis-Dugdale's contact radius vanishes, beside the branch end
             // 6·10⁻⁹ of the overlap scale away, which was taken for the event)
-            if let Some(i) = self.crossing_ahead(law, t_hit, &y_hit, modes, &offset, &g0)? {
+            if let Some(i) = self.crossing_ahead(law, t_hit, &y_hit, modes, &offset, &sizes)? {
                 (which, crossed_ahead) = (i, true);
             }
         }
@@ -297,14 +297,13 @@ impl<'a> Setup<'a> {
         ][which];
         Ok((event, t_hit, y_hit, sol.cost + run.event_cost))
     }
-}
 
-impl<'a> Setup<'a> {
     /// The event value that reaches 0 first a few ulps of time after SI (t, y)
     /// (at 4, 16, 64 and 256 ulps of the normalized time, the state carried
     /// along its rates), each value shifted by its `offset` and measured in its
-    /// size `g0` at the segment's start; `None` where none does (a zero that the
-    /// values only touch) or a probe cannot be evaluated.
+    /// size at the segment's start (`sizes`, as [`Setup::segment`] measures
+    /// them); `None` where none does (a zero that the values only touch) or a
+    /// probe cannot be evaluated.
     fn crossing_ahead(
         &self,
         law: &dyn ForceLaw,
@@ -312,7 +311,7 @@ impl<'a> Setup<'a> {
         y: &[f64; N],
         modes: &Modes,
         offset: &[f64; EVENTS],
-        g0: &[f64; EVENTS],
+        sizes: &[f64; EVENTS],
     ) -> Result<Option<usize>> {
         let Ok(rates) = self.evaluate(law, t, y, modes).map(|e| e.dy) else {
             return Ok(None);
@@ -325,15 +324,8 @@ impl<'a> Setup<'a> {
                 return Ok(None);
             };
             let crossed = (0..EVENTS)
-                .filter(|&i| values[i] + offset[i] <= 0.0)
-                .map(|i| {
-                    let size = if g0[i].is_finite() {
-                        g0[i].abs().max(1.0)
-                    } else {
-                        1.0
-                    };
-                    (i, (values[i] + offset[i]) / size)
-                })
+                .map(|i| (i, (values[i] + offset[i]) / sizes[i]))
+                .filter(|&(_, v)| v <= 0.0)
                 .min_by(|a, b| a.1.total_cmp(&b.1));
             if let Some((i, _)) = crossed {
                 return Ok(Some(i));
