@@ -229,6 +229,14 @@ impl Twisting {
             Twisting::Sds { .. } => TwistingModel::Sds,
         }
     }
+
+    /// True when the twisting stiffness vanishes with the contact radius
+    /// (`marshall`: `½ k_t a²`). Where the contact has no area (a = 0: the
+    /// no-contact part of Maugis-Dugdale) such a spring stores no twist: a
+    /// contact area that forms again starts from zero twist, as a new contact.
+    pub fn vanishes_without_area(&self) -> bool {
+        matches!(self, Twisting::Marshall)
+    }
 }
 
 /// The complete friction of a contact: tangential, and optionally rolling and

@@ -174,8 +174,11 @@ impl Friction {
     ///    `± R_eff n × F_r` and `± M n`.
     ///
     /// A contact radius of 0 (the no-contact branch of Maugis-Dugdale) gives a
-    /// zero spring; the stored displacement is then kept as it is (LAMMPS divides
-    /// by the spring there).
+    /// zero spring. The `marshall` twisting spring `½ k_t a²` then stores no
+    /// twist (it is set to 0, so a contact area that forms again starts from
+    /// zero twist, as the library's [`crate::oblique`] impact does); the
+    /// tangential displacement and the `sds` twist keep accumulating, as in
+    /// LAMMPS, and nothing divides by a zero spring (LAMMPS would).
     pub fn step(
         &self,
         kinematics: &ContactKinematics,
@@ -338,6 +341,10 @@ impl Friction {
             let rate = kinematics.twisting_rate();
             if update_history {
                 history.twisting += rate * time_step;
+                if a <= 0.0 && tw.vanishes_without_area() {
+                    // no contact area: the spring ½ k_t a² stores nothing
+                    history.twisting = 0.0;
+                }
             }
             let mut torque = -k_tw * history.twisting - damp_tw * rate;
             let limit_tw = mu_tw * fn0;

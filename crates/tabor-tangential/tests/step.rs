@@ -266,6 +266,47 @@ fn twisting_marshall_from_the_tangential_model() {
 }
 
 #[test]
+fn a_contact_without_area_stores_no_marshall_twist() {
+    // Maugis-Dugdale's no-contact part: a = 0, the bodies attract (F_n0 > 0).
+    // `marshall`'s ½ k_t a² is 0 there: the stored twist is 0 after the step, so
+    // a contact area that forms next starts from zero twist. The tangential
+    // displacement (k_t a, and `linear_history`'s k_t) and the `sds` twist keep
+    // accumulating from touch, as in LAMMPS
+    let (kt, mu, dt) = (5e10, 0.3, 1e-9);
+    let (v, w) = (Vector3::new(0.0, 0.02, 0.01), 3e5);
+    let k = kinematics(v, Vector3::new(w, 0.0, 0.0), Vector3::zeros());
+    let attract = hertz_response(0.0, 2e-7);
+    let stored = Vector3::new(0.0, 1e-9, -2e-9);
+    let start = || ContactHistory {
+        tangential: stored.into(),
+        twisting: 1e-3,
+        ..Default::default()
+    };
+    let mindlin = Tangential::new(TangentialModel::Mindlin, kt, 0.0, mu).unwrap();
+    let fric = Friction::sliding(mindlin).with_twisting(Twisting::Marshall);
+    let mut h = start();
+    let out = fric.step(&k, &attract, dt, true, &mut h);
+    assert_eq!(h.twisting, 0.0);
+    assert_eq!(out.twisting_torque, 0.0);
+    assert_eq!(out.tangential_force, Vector3::zeros());
+    assert_relative_eq!(
+        Vector3::from(h.tangential),
+        stored + v * dt,
+        max_relative = 1e-15
+    );
+    let history = Tangential::new(TangentialModel::LinearHistory, 2.0, 0.0, mu).unwrap();
+    let fric = Friction::sliding(history).with_twisting(Twisting::sds(2e-9, 0.0, 1e3).unwrap());
+    let mut h = start();
+    fric.step(&k, &attract, dt, true, &mut h);
+    assert_relative_eq!(
+        Vector3::from(h.tangential),
+        stored + v * dt,
+        max_relative = 1e-15
+    );
+    assert_relative_eq!(h.twisting, 1e-3 + w * dt, max_relative = 1e-15);
+}
+
+#[test]
 fn critical_force_follows_lammps() {
     // cohesive: |F_e + 2 F_po|; otherwise |F_total|
     assert_eq!(critical_force(-1.0, -1.5, 1.5), 2.0);

@@ -14,6 +14,13 @@ pub(super) const DIFFERENCE_STEP: f64 = 1e-5;
 /// without a Coulomb limit runs without friction (`ObliqueImpact::simulate`).
 pub(super) const WARMUP: f64 = 1e-6;
 
+/// The contact radius, in units of the Hertz radius `√(R* d)` at the overlap
+/// scale `d`, up to which a branch end is where the contact has no area
+/// (Maugis-Dugdale's junction with its no-contact part: 0 up to the rounding
+/// of the law's solve, 9·10⁻¹⁶ m = 5·10⁻⁸ of the unit seen for a 0.7 µm sphere;
+/// `Setup::release_without_area`).
+pub(super) const NO_AREA: f64 = 1e-6;
+
 /// The largest surface speed of an initial spin, in units of the impact speed.
 pub(super) const MAX_SURFACE_SPEED_RATIO: f64 = 1e6;
 

@@ -170,6 +170,35 @@ impl<'a> Setup<'a> {
         Ok(())
     }
 
+    /// At a branch end where the contact has no area (the law's contact radius
+    /// `a_at_end` there is 0 within [`NO_AREA`]: Maugis-Dugdale's junction with
+    /// its no-contact part, either way), a sticking `marshall` twisting element
+    /// (stiffness `½ k_t a²`) is set to zero twist: a spring of zero stiffness
+    /// stores nothing, and the twist a spinning sphere carries it through on the
+    /// no-contact part (LAMMPS's accumulate-from-touch) would load the forming
+    /// contact with energy no work put in. Zeroing it at either end of that part
+    /// is the same as zeroing it all along it (its stiffness is 0 there); the
+    /// energy it changes is `½ k θ²` at a radius of at most [`NO_AREA`] of the
+    /// unit. [`Friction::step`](crate::Friction::step) zeroes it at every step
+    /// where a = 0. (The tangential spring `k_t a` is left as LAMMPS has it:
+    /// see the crate README.)
+    pub(super) fn release_without_area(&self, a_at_end: f64, y: &mut [f64; N], modes: &Modes) {
+        let Some(fr) = &self.imp.friction else {
+            return;
+        };
+        if a_at_end > NO_AREA * (self.r_eff * self.length).sqrt() {
+            return;
+        }
+        if modes.twisting == Mode::Stick
+            && fr
+                .twisting
+                .as_ref()
+                .is_some_and(|t| t.vanishes_without_area())
+        {
+            y[XW] = 0.0;
+        }
+    }
+
     /// At contact onset: a law with a Coulomb limit at first touch (adhesion)
     /// starts in stick; one without (Hertz: every limit and spring starts from 0)
     /// runs the first [`WARMUP`] of the overlap scale without friction forces, the

@@ -385,6 +385,13 @@ impl ObliqueImpact {
                     name
                 ))
             };
+            // the contact radius where the branch ends (before its hook)
+            let a_at_end = match event {
+                Event::BranchEnd if modes.in_contact => {
+                    setup.normal(law, overlap, rate, false)?.radius
+                }
+                _ => f64::INFINITY,
+            };
             match event {
                 Event::Unidentified if rate > 0.0 => return Err(grazing(law.name())),
                 Event::Unidentified => {
@@ -398,6 +405,9 @@ impl ObliqueImpact {
                 }
                 Event::BranchEnd => match setup.hook(law.on_branch_end(overlap, rate))? {
                     BranchChange::Continue => {
+                        if modes.in_contact {
+                            setup.release_without_area(a_at_end, &mut y, &modes);
+                        }
                         if !modes.in_contact && law.in_contact() {
                             modes.in_contact = true;
                             onset = Some(t);
