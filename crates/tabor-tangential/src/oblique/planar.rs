@@ -8,6 +8,7 @@
 //! (exact, not an approximation). Any other state integrates in full.
 
 use super::elements::keep_first;
+use super::segment::sliding_work_to_event;
 use super::state::*;
 use std::cell::Cell;
 use tabor_dynamics::ForceLaw;
@@ -259,9 +260,16 @@ impl Run<'_, '_> {
         let mut stepper = DormandPrince853::new(&mut f, s0, x0, s_end, tolerance)?;
         let falling = [EventDirection::Falling];
         let mut observer = |_: f64, _: &[f64; M]| {};
-        let run = drive_events(&mut stepper, &mut f, &mut g, falling, s_end, &mut observer);
+        let mut run = drive_events(&mut stepper, &mut f, &mut g, falling, s_end, &mut observer)?;
         self.setup.step_hint.set(Some(stepper.proposed_step()));
-        Ok(expand(yn, &slots, run?))
+        let sliding = slots.iter().position(|&k| k == P_EN + 2);
+        if let Some(k) = sliding.filter(|_| run.solution.event_found) {
+            if self.setup.singular_sliding_power(self.modes) {
+                let at = (run.solution.t, k);
+                sliding_work_to_event(&stepper, &mut f, at, &mut run.solution.y);
+            }
+        }
+        Ok(expand(yn, &slots, run))
     }
 
     /// Dormand-Prince 5(4) on the reduced components `slots` with the spring bed

@@ -8,13 +8,14 @@ use super::limits::{
 use super::planar::{PLANAR_MOTION, P_XT};
 use super::simulate::Event;
 use super::state::*;
+use crate::model::TangentialModel;
 use std::cell::Cell;
 use tabor_dynamics::{ForceLaw, SimulationSettings};
 use tabor_numerics::ode::{
     drive_events, DenseStepper, DormandPrince, DormandPrince853, EventDirection, EventsIntegration,
     OdeTolerance,
 };
-use tabor_numerics::Cost;
+use tabor_numerics::{Cost, GaussLegendre};
 use tabor_restitution::{Error, Result};
 
 /// The kinetic energy (in the energies' unit m v², v the impact speed) beyond
@@ -214,8 +215,14 @@ impl<'a> Setup<'a> {
             let tolerance = self.dop853_tolerance(settings.tolerance, quadratures, motion);
             let mut stepper =
                 DormandPrince853::new(&mut rhs, s0, yn, s_end, tolerance).map_err(&numerics)?;
-            let run = drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit);
+            let mut run = drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit);
             self.step_hint.set(Some(stepper.proposed_step()));
+            if let Ok(r) = &mut run {
+                if r.solution.event_found && self.singular_sliding_power(modes) {
+                    let at = (r.solution.t, EN + 2);
+                    sliding_work_to_event(&stepper, &mut rhs, at, &mut r.solution.y);
+                }
+            }
             run
         }
         .map_err(&numerics)?;
@@ -336,6 +343,44 @@ impl<'a> Setup<'a> {
     }
 }
 
+/// The Gauss-Legendre rule of [`sliding_work_to_event`] (5 points: degree 9).
+static EVENT_STEP_RULE: std::sync::LazyLock<GaussLegendre> = std::sync::LazyLock::new(|| {
+    GaussLegendre::new(5).unwrap_or_else(|_| unreachable!("5 points are a valid rule"))
+});
+
+/// The component `k` of the state `x` at the located event `t_e` (the sliding
+/// work of a slipping Mindlin spring), integrated over the step that holds the
+/// event from its start only to `t_e`, by 5-point Gauss-Legendre quadrature of
+/// its rate `f` along the motion's dense output, instead of the dense output's
+/// own value there. That power, `g (L − γ û·v)/k` ([`slip_power`]), is smooth up
+/// to the event, but beyond it, toward a contact radius 0 under a finite
+/// cohesive limit L (Maugis-Dugdale's junction, 10⁻¹⁵ s after a slip-to-stick
+/// there), its `1/k` diverges: the step's stages beyond the event sampled it
+/// (±10²⁴ J of sliding and spring work in an impact of 10⁻⁹ J). No energy
+/// enters any rate, so the motion's dense output carries the integrand.
+pub(super) fn sliding_work_to_event<S, F, const M: usize>(
+    stepper: &S,
+    f: &mut F,
+    (t_e, k): (f64, usize),
+    x: &mut [f64; M],
+) where
+    S: DenseStepper<M>,
+    F: FnMut(f64, &[f64; M]) -> [f64; M],
+{
+    let t_n = stepper.step_start();
+    let half = 0.5 * (t_e - t_n);
+    if half <= 0.0 {
+        return;
+    }
+    let rule = &*EVENT_STEP_RULE;
+    let mut work = 0.0;
+    for (node, weight) in rule.nodes().iter().zip(rule.weights()) {
+        let t = t_n + half * (1.0 + node);
+        work += weight * f(t, &stepper.dense(t))[k];
+    }
+    x[k] = stepper.dense(t_n)[k] + half * work;
+}
+
 /// One run of [`drive_events`] to the falling zero of the event function `g`, the
 /// dense output prepared only on the step that contains it; `observer` sees the
 /// end of every other accepted step.
@@ -356,6 +401,22 @@ where
 }
 
 impl<'a> Setup<'a> {
+    /// True when a Mindlin spring (`mindlin`, `mindlin_rescale`: stiffness
+    /// `k_t a`) slips in `modes`: its sliding power has the `1/k` that
+    /// [`sliding_work_to_event`] keeps the integration from sampling beyond the
+    /// segment's event.
+    pub(super) fn singular_sliding_power(&self, modes: &Modes) -> bool {
+        modes.in_contact
+            && !modes.warmup
+            && self.bed.is_none()
+            && modes.tangential == Mode::Slip
+            && self
+                .imp
+                .friction
+                .as_ref()
+                .is_some_and(|f| f.tangential.model != TangentialModel::LinearHistory)
+    }
+
     /// Contact onset: the springs unstrained, the current displacement the
     /// reference.
     pub(super) fn reset_bed(&self, law: &dyn ForceLaw, t: f64, y: &[f64; N]) -> Result<()> {
