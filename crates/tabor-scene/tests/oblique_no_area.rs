@@ -1,9 +1,9 @@
-//! A contact without area stores no twist: on Maugis-Dugdale's no-contact part
-//! (the bodies attract, the contact radius is 0) the `marshall` twisting spring
-//! `½ k_t a²` has no stiffness, and the twist a spinning sphere carries it
-//! through there must not load the contact area that forms after it (stop 38's
-//! defect §2.3: the twisting element gave the bodies 2 700 times the impact's
-//! kinetic energy, and the bookkeeping still closed).
+//! A contact without area stores no displacement: on Maugis-Dugdale's
+//! no-contact part (the bodies attract, the contact radius is 0) the springs
+//! `k_t a` and `½ k_t a²` have no stiffness, and the displacement the motion
+//! carries them through there must not load the contact area that forms after
+//! it (stop 38's defect §2.3: the `marshall` twisting element gave the bodies
+//! 2 700 times the impact's kinetic energy, and the bookkeeping still closed).
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 

@@ -130,6 +130,14 @@ impl Tangential {
             TangentialModel::LinearHistory => self.stiffness,
         }
     }
+
+    /// True when the spring's stiffness vanishes with the contact radius (`k_t a`:
+    /// the Mindlin models). Where the contact has no area (a = 0: the no-contact
+    /// part of Maugis-Dugdale) such a spring stores no displacement: a contact
+    /// area that forms again starts from zero displacement, as a new contact.
+    pub fn vanishes_without_area(&self) -> bool {
+        self.model != TangentialModel::LinearHistory
+    }
 }
 
 /// The effective shear modulus of a contact, Mindlin (1949):
@@ -231,9 +239,7 @@ impl Twisting {
     }
 
     /// True when the twisting stiffness vanishes with the contact radius
-    /// (`marshall`: `½ k_t a²`). Where the contact has no area (a = 0: the
-    /// no-contact part of Maugis-Dugdale) such a spring stores no twist: a
-    /// contact area that forms again starts from zero twist, as a new contact.
+    /// (`marshall`: `½ k_t a²`); see [`Tangential::vanishes_without_area`].
     pub fn vanishes_without_area(&self) -> bool {
         matches!(self, Twisting::Marshall)
     }

@@ -174,11 +174,13 @@ impl Friction {
     ///    `± R_eff n × F_r` and `± M n`.
     ///
     /// A contact radius of 0 (the no-contact branch of Maugis-Dugdale) gives a
-    /// zero spring. The `marshall` twisting spring `½ k_t a²` then stores no
-    /// twist (it is set to 0, so a contact area that forms again starts from
-    /// zero twist, as the library's [`crate::oblique`] impact does); the
-    /// tangential displacement and the `sds` twist keep accumulating, as in
-    /// LAMMPS, and nothing divides by a zero spring (LAMMPS would).
+    /// zero spring. A spring whose stiffness vanishes with the contact radius
+    /// (`mindlin`, `mindlin_rescale`: `k_t a`; `marshall` twisting: `½ k_t a²`)
+    /// then stores no displacement (it is set to 0, so a contact area that forms
+    /// again starts unstrained, as the library's [`crate::oblique`] impact
+    /// does); the `linear_history` displacement and the `sds` twist keep
+    /// accumulating, as in LAMMPS, and nothing divides by a zero spring (LAMMPS
+    /// would).
     pub fn step(
         &self,
         kinematics: &ContactKinematics,
@@ -238,6 +240,10 @@ impl Friction {
                 xi = rotate_into_plane(xi, &n);
             }
             xi += vtr * time_step;
+            if a <= 0.0 && t.vanishes_without_area() {
+                // no contact area: the spring k_t a stores nothing
+                xi = Vector3::zeros();
+            }
             if t.model == TangentialModel::MindlinRescale {
                 history.tangential_contact_radius = a;
             }

@@ -172,22 +172,29 @@ impl<'a> Setup<'a> {
 
     /// At a branch end where the contact has no area (the law's contact radius
     /// `a_at_end` there is 0 within [`NO_AREA`]: Maugis-Dugdale's junction with
-    /// its no-contact part, either way), a sticking `marshall` twisting element
-    /// (stiffness `½ k_t a²`) is set to zero twist: a spring of zero stiffness
-    /// stores nothing, and the twist a spinning sphere carries it through on the
-    /// no-contact part (LAMMPS's accumulate-from-touch) would load the forming
-    /// contact with energy no work put in. Zeroing it at either end of that part
-    /// is the same as zeroing it all along it (its stiffness is 0 there); the
-    /// energy it changes is `½ k θ²` at a radius of at most [`NO_AREA`] of the
-    /// unit. [`Friction::step`](crate::Friction::step) zeroes it at every step
-    /// where a = 0. (The tangential spring `k_t a` is left as LAMMPS has it:
-    /// see the crate README.)
+    /// its no-contact part, either way), each sticking element whose stiffness
+    /// vanishes with the contact radius (`mindlin`, `mindlin_rescale`: `k_t a`;
+    /// `marshall` twisting: `½ k_t a²`) is set to zero displacement: a spring of
+    /// zero stiffness stores nothing, and the displacement the motion carries it
+    /// through on the no-contact part (LAMMPS's accumulate-from-touch; LAMMPS has
+    /// no such part) would load the forming contact with energy no work put in.
+    /// Zeroing it at either end of that part is the same as zeroing it all along
+    /// it (its stiffness is 0 there); the energy it changes is `½ k x²` at a
+    /// radius of at most [`NO_AREA`] of the unit.
+    /// [`Friction::step`](crate::Friction::step) zeroes it at every step where
+    /// a = 0.
     pub(super) fn release_without_area(&self, a_at_end: f64, y: &mut [f64; N], modes: &Modes) {
         let Some(fr) = &self.imp.friction else {
             return;
         };
         if a_at_end > NO_AREA * (self.r_eff * self.length).sqrt() {
             return;
+        }
+        if self.bed.is_none()
+            && modes.tangential == Mode::Stick
+            && fr.tangential.vanishes_without_area()
+        {
+            put_state(y, XT, &Vector3::zeros());
         }
         if modes.twisting == Mode::Stick
             && fr
