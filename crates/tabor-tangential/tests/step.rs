@@ -275,11 +275,21 @@ fn a_contact_without_area_stores_no_displacement() {
     let (kt, mu, dt) = (5e10, 0.3, 1e-9);
     let (v, w) = (Vector3::new(0.0, 0.02, 0.01), 3e5);
     let k = kinematics(v, Vector3::new(w, 0.0, 0.0), Vector3::zeros());
-    let attract = hertz_response(0.0, 2e-7);
+    // an attractive elastic force of 1e-7 N, pull-off 3e-7 N: F_n0 = 5e-7 N
+    let attract = NormalResponse {
+        contact_radius: 0.0,
+        elastic_force: -1e-7,
+        total_force: -1e-7,
+        pull_off_force: 3e-7,
+        damping_coefficient: 0.0,
+    };
+    assert_relative_eq!(attract.critical_force(), 5e-7, max_relative = 1e-15);
     let stored = Vector3::new(0.0, 1e-9, -2e-9);
     let start = || ContactHistory {
         tangential: stored.into(),
         twisting: 1e-3,
+        // mindlin_rescale's radius of the last step: a contact that had area
+        tangential_contact_radius: 2e-8,
         ..Default::default()
     };
     for model in [TangentialModel::Mindlin, TangentialModel::MindlinRescale] {
@@ -291,6 +301,11 @@ fn a_contact_without_area_stores_no_displacement() {
         assert_eq!(h.twisting, 0.0, "{model:?}");
         assert_eq!(out.tangential_force, Vector3::zeros(), "{model:?}");
         assert_eq!(out.twisting_torque, 0.0, "{model:?}");
+        assert!(!out.sliding, "{model:?}");
+        // LAMMPS's setup force call (no update) leaves the history as it is
+        let mut h = start();
+        fric.step(&k, &attract, dt, false, &mut h);
+        assert_eq!(h.twisting, 1e-3, "{model:?}");
     }
     let history = Tangential::new(TangentialModel::LinearHistory, 2.0, 0.0, mu).unwrap();
     let fric = Friction::sliding(history).with_twisting(Twisting::sds(2e-9, 0.0, 1e3).unwrap());

@@ -170,19 +170,34 @@ impl<'a> Setup<'a> {
         Ok(())
     }
 
+    /// True when an element's stiffness vanishes with the contact radius
+    /// (`mindlin`, `mindlin_rescale` without the spring bed; `marshall`
+    /// twisting): the elements [`Setup::release_without_area`] acts on.
+    pub(super) fn has_area_springs(&self) -> bool {
+        self.imp.friction.as_ref().is_some_and(|fr| {
+            (self.bed.is_none() && fr.tangential.vanishes_without_area())
+                || fr.twisting.is_some_and(|t| t.vanishes_without_area())
+        })
+    }
+
     /// At a branch end where the contact has no area (the law's contact radius
-    /// `a_at_end` there is 0 within [`NO_AREA`]: Maugis-Dugdale's junction with
-    /// its no-contact part, either way), each sticking element whose stiffness
-    /// vanishes with the contact radius (`mindlin`, `mindlin_rescale`: `k_t a`;
-    /// `marshall` twisting: `½ k_t a²`) is set to zero displacement: a spring of
-    /// zero stiffness stores nothing, and the displacement the motion carries it
-    /// through on the no-contact part (LAMMPS's accumulate-from-touch; LAMMPS has
-    /// no such part) would load the forming contact with energy no work put in.
-    /// Zeroing it at either end of that part is the same as zeroing it all along
-    /// it (its stiffness is 0 there); the energy it changes is `½ k x²` at a
-    /// radius of at most [`NO_AREA`] of the unit.
-    /// [`Friction::step`](crate::Friction::step) zeroes it at every step where
-    /// a = 0.
+    /// `a_at_end` there, before the law's hook, is 0 within [`NO_AREA`]:
+    /// Maugis-Dugdale's junction with its no-contact part), each sticking
+    /// element whose stiffness vanishes with the contact radius (`mindlin`,
+    /// `mindlin_rescale`: `k_t a`; `marshall` twisting: `½ k_t a²`) is set to zero
+    /// displacement: a spring of zero stiffness stores nothing, and the
+    /// displacement the motion carries it through on the no-contact part
+    /// (LAMMPS's accumulate-from-touch; LAMMPS has no such part) would load the
+    /// forming contact with energy no work put in. Where the no-contact part
+    /// ends, a is exactly 0 and that end alone suffices: it is the same as
+    /// zeroing the displacement all along the part (its stiffness is 0 there).
+    /// Where the contact part ends, a is 0 up to the location of the event
+    /// (`a ∝ √(δ − δ_j)`; 5·10⁻⁸ of the unit seen), and zeroing there changes
+    /// nothing the next end would not. A slipping element (its force on the
+    /// limit, its displacement the elastic part of it) is left to its slip;
+    /// none has been seen to slip into a = 0, where its stick force vanishes.
+    /// [`Friction::step`](crate::Friction::step) zeroes the displacement at
+    /// every step where a = 0, whatever the element does.
     pub(super) fn release_without_area(&self, a_at_end: f64, y: &mut [f64; N], modes: &Modes) {
         let Some(fr) = &self.imp.friction else {
             return;

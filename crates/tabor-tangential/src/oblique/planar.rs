@@ -266,7 +266,8 @@ impl Run<'_, '_> {
         if let Some(k) = sliding.filter(|_| run.solution.event_found) {
             if self.setup.singular_sliding_power(self.modes) {
                 let at = (run.solution.t, k);
-                sliding_work_to_event(&stepper, &mut f, at, &mut run.solution.y);
+                let out = (&mut run.solution.y, &mut run.solution.cost);
+                sliding_work_to_event(&stepper, &mut f, at, out);
             }
         }
         Ok(expand(yn, &slots, run))

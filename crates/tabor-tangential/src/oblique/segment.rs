@@ -220,7 +220,8 @@ impl<'a> Setup<'a> {
             if let Ok(r) = &mut run {
                 if r.solution.event_found && self.singular_sliding_power(modes) {
                     let at = (r.solution.t, EN + 2);
-                    sliding_work_to_event(&stepper, &mut rhs, at, &mut r.solution.y);
+                    let out = (&mut r.solution.y, &mut r.solution.cost);
+                    sliding_work_to_event(&stepper, &mut rhs, at, out);
                 }
             }
             run
@@ -358,11 +359,12 @@ static EVENT_STEP_RULE: std::sync::LazyLock<GaussLegendre> = std::sync::LazyLock
 /// there), its `1/k` diverges: the step's stages beyond the event sampled it
 /// (±10²⁴ J of sliding and spring work in an impact of 10⁻⁹ J). No energy
 /// enters any rate, so the motion's dense output carries the integrand.
+/// Counts its evaluations of `f` in `cost`.
 pub(super) fn sliding_work_to_event<S, F, const M: usize>(
     stepper: &S,
     f: &mut F,
     (t_e, k): (f64, usize),
-    x: &mut [f64; M],
+    (x, cost): (&mut [f64; M], &mut Cost),
 ) where
     S: DenseStepper<M>,
     F: FnMut(f64, &[f64; M]) -> [f64; M],
@@ -372,6 +374,7 @@ pub(super) fn sliding_work_to_event<S, F, const M: usize>(
     if half <= 0.0 {
         return;
     }
+    cost.evaluations += EVENT_STEP_RULE.len() as u64;
     let rule = &*EVENT_STEP_RULE;
     let mut work = 0.0;
     for (node, weight) in rule.nodes().iter().zip(rule.weights()) {

@@ -385,11 +385,13 @@ impl ObliqueImpact {
                     name
                 ))
             };
-            // the contact radius where the branch ends (before its hook)
+            // the contact radius where the branch ends (before its hook), asked
+            // only where an element's stiffness vanishes with it (an error of the
+            // law there: taken as a contact with area, nothing released)
             let a_at_end = match event {
-                Event::BranchEnd if modes.in_contact => {
-                    setup.normal(law, overlap, rate, false)?.radius
-                }
+                Event::BranchEnd if modes.in_contact && setup.has_area_springs() => setup
+                    .normal(law, overlap, rate, false)
+                    .map_or(f64::INFINITY, |p| p.radius),
                 _ => f64::INFINITY,
             };
             match event {
