@@ -98,7 +98,7 @@ fn springs_through_the_no_contact_part_create_no_energy() {
         for (v, angle) in cases {
             let o = scene.oblique(v, angle).unwrap();
             let (before, after) = kinetic_energies(&o, v);
-            let case = format!("{tangential} {twisting}at {v} m/s, {angle}°");
+            let case = format!("{tangential} {} at {v} m/s, {angle}°", twisting.trim());
             assert!(
                 after <= before + bound,
                 "{case}: the bodies' kinetic energy grew from {before:e} J to {after:e} J, \
