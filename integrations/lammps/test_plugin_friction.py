@@ -7,9 +7,10 @@
    (10 to 80 degrees), three speeds, with and without an initial spin, and one case
    each of normal + tangential damping, `mindlin_rescale`, `linear_history` and
    `twisting sds`; newton on and off. Final relative velocity and both spins.
-2. The same collisions (JKR) and Maugis-Dugdale at Lambda = 0.5 with friction
-   against tabor's library (`tabor_tangential::oblique`, continuous time with the
-   stick/slip switches located as events; example `oblique_library` of tabor-ffi).
+2. The same collisions (JKR) and Maugis-Dugdale at Lambda = 0.5 with friction, and
+   at Lambda = 0.1 a twist through its no-contact part, against tabor's library
+   (`tabor_tangential::oblique`, continuous time with the stick/slip switches
+   located as events; example `oblique_library` of tabor-ffi).
 
 Tolerance, derived from the time step dt = t_c/STEPS_PER_CONTACT (t_c the Hertz
 contact time, seed 000 (5.12)): velocity Verlet with forces that switch at contact
@@ -193,6 +194,45 @@ def maugis_against_library(lam=0.5):
     return failures
 
 
+def maugis_twist_against_library(lam=0.1):
+    """A sphere spinning about the line of centres (a twist, 2e5 rad/s) through the
+    no-contact part of Maugis-Dugdale at Lambda = 0.1 (the bodies attract at contact
+    radius 0): the plugin and the library both keep the `mindlin` and `marshall`
+    springs at zero displacement there, so the contact area starts unstrained.
+    Plugin vs library: the relative velocity and both spins about x and z, within
+    the time-step tolerances of the module docstring."""
+    failures = []
+    info = law_info(FFI, "maugis", E_STAR, R_STAR, W, lam)
+    reach = 2 * info.interaction_range
+    cases = [(v, a, 2e5) for v in (0.2, 0.5) for a in (10, 60)]
+    text = "".join(f"{R} {RHO} {E} {NU} {W} maugis {lam} {v} {a} 0 {MU} {K_ROLL} {MU_ROLL} mindlin {sx}\n"
+                   for v, a, sx in cases)
+    out = subprocess.run([LIBRARY], input=text, check=True, capture_output=True, text=True).stdout
+    lib = [tuple(float(x) for x in line.split()) for line in out.splitlines()]
+    print(f"Maugis-Dugdale Lambda = {lam}, a twist through the no-contact part, plugin vs tabor's library")
+    for (v, a, sx), ref in zip(cases, lib):
+        dt = contact_time(v) / STEPS_PER_CONTACT
+        o = collide_oblique(plugin(BASE, model=f"maugis {E_STAR!r} {W} {lam}"), SILICA_BODIES, v, a, dt, reach,
+                            12 * STEPS_PER_CONTACT, spin=(sx, 0.0, 0.0))
+        s_, t_ = o["sphere"], o["target"]
+        p = (s_["velocity"][0] - t_["velocity"][0], s_["velocity"][1] - t_["velocity"][1],
+             s_["angular_velocity"][2], t_["angular_velocity"][2],
+             s_["angular_velocity"][0], t_["angular_velocity"][0])
+        tol_v, tol_w = tolerances(v, info.pull_off_force)
+        du = math.hypot(p[0] - ref[0], p[1] - ref[1])
+        dw = max(abs(p[k] - ref[k]) for k in (2, 3))
+        dtw = max(abs(p[4] - ref[6]), abs(p[5] - ref[7]))
+        print(f"  v {v:4.2f} angle {a:3.0f}: twist after plugin ({p[4]:+.1f}, {p[5]:+.1f}) library "
+              f"({ref[6]:+.1f}, {ref[7]:+.1f}) rad/s; |du| {du:.1e} (tol {tol_v:.1e}), |dw_z| {dw:.1e}, "
+              f"|dw_x| {dtw:.1e} (tol {tol_w:.1e})")
+        if bool(ref[4]) == o["separated"]:
+            failures.append(f"MD twist v {v} angle {a}: library sticks={bool(ref[4])}, plugin separated={o['separated']}")
+        elif du > tol_v or dw > tol_w or dtw > tol_w:
+            failures.append(f"MD twist v {v} angle {a}: du {du:.2e} (tol {tol_v:.2e}), dw_z {dw:.2e}, "
+                            f"dw_x {dtw:.2e} (tol {tol_w:.2e})")
+    return failures
+
+
 # Maw, Barber & Fawcett's steel (nu = 0.3), two equal spheres: the same chi = 3.5 as
 # MBF's sphere on a flat, hence the same tangential restitution beta(Psi)
 ST_R, ST_RHO, ST_E, ST_NU, ST_MU = 1e-3, 7800.0, 200e9, 0.3, 0.3
@@ -344,6 +384,7 @@ def main():
     failures += micro_slip_newton()
     failures += jkr_against_granular()
     failures += maugis_against_library()
+    failures += maugis_twist_against_library()
     return report(failures, "plugin friction tests passed")
 
 

@@ -4,12 +4,14 @@
 //! compares `pair_style tabor` with.
 //!
 //! stdin, one case a line: `R rho E nu w model lambda speed angle spin_z mu k_roll mu_roll
-//! [tangential]` (SI units, angle in degrees, model `hertz`, `jkr` (load-controlled) or
-//! `maugis`, spin_z the initial spin of the sphere about z, k_roll 0 for no rolling and
-//! no twisting resistance, tangential `mindlin` (the default) or `mindlin_deresiewicz`,
-//! the exact spring bed); stdout, one line each: the relative velocity
+//! [tangential [spin_x]]` (SI units, angle in degrees, model `hertz`, `jkr`
+//! (load-controlled) or `maugis`, spin_z the initial spin of the sphere about z, k_roll
+//! 0 for no rolling and no twisting resistance, tangential `mindlin` (the default) or
+//! `mindlin_deresiewicz`, the exact spring bed; spin_x the initial spin about x, the
+//! line of centres at touch: a twist); stdout, one line each: the relative velocity
 //! sphere − target after the impact (x, y), the sphere's and the target's spin about z,
-//! 1 if they stick, the relative energy error of the integration.
+//! 1 if they stick, the relative energy error of the integration, the sphere's and the
+//! target's spin about x.
 #![allow(missing_docs, clippy::unwrap_used, clippy::expect_used)]
 
 use std::io::BufRead;
@@ -75,7 +77,7 @@ fn main() {
                 damping_exponent: 1.0,
             },
             friction: Some(friction),
-            sphere_spin: [0.0, 0.0, spin],
+            sphere_spin: [f.get(14).map_or(0.0, |_| x(14)), 0.0, spin],
             target_spin: [0.0; 3],
         };
         let out = imp
@@ -88,13 +90,15 @@ fn main() {
             .unwrap();
         let (s, t) = (out.after.sphere, out.after.target);
         println!(
-            "{:.17e} {:.17e} {:.17e} {:.17e} {} {:.3e}",
+            "{:.17e} {:.17e} {:.17e} {:.17e} {} {:.3e} {:.17e} {:.17e}",
             s.velocity[0] - t.velocity[0],
             s.velocity[1] - t.velocity[1],
             s.angular_velocity[2],
             t.angular_velocity[2],
             u8::from(out.sticks),
-            out.energy_error
+            out.energy_error,
+            s.angular_velocity[0],
+            t.angular_velocity[0]
         );
     }
 }
