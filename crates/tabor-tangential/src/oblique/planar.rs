@@ -263,12 +263,8 @@ impl Run<'_, '_> {
         let mut run = drive_events(&mut stepper, &mut f, &mut g, falling, s_end, &mut observer)?;
         self.setup.step_hint.set(Some(stepper.proposed_step()));
         let sliding = slots.iter().position(|&k| k == P_EN + 2);
-        if let Some(k) = sliding.filter(|_| run.solution.event_found) {
-            if self.setup.singular_sliding_power(self.modes) {
-                let at = (run.solution.t, k);
-                let out = (&mut run.solution.y, &mut run.solution.cost);
-                sliding_work_to_event(&stepper, &mut f, at, out);
-            }
+        if let Some(k) = sliding.filter(|_| self.setup.singular_sliding_power(self.modes)) {
+            sliding_work_to_event(&stepper, &mut f, k, &mut run);
         }
         Ok(expand(yn, &slots, run))
     }

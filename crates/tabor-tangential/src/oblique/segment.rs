@@ -218,10 +218,8 @@ impl<'a> Setup<'a> {
             let mut run = drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit);
             self.step_hint.set(Some(stepper.proposed_step()));
             if let Ok(r) = &mut run {
-                if r.solution.event_found && self.singular_sliding_power(modes) {
-                    let at = (r.solution.t, EN + 2);
-                    let out = (&mut r.solution.y, &mut r.solution.cost);
-                    sliding_work_to_event(&stepper, &mut rhs, at, out);
+                if self.singular_sliding_power(modes) {
+                    sliding_work_to_event(&stepper, &mut rhs, EN + 2, r);
                 }
             }
             run
@@ -349,7 +347,7 @@ static EVENT_STEP_RULE: std::sync::LazyLock<GaussLegendre> = std::sync::LazyLock
     GaussLegendre::new(5).unwrap_or_else(|_| unreachable!("5 points are a valid rule"))
 });
 
-/// The component `k` of the state `x` at the located event `t_e` (the sliding
+/// The component `k` of the run's state at its located event `t_e` (the sliding
 /// work of a slipping Mindlin spring), integrated over the step that holds the
 /// event from its start only to `t_e`, by 5-point Gauss-Legendre quadrature of
 /// its rate `f` along the motion's dense output, instead of the dense output's
@@ -358,30 +356,32 @@ static EVENT_STEP_RULE: std::sync::LazyLock<GaussLegendre> = std::sync::LazyLock
 /// cohesive limit L (Maugis-Dugdale's junction, 10⁻¹⁵ s after a slip-to-stick
 /// there), its `1/k` diverges: the step's stages beyond the event sampled it
 /// (±10²⁴ J of sliding and spring work in an impact of 10⁻⁹ J). No energy
-/// enters any rate, so the motion's dense output carries the integrand.
-/// Counts its evaluations of `f` in `cost`.
+/// enters any rate, so the motion's dense output carries the integrand. Counts
+/// its evaluations of `f` in the run's cost; nothing where the run found no
+/// event.
 pub(super) fn sliding_work_to_event<S, F, const M: usize>(
     stepper: &S,
     f: &mut F,
-    (t_e, k): (f64, usize),
-    (x, cost): (&mut [f64; M], &mut Cost),
+    k: usize,
+    run: &mut EventsIntegration<M>,
 ) where
     S: DenseStepper<M>,
     F: FnMut(f64, &[f64; M]) -> [f64; M],
 {
+    let sol = &mut run.solution;
     let t_n = stepper.step_start();
-    let half = 0.5 * (t_e - t_n);
-    if half <= 0.0 {
+    let half = 0.5 * (sol.t - t_n);
+    if !sol.event_found || half <= 0.0 {
         return;
     }
-    cost.evaluations += EVENT_STEP_RULE.len() as u64;
     let rule = &*EVENT_STEP_RULE;
+    sol.cost.evaluations += rule.len() as u64;
     let mut work = 0.0;
     for (node, weight) in rule.nodes().iter().zip(rule.weights()) {
         let t = t_n + half * (1.0 + node);
         work += weight * f(t, &stepper.dense(t))[k];
     }
-    x[k] = stepper.dense(t_n)[k] + half * work;
+    sol.y[k] = stepper.dense(t_n)[k] + half * work;
 }
 
 /// One run of [`drive_events`] to the falling zero of the event function `g`, the
