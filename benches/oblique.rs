@@ -69,7 +69,7 @@ fn oblique(c: &mut Criterion) {
         });
     }
     g.finish();
-    // micro-slip costs ~100 ms an impact: ten samples
+    // micro-slip costs ~2 ms an impact: ten samples
     let mut g = c.benchmark_group("oblique_impact_micro_slip");
     g.sample_size(10);
     for angle in [10.0, 40.0, 80.0] {
