@@ -23,7 +23,9 @@ pub struct EnergyLosses {
     pub tangential_damping: f64,
     /// The rest of the tangential work: elastic energy left in the tangential
     /// spring when the contact breaks, plus the energy `mindlin`'s
-    /// radius-dependent stiffness destroys (or, negative, creates).
+    /// radius-dependent stiffness destroys (or, negative, creates), less the
+    /// strain LAMMPS's history gives a damped spring that sticks again while its
+    /// dashpot alone reaches the limit (`|L û − γ v|²/2k`, no work put in).
     pub tangential_spring: f64,
     /// Work of the rolling resistance (dissipated and left in its spring).
     pub rolling: f64,

@@ -72,7 +72,12 @@
 //! dashpot alone reaches it (`γ û·v ≥ L`) spring and slider carry nothing along
 //! `û` (else LAMMPS's history `(L û − γ v)/k` points against the force, and with
 //! a Tsuji damping `∝ √a` beside `k ∝ a` it and the sliding work diverge at a
-//! Hertz separation).
+//! Hertz separation). Where such an element sticks again, the stick force must
+//! continue at the limit: LAMMPS's history `(L û − γ v)/k` does that by
+//! straining the spring against the slip, energy no work put in
+//! (`|L û − γ v|²/2k`), which the spring gives back or loses at the next slip:
+//! the tangential spring books it, negative (a damped contact's tensile end;
+//! `tabor-scene`'s test `oblique_stick_reset`).
 //!
 //! # Frame (that of the `impact --angle` outputs)
 //!
