@@ -63,18 +63,13 @@ impl JkrForceLaw {
     }
 
     /// `x = √â` at overlap `overlap` (m), warm-started from the hint: Newton's
-    /// method from the second-order prediction of the last root x_h, `x_h + δ −
-    /// (18x_h²/(12x_h³ − 4)) δ²` with `δ = (d̂ − d̂_h)/(12x_h³ − 4)` (the Taylor
-    /// series of the inverse of `d̂ = 3x⁴ − 4x`: one Newton step fewer than from
-    /// the tangent).
+    /// method from the tangent prediction `x + (d̂ − d̂_h)/(12x³ − 4)` of the last
+    /// root.
     fn root(&self, overlap: f64) -> Result<f64> {
         let d = overlap / self.sphere.scales().depth;
         let d_last = f64::from_bits(self.hint[0].load(Ordering::Relaxed));
         let x_last = f64::from_bits(self.hint[1].load(Ordering::Relaxed));
-        let x2 = x_last * x_last;
-        let slope = 12.0 * x2 * x_last - 4.0;
-        let delta = (d - d_last) / slope;
-        let guess = x_last + delta - 18.0 * x2 / slope * delta * delta;
+        let guess = x_last + (d - d_last) / (12.0 * x_last * x_last * x_last - 4.0);
         let x = normalized::sqrt_contact_radius_at_depth_from(d, guess)?;
         self.hint[0].store(d.to_bits(), Ordering::Relaxed);
         self.hint[1].store(x.to_bits(), Ordering::Relaxed);
