@@ -65,7 +65,9 @@
 //! quadratures on the motion's steps: where the normal law's slopes are exact
 //! (JKR's branch curve) they stay outside DOP853's error control (its norm
 //! covers the motion only), elsewhere (slopes by differences, whose rounding
-//! grows toward a branch end; the spring bed) inside it; every power is smooth
+//! grows toward a branch end; the spring bed; a slipping element with a
+//! dashpot, whose powers kink where the dashpot alone reaches the limit) inside
+//! it; every power is smooth
 //! across the step that holds the event ending its segment (the sliding power
 //! continues with the slip rate past its zero). In slip the
 //! dashpot's force along the slip direction is capped at the limit: where the
