@@ -194,6 +194,16 @@ def collide_oblique(fragment, bodies, speed, angle, dt, reach, run_steps, spin=(
 FLOOR = 1e-6
 
 
+def components(speed, radius):
+    """Every compared component of a collision's answer, (name, body, field, k,
+    scale): both bodies' velocity (scale `speed`) and spin (scale
+    `speed`/`radius`), x, y and z."""
+    for body in ("sphere", "target"):
+        for field, scale in (("velocity", speed), ("angular_velocity", speed / radius)):
+            for k in range(3):
+                yield f"{body}.{field}[{k}]", body, field, k, scale
+
+
 def time_step_errors(after, coarse, fine, speed, radius):
     """tabor's `after` (the JSON of `tabor impact --angle`) against LAMMPS runs at
     dt (`coarse`) and dt/2 (`fine`), component by component: LAMMPS's scheme
@@ -204,12 +214,9 @@ def time_step_errors(after, coarse, fine, speed, radius):
     spins) for tabor's own integration tolerance and LAMMPS's rounding. Returns
     [(name, tabor, fine, coarse, |tabor - fine|, tolerance)] for every component."""
     rows = []
-    for body in ("sphere", "target"):
-        for field, scale in (("velocity", speed), ("angular_velocity", speed / radius)):
-            for k in range(3):
-                ours, lf, lc = after[body][field][k], fine[body][field][k], coarse[body][field][k]
-                rows.append((f"{body}.{field}[{k}]", ours, lf, lc, abs(ours - lf),
-                             2.0 * abs(lc - lf) + FLOOR * scale))
+    for name, body, field, k, scale in components(speed, radius):
+        ours, lf, lc = after[body][field][k], fine[body][field][k], coarse[body][field][k]
+        rows.append((name, ours, lf, lc, abs(ours - lf), 2.0 * abs(lc - lf) + FLOOR * scale))
     return rows
 
 
@@ -232,12 +239,9 @@ def extrapolated_errors(after, runs, speed, radius, tolerance):
     for spins), whatever the runs give. Returns
     [(name, tabor, limit, finest run, |tabor - limit|, tolerance)]."""
     rows = []
-    for body in ("sphere", "target"):
-        for field, scale in (("velocity", speed), ("angular_velocity", speed / radius)):
-            for k in range(3):
-                ours = after[body][field][k]
-                xs = [r[body][field][k] for r in runs]
-                limit = aitken_limit(*xs)
-                rows.append((f"{body}.{field}[{k}]", ours, limit, xs[-1], abs(ours - limit),
-                             tolerance * scale))
+    for name, body, field, k, scale in components(speed, radius):
+        ours = after[body][field][k]
+        xs = [r[body][field][k] for r in runs]
+        limit = aitken_limit(*xs)
+        rows.append((name, ours, limit, xs[-1], abs(ours - limit), tolerance * scale))
     return rows

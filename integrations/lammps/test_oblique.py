@@ -44,7 +44,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from collide import collide_oblique, extrapolated_errors  # noqa: E402
+from collide import collide_oblique, components, extrapolated_errors  # noqa: E402
 from lammps_case import (E, E_STAR, K_ROLL, MU, MU_ROLL, NU, R, SILICA_BODIES, SILICA_TOML, W,  # noqa: E402
                          tabor_json, write_temp)
 
@@ -190,16 +190,13 @@ def check_direct(speed, angle, spin, damped):
     worst = 0.0
     for steps in SWITCH_STEPS:
         run = lammps_oblique(speed, angle, spin, tc / steps, tc, damped=damped)
-        for body in ("sphere", "target"):
-            for field, scale in (("velocity", speed), ("angular_velocity", speed / R)):
-                for k in range(3):
-                    ours, theirs = t["after"][body][field][k], run[body][field][k]
-                    diff, tol = abs(ours - theirs), TOLERANCE * scale
-                    worst = max(worst, diff / tol)
-                    assert diff <= tol, (
-                        f"{speed} m/s, {angle} deg, {damped}: {body}.{field}[{k}] tabor"
-                        f" {ours:.9e} LAMMPS (t_c/{steps}) {theirs:.9e}: |diff| {diff:.2e}"
-                        f" > {tol:.2e}")
+        for name, body, field, k, scale in components(speed, R):
+            ours, theirs = t["after"][body][field][k], run[body][field][k]
+            diff, tol = abs(ours - theirs), TOLERANCE * scale
+            worst = max(worst, diff / tol)
+            assert diff <= tol, (
+                f"{speed} m/s, {angle} deg, {damped}: {name} tabor {ours:.9e} LAMMPS"
+                f" (t_c/{steps}) {theirs:.9e}: |diff| {diff:.2e} > {tol:.2e}")
     v, w = t["after"]["sphere"]["velocity"], t["after"]["sphere"]["angular_velocity"]
     RESULTS.append((speed, angle, damped, v[:2], w, [run["sphere"]["velocity"][0],
                     run["sphere"]["velocity"][1]], worst))

@@ -15,8 +15,9 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
+mod common;
+
 use proptest::prelude::*;
-use std::f64::consts::PI;
 use tabor_scene::{Format, Scene};
 
 /// (density, Young's modulus, Poisson's ratio): silica, alumina, steel.
@@ -216,16 +217,6 @@ impl Case {
             self.spin, target_spin
         )
     }
-
-    /// Mass and moment of inertia (2/5 m r²) of a sphere.
-    fn sphere_body(material: usize, radius: f64) -> (f64, f64) {
-        let m = MATERIALS[material].0 * 4.0 / 3.0 * PI * radius.powi(3);
-        (m, 0.4 * m * radius * radius)
-    }
-}
-
-fn squared(v: &[f64; 3]) -> f64 {
-    v.iter().map(|x| x * x).sum()
 }
 
 /// Ok(None) for the refused combination, Ok(Some(margin)) the energy bound's
@@ -240,17 +231,19 @@ fn run(c: &Case) -> Result<Option<f64>, String> {
         }
         Err(e) => return Err(format!("{e}\n{text}")),
     };
-    let (mi, ii) = Case::sphere_body(c.sphere, c.radius);
-    let target = c.target_radius().map(|r| Case::sphere_body(c.target, r));
+    let (mi, ii) = common::solid_sphere(c.radius, MATERIALS[c.sphere].0);
+    let target = c
+        .target_radius()
+        .map(|r| common::solid_sphere(r, MATERIALS[c.target].0));
     let m_eff = target.map_or(mi, |(mj, _)| mi * mj / (mi + mj));
-    let before = 0.5 * m_eff * c.speed * c.speed
-        + 0.5 * ii * squared(&c.spin)
-        + target.map_or(0.0, |(_, ij)| 0.5 * ij * squared(&c.target_spin));
+    let before = common::kinetic_energy(m_eff, ii, &[c.speed, 0.0, 0.0], &c.spin)
+        + target.map_or(0.0, |(_, ij)| {
+            common::kinetic_energy(0.0, ij, &[0.0; 3], &c.target_spin)
+        });
     let (s, t) = (&o.after.sphere, &o.after.target);
-    let after = 0.5 * mi * squared(&s.velocity)
-        + 0.5 * ii * squared(&s.angular_velocity)
+    let after = common::kinetic_energy(mi, ii, &s.velocity, &s.angular_velocity)
         + target.map_or(0.0, |(mj, ij)| {
-            0.5 * mj * squared(&t.velocity) + 0.5 * ij * squared(&t.angular_velocity)
+            common::kinetic_energy(mj, ij, &t.velocity, &t.angular_velocity)
         });
     if !(after.is_finite() && o.energy_error.is_finite()) {
         return Err(format!("not finite: {o:?}\n{text}"));

@@ -7,6 +7,8 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
+mod common;
+
 use std::f64::consts::PI;
 use tabor_scene::{Format, Scene};
 use tabor_tangential::oblique::ObliqueOutcome;
@@ -36,27 +38,15 @@ fn scene(tangential: &str, twisting: &str) -> Scene {
     Scene::from_str(&text, Format::Toml).unwrap()
 }
 
-/// Mass and moment of inertia (2/5 m r²) of a sphere of density `rho`.
-fn body(rho: f64) -> (f64, f64) {
-    let m = rho * 4.0 / 3.0 * PI * RADIUS.powi(3);
-    (m, 0.4 * m * RADIUS * RADIUS)
-}
-
-fn squared(v: &[f64; 3]) -> f64 {
-    v.iter().map(|x| x * x).sum()
-}
-
 /// The bodies' kinetic energy (translation and rotation) in the centre-of-mass
 /// frame, before (relative speed `v`, the sphere's spin) and after the impact.
 fn kinetic_energies(o: &ObliqueOutcome, v: f64) -> (f64, f64) {
-    let (m1, i1) = body(STEEL.0);
-    let (m2, i2) = body(ALUMINA.0);
-    let before = 0.5 * m1 * m2 / (m1 + m2) * v * v + 0.5 * i1 * squared(&SPIN);
+    let (m1, i1) = common::solid_sphere(RADIUS, STEEL.0);
+    let (m2, i2) = common::solid_sphere(RADIUS, ALUMINA.0);
+    let before = common::kinetic_energy(m1 * m2 / (m1 + m2), i1, &[v, 0.0, 0.0], &SPIN);
     let (s, t) = (&o.after.sphere, &o.after.target);
-    let after = 0.5 * m1 * squared(&s.velocity)
-        + 0.5 * i1 * squared(&s.angular_velocity)
-        + 0.5 * m2 * squared(&t.velocity)
-        + 0.5 * i2 * squared(&t.angular_velocity);
+    let after = common::kinetic_energy(m1, i1, &s.velocity, &s.angular_velocity)
+        + common::kinetic_energy(m2, i2, &t.velocity, &t.angular_velocity);
     (before, after)
 }
 
@@ -67,8 +57,7 @@ fn kinetic_energies(o: &ObliqueOutcome, v: f64) -> (f64, f64) {
 /// departure from that limit (its pull-off lies between 1.5 and 2 π R* w).
 fn adhesive_well_bound() -> f64 {
     let r_star = 0.5 * RADIUS;
-    let inv_e = (1.0 - STEEL.2 * STEEL.2) / STEEL.1 + (1.0 - ALUMINA.2 * ALUMINA.2) / ALUMINA.1;
-    let e_star = 1.0 / inv_e;
+    let e_star = common::e_star(STEEL.1, STEEL.2, ALUMINA.1, ALUMINA.2);
     let pull = 2.0 * PI * r_star * WORK_OF_ADHESION;
     let delta_eq = (3.0 * pull / (4.0 * e_star * r_star.sqrt())).powf(2.0 / 3.0);
     2.0 * pull * (RANGE + delta_eq)

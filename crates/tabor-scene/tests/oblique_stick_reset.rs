@@ -9,7 +9,8 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use std::f64::consts::PI;
+mod common;
+
 use tabor_scene::{Format, Scene};
 use tabor_tangential::oblique::ObliqueOutcome;
 
@@ -34,16 +35,16 @@ fn scene(tangential_damping: f64) -> Scene {
 }
 
 /// The sphere's kinetic energy (translation and rotation) before (relative
-/// speed [`SPEED`], spin [`SPIN`]) and after the impact, from its mass, its
-/// moment of inertia (2/5 m r²) and the motion (the flat does not move).
+/// speed [`SPEED`], spin [`SPIN`]) and after the impact (the flat does not
+/// move).
 fn kinetic_energies(o: &ObliqueOutcome) -> (f64, f64) {
-    let m = DENSITY * 4.0 / 3.0 * PI * RADIUS.powi(3);
-    let inertia = 0.4 * m * RADIUS * RADIUS;
-    let squared = |v: &[f64; 3]| v.iter().map(|x| x * x).sum::<f64>();
-    let before = 0.5 * m * SPEED * SPEED + 0.5 * inertia * SPIN * SPIN;
+    let (m, inertia) = common::solid_sphere(RADIUS, DENSITY);
+    let before = common::kinetic_energy(m, inertia, &[SPEED, 0.0, 0.0], &[0.0, 0.0, SPIN]);
     let s = &o.after.sphere;
-    let after = 0.5 * m * squared(&s.velocity) + 0.5 * inertia * squared(&s.angular_velocity);
-    (before, after)
+    (
+        before,
+        common::kinetic_energy(m, inertia, &s.velocity, &s.angular_velocity),
+    )
 }
 
 /// The impact with the tangential dashpot `tangential_damping`, checked: the

@@ -3,7 +3,8 @@
 //! (independent of tabor's force laws); the effective quantities and the silica
 //! pair of the combination tests (`combinations.rs`, `combinations_bundled.rs`);
 //! the random scenes of the combination property tests and the properties every
-//! outcome has (`combination_properties.rs`, `combination_regressions.rs`).
+//! outcome has (`combination_properties.rs`, `combination_regressions.rs`); the
+//! kinetic energies of the oblique tests' energy bounds.
 #![allow(dead_code)]
 
 use proptest::prelude::*;
@@ -176,6 +177,19 @@ pub fn e_star(e1: f64, nu1: f64, e2: f64, nu2: f64) -> f64 {
 
 pub fn mass(radius: f64, density: f64) -> f64 {
     4.0 / 3.0 * PI * radius.powi(3) * density
+}
+
+/// Mass and moment of inertia (2/5 m r²) of a solid sphere.
+pub fn solid_sphere(radius: f64, density: f64) -> (f64, f64) {
+    let m = mass(radius, density);
+    (m, 0.4 * m * radius * radius)
+}
+
+/// The kinetic energy `½ m |v|² + ½ I |ω|²` of a body (the oblique tests' bounds,
+/// from the reported motion).
+pub fn kinetic_energy(mass: f64, inertia: f64, velocity: &[f64; 3], spin: &[f64; 3]) -> f64 {
+    let squared = |v: &[f64; 3]| v.iter().map(|x| x * x).sum::<f64>();
+    0.5 * mass * squared(velocity) + 0.5 * inertia * squared(spin)
 }
 
 pub fn scene(text: &str) -> Scene {

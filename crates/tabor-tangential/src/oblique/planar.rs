@@ -106,8 +106,8 @@ impl<'a> Setup<'a> {
         [
             true,
             contact && damped,
-            friction && self.bed.is_none() && modes.tangential == Mode::Slip,
-            friction && damped && fr.is_some_and(|f| f.tangential.damping_ratio != 0.0),
+            self.slipping_tangential(modes).is_some(),
+            friction && self.tangential_dashpot(),
             friction,
             acting && fr.is_some_and(|f| f.rolling.is_some()),
             false,

@@ -8,7 +8,7 @@ use super::limits::{
 use super::planar::{PLANAR_MOTION, P_XT};
 use super::simulate::Event;
 use super::state::*;
-use crate::model::TangentialModel;
+use crate::model::{Tangential, TangentialModel};
 use std::cell::Cell;
 use tabor_dynamics::{ForceLaw, SimulationSettings};
 use tabor_numerics::ode::{
@@ -412,35 +412,44 @@ where
 }
 
 impl<'a> Setup<'a> {
-    /// True when a Mindlin spring (`mindlin`, `mindlin_rescale`: stiffness
-    /// `k_t a`) slips in `modes`: its sliding power has the `1/k` that
-    /// [`sliding_work_to_event`] keeps the integration from sampling beyond the
-    /// segment's event.
-    pub(super) fn singular_sliding_power(&self, modes: &Modes) -> bool {
-        modes.in_contact
+    /// The tangential element (not the spring bed) when it slips in `modes`, in
+    /// contact and past the warm-up: the segments where its sliding work is
+    /// integrated ([`Setup::active_energies`]).
+    pub(super) fn slipping_tangential(&self, modes: &Modes) -> Option<&Tangential> {
+        let slips = modes.in_contact
             && !modes.warmup
             && self.bed.is_none()
-            && modes.tangential == Mode::Slip
-            && self
-                .imp
-                .friction
-                .as_ref()
-                .is_some_and(|f| f.tangential.model != TangentialModel::LinearHistory)
+            && modes.tangential == Mode::Slip;
+        self.imp
+            .friction
+            .as_ref()
+            .filter(|_| slips)
+            .map(|f| &f.tangential)
     }
 
-    /// True when the tangential element (not the spring bed) slips in `modes`
-    /// with a dashpot (`tangential_damping` and a normal damping both nonzero).
-    pub(super) fn dashpot_slips(&self, modes: &Modes) -> bool {
-        modes.in_contact
-            && !modes.warmup
-            && self.bed.is_none()
-            && modes.tangential == Mode::Slip
-            && self.imp.normal.damping != 0.0
+    /// True when the tangential element has a dashpot: `tangential_damping`
+    /// and a normal damping both nonzero (its `γ = x_γ c_n`).
+    pub(super) fn tangential_dashpot(&self) -> bool {
+        self.imp.normal.damping != 0.0
             && self
                 .imp
                 .friction
                 .as_ref()
                 .is_some_and(|f| f.tangential.damping_ratio != 0.0)
+    }
+
+    /// True when a Mindlin spring (`mindlin`, `mindlin_rescale`: stiffness
+    /// `k_t a`) slips in `modes`: its sliding power has the `1/k` that
+    /// [`sliding_work_to_event`] keeps the integration from sampling beyond the
+    /// segment's event.
+    pub(super) fn singular_sliding_power(&self, modes: &Modes) -> bool {
+        self.slipping_tangential(modes)
+            .is_some_and(|t| t.model != TangentialModel::LinearHistory)
+    }
+
+    /// True when the tangential element slips in `modes` with a dashpot.
+    pub(super) fn dashpot_slips(&self, modes: &Modes) -> bool {
+        self.slipping_tangential(modes).is_some() && self.tangential_dashpot()
     }
 
     /// Contact onset: the springs unstrained, the current displacement the
