@@ -68,6 +68,15 @@ pub trait BranchCurve {
     /// regularized time turns into the Sundman time, also on a segment that starts
     /// at a fold.
     fn slope_scale(&self) -> f64;
+
+    /// True when |dd/dq| stays at least a quarter of [`BranchCurve::slope_scale`]
+    /// from the entry to the end of the branch (no fold: the end is not a
+    /// fixed-grip snap-off), so that `q̇ = ḋ/(dd/dq)` stays bounded and a
+    /// consumer may integrate q in time (the planar oblique impact does).
+    /// Default: false (integrate in the overlap, or in the regularized time).
+    fn fold_free(&self) -> bool {
+        false
+    }
 }
 
 /// A contact force law for the equation of motion `m d̈ = −F(d, ḋ, history)`

@@ -165,4 +165,11 @@ impl BranchCurve for JkrForceLaw {
     fn slope_scale(&self) -> f64 {
         12.0 * self.sphere.scales().depth
     }
+
+    /// `dd̂/dx = 12x³ − 4` grows with x from its separation value: fold-free when
+    /// that is at least 3 of the 12 at first touch (load-controlled: x = 1, 8;
+    /// fixed grip ends at the fold x³ = 1/3, 0).
+    fn fold_free(&self) -> bool {
+        12.0 * self.separation_root.powi(3) - 4.0 >= 3.0
+    }
 }

@@ -92,7 +92,14 @@
 //! stays planar: its out-of-plane components are exactly 0, and the integration
 //! carries only the 18 that move (module `planar`; of the energies only those that
 //! can move in the segment), with their rates and the event values in two
-//! dimensions (module `plane`); any other integrates all 27.
+//! dimensions (module `plane`); any other integrates all 27. In contact on a
+//! branch curve without a fold (JKR load-controlled), undamped, with a single
+//! tangential spring, a planar segment integrates in polar coordinates instead
+//! (module `polar`): the branch coordinate itself (no solve for it at an
+//! evaluation, as the central simulated impact), the overlap rate, the velocity
+//! across the line of centres, the spins, the turn of the line of centres and
+//! the displacements along the tangent, 8 motion components; a second
+//! derivation of the same motion, checked against the Cartesian one.
 //!
 //! The motion is three-dimensional: between two spheres the line of centres
 //! turns by about `v sin α t_c/(R_i + R_j)` during the contact, so the normal
@@ -119,6 +126,9 @@ mod planar;
 mod plane;
 #[cfg(test)]
 mod plane_tests;
+mod polar;
+#[cfg(test)]
+mod polar_tests;
 mod segment;
 mod simulate;
 mod state;

@@ -150,6 +150,19 @@ impl<'a> Setup<'a> {
             rate_unit: std::array::from_fn(|k| self.time / scale[k]),
         };
         let all: [usize; PM] = std::array::from_fn(|k| k);
+        let polar = self.polar_segment(
+            law,
+            modes,
+            combine,
+            failures,
+            ends,
+            yn,
+            tolerance,
+            quadratures,
+        );
+        if let Some(run) = polar {
+            return run;
+        }
         if self.bed.is_some() {
             return run.micro_slip(all, ends, yn, tolerance);
         }

@@ -126,7 +126,7 @@ impl<'a> Setup<'a> {
     }
 
     /// The radii of [`Setup::evaluate`]: the torque arms and R_i, R_j.
-    fn planar_radii(&self, overlap: f64) -> (f64, f64, f64, f64) {
+    pub(super) fn planar_radii(&self, overlap: f64) -> (f64, f64, f64, f64) {
         let r_i = self.imp.sphere.radius;
         if self.flat {
             (r_i, 0.0, r_i, 0.0)
