@@ -4,6 +4,7 @@
 use super::limits::RATE_CAP;
 use crate::model::Friction;
 use crate::model::Twisting;
+use crate::model::{Tangential, TangentialModel};
 use nalgebra::Vector3;
 use std::cell::Cell;
 use tabor_restitution::Error;
@@ -106,4 +107,33 @@ pub(super) fn model_error(message: String) -> Error {
 pub(super) fn keep_first(slot: &Cell<Option<Error>>, e: Error) {
     let old = slot.take();
     slot.set(Some(old.unwrap_or(e)));
+}
+
+/// The rates of a tangential element at contact radius `a` changing at
+/// `a_dot` (m/s) with the normal damping coefficient changing at `c_n_dot`:
+/// `(k̇, γ̇, ȧ/a)`, the last `mindlin_rescale`'s shrinking of ξ while
+/// `unloading` (else 0). ξ ∝ a while it shrinks: the rate ȧ/a diverges where
+/// the contact vanishes (Hertz: a ∝ δ^½ at separation), and so do ξ's
+/// derivatives; capped at `RATE_CAP` per time unit `time` (s) as the turning of a
+/// slip direction ([`turn_rate`]). The cap acts only within ~10⁻⁴ of the end,
+/// where the stick force is bounded by a limit ~10⁻⁶ of its largest value.
+pub(super) fn spring_rates(
+    t: &Tangential,
+    (a, a_dot): (f64, f64),
+    c_n_dot: f64,
+    unloading: bool,
+    time: f64,
+) -> (f64, f64, f64) {
+    let k_dot = match t.model {
+        TangentialModel::LinearHistory => 0.0,
+        _ => t.stiffness * a_dot,
+    };
+    let gamma_dot = t.damping_ratio * c_n_dot;
+    let rescale = t.model == TangentialModel::MindlinRescale && unloading;
+    let rescale_rate = if rescale && a > 0.0 {
+        (a_dot / a).max(-RATE_CAP / time)
+    } else {
+        0.0
+    };
+    (k_dot, gamma_dot, rescale_rate)
 }

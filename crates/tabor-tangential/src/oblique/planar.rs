@@ -115,6 +115,30 @@ impl<'a> Setup<'a> {
         ]
     }
 
+    /// The components a segment in `modes` integrates, of a state whose first
+    /// `motion` components are the motion and whose energies start at `energy`:
+    /// the motion, then the energies of [`Setup::active_energies`]; and their
+    /// number.
+    pub(super) fn energy_slots<const L: usize>(
+        &self,
+        modes: &Modes,
+        motion: usize,
+        energy: usize,
+    ) -> ([usize; L], usize) {
+        let mut slots: [usize; L] = std::array::from_fn(|k| k);
+        let mut m = motion;
+        for (k, _) in self
+            .active_energies(modes)
+            .iter()
+            .enumerate()
+            .filter(|(_, &a)| a)
+        {
+            slots[m] = energy + k;
+            m += 1;
+        }
+        (slots, m)
+    }
+
     /// The planar segment from the normalized state `yn` at `ends.0` to the
     /// falling zero of the event function (or `ends.1`) in `modes`: the rates of
     /// [`Setup::planar_evaluate`], the event function `combine` of the values of
@@ -172,13 +196,7 @@ impl<'a> Setup<'a> {
             return run.dop853(all, ends, yn, tolerance);
         }
         // the motion, then the energies that move
-        let active = self.active_energies(modes);
-        let mut slots = all;
-        let mut m = PLANAR_MOTION;
-        for (k, _) in active.iter().enumerate().filter(|(_, &a)| a) {
-            slots[m] = P_EN + k;
-            m += 1;
-        }
+        let (slots, m) = self.energy_slots::<PM>(modes, PLANAR_MOTION, P_EN);
         macro_rules! dispatch {
             ($($size:literal)*) => {
                 match m {

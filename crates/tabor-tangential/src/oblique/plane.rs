@@ -9,7 +9,7 @@
 //! Twisting sticks at θ = 0 with `ω_tw = 0` in a planar state: its torque is 0
 //! and only its stick event (the limit) remains.
 
-use super::elements::{ratio, twist_coefficients};
+use super::elements::{ratio, spring_rates, twist_coefficients};
 use super::limits::{EVENTS, NORMAL_FORCE_ZERO, RATE_CAP, WARMUP};
 use super::planar::{PM, P_E, P_EN, P_U, P_WI, P_WJ, P_XR, P_XT};
 use super::state::*;
@@ -299,17 +299,8 @@ impl<'a> Setup<'a> {
 
         if let Some((k, gamma, limit, xi)) = tang {
             let t = &fr.tangential;
-            let k_dot = match t.model {
-                TangentialModel::LinearHistory => 0.0,
-                _ => t.stiffness * a_dot,
-            };
-            let gamma_dot = t.damping_ratio * c_n_dot;
-            let rescale = t.model == TangentialModel::MindlinRescale && !modes.loading;
-            let rescale_rate = if rescale && a > 0.0 {
-                (a_dot / a).max(-RATE_CAP / self.time)
-            } else {
-                0.0
-            };
+            let (k_dot, gamma_dot, rescale_rate) =
+                spring_rates(t, (a, a_dot), c_n_dot, !modes.loading, self.time);
             match modes.tangential {
                 Mode::Stick => {
                     let d = v_tr - n * xi.dot(&n_dot) + xi * rescale_rate;

@@ -26,11 +26,10 @@
 //! modes, so the segment's event values are those of [`Setup::planar_event_values`]
 //! at the same point.
 
-use super::elements::{keep_first, ratio, twist_coefficients};
-use super::limits::{EVENTS, NORMAL_FORCE_ZERO, RATE_CAP};
+use super::elements::{keep_first, ratio, spring_rates, twist_coefficients};
+use super::limits::{EVENTS, NORMAL_FORCE_ZERO};
 use super::segment::sliding_work_to_event;
 use super::state::*;
-use crate::model::TangentialModel;
 use nalgebra::Vector2;
 use std::cell::Cell;
 use tabor_dynamics::{BranchCurve, ForceLaw};
@@ -197,13 +196,7 @@ impl<'a> Setup<'a> {
         if !quadratures {
             return Some(polar.dop853(all, failures, combine, ends, &zn, yn, tolerance));
         }
-        let active = self.active_energies(modes);
-        let mut slots = all;
-        let mut m = MOTION;
-        for (k, _) in active.iter().enumerate().filter(|(_, &a)| a) {
-            slots[m] = ENERGY + k;
-            m += 1;
-        }
+        let (slots, m) = self.energy_slots::<PN>(modes, MOTION, ENERGY);
         macro_rules! dispatch {
             ($($size:literal)*) => {
                 match m {
@@ -343,17 +336,8 @@ impl Polar<'_, '_> {
 
         if let Some((k, gamma, limit, xi)) = tang {
             let t = &fr.tangential;
-            let k_dot = match t.model {
-                TangentialModel::LinearHistory => 0.0,
-                _ => t.stiffness * a_dot,
-            };
-            let gamma_dot = t.damping_ratio * c_n_dot;
-            let rescale = t.model == TangentialModel::MindlinRescale && !modes.loading;
-            let rescale_rate = if rescale && a > 0.0 {
-                (a_dot / a).max(-RATE_CAP / s.time)
-            } else {
-                0.0
-            };
+            let (k_dot, gamma_dot, rescale_rate) =
+                spring_rates(t, (a, a_dot), c_n_dot, !modes.loading, s.time);
             match modes.tangential {
                 Mode::Stick => {
                     dz[SPRING_T] = v_tr + xi * rescale_rate;

@@ -421,23 +421,9 @@ impl<'a> Setup<'a> {
         // tangential
         if let Some((k, gamma, limit, xi)) = tang {
             let t = &fr.tangential;
-            let k_dot = match t.model {
-                TangentialModel::LinearHistory => 0.0,
-                _ => t.stiffness * a_dot,
-            };
-            let gamma_dot = t.damping_ratio * c_n_dot;
+            let (k_dot, gamma_dot, rescale_rate) =
+                spring_rates(t, (a, a_dot), c_n_dot, !modes.loading, self.time);
             let limit_dot = t.coefficient * fc_dot;
-            let rescale = t.model == TangentialModel::MindlinRescale && !modes.loading;
-            // ξ ∝ a while it shrinks: the rate ȧ/a diverges where the contact
-            // vanishes (Hertz: a ∝ δ^½ at separation), and so do ξ's derivatives;
-            // capped as the turning of a slip direction ([`turn_rate`]). The cap
-            // acts only within ~10⁻⁴ of the end, where the stick force is
-            // bounded by a limit ~10⁻⁶ of its largest value.
-            let rescale_rate = if rescale && a > 0.0 {
-                (a_dot / a).max(-RATE_CAP / self.time)
-            } else {
-                0.0
-            };
             match modes.tangential {
                 Mode::Stick => {
                     let d = v_tr - n * xi.dot(&n_dot) + xi * rescale_rate;
