@@ -77,6 +77,15 @@ pub trait BranchCurve {
     fn fold_free(&self) -> bool {
         false
     }
+
+    /// The work `∫ F dd` (J) done against the force along the branch from a
+    /// fixed reference point of it to coordinate `coordinate`, where the force
+    /// depends on q alone (not on the overlap rate), in closed form: a consumer
+    /// books the normal elastic-adhesive work of a stretch of the branch as
+    /// `W(q₁) − W(q₀)` instead of integrating `F ḋ`. Default: `None`.
+    fn work(&self, _coordinate: f64) -> Option<f64> {
+        None
+    }
 }
 
 /// A contact force law for the equation of motion `m d̈ = −F(d, ḋ, history)`

@@ -172,4 +172,13 @@ impl BranchCurve for JkrForceLaw {
     fn fold_free(&self) -> bool {
         12.0 * self.separation_root.powi(3) - 4.0 >= 3.0
     }
+
+    /// Seed 000 eqs. (5.33)-(5.34): `∫ F̂ dd̂ = ∫ (x⁶ − 2x³)(12x³ − 4) dx
+    /// = 1.2x¹⁰ − 4x⁷ + 2x⁴` from x = 0, in units of force times depth.
+    fn work(&self, coordinate: f64) -> Option<f64> {
+        let x = coordinate;
+        let x3 = x * x * x;
+        let scales = self.sphere.scales();
+        Some((1.2 * x3 * x3 - 4.0 * x3 + 2.0) * x3 * x * scales.force * scales.depth)
+    }
 }

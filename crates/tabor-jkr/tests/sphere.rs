@@ -465,3 +465,34 @@ fn force_law_curve_matches_the_contact_relations() {
         }
     }
 }
+
+/// The branch curve's closed-form work `W(x₁) − W(x₀)` equals the seed's
+/// `∫ F dd` by quadrature of F(a) d'(a) between the same contact radii (from
+/// first touch to deep compression and back to beyond the separation), to
+/// 1e-12 of the largest |W|; fixed grip ends at a fold (`fold_free` false),
+/// load-controlled does not.
+#[test]
+fn branch_work_is_the_seed_integral() {
+    use tabor_dynamics::{BranchCurve, ForceLaw};
+    let (e, r, dg, _) = silica();
+    let seed = Seed { e, r, dg };
+    for (rule, fold_free) in [
+        (SeparationRule::LoadControlled, true),
+        (SeparationRule::FixedGrip, false),
+    ] {
+        let law = tabor_jkr::JkrForceLaw::new(JkrSphere::new(e, r, dg).unwrap(), rule);
+        let curve = law.curve().unwrap();
+        assert_eq!(curve.fold_free(), fold_free);
+        let radius = |x: f64| curve.point(x, 0.0).unwrap().contact_radius;
+        let work = |x: f64| curve.work(x).unwrap();
+        let scale = work(1.8).abs().max(work(0.5).abs());
+        for (x0, x1) in [(1.1006, 1.8), (1.8, 0.69), (1.3, 1.0), (0.6, 1.5)] {
+            let closed = work(x1) - work(x0);
+            let quadrature = seed.work(radius(x0), radius(x1));
+            assert!(
+                (closed - quadrature).abs() <= 1e-12 * scale,
+                "{rule:?} x {x0} -> {x1}: closed form {closed:e}, quadrature {quadrature:e}"
+            );
+        }
+    }
+}

@@ -115,24 +115,18 @@ impl<'a> Setup<'a> {
         ]
     }
 
-    /// The components a segment in `modes` integrates, of a state whose first
-    /// `motion` components are the motion and whose energies start at `energy`:
-    /// the motion, then the energies of [`Setup::active_energies`]; and their
-    /// number.
+    /// The components a segment integrates, of a state whose first `motion`
+    /// components are the motion and whose energies start at `energy`: the
+    /// motion, then the energies marked `active` (in the order of [`EN`]; see
+    /// [`Setup::active_energies`]); and their number.
     pub(super) fn energy_slots<const L: usize>(
-        &self,
-        modes: &Modes,
+        active: [bool; 8],
         motion: usize,
         energy: usize,
     ) -> ([usize; L], usize) {
         let mut slots: [usize; L] = std::array::from_fn(|k| k);
         let mut m = motion;
-        for (k, _) in self
-            .active_energies(modes)
-            .iter()
-            .enumerate()
-            .filter(|(_, &a)| a)
-        {
+        for (k, _) in active.iter().enumerate().filter(|(_, &a)| a) {
             slots[m] = energy + k;
             m += 1;
         }
@@ -196,7 +190,8 @@ impl<'a> Setup<'a> {
             return run.dop853(all, ends, yn, tolerance);
         }
         // the motion, then the energies that move
-        let (slots, m) = self.energy_slots::<PM>(modes, PLANAR_MOTION, P_EN);
+        let active = self.active_energies(modes);
+        let (slots, m) = Setup::energy_slots::<PM>(active, PLANAR_MOTION, P_EN);
         macro_rules! dispatch {
             ($($size:literal)*) => {
                 match m {

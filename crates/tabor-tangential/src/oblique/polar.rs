@@ -27,7 +27,7 @@
 //! at the same point.
 
 use super::elements::{keep_first, ratio, spring_rates, twist_coefficients};
-use super::limits::{EVENTS, NORMAL_FORCE_ZERO};
+use super::limits::EVENTS;
 use super::segment::sliding_work_to_event;
 use super::state::*;
 use nalgebra::Vector2;
@@ -111,6 +111,11 @@ struct Polar<'s, 'a> {
     t0: V2,
     /// SI value of one normalized unit of each component.
     scale: [f64; PN],
+    /// 1/m of the reduced mass.
+    inv_m: f64,
+    /// The curve's work ([`BranchCurve::work`]) at the segment's start, where
+    /// it gives one: the normal work is then booked from it, not integrated.
+    work: Option<f64>,
 }
 
 impl<'a> Setup<'a> {
@@ -145,6 +150,7 @@ impl<'a> Setup<'a> {
         let (n, overlap, rate, _) = self.planar_geometry_full(t, &y);
         let q = curve.coordinate(overlap).ok()?;
         let p = curve.point(q, rate).ok()?;
+        let work = curve.work(q);
         let on_curve = (p.overlap - overlap).abs() <= 1e-9 * self.length
             && p.overlap_slope.is_finite()
             && p.overlap_slope != 0.0
@@ -188,6 +194,8 @@ impl<'a> Setup<'a> {
             n0: n,
             t0: tn,
             scale,
+            inv_m: 1.0 / self.m_eff,
+            work,
         };
         let zn: [f64; PN] = std::array::from_fn(|k| z[k] / scale[k]);
         let controlled = if modes.tensile { SPRING_T } else { MOTION };
@@ -196,7 +204,10 @@ impl<'a> Setup<'a> {
         if !quadratures {
             return Some(polar.dop853(all, failures, combine, ends, &zn, yn, tolerance));
         }
-        let (slots, m) = self.energy_slots::<PN>(modes, MOTION, ENERGY);
+        // the normal elastic-adhesive work in closed form where the curve gives it
+        let mut active = self.active_energies(modes);
+        active[0] &= work.is_none();
+        let (slots, m) = Setup::energy_slots::<PN>(active, MOTION, ENERGY);
         macro_rules! dispatch {
             ($($size:literal)*) => {
                 match m {
@@ -206,7 +217,7 @@ impl<'a> Setup<'a> {
                 }
             };
         }
-        Some(dispatch!(9 10 11 12 13 14 15))
+        Some(dispatch!(8 9 10 11 12 13 14 15))
     }
 
     /// [`Setup::planar_geometry`] of the full SI state.
@@ -229,7 +240,9 @@ impl Polar<'_, '_> {
 
     /// The SI rates of the polar SI state `z` into `dz` (zeros on entry), and the
     /// tangential and rolling slip rates (∞ where an element sticks):
-    /// [`Setup::planar_rates`] in the rotating frame.
+    /// [`Setup::planar_rates`] in the rotating frame, for the undamped normal
+    /// contact a polar segment has (no normal or tangential dashpot: their
+    /// terms are exact zeros there and left out).
     fn rates(&self, z: &[f64; PN], dz: &mut [f64; PN]) -> Result<(f64, f64)> {
         let s = self.setup;
         let modes = self.modes;
@@ -243,47 +256,44 @@ impl Polar<'_, '_> {
         let theta_dot = if s.flat { 0.0 } else { w / (s.r_sum - overlap) };
         // on a flat t̂ = −ŷ: the deviation along y moves at −w − u0_y
         dz[TURN] = if s.flat { -w - s.u0.y } else { theta_dot };
-        let (f_el, a) = (p.force, p.contact_radius.max(0.0));
-        let normal = &s.imp.normal;
-        let c_n = normal.damping_at(a);
-        let f_d = c_n * rate;
-        let f_n = f_el + f_d;
-        let pull_off = normal.pull_off_force;
-        let cohesive = pull_off > 0.0;
-        let fc = crate::critical_force(f_el, f_n, pull_off);
+        let (f_n, a) = (p.force, p.contact_radius.max(0.0));
+        let pull_off = s.imp.normal.pull_off_force;
+        let fc = crate::critical_force(f_n, f_n, pull_off);
         let (arm_i, arm_j, r_i, r_j) = s.planar_radii(overlap);
         let v_tr = w - (wi * r_i + wj * r_j);
-        let w_rel = wi - wj;
-        let v_rl = w_rel * s.r_eff;
+        let v_rl = (wi - wj) * s.r_eff;
         let mut out = (f64::INFINITY, f64::INFINITY);
+        dz[ENERGY] = f_n * rate;
+        let Some(fr) = s.imp.friction.as_ref() else {
+            dz[RATE] = -w * theta_dot - f_n * self.inv_m;
+            dz[W] = theta_dot * rate;
+            return Ok(out);
+        };
 
-        let fr = s.imp.friction.as_ref();
-        let (mut f_t, mut f_r) = (0.0, 0.0);
-        let mut tang = None;
-        if let Some(fr) = fr {
-            let t = &fr.tangential;
-            let k = t.spring(a);
-            let gamma = t.damping_ratio * c_n;
-            let limit = t.coefficient * fc;
-            let xi = z[SPRING_T];
-            f_t = match modes.tangential {
-                Mode::Stick => cap1(-(xi * k + v_tr * gamma), limit, modes.frozen[0]),
-                Mode::Slip => -direction1(xi, v_tr) * limit,
-            };
-            tang = Some((k, gamma, limit, xi));
-            if let Some(r) = &fr.rolling {
+        // forces: the spring (no dashpot) and the rolling resistance
+        let t = &fr.tangential;
+        let k = t.spring(a);
+        let limit = t.coefficient * fc;
+        let xi = z[SPRING_T];
+        let f_t = match modes.tangential {
+            Mode::Stick => cap1(-(xi * k), limit, modes.frozen[0]),
+            Mode::Slip => -direction1(xi, v_tr) * limit,
+        };
+        let f_r = match &fr.rolling {
+            Some(r) => {
                 let psi = z[SPRING_R];
                 let limit_r = r.coefficient * fc;
-                f_r = match modes.rolling {
+                match modes.rolling {
                     Mode::Stick => cap1(
                         -(psi * r.stiffness + v_rl * r.damping),
                         limit_r,
                         modes.frozen[1],
                     ),
                     Mode::Slip => -direction1(psi, v_rl) * limit_r,
-                };
+                }
             }
-        }
+            None => 0.0,
+        };
 
         // accelerations (the twisting torque is 0)
         let torque_roll = f_r * s.r_eff;
@@ -293,80 +303,53 @@ impl Polar<'_, '_> {
         } else {
             (-f_t * arm_j - torque_roll) * s.inv_i_j
         };
-        let accel_normal = -w * theta_dot - f_n / s.m_eff;
-        let w_dot = theta_dot * rate + f_t / s.m_eff;
-        dz[RATE] = accel_normal;
+        let w_dot = theta_dot * rate + f_t * self.inv_m;
+        dz[RATE] = -w * theta_dot - f_n * self.inv_m;
         dz[W] = w_dot;
         dz[SPIN_I] = wi_dot;
         dz[SPIN_J] = wj_dot;
 
         // energies (power removed from the bodies; twisting's is 0)
-        dz[ENERGY] = f_el * rate;
-        dz[ENERGY + 1] = f_d * rate;
         dz[ENERGY + 4] = -f_t * v_tr;
         dz[ENERGY + 5] = -f_r * v_rl;
         dz[ENERGY + 7] = -f_t * (wi * (r_i - arm_i) + wj * (r_j - arm_j));
 
-        let Some(fr) = fr else {
-            return Ok(out);
-        };
         let a_dot = da_dq * q_dot;
-        let c_n_dot = normal.damping_rate(a, a_dot);
-        let slipping = modes.tangential == Mode::Slip || modes.rolling == Mode::Slip;
-        let (fc_dot, v_tr_dot, v_rl_dot) = if slipping {
-            let fc_dot = {
-                let raw = if cohesive { f_el + 2.0 * pull_off } else { f_n };
-                let mut d = df_dq * q_dot;
-                if !cohesive {
-                    d += c_n_dot * rate + c_n * accel_normal;
-                }
-                let tensile = if cohesive { raw < 0.0 } else { modes.tensile };
-                if tensile {
-                    -d
-                } else {
-                    d
-                }
+        let (k_dot, _, rescale_rate) = spring_rates(t, (a, a_dot), 0.0, !modes.loading, s.time);
+        // the rate of the critical force where an element slips
+        let fc_dot = || {
+            let d = df_dq * q_dot;
+            let raw = if pull_off > 0.0 {
+                f_n + 2.0 * pull_off
+            } else {
+                f_n
             };
-            let v_tr_dot = w_dot - (wi_dot * r_i + wj_dot * r_j);
-            let v_rl_dot = (wi_dot - wj_dot) * s.r_eff;
-            (fc_dot, v_tr_dot, v_rl_dot)
-        } else {
-            (0.0, 0.0, 0.0)
+            let tensile = if pull_off > 0.0 {
+                raw < 0.0
+            } else {
+                modes.tensile
+            };
+            if tensile {
+                -d
+            } else {
+                d
+            }
         };
-
-        if let Some((k, gamma, limit, xi)) = tang {
-            let t = &fr.tangential;
-            let (k_dot, gamma_dot, rescale_rate) =
-                spring_rates(t, (a, a_dot), c_n_dot, !modes.loading, s.time);
-            match modes.tangential {
-                Mode::Stick => {
-                    dz[SPRING_T] = v_tr + xi * rescale_rate;
-                    dz[ENERGY + 3] = gamma * v_tr * v_tr;
-                }
-                Mode::Slip => {
-                    let limit_dot = t.coefficient * fc_dot;
-                    let sign = direction1(xi, v_tr);
-                    let uv = sign * v_tr;
-                    let on_surface = limit - gamma * uv;
-                    let kappa_rate = ratio(k_dot, k) + rescale_rate;
-                    let g =
-                        kappa_rate * on_surface + k * uv + gamma_dot * uv + gamma * sign * v_tr_dot
-                            - limit_dot;
-                    out.0 = g;
-                    let slip_rate = if modes.frozen[0] { g.max(0.0) } else { g };
-                    if on_surface >= 0.0 {
-                        // the direction does not turn: û̇·v = 0
-                        let (power, _) = slip_power(
-                            (t.model, modes.frozen[0]),
-                            (on_surface, slip_rate, k),
-                            (uv, gamma, 0.0),
-                        );
-                        dz[ENERGY + 2] = power;
-                        dz[ENERGY + 3] = gamma * v_tr * v_tr;
-                    } else {
-                        dz[ENERGY + 3] = gamma * v_tr * v_tr + on_surface * uv;
-                    }
-                }
+        match modes.tangential {
+            Mode::Stick => dz[SPRING_T] = v_tr + xi * rescale_rate,
+            Mode::Slip => {
+                let uv = direction1(xi, v_tr) * v_tr;
+                let g =
+                    (ratio(k_dot, k) + rescale_rate) * limit + k * uv - t.coefficient * fc_dot();
+                out.0 = g;
+                let slip_rate = if modes.frozen[0] { g.max(0.0) } else { g };
+                // the direction does not turn: û̇·v = 0
+                let (power, _) = slip_power(
+                    (t.model, modes.frozen[0]),
+                    (limit, slip_rate, k),
+                    (uv, 0.0, 0.0),
+                );
+                dz[ENERGY + 2] = power;
             }
         }
         if let Some(r) = &fr.rolling {
@@ -374,15 +357,17 @@ impl Polar<'_, '_> {
                 Mode::Stick => dz[SPRING_R] = v_rl,
                 Mode::Slip => {
                     let sign = direction1(z[SPRING_R], v_rl);
-                    out.1 =
-                        sign * (v_rl * r.stiffness + v_rl_dot * r.damping) - r.coefficient * fc_dot;
+                    let v_rl_dot = (wi_dot - wj_dot) * s.r_eff;
+                    out.1 = sign * (v_rl * r.stiffness + v_rl_dot * r.damping)
+                        - r.coefficient * fc_dot();
                 }
             }
         }
         Ok(out)
     }
 
-    /// [`Setup::planar_event_values`] of the polar SI state `z`.
+    /// [`Setup::planar_event_values`] of the polar SI state `z` (undamped: no
+    /// dashpot in a trial force, no zero of a damped normal force).
     fn event_values(&self, z: &[f64; PN]) -> Result<[f64; EVENTS]> {
         let s = self.setup;
         let modes = self.modes;
@@ -397,13 +382,7 @@ impl Polar<'_, '_> {
         if modes.frozen == [true; 3] {
             return Ok(g);
         }
-        let normal = &s.imp.normal;
         let a = p.contact_radius.max(0.0);
-        let c_n = normal.damping_at(a);
-        if normal.pull_off_force <= 0.0 && normal.damping > 0.0 {
-            let f_n = p.force + c_n * rate;
-            g[NORMAL_FORCE_ZERO] = if modes.tensile { -f_n } else { f_n } / s.force;
-        }
         let rate_unit = s.force / s.time;
         let slip_rates = if modes.tangential == Mode::Slip || modes.rolling == Mode::Slip {
             self.rates(z, &mut [0.0; PN])?
@@ -418,12 +397,10 @@ impl Polar<'_, '_> {
             || twisting.is_some();
         if sticks {
             let (wi, wj) = (z[SPIN_I], if s.flat { 0.0 } else { z[SPIN_J] });
-            let fc = crate::critical_force(p.force, p.force + c_n * rate, normal.pull_off_force);
-            let r_j = if s.flat { 0.0 } else { s.imp.target.radius };
+            let fc = crate::critical_force(p.force, p.force, s.imp.normal.pull_off_force);
             if tangential && modes.tangential == Mode::Stick {
-                let v_tr = z[W] - (wi * s.imp.sphere.radius + wj * r_j);
                 let tg = &fr.tangential;
-                let trial = z[SPRING_T] * tg.spring(a) + v_tr * (tg.damping_ratio * c_n);
+                let trial = z[SPRING_T] * tg.spring(a);
                 g[2] = (tg.coefficient * fc - trial.abs()) / s.force;
             }
             if let Some(r) = rolling.filter(|_| modes.rolling == Mode::Stick) {
@@ -432,7 +409,7 @@ impl Polar<'_, '_> {
                 g[4] = (r.coefficient * fc - trial.abs()) / s.force;
             }
             if let Some(tw) = twisting {
-                let (_, _, l) = twist_coefficients(tw, fr, a, c_n, fc);
+                let (_, _, l) = twist_coefficients(tw, fr, a, 0.0, fc);
                 g[6] = l / (s.force * s.length);
             }
         }
@@ -488,6 +465,10 @@ impl Polar<'_, '_> {
         for (&k, &v) in slots.iter().zip(x.iter()).skip(MOTION) {
             // energies: normalized alike in both states
             y[EN + k - ENERGY] = v;
+        }
+        if let (Some(w0), false) = (self.work, slots.contains(&ENERGY)) {
+            let w1 = self.curve.work(z[Q]).unwrap_or(w0);
+            y[EN] = yn[EN] + (w1 - w0) / s.scale[EN];
         }
         Ok(y)
     }
