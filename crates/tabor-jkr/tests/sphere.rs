@@ -473,7 +473,7 @@ fn force_law_curve_matches_the_contact_relations() {
 /// load-controlled does not.
 #[test]
 fn branch_work_is_the_seed_integral() {
-    use tabor_dynamics::{BranchCurve, ForceLaw};
+    use tabor_dynamics::ForceLaw;
     let (e, r, dg, _) = silica();
     let seed = Seed { e, r, dg };
     for (rule, fold_free) in [
