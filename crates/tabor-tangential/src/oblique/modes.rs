@@ -348,8 +348,24 @@ impl<'a> Setup<'a> {
         Ok(switches)
     }
 
-    /// The event values at SI (t, y): all positive while the modes hold.
+    /// The event values at SI (t, y): all positive while the modes hold; those
+    /// of the reduced state ([`Setup::planar_event_values`], the same values to
+    /// a few ulps) where it is planar.
     pub(super) fn event_values(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &[f64; N],
+        modes: &Modes,
+    ) -> Result<[f64; EVENTS]> {
+        if self.is_planar(y, modes) {
+            return self.planar_event_values(law, t, &Setup::planar_of(y), modes);
+        }
+        self.full_event_values(law, t, y, modes)
+    }
+
+    /// The event values at SI (t, y) from the 3-D forms.
+    pub(super) fn full_event_values(
         &self,
         law: &dyn ForceLaw,
         t: f64,

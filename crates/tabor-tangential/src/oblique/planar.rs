@@ -80,7 +80,6 @@ impl<'a> Setup<'a> {
     }
 
     /// The reduced state of the full one `y` (either units).
-    #[cfg(test)]
     pub(super) fn planar_of(y: &[f64; N]) -> [f64; PM] {
         std::array::from_fn(|k| y[PLANAR[k]])
     }

@@ -286,7 +286,7 @@ fn compare(s: &Setup, law: &JkrForceLaw, t: f64, y: &[f64; N], z: &[f64; PM], mo
     }
     agree(plane.slip_rate_t, full.slip_rate_t, "tangential slip rate");
     agree(plane.slip_rate_r, full.slip_rate_r, "rolling slip rate");
-    let g_full = s.event_values(&fresh(), t, y, modes).unwrap();
+    let g_full = s.full_event_values(&fresh(), t, y, modes).unwrap();
     let g_plane = s.planar_event_values(&fresh(), t, z, modes).unwrap();
     for (k, (a, b)) in g_plane.iter().zip(g_full.iter()).enumerate() {
         agree(*a, *b, &format!("event value {k} in {modes:?}"));

@@ -327,7 +327,15 @@ impl<'a> Setup<'a> {
         offset: &[f64; EVENTS],
         sizes: &[f64; EVENTS],
     ) -> Result<Option<usize>> {
-        let Ok(rates) = self.evaluate(law, t, y, modes).map(|e| e.dy) else {
+        let rates = if self.is_planar(y, modes) {
+            let mut dz = [0.0; super::planar::PM];
+            let z = Setup::planar_of(y);
+            self.planar_rates(law, t, &z, modes, &mut dz)
+                .map(|_| Setup::full_of(&dz))
+        } else {
+            self.evaluate(law, t, y, modes).map(|e| e.dy)
+        };
+        let Ok(rates) = rates else {
             return Ok(None);
         };
         let ulp = f64::EPSILON * (t / self.time).abs().max(1.0) * self.time;
