@@ -19,7 +19,7 @@ use tabor_restitution::Result;
 /// The largest mismatch (relative to the overlap scale) between the overlap and
 /// the curve's overlap at the coordinate solved for it: beyond it the curve does
 /// not describe the law there (a clamped coordinate) and the law is evaluated.
-const CURVE_MISMATCH: f64 = 1e-9;
+pub(super) const CURVE_MISMATCH: f64 = 1e-9;
 
 impl<'a> Setup<'a> {
     /// The normal law at `overlap` (m) and `rate` (m/s), with the slopes when

@@ -1,7 +1,10 @@
 //! The planar contact in polar coordinates on the law's branch curve: where a
 //! planar segment is in contact on a [`BranchCurve`] without a fold
-//! ([`BranchCurve::fold_free`]: JKR load-controlled) and the tangential element
-//! is a single spring (not the spring bed), the segment integrates the branch
+//! ([`BranchCurve::fold_free`]: JKR load-controlled), the contact is undamped
+//! (a damped one that is captured creeps toward its equilibrium with ḋ → 0
+//! and no turning point, which only the rounding of the Cartesian `ḋ = −n·u`
+//! reaches) and the tangential element is a single spring (not the spring
+//! bed), the segment integrates the branch
 //! coordinate q itself (`q̇ = ḋ/(dd/dq)`, as the central simulated impact does:
 //! no solve for q at an evaluation), the overlap rate ḋ, the velocity w of the
 //! centres across the line of centres, the spins, the angle Δθ through which the
@@ -18,7 +21,8 @@
 //!   `(ȧ/a) s`), rolling `ψ̇ = (ω_i − ω_j) R*`; slip: `ṡ = 0` (in one dimension
 //!   a slip direction cannot turn);
 //! - the torques, the slip rates and every power as in [`super::plane`], each
-//!   vector along t̂ as its component.
+//!   vector along t̂ as its component; the normal elastic-adhesive work from the
+//!   curve's closed form ([`BranchCurve::work`]) where it gives one.
 //!
 //! A second derivation of the same motion: `polar_segments_match_the_cartesian_ones`
 //! checks it against the Cartesian planar state. The segment's start and end
@@ -28,6 +32,7 @@
 
 use super::elements::{keep_first, ratio, spring_rates, twist_coefficients};
 use super::limits::EVENTS;
+use super::normal::CURVE_MISMATCH;
 use super::segment::sliding_work_to_event;
 use super::state::*;
 use nalgebra::Vector2;
@@ -147,11 +152,11 @@ impl<'a> Setup<'a> {
         let curve = law.curve().filter(|c| c.fold_free())?;
         let t = ends.0 * self.time;
         let y = self.to_si(yn);
-        let (n, overlap, rate, _) = self.planar_geometry_full(t, &y);
+        let (n, overlap, rate, _) = self.planar_geometry(t, &Setup::planar_of(&y));
         let q = curve.coordinate(overlap).ok()?;
         let p = curve.point(q, rate).ok()?;
         let work = curve.work(q);
-        let on_curve = (p.overlap - overlap).abs() <= 1e-9 * self.length
+        let on_curve = (p.overlap - overlap).abs() <= CURVE_MISMATCH * self.length
             && p.overlap_slope.is_finite()
             && p.overlap_slope != 0.0
             && p.slopes.is_some();
@@ -218,12 +223,6 @@ impl<'a> Setup<'a> {
             };
         }
         Some(dispatch!(8 9 10 11 12 13 14 15))
-    }
-
-    /// [`Setup::planar_geometry`] of the full SI state.
-    fn planar_geometry_full(&self, t: f64, y: &[f64; N]) -> (V2, f64, f64, V2) {
-        let (n, overlap, rate, n_dot) = self.geometry(t, y);
-        (n.xy(), overlap, rate, n_dot.xy())
     }
 }
 
