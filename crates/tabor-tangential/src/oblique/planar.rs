@@ -341,11 +341,20 @@ fn expand<const M: usize>(
     slots: &[usize; M],
     run: EventsIntegration<M>,
 ) -> EventsIntegration<N> {
-    let sol = run.solution;
     let mut y = *yn;
-    for (&k, &v) in slots.iter().zip(sol.y.iter()) {
+    for (&k, &v) in slots.iter().zip(run.solution.y.iter()) {
         y[PLANAR[k]] = v;
     }
+    with_state(run, y)
+}
+
+/// The run `run` of a reduced or transformed state with the full normalized
+/// state `y` at its end in place of its own.
+pub(super) fn with_state<const M: usize>(
+    run: EventsIntegration<M>,
+    y: [f64; N],
+) -> EventsIntegration<N> {
+    let sol = run.solution;
     EventsIntegration {
         solution: OdeSolution {
             t: sol.t,

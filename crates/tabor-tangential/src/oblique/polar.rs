@@ -33,13 +33,14 @@
 use super::elements::{keep_first, ratio, spring_rates, twist_coefficients};
 use super::limits::EVENTS;
 use super::normal::CURVE_MISMATCH;
+use super::planar::with_state;
 use super::segment::sliding_work_to_event;
 use super::state::*;
 use nalgebra::Vector2;
 use std::cell::Cell;
 use tabor_dynamics::{BranchCurve, ForceLaw};
 use tabor_numerics::ode::{
-    drive_events, DormandPrince853, EventDirection, EventsIntegration, OdeSolution, OdeTolerance,
+    drive_events, DormandPrince853, EventDirection, EventsIntegration, OdeTolerance,
 };
 use tabor_restitution::{Error, Result};
 
@@ -526,7 +527,7 @@ impl Polar<'_, '_> {
         if let Some(k) = sliding.filter(|_| self.setup.singular_sliding_power(self.modes)) {
             sliding_work_to_event(&stepper, &mut f, k, &mut run);
         }
-        let sol = run.solution;
+        let sol = &run.solution;
         let y = match self.full(&slots, sol.t, &sol.y, yn) {
             Ok(y) => y,
             Err(e) => {
@@ -534,17 +535,6 @@ impl Polar<'_, '_> {
                 [f64::NAN; N]
             }
         };
-        Ok(EventsIntegration {
-            solution: OdeSolution {
-                t: sol.t,
-                y,
-                event_found: sol.event_found,
-                accepted_steps: sol.accepted_steps,
-                rejected_steps: sol.rejected_steps,
-                cost: sol.cost,
-            },
-            event: run.event,
-            event_cost: run.event_cost,
-        })
+        Ok(with_state(run, y))
     }
 }
