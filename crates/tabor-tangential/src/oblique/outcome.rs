@@ -196,3 +196,18 @@ impl<'a> Setup<'a> {
         })
     }
 }
+
+#[cfg(test)]
+impl ObliqueOutcome {
+    /// The outcome quantities two integrations of one impact are compared in
+    /// (the tests of the reduced and polar states): e_n, e_t (0 where none),
+    /// the rebound angle (0 where none) and the contact time, with their names.
+    pub(super) fn compared(&self) -> [(&'static str, f64); 4] {
+        [
+            ("e_n", self.normal_restitution),
+            ("e_t", self.tangential_restitution.unwrap_or(0.0)),
+            ("rebound angle", self.rebound_angle.unwrap_or(0.0)),
+            ("contact time", self.contact_time),
+        ]
+    }
+}

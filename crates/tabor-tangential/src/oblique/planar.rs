@@ -462,18 +462,9 @@ mod tests {
                         "{what} (flat {flat}, {angle}°): planar {a:e}, full {b:e}"
                     );
                 };
-                close(planar.normal_restitution, full.normal_restitution, "e_n");
-                close(
-                    planar.tangential_restitution.unwrap_or(0.0),
-                    full.tangential_restitution.unwrap_or(0.0),
-                    "e_t",
-                );
-                close(
-                    planar.rebound_angle.unwrap_or(0.0),
-                    full.rebound_angle.unwrap_or(0.0),
-                    "rebound angle",
-                );
-                close(planar.contact_time, full.contact_time, "contact time");
+                for ((what, a), (_, b)) in planar.compared().into_iter().zip(full.compared()) {
+                    close(a, b, what);
+                }
                 let total = planar.kinetic_energy;
                 let (p, f) = (&planar.losses, &full.losses);
                 for (a, b) in [

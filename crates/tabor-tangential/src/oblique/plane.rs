@@ -13,7 +13,7 @@ use super::elements::{ratio, spring_rates, twist_coefficients};
 use super::limits::{EVENTS, NORMAL_FORCE_ZERO, RATE_CAP, WARMUP};
 use super::planar::{PM, P_E, P_EN, P_U, P_WI, P_WJ, P_XR, P_XT};
 use super::state::*;
-use crate::model::TangentialModel;
+use crate::model::{Friction, TangentialModel};
 use nalgebra::{Vector2, Vector3};
 use tabor_dynamics::ForceLaw;
 use tabor_restitution::Result;
@@ -390,20 +390,13 @@ impl<'a> Setup<'a> {
             let f_n = np.force + normal.damping_at(np.radius) * rate;
             g[NORMAL_FORCE_ZERO] = if modes.tensile { -f_n } else { f_n } / self.force;
         }
-        let rate_unit = self.force / self.time;
         let slip_rates = if modes.tangential == Mode::Slip || modes.rolling == Mode::Slip {
             self.planar_rates(law, t, z, modes, &mut [0.0; PM])?
         } else {
             (f64::INFINITY, f64::INFINITY)
         };
-        let tangential = !modes.frozen[0] && self.bed.is_none();
-        let rolling = fr.rolling.as_ref().filter(|_| !modes.frozen[1]);
-        let twisting = fr.twisting.as_ref().filter(|_| !modes.frozen[2]);
-        let sticks = (tangential && modes.tangential == Mode::Stick)
-            || (rolling.is_some() && modes.rolling == Mode::Stick)
-            || twisting.is_some();
-        if sticks {
-            // the contact quantities of `Setup::contact`
+        // the contact quantities of `Setup::contact` and the trial forces
+        let contact = || -> Result<Trials> {
             let u = v2(z, P_U);
             let (wi, wj) = self.planar_spins(z);
             let np = self.normal(law, overlap, rate, false)?;
@@ -415,29 +408,78 @@ impl<'a> Setup<'a> {
             } else {
                 self.imp.target.radius
             };
+            let v_tr = u - n * n.dot(&u) - spin_cross(wi * self.imp.sphere.radius + wj * r_j, &n);
+            let tg = &fr.tangential;
+            let trial_t = v2(z, P_XT) * tg.spring(a) + v_tr * (tg.damping_ratio * c_n);
+            let v_rl = spin_cross(wi - wj, &n) * self.r_eff;
+            let trial_r = fr.rolling.as_ref().map_or(0.0, |r| {
+                (v2(z, P_XR) * r.stiffness + v_rl * r.damping).norm()
+            });
+            Ok(Trials {
+                radius: a,
+                damping: c_n,
+                critical_force: fc,
+                tangential: trial_t.norm(),
+                rolling: trial_r,
+            })
+        };
+        let tangential = self.bed.is_none();
+        self.element_events(&mut g, (fr, modes, tangential), contact, slip_rates)?;
+        Ok(g)
+    }
+
+    /// The friction elements' event values of a planar state into `g`: where
+    /// one sticks, the margin `(μ F_c − |T|)/F` of its trial force T (the
+    /// tangential element only where `tangential`: not the spring bed) and the
+    /// twisting limit, from the contact quantities `contact` gives (asked only
+    /// there); where one slips, its slip rate of `slip_rates` (force per time).
+    /// A frozen element has none. Shared by the Cartesian and the polar planar
+    /// states ([`super::polar`]), which differ only in how they get T.
+    pub(super) fn element_events(
+        &self,
+        g: &mut [f64; EVENTS],
+        (fr, modes, tangential): (&Friction, &Modes, bool),
+        contact: impl FnOnce() -> Result<Trials>,
+        slip_rates: (f64, f64),
+    ) -> Result<()> {
+        let tangential = tangential && !modes.frozen[0];
+        let rolling = fr.rolling.as_ref().filter(|_| !modes.frozen[1]);
+        let twisting = fr.twisting.as_ref().filter(|_| !modes.frozen[2]);
+        let sticks = (tangential && modes.tangential == Mode::Stick)
+            || (rolling.is_some() && modes.rolling == Mode::Stick)
+            || twisting.is_some();
+        if sticks {
+            let c = contact()?;
+            let fc = c.critical_force;
             if tangential && modes.tangential == Mode::Stick {
-                let v_tr =
-                    u - n * n.dot(&u) - spin_cross(wi * self.imp.sphere.radius + wj * r_j, &n);
-                let tg = &fr.tangential;
-                let trial = v2(z, P_XT) * tg.spring(a) + v_tr * (tg.damping_ratio * c_n);
-                g[2] = (tg.coefficient * fc - trial.norm()) / self.force;
+                g[2] = (fr.tangential.coefficient * fc - c.tangential) / self.force;
             }
             if let Some(r) = rolling.filter(|_| modes.rolling == Mode::Stick) {
-                let v_rl = spin_cross(wi - wj, &n) * self.r_eff;
-                let trial = v2(z, P_XR) * r.stiffness + v_rl * r.damping;
-                g[4] = (r.coefficient * fc - trial.norm()) / self.force;
+                g[4] = (r.coefficient * fc - c.rolling) / self.force;
             }
             if let Some(tw) = twisting {
-                let (_, _, l) = twist_coefficients(tw, fr, a, c_n, fc);
+                let (_, _, l) = twist_coefficients(tw, fr, c.radius, c.damping, fc);
                 g[6] = l / (self.force * self.length);
             }
         }
+        let rate_unit = self.force / self.time;
         if tangential && modes.tangential == Mode::Slip {
             g[3] = slip_rates.0 / rate_unit;
         }
         if rolling.is_some() && modes.rolling == Mode::Slip {
             g[5] = slip_rates.1 / rate_unit;
         }
-        Ok(g)
+        Ok(())
     }
+}
+
+/// The contact quantities a planar state's stick events need: contact radius
+/// (m), normal damping coefficient c_n (N s/m), critical normal force F_c (N),
+/// and the sizes (N) of the tangential and rolling trial forces.
+pub(super) struct Trials {
+    pub(super) radius: f64,
+    pub(super) damping: f64,
+    pub(super) critical_force: f64,
+    pub(super) tangential: f64,
+    pub(super) rolling: f64,
 }

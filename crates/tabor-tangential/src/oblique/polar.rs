@@ -30,10 +30,11 @@
 //! modes, so the segment's event values are those of [`Setup::planar_event_values`]
 //! at the same point.
 
-use super::elements::{keep_first, ratio, spring_rates, twist_coefficients};
+use super::elements::{keep_first, ratio, spring_rates};
 use super::limits::EVENTS;
 use super::normal::CURVE_MISMATCH;
 use super::planar::with_state;
+use super::plane::Trials;
 use super::segment::sliding_work_to_event;
 use super::state::*;
 use nalgebra::Vector2;
@@ -382,43 +383,32 @@ impl Polar<'_, '_> {
         if modes.frozen == [true; 3] {
             return Ok(g);
         }
-        let a = p.contact_radius.max(0.0);
-        let rate_unit = s.force / s.time;
         let slip_rates = if modes.tangential == Mode::Slip || modes.rolling == Mode::Slip {
             self.rates(z, &mut [0.0; PN])?
         } else {
             (f64::INFINITY, f64::INFINITY)
         };
-        let tangential = !modes.frozen[0];
-        let rolling = fr.rolling.as_ref().filter(|_| !modes.frozen[1]);
-        let twisting = fr.twisting.as_ref().filter(|_| !modes.frozen[2]);
-        let sticks = (tangential && modes.tangential == Mode::Stick)
-            || (rolling.is_some() && modes.rolling == Mode::Stick)
-            || twisting.is_some();
-        if sticks {
+        // the trial forces along the tangent (no dashpot in the tangential one)
+        let contact = || -> Result<Trials> {
+            let a = p.contact_radius.max(0.0);
             let (wi, wj) = (z[SPIN_I], if s.flat { 0.0 } else { z[SPIN_J] });
-            let fc = crate::critical_force(p.force, p.force, s.imp.normal.pull_off_force);
-            if tangential && modes.tangential == Mode::Stick {
-                let tg = &fr.tangential;
-                let trial = z[SPRING_T] * tg.spring(a);
-                g[2] = (tg.coefficient * fc - trial.abs()) / s.force;
-            }
-            if let Some(r) = rolling.filter(|_| modes.rolling == Mode::Stick) {
-                let v_rl = (wi - wj) * s.r_eff;
-                let trial = z[SPRING_R] * r.stiffness + v_rl * r.damping;
-                g[4] = (r.coefficient * fc - trial.abs()) / s.force;
-            }
-            if let Some(tw) = twisting {
-                let (_, _, l) = twist_coefficients(tw, fr, a, 0.0, fc);
-                g[6] = l / (s.force * s.length);
-            }
-        }
-        if tangential && modes.tangential == Mode::Slip {
-            g[3] = slip_rates.0 / rate_unit;
-        }
-        if rolling.is_some() && modes.rolling == Mode::Slip {
-            g[5] = slip_rates.1 / rate_unit;
-        }
+            let v_rl = (wi - wj) * s.r_eff;
+            let rolling = fr.rolling.as_ref().map_or(0.0, |r| {
+                (z[SPRING_R] * r.stiffness + v_rl * r.damping).abs()
+            });
+            Ok(Trials {
+                radius: a,
+                damping: 0.0,
+                critical_force: crate::critical_force(
+                    p.force,
+                    p.force,
+                    s.imp.normal.pull_off_force,
+                ),
+                tangential: (z[SPRING_T] * fr.tangential.spring(a)).abs(),
+                rolling,
+            })
+        };
+        s.element_events(&mut g, (fr, modes, true), contact, slip_rates)?;
         Ok(g)
     }
 

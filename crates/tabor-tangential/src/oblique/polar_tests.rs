@@ -142,22 +142,9 @@ fn polar_segments_match_the_cartesian_ones() {
                     worst = worst.max(d);
                     assert!(d <= 1e-9, "{name} ({what}): polar {a:e}, cartesian {b:e}");
                 };
-                close(
-                    polar.normal_restitution,
-                    cartesian.normal_restitution,
-                    "e_n",
-                );
-                close(
-                    polar.tangential_restitution.unwrap_or(0.0),
-                    cartesian.tangential_restitution.unwrap_or(0.0),
-                    "e_t",
-                );
-                close(
-                    polar.rebound_angle.unwrap_or(0.0),
-                    cartesian.rebound_angle.unwrap_or(0.0),
-                    "rebound angle",
-                );
-                close(polar.contact_time, cartesian.contact_time, "contact time");
+                for ((name, a), (_, b)) in polar.compared().into_iter().zip(cartesian.compared()) {
+                    close(a, b, name);
+                }
                 let total = polar.kinetic_energy;
                 let losses = |o: &ObliqueOutcome| {
                     let l = &o.losses;
