@@ -39,7 +39,7 @@ use super::segment::sliding_work_to_event;
 use super::state::*;
 use nalgebra::Vector2;
 use std::cell::Cell;
-use tabor_dynamics::{BranchCurve, ForceLaw};
+use tabor_dynamics::{BranchCurve, CurvePoint, ForceLaw};
 use tabor_numerics::ode::{
     drive_events, DormandPrince853, EventDirection, EventsIntegration, OdeTolerance,
 };
@@ -245,11 +245,16 @@ impl Polar<'_, '_> {
     /// contact a polar segment has (no normal or tangential dashpot: their
     /// terms are exact zeros there and left out).
     fn rates(&self, z: &[f64; PN], dz: &mut [f64; PN]) -> Result<(f64, f64)> {
+        let p = self.curve.point(z[Q], z[RATE])?;
+        self.rates_at(z, &p, dz)
+    }
+
+    /// [`Polar::rates`] with the curve's point `p` at `z` already evaluated.
+    fn rates_at(&self, z: &[f64; PN], p: &CurvePoint, dz: &mut [f64; PN]) -> Result<(f64, f64)> {
         let s = self.setup;
         let modes = self.modes;
-        let (q, rate, w) = (z[Q], z[RATE], z[W]);
+        let (rate, w) = (z[RATE], z[W]);
         let (wi, wj) = (z[SPIN_I], if s.flat { 0.0 } else { z[SPIN_J] });
-        let p = self.curve.point(q, rate)?;
         let (df_dq, da_dq) = p.slopes.unwrap_or((0.0, 0.0));
         let overlap = p.overlap;
         let q_dot = rate / p.overlap_slope;
@@ -384,7 +389,7 @@ impl Polar<'_, '_> {
             return Ok(g);
         }
         let slip_rates = if modes.tangential == Mode::Slip || modes.rolling == Mode::Slip {
-            self.rates(z, &mut [0.0; PN])?
+            self.rates_at(z, &p, &mut [0.0; PN])?
         } else {
             (f64::INFINITY, f64::INFINITY)
         };
