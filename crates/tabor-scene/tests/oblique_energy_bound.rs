@@ -340,3 +340,41 @@ fn a_dashpot_slip_books_converged_energies() {
         );
     }
 }
+
+/// Found by the property test in stop 41's last CI run (and failing identically
+/// on stop 40's code): a steel sphere on an alumina flat, Maugis-Dugdale
+/// (range 3 nm) with Tsuji damping, `linear_history` with a tangential dashpot
+/// (x_γ 0.36), a spin about z, 0.0895 m/s at 14.6°. The ledger closes, but it
+/// books −1.7e-15 J of sliding work and −9.7e-16 J of normal adhesion against
+/// 6.6e-17 J of kinetic energy, offset by the tangential and normal damping:
+/// the split between the slipping element's dashpot and slider is wrong there.
+/// Not traced; kept as a record (open in the stop 41 note).
+#[test]
+#[ignore = "known: sliding work -26 times the kinetic energy (stop 41, not traced)"]
+fn maugis_dugdale_dashpot_slip_on_a_flat() {
+    let c = Case {
+        radius: 6.892547006425856e-7,
+        sphere: 2,
+        target: 1,
+        target_kind: 2,
+        normal: 3,
+        work_of_adhesion: 0.1392959710651863,
+        range: 3e-9,
+        yield_stress: 316227766.01683795,
+        plastic_adhesion: false,
+        damping: 1,
+        damping_value: 0.0,
+        micro_slip: false,
+        mu: 0.33303925144233665,
+        stiffness: 2353.6776136826347,
+        tangential_damping: 0.3611432903956592,
+        rolling: None,
+        twisting: None,
+        speed: 0.08951906968117604,
+        angle: 14.610560391171735,
+        spin: [0.0, 0.0, -148267.24184857856],
+        target_spin: [0.0, 0.0, 0.0],
+    };
+    let r = run(&c);
+    assert!(matches!(r, Ok(Some(m)) if m >= 0.0), "{r:?}");
+}
