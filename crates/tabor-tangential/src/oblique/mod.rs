@@ -41,6 +41,11 @@
 //! integrated (out of the impact plane the slip directions leave it; about the
 //! line of centres twisting acts).
 //!
+//! After every event a slipping element whose slip rate is ≤ 0 sticks: the rate
+//! can jump there, below 0, with no event value crossing 0 (a branch change, as
+//! Maugis-Dugdale's junction, where the Coulomb limit grows at an unbounded
+//! rate; another element's switch; a damped contact's normal force at 0).
+//!
 //! Chattering: stick/slip switches within 10⁻⁶ of the branch end freeze every
 //! element's mode for the rest of the impact (every force there is ~10⁻⁹ of its
 //! size); two switches of one element within 10⁻⁹ time units (a tangency of its

@@ -310,13 +310,21 @@ impl<'a> Setup<'a> {
         Ok(())
     }
 
-    /// At the zero of a damped contact's normal force, where the Coulomb limits
-    /// `μ |F_n|` touch 0 and grow again ([`Modes::tensile`] switched): each
-    /// slipping element whose trial force no longer outgrows its limit there
-    /// (its slip rate with the limit's new rate ≤ 0) sticks. A sticking element
-    /// carries no trial force here (a force above 0 would have met its falling
-    /// limit before) and keeps sticking. Returns the number of switches.
-    pub(super) fn decide_after_limit_zero(
+    /// After an event: each slipping element whose slip rate is ≤ 0 there
+    /// sticks. The slip rate of an element that keeps slipping through an
+    /// event can jump there, below 0, where no event value crosses 0 to show
+    /// it: at a branch change (Maugis-Dugdale's junction, where the contact
+    /// radius opens as (δ − δ_j)^½ and the Coulomb limit's rate is unbounded,
+    /// ending the slip), at the switch of another element (its force moves
+    /// the accelerations), and at the zero of a damped contact's normal force,
+    /// where the Coulomb limits `μ |F_n|` touch 0 and grow again
+    /// ([`Modes::tensile`] switched: a sticking element carries no trial force
+    /// there, and keeps sticking). Before, such an element slipped on against
+    /// its own rate: a Maugis-Dugdale contact with a tangential dashpot booked
+    /// −4 times the kinetic energy as sliding work. An element that entered
+    /// slip at the event did so at a positive slip rate and keeps slipping.
+    /// Returns the number of tangential switches.
+    pub(super) fn stick_reversed_slips(
         &self,
         law: &dyn ForceLaw,
         t: f64,
@@ -324,6 +332,13 @@ impl<'a> Setup<'a> {
         modes: &mut Modes,
     ) -> Result<usize> {
         if self.imp.friction.is_none() || !modes.in_contact || modes.warmup {
+            return Ok(0);
+        }
+        let slipping = |m: Mode, i: usize| m == Mode::Slip && !modes.frozen[i];
+        if !(slipping(modes.tangential, 0) && self.bed.is_none()
+            || slipping(modes.rolling, 1)
+            || slipping(modes.twisting, 2))
+        {
             return Ok(0);
         }
         let ev = self.evaluate(law, t, y, modes)?;

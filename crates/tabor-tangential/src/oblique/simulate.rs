@@ -446,7 +446,6 @@ impl ObliqueImpact {
                 }
                 Event::NormalForceZero => {
                     modes.tensile = !modes.tensile;
-                    slip_switches += setup.decide_after_limit_zero(law, t, &mut y, &mut modes)?;
                 }
                 Event::TangentialLimit => {
                     let mut trial = modes;
@@ -494,6 +493,7 @@ impl ObliqueImpact {
                     setup.leave_twist_slip(law, t, &mut y, &modes)?;
                 }
             }
+            slip_switches += setup.stick_reversed_slips(law, t, &mut y, &mut modes)?;
         };
         setup.outcome(
             law,
