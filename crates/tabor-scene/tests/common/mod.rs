@@ -12,6 +12,27 @@ use proptest::test_runner::TestCaseError;
 use std::f64::consts::PI;
 use tabor_scene::{Format, Outcome, Scene, SceneError};
 
+/// Two silica microspheres (R = 1 µm) at accuracy 1e-10: the pair of the
+/// damping tests (`damping.rs`, `damped_oblique.rs`), without interactions.
+pub const SILICA: &str = r#"
+accuracy = 1e-10
+[sphere]
+radius = 1e-6
+density = 2650
+youngs_modulus = 54e9
+poisson_ratio = 0.17
+[target]
+radius = 1e-6
+density = 2650
+youngs_modulus = 54e9
+poisson_ratio = 0.17
+"#;
+
+/// The silica pair ([`SILICA`]) with the TOML `extra` after it.
+pub fn silica_scene(extra: &str) -> Scene {
+    Scene::from_str(&format!("{SILICA}{extra}"), Format::Toml).unwrap()
+}
+
 /// One classical Runge-Kutta step of ẍ = acc(x, ẋ).
 pub fn rk4(x: f64, u: f64, h: f64, acc: &dyn Fn(f64, f64) -> f64) -> (f64, f64) {
     let k1 = (u, acc(x, u));
