@@ -335,28 +335,26 @@ impl<'a> Setup<'a> {
             return Ok(0);
         }
         let slipping = |m: Mode, i: usize| m == Mode::Slip && !modes.frozen[i];
-        if !(slipping(modes.tangential, 0) && self.bed.is_none()
-            || slipping(modes.rolling, 1)
-            || slipping(modes.twisting, 2))
-        {
+        let [tangential, rolling, twisting] = [
+            slipping(modes.tangential, 0) && self.bed.is_none(),
+            slipping(modes.rolling, 1),
+            slipping(modes.twisting, 2),
+        ];
+        if !(tangential || rolling || twisting) {
             return Ok(0);
         }
         let ev = self.evaluate(law, t, y, modes)?;
         let mut switches = 0;
-        if modes.tangential == Mode::Slip
-            && !modes.frozen[0]
-            && self.bed.is_none()
-            && ev.slip_rate_t <= 0.0
-        {
+        if tangential && ev.slip_rate_t <= 0.0 {
             modes.tangential = Mode::Stick;
             self.leave_slip(law, t, y, modes, XT)?;
             switches += 1;
         }
-        if modes.rolling == Mode::Slip && !modes.frozen[1] && ev.slip_rate_r <= 0.0 {
+        if rolling && ev.slip_rate_r <= 0.0 {
             modes.rolling = Mode::Stick;
             self.leave_slip(law, t, y, modes, XR)?;
         }
-        if modes.twisting == Mode::Slip && !modes.frozen[2] && ev.slip_rate_w <= 0.0 {
+        if twisting && ev.slip_rate_w <= 0.0 {
             modes.twisting = Mode::Stick;
             self.leave_twist_slip(law, t, y, modes)?;
         }
