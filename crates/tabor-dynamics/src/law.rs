@@ -35,6 +35,19 @@ pub struct CurvePoint {
     pub slopes: Option<(f64, f64)>,
 }
 
+/// The barrier between a state of a conservative branch and the point where the
+/// bodies separate ([`ForceLaw::separation_barrier`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SeparationBarrier {
+    /// `U(d) − U(d_sep) = ∫_{d_sep}^{d} F dd'` (J): negative where the bodies
+    /// need that much kinetic energy to reach the separation point d_sep.
+    pub potential: f64,
+    /// The overlap d_sep (m) where the branch ends in separation (the
+    /// load-controlled JKR pull-off `−d_n`, the fixed-grip snap-off, the
+    /// Maugis-Dugdale pull-off depth).
+    pub separation_overlap: f64,
+}
+
 /// A branch of a [`ForceLaw`] in a coordinate `q` of its own in which the overlap
 /// d(q) and the force F(q, ḋ) are smooth, explicit functions: the root of the JKR
 /// quartic `x = √(a/a_c)`, the angle θ of the Maugis-Dugdale contact branch.
@@ -213,6 +226,18 @@ pub trait ForceLaw {
     fn curve(&self) -> Option<&dyn BranchCurve> {
         None
     }
+
+    /// The potential of the current branch at overlap `overlap` (m) relative to
+    /// the point where the bodies separate, with that point's overlap
+    /// ([`SeparationBarrier`]), where the law knows it: in contact, on a
+    /// branch whose force depends on the overlap alone and that ends in
+    /// separation. A consumer that adds damping learns from it when the bodies
+    /// can no longer separate: `½ m ḋ² + U(d) − U(d_sep)` only falls, so once it
+    /// is below 0 they stick (`tabor-viscoadhesive`'s README eq. (V4); the
+    /// oblique impact's capture). Default: `None` (not known).
+    fn separation_barrier(&self, _overlap: f64) -> Result<Option<SeparationBarrier>> {
+        Ok(None)
+    }
 }
 
 /// Forwards every method of [`ForceLaw`] to the law behind a pointer: a
@@ -259,6 +284,9 @@ macro_rules! forward_force_law {
     }
     fn curve(&self) -> Option<&dyn BranchCurve> {
         (**self).curve()
+    }
+    fn separation_barrier(&self, d: f64) -> Result<Option<SeparationBarrier>> {
+        (**self).separation_barrier(d)
     }}
     )+};
 }

@@ -20,7 +20,7 @@
 mod law;
 mod simulate;
 
-pub use law::{BranchChange, BranchCurve, CurvePoint, ForceLaw};
+pub use law::{BranchChange, BranchCurve, CurvePoint, ForceLaw, SeparationBarrier};
 pub use simulate::{
     simulate_impact, ContactEvent, EventKind, ImpactSimulation, SimulatedImpact,
     SimulationSettings, TrajectoryPoint,

@@ -4,7 +4,7 @@ use crate::common::SeparationRule;
 use crate::normalized;
 use crate::sphere::JkrSphere;
 use std::sync::atomic::{AtomicU64, Ordering};
-use tabor_dynamics::{BranchChange, BranchCurve, CurvePoint, ForceLaw};
+use tabor_dynamics::{BranchChange, BranchCurve, CurvePoint, ForceLaw, SeparationBarrier};
 use tabor_restitution::{validate, Result};
 
 /// The JKR sphere (seed 000 eqs. (5.33)-(5.34)) as a force law `F(d)` for the
@@ -124,6 +124,17 @@ impl ForceLaw for JkrForceLaw {
 
     fn curve(&self) -> Option<&dyn BranchCurve> {
         Some(self)
+    }
+
+    /// Seed 000 eqs. (5.33)-(5.35): `W(x) − W(x_sep)` of [`BranchCurve::work`]
+    /// (the stable branch is conservative), at the rule's separation depth.
+    fn separation_barrier(&self, overlap: f64) -> Result<Option<SeparationBarrier>> {
+        let x = self.root(overlap)?;
+        let work = |x: f64| BranchCurve::work(self, x).unwrap_or(f64::NAN);
+        Ok(Some(SeparationBarrier {
+            potential: work(x) - work(self.separation_root),
+            separation_overlap: self.separation_depth,
+        }))
     }
 }
 

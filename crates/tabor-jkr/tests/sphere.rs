@@ -496,3 +496,47 @@ fn branch_work_is_the_seed_integral() {
         }
     }
 }
+
+/// The separation barrier `U(d) − U(d_sep)` of the force law (what a damped
+/// consumer sticks by): 0 at the rule's separation depth; at first touch minus
+/// the impact's adhesive loss (seed 000 eq. (5.36), `JkrImpact::energy_loss`,
+/// another path); between two overlaps the seed's `∫ F dd` by quadrature.
+#[test]
+fn separation_barrier_is_the_potential_to_separation() {
+    use tabor_dynamics::ForceLaw;
+    let (e, r, dg, _) = silica();
+    let seed = Seed { e, r, dg };
+    let sphere = JkrSphere::new(e, r, dg).unwrap();
+    for rule in [SeparationRule::LoadControlled, SeparationRule::FixedGrip] {
+        let law = tabor_jkr::JkrForceLaw::new(sphere, rule);
+        let barrier = |d: f64| law.separation_barrier(d).unwrap().unwrap();
+        let d_sep = law.separation_depth();
+        let at_sep = barrier(d_sep);
+        assert_eq!(at_sep.separation_overlap, d_sep);
+        let loss = JkrImpact::new(sphere, 1e-15)
+            .unwrap()
+            .with_separation(rule)
+            .energy_loss(1.0)
+            .unwrap()
+            .joules;
+        assert!(
+            at_sep.potential.abs() <= 1e-12 * loss,
+            "{rule:?}: {at_sep:?}"
+        );
+        let touch = barrier(0.0).potential;
+        assert!(
+            (touch + loss).abs() <= 1e-12 * loss,
+            "{rule:?}: {touch:e} vs −{loss:e}"
+        );
+        let d_n = sphere.scales().depth;
+        let radius = |d: f64| law.contact_radius(d, 0.0).unwrap();
+        for (d0, d1) in [(0.0, 5.0 * d_n), (2.0 * d_n, -0.5 * d_n)] {
+            let closed = barrier(d1).potential - barrier(d0).potential;
+            let quadrature = seed.work(radius(d0), radius(d1));
+            assert!(
+                (closed - quadrature).abs() <= 1e-10 * loss.max(closed.abs()),
+                "{rule:?} d {d0:e} -> {d1:e}: {closed:e} vs {quadrature:e}"
+            );
+        }
+    }
+}

@@ -8,7 +8,8 @@
 //! the torque-arm convention (torques use `R − δ/2`; booked as `torque_arm`,
 //! either sign, of order δ/R of the tangential work) and 1e-8 of the energy.
 //! Each dissipative mechanism (normal and tangential damping, sliding,
-//! micro-slip) books a work ≥ −1e-9 of the energy. Every case must run: plasticity with adhesion is the one combination without
+//! micro-slip) books a work ≥ −1e-9 of the energy the contact moves (micro-slip
+//! less the spring bed's resolution too). Every case must run: plasticity with adhesion is the one combination without
 //! an oblique force law (a loss-level rule), refused by name; sticking is an
 //! answer, checked for finite values only. (Measured over 300 cases: 215
 //! rebounds within the bound, 72 sticking, 13 plastic-adhesive refusals.)
@@ -18,6 +19,7 @@
 mod common;
 
 use proptest::prelude::*;
+use tabor_numerics::tolerance::MICRO_SLIP_RESOLUTION;
 use tabor_scene::{Format, Scene};
 
 /// (density, Young's modulus, Poisson's ratio): silica, alumina, steel.
@@ -250,15 +252,27 @@ fn run(c: &Case) -> Result<Option<f64>, String> {
     }
     // what must dissipate does (the springs' remainder and the torque arm
     // excepted: a damped element's stick reset strains its spring, see
-    // `oblique_stick_reset`)
+    // `oblique_stick_reset`), to 1e-9 of the energy the contact moves (the
+    // kinetic energy before, or the attraction's work where it is larger: a slow
+    // Maugis-Dugdale impact reaches contact with 10⁴ times its kinetic energy,
+    // and its energies then leave the step control, `Setup::segment`). The
+    // micro-slip work, the work done on the spring bed less its store, also to
+    // the bed's resolution (`MICRO_SLIP_RESOLUTION` of the work done on it):
+    // the bed's state follows each step's chord, its work the stages along the
+    // motion (the path error of `tabor-tangential`'s README), which shows where
+    // a contact captured mid-way ends with the bed loaded and little slipped
+    // (8e-8 of the bed's work, 1e-9 of the energy moved, on a flat)
     let l = &o.losses;
-    for (name, w) in [
-        ("normal_damping", l.normal_damping),
-        ("sliding_friction", l.sliding_friction),
-        ("micro_slip", l.micro_slip),
-        ("tangential_damping", l.tangential_damping),
+    let moved = before.max(l.normal_adhesion.abs());
+    let bed_work = (l.micro_slip + l.tangential_spring).abs();
+    for (name, w, resolved) in [
+        ("normal_damping", l.normal_damping, 0.0),
+        ("sliding_friction", l.sliding_friction, 0.0),
+        ("micro_slip", l.micro_slip, MICRO_SLIP_RESOLUTION * bed_work),
+        ("tangential_damping", l.tangential_damping, 0.0),
     ] {
-        if w < -1e-9 * before {
+        let resolved = resolved + 1e-9 * moved;
+        if w < -resolved {
             return Err(format!("{name} = {w:e} J of {before:e} J: {l:?}\n{text}"));
         }
     }

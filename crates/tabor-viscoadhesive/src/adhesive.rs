@@ -7,7 +7,7 @@
 use crate::law::SeparationPotential;
 use std::cell::Cell;
 use std::sync::Arc;
-use tabor_dynamics::{BranchChange, BranchCurve, ForceLaw};
+use tabor_dynamics::{BranchChange, BranchCurve, ForceLaw, SeparationBarrier};
 use tabor_jkr::{JkrForceLaw, JkrSphere, SeparationRule};
 use tabor_maugis::MaugisDugdaleForceLaw;
 use tabor_numerics::root_finding::{brent, RootTolerance};
@@ -287,6 +287,24 @@ impl ForceLaw for AdhesiveForceLaw {
             Kind::MaugisDugdale(l, _) => l.contact_radius(overlap, overlap_rate),
         }
     }
+    /// JKR: `F_n d_n [P(â) − P(â_sep)]` (seed 000 eq. (5.35)) with the rule's
+    /// separation depth; Maugis-Dugdale: the tabulated `∫_{d_po}^{d} F dd'` with
+    /// the pull-off depth d_po; `None` before the Maugis-Dugdale jump-in.
+    fn separation_barrier(&self, overlap: f64) -> Result<Option<SeparationBarrier>> {
+        match &self.kind {
+            Kind::Jkr(j) => {
+                let x = j.root(overlap)?;
+                Ok(Some(SeparationBarrier {
+                    potential: (jkr_potential(x) - j.separation_potential) * j.energy_unit,
+                    separation_overlap: j.law.separation_depth(),
+                }))
+            }
+            Kind::MaugisDugdale(l, table) => Ok(l.in_contact().then(|| SeparationBarrier {
+                potential: table.eval(overlap),
+                separation_overlap: table.pull_off,
+            })),
+        }
+    }
     fn branch_end(&self, overlap: f64, overlap_rate: f64) -> Result<f64> {
         delegate!(self, l => l.branch_end(overlap, overlap_rate))
     }
@@ -315,20 +333,6 @@ impl ForceLaw for AdhesiveForceLaw {
 }
 
 impl SeparationPotential for AdhesiveForceLaw {
-    /// JKR: `F_n d_n [P(â) − P(â_sep)]` (seed 000 eq. (5.35)); Maugis-Dugdale: the
-    /// tabulated `∫_{d_po}^{d} F dd'`; `None` before the Maugis-Dugdale jump-in.
-    fn separation_potential(&self, overlap: f64) -> Result<Option<f64>> {
-        match &self.kind {
-            Kind::Jkr(j) => {
-                let x = j.root(overlap)?;
-                Ok(Some(
-                    (jkr_potential(x) - j.separation_potential) * j.energy_unit,
-                ))
-            }
-            Kind::MaugisDugdale(l, table) => Ok(l.in_contact().then(|| table.eval(overlap))),
-        }
-    }
-
     /// JKR: `F_n d_n [P(â_sep) − P(4^(1/3))]` (the zero-force radius);
     /// Maugis-Dugdale: `−min U` of the table.
     fn well_depth(&self) -> Option<f64> {
@@ -418,7 +422,7 @@ mod tests {
         let sphere = JkrSphere::new(E, R, DG).unwrap();
         for rule in [SeparationRule::FixedGrip, SeparationRule::LoadControlled] {
             let law = AdhesiveForceLaw::jkr(&sphere, rule);
-            let u = law.separation_potential(0.0).unwrap().unwrap();
+            let u = law.separation_barrier(0.0).unwrap().unwrap().potential;
             let loss = tabor_jkr::JkrImpact::new(sphere, 1e-15)
                 .unwrap()
                 .with_separation(rule)

@@ -7,27 +7,23 @@ use tabor_jkr::JkrForceLaw;
 use tabor_maugis::MaugisDugdaleForceLaw;
 use tabor_restitution::{validate, Error, Result};
 
-/// The potential of a conservative (elastic adhesive) force law on its current
-/// branch, relative to the point where it separates: what lets
-/// [`ViscousDamping`] recognise an impact that can no longer separate.
+/// What [`ViscousDamping`] needs of its inner law beyond [`ForceLaw`] to
+/// recognise an impact that can no longer separate: the depth of the adhesive
+/// well and the equilibrium of the contact branch (the trap test, README eq.
+/// (V5)). The potential relative to separation (README eq. (V4)) is
+/// [`ForceLaw::separation_barrier`].
 ///
-/// `U(d) − U(d_sep) = ∫_{d_sep}^{d} F(d') dd'` (J). On the branch that ends in
+/// `U(d) − U(d_sep) = ∫_{d_sep}^{d} F dd'` (J). On the branch that ends in
 /// separation the mechanical energy `½ m ḋ² + U(d) − U(d_sep)` is the kinetic
 /// energy the body would have left at the separation point; damping only lowers
 /// it (README eq. (V4)), so once it is ≤ 0 the body can never separate: it sticks.
 ///
-/// The default returns `None` (no potential known): the wrapper then never sticks
+/// Where the inner law does not know its barrier the wrapper never sticks
 /// early, and an overdamped body that creeps into the equilibrium runs into the
 /// simulator's time limit (an error). `tabor-jkr`'s [`JkrForceLaw`] and
-/// `tabor-maugis`' [`MaugisDugdaleForceLaw`] use this default; the model's own
-/// [`crate::AdhesiveForceLaw`] knows the potential.
+/// `tabor-maugis`' [`MaugisDugdaleForceLaw`] know neither; the model's own
+/// [`crate::AdhesiveForceLaw`] knows all three.
 pub trait SeparationPotential: ForceLaw {
-    /// `U(d) − U(d_sep)` (J) at overlap `overlap` (m) on the current branch, or
-    /// `None` when not known (or not on the branch that ends in separation).
-    fn separation_potential(&self, _overlap: f64) -> Result<Option<f64>> {
-        Ok(None)
-    }
-
     /// The depth of the adhesive well below the separation point,
     /// `U(d_sep) − min U ≥ 0` (J), or `None` when not known.
     fn well_depth(&self) -> Option<f64> {
@@ -47,8 +43,9 @@ const TRAP_SAMPLES: usize = 32;
 
 impl SeparationPotential for JkrForceLaw {}
 impl SeparationPotential for MaugisDugdaleForceLaw {}
-/// Any boxed law (Hertz, the elasto-plastic laws): no potential known, so the
-/// wrapper sticks only where the inner law does (README eq. (V4) unused).
+/// Any boxed law: the boxed law's barrier where it knows one (Hertz and the
+/// elasto-plastic laws do not, so the wrapper sticks only where the inner law
+/// does: README eq. (V4) unused); no well depth or equilibrium.
 impl SeparationPotential for Box<dyn ForceLaw> {}
 
 /// An impact that starts without the energy to separate (README eq. (V4)) can never
@@ -185,8 +182,8 @@ impl<L: SeparationPotential> ViscousDamping<L> {
         }
         Ok(self
             .inner
-            .separation_potential(overlap)?
-            .map(|u| 0.5 * self.mass * overlap_rate * overlap_rate + u))
+            .separation_barrier(overlap)?
+            .map(|b| 0.5 * self.mass * overlap_rate * overlap_rate + b.potential))
     }
 
     fn viscous_force_at(&self, contact_radius: f64, overlap_rate: f64) -> f64 {

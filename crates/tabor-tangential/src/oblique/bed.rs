@@ -183,6 +183,11 @@ impl MicroSlipBed {
         }
     }
 
+    /// Whether the planar bed holds the state (exact; else the node bed).
+    pub(super) fn is_planar(&self) -> bool {
+        self.planar.get()
+    }
+
     /// The elastic energy stored in the committed bed (J):
     /// `½ k' ∫ |w|² z^{−1/2} dz` (exact for the planar bed; the nodal values of
     /// `|w|²` interpolated as `w` for the node bed).

@@ -39,10 +39,13 @@ pub(super) const EVENT_ZERO: f64 = 1e-15;
 pub(super) const FRAME_STEPS: f64 = 16.0;
 
 /// The number of event functions of a segment (`Setup::event_values`).
-pub(super) const EVENTS: usize = 10;
+pub(super) const EVENTS: usize = 11;
 
 /// The index of the zero of a damped contact's normal force among them.
 pub(super) const NORMAL_FORCE_ZERO: usize = 9;
+
+/// The index of a damped contact's capture among them (`Setup::capture_value`).
+pub(super) const CAPTURE: usize = 10;
 
 /// The event values (relative, as [`IDENTIFIED_EVENT_VALUE`]) at which the normal force's zero is
 /// taken as the event that ended a segment, before an element whose limit

@@ -46,6 +46,24 @@
 //! Maugis-Dugdale's junction, where the Coulomb limit grows at an unbounded
 //! rate; another element's switch; a damped contact's normal force at 0).
 //!
+//! **Capture.** A damped contact whose law knows its potential relative to the
+//! separation point ([`ForceLaw::separation_barrier`](tabor_dynamics::ForceLaw::separation_barrier))
+//! sticks where the bodies can no longer separate: on a flat where
+//! `½ m ḋ² + U(d) − U(d_sep)` falls below 0 (rigorous: the normal motion is
+//! one-dimensional there), between two spheres where the kinetic energy beyond a
+//! rigid rotation with the pair's angular momentum at the separation distance,
+//! plus the energy stored in the friction springs, falls below `U(d_sep) − U(d)`
+//! (it neglects energy that LAMMPS's conventions may create later: the torque
+//! arms, a stiffness growing with the contact radius, a damped stick reset); a
+//! contact that starts without it sticks at once, as the central impact's energy
+//! criterion does. Without it an overdamped contact creeps into its equilibrium
+//! without a turning point, in steps of the inertial time, until the step limit.
+//! The pair's bound counts the rolling of the spheres over each other and a
+//! creeping tangential spring as convertible, so there the capture waits until
+//! the contact has crept deep enough into the well (η_n0 = 10¹⁹ with a soft
+//! `linear_history` spring and its dashpot: ~60 000 steps; 10²¹ at 10°: still
+//! the step limit).
+//!
 //! Chattering: stick/slip switches within 10⁻⁶ of the branch end freeze every
 //! element's mode for the rest of the impact (every force there is ~10⁻⁹ of its
 //! size); two switches of one element within 10⁻⁹ time units (a tangency of its
@@ -119,6 +137,9 @@ mod bed;
 #[cfg(test)]
 mod bed_tests;
 mod bodies;
+mod capture;
+#[cfg(test)]
+mod capture_tests;
 mod elements;
 mod energy;
 mod limits;

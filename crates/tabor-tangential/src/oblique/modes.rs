@@ -391,6 +391,7 @@ impl<'a> Setup<'a> {
         if modes.in_contact {
             g[1] = if modes.loading { rate } else { -rate } / self.v_n;
         }
+        g[CAPTURE] = self.capture_value(law, t, y, modes)?;
         if modes.warmup {
             g[8] = WARMUP - overlap / self.length;
             return Ok(g);

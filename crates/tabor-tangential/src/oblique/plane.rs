@@ -10,7 +10,7 @@
 //! and only its stick event (the limit) remains.
 
 use super::elements::{ratio, spring_rates, twist_coefficients};
-use super::limits::{EVENTS, NORMAL_FORCE_ZERO, RATE_CAP, WARMUP};
+use super::limits::{CAPTURE, EVENTS, NORMAL_FORCE_ZERO, RATE_CAP, WARMUP};
 use super::planar::{PM, P_E, P_EN, P_U, P_WI, P_WJ, P_XR, P_XT};
 use super::state::*;
 use crate::model::{Friction, TangentialModel};
@@ -373,6 +373,9 @@ impl<'a> Setup<'a> {
         g[0] = law.branch_end(overlap, rate)? / self.length;
         if modes.in_contact {
             g[1] = if modes.loading { rate } else { -rate } / self.v_n;
+        }
+        if self.imp.normal.damping != 0.0 {
+            g[CAPTURE] = self.capture_value(law, t, &Setup::full_of(z), modes)?;
         }
         if modes.warmup {
             g[8] = WARMUP - overlap / self.length;

@@ -308,6 +308,7 @@ impl<'a> Setup<'a> {
             Event::TwistingStick,
             Event::FrictionOnset,
             Event::NormalForceZero,
+            Event::Capture,
         ][which];
         Ok((event, t_hit, y_hit, sol.cost + run.event_cost))
     }

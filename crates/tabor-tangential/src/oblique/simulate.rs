@@ -29,6 +29,9 @@ pub(super) enum Event {
     /// The total normal force of a damped contact without adhesion crosses 0
     /// (the Coulomb limits `μ |F_n|` touch 0 and their rates jump).
     NormalForceZero,
+    /// A damped contact can no longer separate (its escape energy falls to 0,
+    /// `Setup::escape_energy`): the bodies stick.
+    Capture,
     /// A segment ended where no event value is at 0 (one jumped across it):
     /// an error, named by the driver.
     Unidentified,
@@ -314,6 +317,15 @@ impl ObliqueImpact {
             .as_ref()
             .is_some_and(|f| f.tangential.model == crate::model::TangentialModel::LinearHistory);
         let decision = loop {
+            // a damped contact without the energy to separate sticks: one that
+            // starts without it (the central impact's "doomed" one) at once,
+            // others at the event where it runs out (`Event::Capture`)
+            if setup
+                .escape_energy(law, t, &y, &modes)?
+                .is_some_and(|e| e <= 0.0)
+            {
+                break BranchChange::Stick;
+            }
             // a slipping linear_history spring's energy, left out of the sliding
             // work's quadrature ([`slip_power`](super::state::slip_power)),
             // enters at the segment's ends
@@ -344,6 +356,7 @@ impl ObliqueImpact {
                     | Event::Turn
                     | Event::FrictionOnset
                     | Event::NormalForceZero
+                    | Event::Capture
                     | Event::Unidentified
             ) {
                 // Stick/slip switches at a vanishing contact (the branch within
@@ -447,6 +460,7 @@ impl ObliqueImpact {
                 Event::NormalForceZero => {
                     modes.tensile = !modes.tensile;
                 }
+                Event::Capture => break BranchChange::Stick,
                 Event::TangentialLimit => {
                     let mut trial = modes;
                     trial.tangential = Mode::Slip;

@@ -1,0 +1,132 @@
+//! The capture of a damped contact (`super::capture`) against the impact
+//! without it: the same decision (stick or separate) at every speed of a
+//! bisection for the sticking velocity, the same rebound where they separate,
+//! an earlier end where they stick; and the overdamped contacts that without it
+//! ran into the step limit.
+#![allow(clippy::unwrap_used)]
+
+use super::capture::WITHOUT_CAPTURE;
+use super::{Body, NormalContact, ObliqueImpact, ObliqueOutcome};
+use crate::{EffectiveShear, Friction, Rolling, Tangential, TangentialModel, Twisting};
+use tabor_dynamics::SimulationSettings;
+use tabor_jkr::{JkrForceLaw, JkrSphere, SeparationRule};
+
+const E: f64 = 54e9;
+const NU: f64 = 0.17;
+const W: f64 = 0.05;
+const R: f64 = 1e-6;
+
+/// The friction of a case: `linear_history` with a dashpot (as the scene of
+/// the overdamped record, `tabor-scene`'s `damped_oblique.rs`) and `sds`
+/// rolling, or `mindlin` with `marshall` twisting.
+fn friction(linear: bool) -> Friction {
+    let shear = EffectiveShear::of_pair(E, NU, E, NU).unwrap();
+    if linear {
+        let t = Tangential::new(TangentialModel::LinearHistory, 2.0e3, 0.5, 0.3).unwrap();
+        Friction::sliding(t).with_rolling(Rolling::sds(50.0, 1e-9, 0.1).unwrap())
+    } else {
+        let t = Tangential::new(TangentialModel::Mindlin, 8.0 * shear.modulus(), 0.0, 0.3).unwrap();
+        Friction::sliding(t).with_twisting(Twisting::Marshall)
+    }
+}
+
+/// The silica sphere (1 µm, JKR load-controlled, w = 0.05 J/m²) on a flat or
+/// a pair, with the viscoelastic damping `c a ḋ` (N s/m² · m · m/s) at speed
+/// `v` and angle 10°, a spin about z; `capture`: watched (as simulated) or not.
+fn impact(flat: bool, linear: bool, c: f64, v: f64, capture: bool) -> ObliqueOutcome {
+    let sphere = Body::solid_sphere(R, 2650.0).unwrap();
+    let target = if flat { Body::flat() } else { sphere };
+    let reff = if flat { R } else { 0.5 * R };
+    let mut law = JkrForceLaw::new(
+        JkrSphere::new(E / (2.0 * (1.0 - NU * NU)), reff, W).unwrap(),
+        SeparationRule::LoadControlled,
+    );
+    let imp = ObliqueImpact {
+        sphere,
+        target,
+        normal: NormalContact {
+            pull_off_force: 1.5 * std::f64::consts::PI * W * reff,
+            damping: c,
+            damping_exponent: 1.0,
+        },
+        friction: Some(friction(linear)),
+        sphere_spin: [0.0, 0.0, 1e4],
+        target_spin: [0.0; 3],
+    };
+    WITHOUT_CAPTURE.with(|w| w.set(!capture));
+    let out = imp.simulate(
+        &mut law,
+        v,
+        10.0,
+        &SimulationSettings::with_tolerance(1e-10).unwrap(),
+    );
+    WITHOUT_CAPTURE.with(|w| w.set(false));
+    out.unwrap()
+}
+
+/// At every speed a bisection for the sticking velocity visits (in log space,
+/// 0.01 to 3 m/s), the impact with the capture sticks exactly where the one
+/// without it sticks; where they separate the rebound is the same (1e-9:
+/// the capture's event value only joins the others' minimum); the ledger closes
+/// (1e-8 of the kinetic energy). Where they stick either may end first: the
+/// impact without the capture ends where the bodies turn inward again (the
+/// law's `on_min_compression`), the capture where the escape energy runs out. Flat (rigorous) and pair, two friction models, a damping that makes
+/// the sticking velocity lie inside the range.
+#[test]
+fn capture_decides_as_the_impact_without_it() {
+    for flat in [true, false] {
+        for linear in [true, false] {
+            let c = 30.0;
+            let (mut lo, mut hi) = (0.01f64.ln(), 3.0f64.ln());
+            let (mut sticks_seen, mut separates_seen) = (0, 0);
+            for _ in 0..10 {
+                let v = (0.5 * (lo + hi)).exp();
+                let with = impact(flat, linear, c, v, true);
+                let without = impact(flat, linear, c, v, false);
+                let case = format!("flat {flat}, linear {linear}, v {v:.6}");
+                assert_eq!(with.sticks, without.sticks, "{case}");
+                assert!(with.energy_error < 1e-8, "{case}: {}", with.energy_error);
+                if with.sticks {
+                    sticks_seen += 1;
+                    lo = v.ln();
+                } else {
+                    separates_seen += 1;
+                    for ((name, a), (_, b)) in with.compared().into_iter().zip(without.compared()) {
+                        assert!((a - b).abs() <= 1e-9 * b.abs().max(1.0), "{case}: {name}");
+                    }
+                    hi = v.ln();
+                }
+            }
+            assert!(
+                sticks_seen > 0 && separates_seen > 0,
+                "flat {flat}, linear {linear}"
+            );
+        }
+    }
+}
+
+/// Strongly overdamped contacts (the viscoelastic η_n0 = 10¹⁹ 1/(m s) of the
+/// record in `tabor-scene`, `c = η_n0 m*`, about 100 times critical, and on a
+/// flat 200 times more) creep into the adhesive equilibrium without a turning
+/// point: without the capture they ran into DOP853's step limit (10⁶ steps);
+/// with it they stick, the ledger closed. On a flat, and on the pair with
+/// `mindlin`, within 15 steps of first touch; the pair with the soft
+/// `linear_history` spring and its dashpot only once the tangential spring
+/// has crept (relaxation time γ/k ≈ 1.4 µs, so ~60 000 steps of the inertial
+/// time): the escape energy counts its stored energy and the kinetic energy
+/// beyond a rigid rotation as convertible (`Setup::escape_energy`).
+#[test]
+fn overdamped_contacts_are_captured() {
+    let m_eff = 0.5 * 4.0 / 3.0 * std::f64::consts::PI * R * R * R * 2650.0;
+    for (flat, c) in [(false, 1e19 * m_eff), (true, 2e21 * m_eff)] {
+        for linear in [true, false] {
+            let o = impact(flat, linear, c, 0.3, true);
+            let case = format!("flat {flat}, linear {linear}");
+            assert!(o.sticks, "{case}");
+            assert!(o.energy_error < 1e-8, "{case}: {}", o.energy_error);
+            if flat || !linear {
+                assert!(o.cost.iterations <= 20, "{case}: {:?}", o.cost);
+            }
+        }
+    }
+}
