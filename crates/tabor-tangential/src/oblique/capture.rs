@@ -10,6 +10,7 @@
 //! criterion (`tabor-viscoadhesive`'s README eq. (V4)).
 
 use super::state::*;
+use nalgebra::Vector3;
 use tabor_dynamics::ForceLaw;
 use tabor_restitution::Result;
 
@@ -17,6 +18,10 @@ use tabor_restitution::Result;
 thread_local! {
     /// Tests: watch no capture (the impact as before it had one).
     pub(super) static WITHOUT_CAPTURE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    /// Tests: the angular momentum about the centre of mass at the start and
+    /// at the end of every segment (the driver records it).
+    pub(super) static MOMENTA: std::cell::RefCell<Vec<Vector3<f64>>> =
+        const { std::cell::RefCell::new(Vec::new()) };
 }
 
 impl<'a> Setup<'a> {
@@ -78,9 +83,7 @@ impl<'a> Setup<'a> {
         let i_i = self.imp.sphere.moment_of_inertia;
         let i_j = self.imp.target.moment_of_inertia;
         let rigid = if self.m_j.is_finite() && i_j.is_finite() {
-            let centres = self.d_touch + self.u0 * t + v3(y, E);
-            let momentum =
-                centres.cross(&v3(y, U)) * self.m_eff + v3(y, WI) * i_i + v3(y, WJ) * i_j;
+            let momentum = self.angular_momentum(t, y);
             let r_sep = self.r_sum - barrier.separation_overlap;
             let inertia = self.m_eff * r_sep * r_sep + i_i + i_j;
             0.5 * momentum.norm_squared() / inertia
@@ -89,6 +92,25 @@ impl<'a> Setup<'a> {
         };
         let stored = self.stored_spring_energy(law, overlap, rate, y)?;
         Ok(Some(self.kinetic(y) - rigid + stored + barrier.potential))
+    }
+
+    /// The angular momentum (kg m²/s) of two spheres about their centre of
+    /// mass at SI (t, y): `m* d × u + I_i ω_i + I_j ω_j` (d = x_i − x_j,
+    /// u = v_i − v_j); conserved by every contact force and torque
+    /// (`capture_tests`).
+    pub(super) fn angular_momentum(&self, t: f64, y: &[f64; N]) -> Vector3<f64> {
+        let centres = self.d_touch + self.u0 * t + v3(y, E);
+        centres.cross(&v3(y, U)) * self.m_eff
+            + v3(y, WI) * self.imp.sphere.moment_of_inertia
+            + v3(y, WJ) * self.imp.target.moment_of_inertia
+    }
+
+    /// Tests: records the angular momentum at SI (t, y) (a pair only).
+    #[cfg(test)]
+    pub(super) fn record_momentum(&self, t: f64, y: &[f64; N]) {
+        if !self.flat && self.m_j.is_finite() {
+            MOMENTA.with(|m| m.borrow_mut().push(self.angular_momentum(t, y)));
+        }
     }
 
     /// The elastic energy (J) stored in the friction springs at SI state `y`

@@ -308,6 +308,8 @@ impl ObliqueImpact {
             setup.reset_bed(law, t, &y)?;
             setup.decide_initial_modes(law, t, &mut y, &mut modes)?;
         }
+        #[cfg(test)]
+        setup.record_momentum(t, &y);
         let mut cost = Cost::ZERO;
         let mut events = 0usize;
         let mut slip_switches = 0usize;
@@ -338,6 +340,8 @@ impl ObliqueImpact {
             cost += spent;
             t = t_hit;
             y = y_hit;
+            #[cfg(test)]
+            setup.record_momentum(t, &y);
             if slipping {
                 y[EN + 2] -= setup.evaluate(law, t, &y, &modes)?.slip_energy - spring_before;
             }
