@@ -336,7 +336,20 @@ impl ObliqueImpact {
                 true => setup.evaluate(law, t, &y, &modes)?.slip_energy,
                 false => 0.0,
             };
-            let (event, t_hit, y_hit, spent) = setup.segment(law, t, &y, &modes, settings)?;
+            let (event, t_hit, y_hit, spent) = match setup.segment(law, t, &y, &modes, settings) {
+                Err(Error::Numerics(e)) if setup.escape_energy(law, t, &y, &modes)?.is_some() => {
+                    return Err(model_error(format!(
+                        "{}: at angle {alpha_deg} degrees the damped contact did not reach \
+                         a turning point, a separation or its capture ({e}): an overdamped \
+                         contact creeps into its equilibrium in steps of its inertial time; \
+                         between two spheres the capture waits until the kinetic energy \
+                         beyond a rigid rotation and the springs' store (a tangential spring \
+                         creeping through its dashpot) fall below the adhesive barrier",
+                        law.name()
+                    )))
+                }
+                other => other?,
+            };
             cost += spent;
             t = t_hit;
             y = y_hit;
