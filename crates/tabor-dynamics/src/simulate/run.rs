@@ -19,8 +19,10 @@ pub(super) struct Run<'s> {
     pub(super) y: [f64; 3],
     /// The integrator, created on the first segment and restarted at every event.
     pub(super) stepper: Option<DormandPrince853<3>>,
-    /// What the segments integrated on a [`BranchCurve`] cost.
-    pub(super) curve_cost: Cost,
+    /// What the integrations beside the time-domain stepper cost: the segments
+    /// on a [`BranchCurve`] and the steps taken again to a branch end
+    /// ([`Run::integrate_to_event`]).
+    pub(super) side_cost: Cost,
     pub(super) events: Vec<ContactEvent>,
     /// Normalized time of contact onset, once known.
     pub(super) onset: Option<f64>,
@@ -114,7 +116,7 @@ impl<'s> Run<'s> {
             s: 0.0,
             y: [start / units.length, 1.0, 0.0],
             stepper: None,
-            curve_cost: Cost::ZERO,
+            side_cost: Cost::ZERO,
             events: Vec::new(),
             onset: law.in_contact().then_some(0.0),
             seen: Seen {
@@ -231,7 +233,7 @@ impl<'s> Run<'s> {
         // kinetic_end/kinetic = ḋ̂², work/kinetic = 2 ŵ
         let energy_error = ((end_y[1] * end_y[1] - 1.0) - 2.0 * end_y[2]).abs();
         let onset_s = self.onset.unwrap_or(s);
-        let cost = self.stepper.map_or(Cost::ZERO, |st| st.cost()) + self.curve_cost;
+        let cost = self.stepper.map_or(Cost::ZERO, |st| st.cost()) + self.side_cost;
         ImpactSimulation {
             law: law.name(),
             impact_speed: v0,

@@ -7,7 +7,7 @@ use super::{EventKind, SimulationSettings};
 use crate::law::{BranchCurve, ForceLaw};
 use std::cell::Cell;
 use tabor_numerics::ode::{
-    drive_events, DormandPrince853, EventDirection, EventPoint, OdeTolerance,
+    drive_events, DenseStepper, DormandPrince853, EventDirection, EventPoint, OdeTolerance,
 };
 use tabor_restitution::{Error, Result};
 
@@ -91,11 +91,35 @@ impl<'s> Run<'s> {
             return Err(e);
         }
         let run = run.map_err(|e| failure.take().unwrap_or(Error::Numerics(e)))?;
-        let hit = EventPoint {
+        let mut hit = EventPoint {
             t: run.solution.t,
             y: run.solution.y,
         };
-        match event_kind(run.event, u_prev) {
+        let kind = event_kind(run.event, u_prev);
+        if kind == Some(EventKind::BranchEnd) {
+            // The step that holds a branch end took stages beyond it, where the
+            // law's force continues with a kink (an elastic law's 0 beyond
+            // d = 0): its dense output carries that kink's error to the event.
+            // The state there is taken again by stepping from the step's start
+            // to the event alone, every stage on the branch.
+            let start = st.step_start();
+            if hit.t > start {
+                let numerics = |e| failure.take().unwrap_or(Error::Numerics(e));
+                let tolerance = OdeTolerance {
+                    initial_step: Some(hit.t - start),
+                    ..settings.tolerance
+                };
+                let mut redo =
+                    DormandPrince853::new(&mut rhs, start, st.dense(start), hit.t, tolerance)
+                        .map_err(numerics)?;
+                while redo.t() < hit.t {
+                    redo.advance(&mut rhs, hit.t).map_err(numerics)?;
+                }
+                hit.y = redo.y();
+                self.side_cost += redo.cost();
+            }
+        }
+        match kind {
             Some(kind) => Ok((kind, hit, None)),
             None => Err(time_limit_error(law, settings, units)),
         }
@@ -195,7 +219,7 @@ impl<'s> Run<'s> {
             sigma_end,
             &mut observer,
         );
-        self.curve_cost += stepper.cost();
+        self.side_cost += stepper.cost();
         if let Some(e) = event_failure.take() {
             return Err(e);
         }
