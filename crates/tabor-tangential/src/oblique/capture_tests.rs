@@ -31,13 +31,18 @@ fn friction(linear: bool) -> Friction {
 }
 
 /// The silica sphere (1 µm, JKR load-controlled, w = 0.05 J/m²) on a flat or
-/// a pair, with the viscoelastic damping `c a ḋ` (N s/m² · m · m/s) at speed
-/// `v` and angle 10°, a spin about z; `capture`: watched (as simulated) or not.
-fn impact(flat: bool, linear: bool, c: f64, v: f64, capture: bool) -> ObliqueOutcome {
+/// a pair, with the viscoelastic damping `c a ḋ` (N s/m² · m · m/s), friction
+/// `friction` and the spins given, and its force law.
+fn silica(
+    flat: bool,
+    friction: Friction,
+    c: f64,
+    spins: ([f64; 3], [f64; 3]),
+) -> (ObliqueImpact, JkrForceLaw) {
     let sphere = Body::solid_sphere(R, 2650.0).unwrap();
     let target = if flat { Body::flat() } else { sphere };
     let reff = if flat { R } else { 0.5 * R };
-    let mut law = JkrForceLaw::new(
+    let law = JkrForceLaw::new(
         JkrSphere::new(E / (2.0 * (1.0 - NU * NU)), reff, W).unwrap(),
         SeparationRule::LoadControlled,
     );
@@ -49,10 +54,17 @@ fn impact(flat: bool, linear: bool, c: f64, v: f64, capture: bool) -> ObliqueOut
             damping: c,
             damping_exponent: 1.0,
         },
-        friction: Some(friction(linear)),
-        sphere_spin: [0.0, 0.0, 1e4],
-        target_spin: [0.0; 3],
+        friction: Some(friction),
+        sphere_spin: spins.0,
+        target_spin: spins.1,
     };
+    (imp, law)
+}
+
+/// [`silica`] with the friction of [`friction`] and a spin about z, at speed
+/// `v` and angle 10°; `capture`: watched (as simulated) or not.
+fn impact(flat: bool, linear: bool, c: f64, v: f64, capture: bool) -> ObliqueOutcome {
+    let (imp, mut law) = silica(flat, friction(linear), c, ([0.0, 0.0, 1e4], [0.0; 3]));
     WITHOUT_CAPTURE.with(|w| w.set(!capture));
     let out = imp.simulate(
         &mut law,
@@ -148,25 +160,10 @@ fn the_angular_momentum_of_a_pair_is_conserved() {
     let fr = Friction::sliding(t)
         .with_rolling(Rolling::sds(50.0, 1e-9, 0.1).unwrap())
         .with_twisting(Twisting::Marshall);
-    let sphere = Body::solid_sphere(R, 2650.0).unwrap();
-    let m_eff = 0.5 * sphere.mass;
+    let m_eff = 0.5 * Body::solid_sphere(R, 2650.0).unwrap().mass;
     for (c, angle) in [(0.0, 10.0), (0.0, 60.0), (30.0, 40.0)] {
-        let mut law = JkrForceLaw::new(
-            JkrSphere::new(E / (2.0 * (1.0 - NU * NU)), 0.5 * R, W).unwrap(),
-            SeparationRule::LoadControlled,
-        );
-        let imp = ObliqueImpact {
-            sphere,
-            target: sphere,
-            normal: NormalContact {
-                pull_off_force: 1.5 * std::f64::consts::PI * W * 0.5 * R,
-                damping: c,
-                damping_exponent: 1.0,
-            },
-            friction: Some(fr),
-            sphere_spin: [2e4, -1e4, 3e4],
-            target_spin: [-1e4, 5e3, 1e4],
-        };
+        let spins = ([2e4, -1e4, 3e4], [-1e4, 5e3, 1e4]);
+        let (imp, mut law) = silica(false, fr, c, spins);
         MOMENTA.with(|m| m.borrow_mut().clear());
         imp.simulate(
             &mut law,
