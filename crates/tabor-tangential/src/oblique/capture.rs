@@ -9,6 +9,7 @@
 //! reached" after ~14 s). It is the oblique form of the central impact's energy
 //! criterion (`tabor-viscoadhesive`'s README eq. (V4)).
 
+use super::limits::DOOMED_REST;
 use super::state::*;
 use nalgebra::Vector3;
 use tabor_dynamics::ForceLaw;
@@ -152,8 +153,14 @@ impl<'a> Setup<'a> {
         Ok(stored)
     }
 
-    /// The capture event value at SI (t, y): the escape energy in the
-    /// energies' unit `m* v²`, ∞ where it is not watched.
+    /// The capture event value at SI (t, y), in the energies' unit `m* v²`, ∞
+    /// where it is not watched: the escape energy; for a contact that started
+    /// without it ([`Modes::doomed`]) the normal kinetic energy above
+    /// [`DOOMED_REST`] of its value before the impact. Such a contact sticks
+    /// whatever it does; ended at once, its outcome would book none of the
+    /// energy it loses (an impact below the sticking velocity reported
+    /// `energy loss 0 J`), so it runs until its normal motion has come to rest,
+    /// just before its first turning point or in an overdamped creep.
     pub(super) fn capture_value(
         &self,
         law: &dyn ForceLaw,
@@ -161,8 +168,28 @@ impl<'a> Setup<'a> {
         y: &[f64; N],
         modes: &Modes,
     ) -> Result<f64> {
+        if modes.doomed {
+            let (_, _, rate, _) = self.geometry(t, y);
+            let rest = DOOMED_REST * self.v_n * self.v_n;
+            return Ok(0.5 * self.m_eff * (rate * rate - rest) / self.scale[EN]);
+        }
         Ok(self
             .escape_energy(law, t, y, modes)?
             .map_or(f64::INFINITY, |e| e / self.scale[EN]))
+    }
+
+    /// Marks a contact that forms at SI (t, y) without the energy to separate
+    /// ([`Modes::doomed`]).
+    pub(super) fn judge_onset(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &[f64; N],
+        modes: &mut Modes,
+    ) -> Result<()> {
+        modes.doomed = self
+            .escape_energy(law, t, y, modes)?
+            .is_some_and(|e| e <= 0.0);
+        Ok(())
     }
 }

@@ -47,6 +47,12 @@ pub(super) const NORMAL_FORCE_ZERO: usize = 9;
 /// The index of a damped contact's capture among them (`Setup::capture_value`).
 pub(super) const CAPTURE: usize = 10;
 
+/// The normal kinetic energy, in units of its value before the impact, below
+/// which a damped contact that started without the energy to separate has come
+/// to rest (`Setup::capture_value`): it ends there (ḋ = 10⁻³ v cos α), just
+/// before its first turning point, or in an overdamped creep.
+pub(super) const DOOMED_REST: f64 = 1e-6;
+
 /// The event values (relative, as [`IDENTIFIED_EVENT_VALUE`]) at which the normal force's zero is
 /// taken as the event that ended a segment, before an element whose limit
 /// touches 0 with it: the margin by which a segment starts above a zero

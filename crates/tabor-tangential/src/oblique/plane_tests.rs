@@ -166,9 +166,14 @@ fn planar_modes() -> Vec<Modes> {
         twisting: Mode::Stick,
         twist_sign: 1.0,
         tensile: false,
+        doomed: false,
     };
     all.push(Modes {
         in_contact: false,
+        ..base
+    });
+    all.push(Modes {
+        doomed: true,
         ..base
     });
     all.push(Modes {

@@ -301,12 +301,14 @@ impl ObliqueImpact {
             twisting: Mode::Stick,
             twist_sign: 1.0,
             tensile: false,
+            doomed: false,
         };
         let mut t = t0;
         let mut onset = modes.in_contact.then_some(t0);
         if modes.in_contact {
             setup.reset_bed(law, t, &y)?;
             setup.decide_initial_modes(law, t, &mut y, &mut modes)?;
+            setup.judge_onset(law, t, &y, &mut modes)?;
         }
         #[cfg(test)]
         setup.record_momentum(t, &y);
@@ -319,12 +321,14 @@ impl ObliqueImpact {
             .as_ref()
             .is_some_and(|f| f.tangential.model == crate::model::TangentialModel::LinearHistory);
         let decision = loop {
-            // a damped contact without the energy to separate sticks: one that
-            // starts without it (the central impact's "doomed" one) at once,
-            // others at the event where it runs out (`Event::Capture`)
-            if setup
-                .escape_energy(law, t, &y, &modes)?
-                .is_some_and(|e| e <= 0.0)
+            // a damped contact without the energy to separate sticks: at the
+            // event where it runs out (`Event::Capture`), or where a value that
+            // jumped below 0 starts a segment; one that formed without it
+            // (`Modes::doomed`) once its normal motion has come to rest
+            if !modes.doomed
+                && setup
+                    .escape_energy(law, t, &y, &modes)?
+                    .is_some_and(|e| e <= 0.0)
             {
                 break BranchChange::Stick;
             }
@@ -445,6 +449,7 @@ impl ObliqueImpact {
                             onset = Some(t);
                             setup.reset_bed(law, t, &y)?;
                             setup.decide_initial_modes(law, t, &mut y, &mut modes)?;
+                            setup.judge_onset(law, t, &y, &mut modes)?;
                         }
                         modes.in_contact = law.in_contact();
                         let g = law.branch_end(overlap, rate)?;

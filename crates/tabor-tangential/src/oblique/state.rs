@@ -69,6 +69,11 @@ pub(super) struct Modes {
     /// ([`Event::NormalForceZero`](super::simulate::Event)), where the limits'
     /// rates jump, so that every event value is smooth within a segment.
     pub(super) tensile: bool,
+    /// A damped contact that started without the energy to separate
+    /// (`Setup::escape_energy` ≤ 0 when it formed): it sticks, and its
+    /// capture waits for the normal motion to come to rest
+    /// (`Setup::capture_value`).
+    pub(super) doomed: bool,
 }
 
 /// Everything fixed during one impact.
