@@ -189,3 +189,32 @@ fn the_angular_momentum_of_a_pair_is_conserved() {
         }
     }
 }
+
+/// A damped contact that forms without the energy to separate (here at
+/// 0.01 m/s, far below the sticking velocity) sticks whatever it does, but runs
+/// until its normal motion has come to rest, so its ledger books what it lost:
+/// on a flat the normal kinetic energy (`½ m (v cos α)²`, all but 10⁻⁶ of it),
+/// the normal velocity left at 10⁻³ of `v cos α`. (Ended at once, as until
+/// it was judged at onset, it booked 0 J.)
+#[test]
+fn a_contact_formed_without_the_energy_to_separate_books_its_loss() {
+    for linear in [true, false] {
+        let o = impact(true, linear, 30.0, 0.01, true);
+        let v_n = 0.01 * 10f64.to_radians().cos();
+        let m = Body::solid_sphere(R, 2650.0).unwrap().mass;
+        let normal = 0.5 * m * v_n * v_n;
+        assert!(o.sticks, "linear {linear}");
+        assert!(o.contact_time > 0.0, "linear {linear}: {o:?}");
+        assert!(
+            o.energy_loss >= (1.0 - 1e-6) * normal,
+            "linear {linear}: {o:?}"
+        );
+        let u_n = o.after.sphere.velocity[0];
+        // where it ended the normal energy is 10⁻⁶ of its value: |u_n| = 10⁻³ v_n
+        assert!(
+            u_n.abs() <= 1e-3 * v_n * (1.0 + 1e-9),
+            "linear {linear}: {u_n:e}"
+        );
+        assert!(o.energy_error < 1e-8, "linear {linear}: {}", o.energy_error);
+    }
+}
