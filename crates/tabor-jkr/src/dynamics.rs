@@ -85,6 +85,14 @@ impl JkrForceLaw {
     pub fn separation_depth(&self) -> f64 {
         self.separation_depth
     }
+
+    /// Seed 000 eqs. (5.33)-(5.34): `∫ F̂ dd̂ = ∫ (x⁶ − 2x³)(12x³ − 4) dx
+    /// = 1.2x¹⁰ − 4x⁷ + 2x⁴` from x = 0, in units of force times depth (J).
+    fn branch_work(&self, x: f64) -> f64 {
+        let x3 = x * x * x;
+        let scales = self.sphere.scales();
+        (1.2 * x3 * x3 - 4.0 * x3 + 2.0) * x3 * x * scales.force * scales.depth
+    }
 }
 
 impl ForceLaw for JkrForceLaw {
@@ -130,9 +138,8 @@ impl ForceLaw for JkrForceLaw {
     /// (the stable branch is conservative), at the rule's separation depth.
     fn separation_barrier(&self, overlap: f64) -> Result<Option<SeparationBarrier>> {
         let x = self.root(overlap)?;
-        let work = |x: f64| BranchCurve::work(self, x).unwrap_or(f64::NAN);
         Ok(Some(SeparationBarrier {
-            potential: work(x) - work(self.separation_root),
+            potential: self.branch_work(x) - self.branch_work(self.separation_root),
             separation_overlap: self.separation_depth,
         }))
     }
@@ -187,9 +194,6 @@ impl BranchCurve for JkrForceLaw {
     /// Seed 000 eqs. (5.33)-(5.34): `∫ F̂ dd̂ = ∫ (x⁶ − 2x³)(12x³ − 4) dx
     /// = 1.2x¹⁰ − 4x⁷ + 2x⁴` from x = 0, in units of force times depth.
     fn work(&self, coordinate: f64) -> Option<f64> {
-        let x = coordinate;
-        let x3 = x * x * x;
-        let scales = self.sphere.scales();
-        Some((1.2 * x3 * x3 - 4.0 * x3 + 2.0) * x3 * x * scales.force * scales.depth)
+        Some(self.branch_work(coordinate))
     }
 }

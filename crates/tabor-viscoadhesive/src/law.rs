@@ -20,8 +20,9 @@ use tabor_restitution::{validate, Error, Result};
 ///
 /// Where the inner law does not know its barrier the wrapper never sticks
 /// early, and an overdamped body that creeps into the equilibrium runs into the
-/// simulator's time limit (an error). `tabor-jkr`'s [`JkrForceLaw`] and
-/// `tabor-maugis`' [`MaugisDugdaleForceLaw`] know neither; the model's own
+/// simulator's time limit (an error). `tabor-jkr`'s [`JkrForceLaw`] knows its
+/// barrier but neither the well depth nor the equilibrium, `tabor-maugis`'
+/// [`MaugisDugdaleForceLaw`] none of the three; the model's own
 /// [`crate::AdhesiveForceLaw`] knows all three.
 pub trait SeparationPotential: ForceLaw {
     /// The depth of the adhesive well below the separation point,

@@ -104,6 +104,9 @@ impl<'s> Run<'s> {
             // to the event alone, every stage on the branch.
             let start = st.step_start();
             if hit.t > start {
+                // an error of f at a trial point the run recovered from is not
+                // this step's
+                failure.take();
                 let numerics = |e| failure.take().unwrap_or(Error::Numerics(e));
                 let tolerance = OdeTolerance {
                     initial_step: Some(hit.t - start),

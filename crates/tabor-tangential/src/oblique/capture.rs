@@ -27,7 +27,8 @@ thread_local! {
 
 impl<'a> Setup<'a> {
     /// An upper bound (J) on the kinetic energy the bodies can have left where
-    /// their normal motion reaches the separation point d_sep, from SI (t, y):
+    /// their normal motion reaches the separation point d_sep (between two
+    /// spheres: beyond the rigid rotation they keep), from SI (t, y):
     /// `None` where it is not watched (out of contact, an undamped contact, a
     /// law that does not know its [`ForceLaw::separation_barrier`], the node
     /// bed of a micro-slip history off its line). Once it is below 0 they
@@ -154,13 +155,15 @@ impl<'a> Setup<'a> {
     }
 
     /// The capture event value at SI (t, y), in the energies' unit `m* v²`, ∞
-    /// where it is not watched: the escape energy; for a contact that started
-    /// without it ([`Modes::doomed`]) the normal kinetic energy above
-    /// [`DOOMED_REST`] of its value before the impact. Such a contact sticks
-    /// whatever it does; ended at once, its outcome would book none of the
-    /// energy it loses (an impact below the sticking velocity reported
-    /// `energy loss 0 J`), so it runs until its normal motion has come to rest,
-    /// just before its first turning point or in an overdamped creep.
+    /// where it is not watched: the escape energy; for a contact that can no
+    /// longer separate ([`Modes::doomed`]: it formed without the energy, or its
+    /// escape energy ran out) the normal kinetic energy above [`DOOMED_REST`]
+    /// of its value before the impact (∞ out of contact and on the node bed).
+    /// Such a contact sticks whatever it does; ended where that is decided, its
+    /// outcome would book only part of the energy it loses (an impact below the
+    /// sticking velocity, decided at its onset, reported `energy loss 0 J`), so
+    /// it runs until its normal motion has come to rest: just before a turning
+    /// point, or in an overdamped creep.
     pub(super) fn capture_value(
         &self,
         law: &dyn ForceLaw,
@@ -169,6 +172,9 @@ impl<'a> Setup<'a> {
         modes: &Modes,
     ) -> Result<f64> {
         if modes.doomed {
+            if !modes.in_contact || self.bed.as_ref().is_some_and(|b| !b.borrow().is_planar()) {
+                return Ok(f64::INFINITY);
+            }
             let (_, _, rate, _) = self.geometry(t, y);
             let rest = DOOMED_REST * self.v_n * self.v_n;
             return Ok(0.5 * self.m_eff * (rate * rate - rest) / self.scale[EN]);

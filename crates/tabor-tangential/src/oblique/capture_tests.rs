@@ -64,7 +64,20 @@ fn silica(
 /// [`silica`] with the friction of [`friction`] and a spin about z, at speed
 /// `v` and angle 10°; `capture`: watched (as simulated) or not.
 fn impact(flat: bool, linear: bool, c: f64, v: f64, capture: bool) -> ObliqueOutcome {
-    let (imp, mut law) = silica(flat, friction(linear), c, ([0.0, 0.0, 1e4], [0.0; 3]));
+    impact_spinning(flat, linear, c, v, capture, [0.0, 0.0, 1e4])
+}
+
+/// [`impact`] with the sphere's spin `spin` (out of the impact plane: the
+/// full, three-dimensional state).
+fn impact_spinning(
+    flat: bool,
+    linear: bool,
+    c: f64,
+    v: f64,
+    capture: bool,
+    spin: [f64; 3],
+) -> ObliqueOutcome {
+    let (imp, mut law) = silica(flat, friction(linear), c, (spin, [0.0; 3]));
     WITHOUT_CAPTURE.with(|w| w.set(!capture));
     let out = imp.simulate(
         &mut law,
@@ -78,42 +91,48 @@ fn impact(flat: bool, linear: bool, c: f64, v: f64, capture: bool) -> ObliqueOut
 
 /// At every speed a bisection for the sticking velocity visits (in log space,
 /// 0.01 to 3 m/s), the impact with the capture sticks exactly where the one
-/// without it sticks; where they separate the rebound is the same (1e-9:
-/// the capture's event value only joins the others' minimum); the ledger closes
+/// without it sticks; where they separate the rebound (e_n, e_t, rebound angle,
+/// contact time) is the same to 1e-9 relative (the capture's event value only
+/// joins the others' minimum); planar and, with a spin out of the plane, the
+/// full state; the ledger closes
 /// (1e-8 of the kinetic energy). Where they stick either may end first: the
 /// impact without the capture ends where the bodies turn inward again (the
 /// law's `on_min_compression`), the capture where the escape energy runs out. Flat (rigorous) and pair, two friction models, a damping that makes
 /// the sticking velocity lie inside the range.
 #[test]
 fn capture_decides_as_the_impact_without_it() {
-    for flat in [true, false] {
-        for linear in [true, false] {
-            let c = 30.0;
-            let (mut lo, mut hi) = (0.01f64.ln(), 3.0f64.ln());
-            let (mut sticks_seen, mut separates_seen) = (0, 0);
-            for _ in 0..10 {
-                let v = (0.5 * (lo + hi)).exp();
-                let with = impact(flat, linear, c, v, true);
-                let without = impact(flat, linear, c, v, false);
-                let case = format!("flat {flat}, linear {linear}, v {v:.6}");
-                assert_eq!(with.sticks, without.sticks, "{case}");
-                assert!(with.energy_error < 1e-8, "{case}: {}", with.energy_error);
-                if with.sticks {
-                    sticks_seen += 1;
-                    lo = v.ln();
-                } else {
-                    separates_seen += 1;
-                    for ((name, a), (_, b)) in with.compared().into_iter().zip(without.compared()) {
-                        assert!((a - b).abs() <= 1e-9 * b.abs().max(1.0), "{case}: {name}");
-                    }
-                    hi = v.ln();
+    for (flat, linear, spin) in [
+        (true, true, [0.0, 0.0, 1e4]),
+        (true, false, [0.0, 0.0, 1e4]),
+        (false, true, [0.0, 0.0, 1e4]),
+        (false, false, [0.0, 0.0, 1e4]),
+        (false, false, [1e4, -5e3, 1e4]),
+    ] {
+        let c = 30.0;
+        let (mut lo, mut hi) = (0.01f64.ln(), 3.0f64.ln());
+        let (mut sticks_seen, mut separates_seen) = (0, 0);
+        for _ in 0..10 {
+            let v = (0.5 * (lo + hi)).exp();
+            let with = impact_spinning(flat, linear, c, v, true, spin);
+            let without = impact_spinning(flat, linear, c, v, false, spin);
+            let case = format!("flat {flat}, linear {linear}, spin {spin:?}, v {v:.6}");
+            assert_eq!(with.sticks, without.sticks, "{case}");
+            assert!(with.energy_error < 1e-8, "{case}: {}", with.energy_error);
+            if with.sticks {
+                sticks_seen += 1;
+                lo = v.ln();
+            } else {
+                separates_seen += 1;
+                for ((name, a), (_, b)) in with.compared().into_iter().zip(without.compared()) {
+                    assert!((a - b).abs() <= 1e-9 * b.abs(), "{case}: {name} {a} vs {b}");
                 }
+                hi = v.ln();
             }
-            assert!(
-                sticks_seen > 0 && separates_seen > 0,
-                "flat {flat}, linear {linear}"
-            );
         }
+        assert!(
+            sticks_seen > 0 && separates_seen > 0,
+            "{flat} {linear} {spin:?}"
+        );
     }
 }
 
@@ -122,7 +141,8 @@ fn capture_decides_as_the_impact_without_it() {
 /// flat 200 times more) creep into the adhesive equilibrium without a turning
 /// point: without the capture they ran into DOP853's step limit (10⁶ steps);
 /// with it they stick, the ledger closed. On a flat, and on the pair with
-/// `mindlin`, within 15 steps of first touch; the pair with the soft
+/// `mindlin`, within 100 steps of first touch (the capture, then the normal
+/// motion's rest: 15 and 46 steps); the pair with the soft
 /// `linear_history` spring and its dashpot only once the tangential spring
 /// has crept (relaxation time γ/k ≈ 1.4 µs, so ~60 000 steps of the inertial
 /// time): the escape energy counts its stored energy and the kinetic energy
@@ -137,7 +157,7 @@ fn overdamped_contacts_are_captured() {
             assert!(o.sticks, "{case}");
             assert!(o.energy_error < 1e-8, "{case}: {}", o.energy_error);
             if flat || !linear {
-                assert!(o.cost.iterations <= 20, "{case}: {:?}", o.cost);
+                assert!(o.cost.iterations <= 100, "{case}: {:?}", o.cost);
             }
         }
     }

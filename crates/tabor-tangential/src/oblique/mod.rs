@@ -54,10 +54,10 @@
 //! rigid rotation with the pair's angular momentum at the separation distance,
 //! plus the energy stored in the friction springs, falls below `U(d_sep) − U(d)`
 //! (it neglects energy that LAMMPS's conventions may create later: the torque
-//! arms, a stiffness growing with the contact radius, a damped stick reset); a
-//! contact that forms without it sticks whatever it does and ends once its
-//! normal motion has come to rest (normal kinetic energy below 10⁻⁶ of its value
-//! before the impact), so that its ledger books what it lost. Without it an overdamped contact creeps into its equilibrium
+//! arms, a stiffness growing with the contact radius, a damped stick reset).
+//! Once without it (formed so, or since) the contact sticks whatever it does and
+//! ends when its normal motion has come to rest (normal kinetic energy below
+//! 10⁻⁶ of its value before the impact), so that its ledger books what it lost. Without it an overdamped contact creeps into its equilibrium
 //! without a turning point, in steps of the inertial time, until the step limit.
 //! The pair's bound counts the rolling of the spheres over each other and a
 //! creeping tangential spring as convertible, so there the capture waits until

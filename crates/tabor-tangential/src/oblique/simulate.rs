@@ -11,7 +11,7 @@ use crate::model::Twisting;
 use nalgebra::Vector3;
 use std::cell::Cell;
 use tabor_dynamics::{BranchChange, ForceLaw, SimulationSettings};
-use tabor_numerics::Cost;
+use tabor_numerics::{Cost, NumericsError};
 use tabor_restitution::{validate, Error, Result};
 
 /// Which event ended a segment.
@@ -321,15 +321,19 @@ impl ObliqueImpact {
             .as_ref()
             .is_some_and(|f| f.tangential.model == crate::model::TangentialModel::LinearHistory);
         let decision = loop {
-            // a damped contact without the energy to separate sticks: at the
-            // event where it runs out (`Event::Capture`), or where a value that
-            // jumped below 0 starts a segment; one that formed without it
-            // (`Modes::doomed`) once its normal motion has come to rest
+            // a damped contact without the energy to separate (`Modes::doomed`:
+            // it formed without it, its escape energy ran out at the event
+            // `Capture`, or a value that jumped below 0 starts a segment) sticks
+            // once its normal motion has come to rest (`Capture` again)
+            modes.doomed &= modes.in_contact;
             if !modes.doomed
                 && setup
                     .escape_energy(law, t, &y, &modes)?
                     .is_some_and(|e| e <= 0.0)
             {
+                modes.doomed = true;
+            }
+            if modes.doomed && setup.capture_value(law, t, &y, &modes)? <= 0.0 {
                 break BranchChange::Stick;
             }
             // a slipping linear_history spring's energy, left out of the sliding
@@ -340,8 +344,16 @@ impl ObliqueImpact {
                 true => setup.evaluate(law, t, &y, &modes)?.slip_energy,
                 false => 0.0,
             };
+            let watched = |modes: &Modes| {
+                modes.doomed
+                    || setup
+                        .escape_energy(law, t, &y, modes)
+                        .is_ok_and(|e| e.is_some())
+            };
             let (event, t_hit, y_hit, spent) = match setup.segment(law, t, &y, &modes, settings) {
-                Err(Error::Numerics(e)) if setup.escape_energy(law, t, &y, &modes)?.is_some() => {
+                Err(Error::Numerics(e @ NumericsError::NoConvergence { .. }))
+                    if watched(&modes) =>
+                {
                     return Err(model_error(format!(
                         "{}: at angle {alpha_deg} degrees the damped contact did not reach \
                          a turning point, a separation or its capture ({e}): an overdamped \
@@ -482,6 +494,9 @@ impl ObliqueImpact {
                 Event::NormalForceZero => {
                     modes.tensile = !modes.tensile;
                 }
+                // the escape energy ran out: the contact sticks, once its normal
+                // motion has come to rest (the same event, now on that value)
+                Event::Capture if !modes.doomed => modes.doomed = true,
                 Event::Capture => break BranchChange::Stick,
                 Event::TangentialLimit => {
                     let mut trial = modes;

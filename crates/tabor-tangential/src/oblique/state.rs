@@ -69,9 +69,9 @@ pub(super) struct Modes {
     /// ([`Event::NormalForceZero`](super::simulate::Event)), where the limits'
     /// rates jump, so that every event value is smooth within a segment.
     pub(super) tensile: bool,
-    /// A damped contact that started without the energy to separate
-    /// (`Setup::escape_energy` ≤ 0 when it formed): it sticks, and its
-    /// capture waits for the normal motion to come to rest
+    /// A damped contact without the energy to separate
+    /// (`Setup::escape_energy` ≤ 0 when it formed, or since): it sticks, and
+    /// its capture waits for the normal motion to come to rest
     /// (`Setup::capture_value`).
     pub(super) doomed: bool,
 }
@@ -227,8 +227,11 @@ impl<'a> Setup<'a> {
         let wi = v3(y, WI);
         let mut k = 0.5 * self.m_eff * u.norm_squared()
             + 0.5 * self.imp.sphere.moment_of_inertia * wi.norm_squared();
-        if !self.flat {
-            k += 0.5 * self.imp.target.moment_of_inertia * v3(y, WJ).norm_squared();
+        // an immovable target (infinite moment of inertia) keeps its spin: no
+        // part of the energy that moves (∞ · 0 would be NaN)
+        let i_j = self.imp.target.moment_of_inertia;
+        if !self.flat && i_j.is_finite() {
+            k += 0.5 * i_j * v3(y, WJ).norm_squared();
         }
         k
     }
