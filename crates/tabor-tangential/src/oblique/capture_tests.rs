@@ -6,62 +6,27 @@
 #![allow(clippy::unwrap_used)]
 
 use super::capture::WITHOUT_CAPTURE;
-use super::{Body, NormalContact, ObliqueImpact, ObliqueOutcome};
-use crate::{EffectiveShear, Friction, Rolling, Tangential, TangentialModel, Twisting};
+use super::silica_tests::{shear_modulus, silica, R};
+use super::{Body, ObliqueOutcome};
+use crate::{Friction, Rolling, Tangential, TangentialModel, Twisting};
 use tabor_dynamics::SimulationSettings;
-use tabor_jkr::{JkrForceLaw, JkrSphere, SeparationRule};
-
-const E: f64 = 54e9;
-const NU: f64 = 0.17;
-const W: f64 = 0.05;
-const R: f64 = 1e-6;
+use tabor_jkr::SeparationRule;
 
 /// The friction of a case: `linear_history` with a dashpot (as the scene of
 /// the overdamped record, `tabor-scene`'s `damped_oblique.rs`) and `sds`
 /// rolling, or `mindlin` with `marshall` twisting.
 fn friction(linear: bool) -> Friction {
-    let shear = EffectiveShear::of_pair(E, NU, E, NU).unwrap();
     if linear {
         let t = Tangential::new(TangentialModel::LinearHistory, 2.0e3, 0.5, 0.3).unwrap();
         Friction::sliding(t).with_rolling(Rolling::sds(50.0, 1e-9, 0.1).unwrap())
     } else {
-        let t = Tangential::new(TangentialModel::Mindlin, 8.0 * shear.modulus(), 0.0, 0.3).unwrap();
+        let t = Tangential::new(TangentialModel::Mindlin, 8.0 * shear_modulus(), 0.0, 0.3).unwrap();
         Friction::sliding(t).with_twisting(Twisting::Marshall)
     }
 }
 
-/// The silica sphere (1 µm, JKR load-controlled, w = 0.05 J/m²) on a flat or
-/// a pair, with the viscoelastic damping `c a ḋ` (N s/m² · m · m/s), friction
-/// `friction` and the spins given, and its force law.
-fn silica(
-    flat: bool,
-    friction: Friction,
-    c: f64,
-    spins: ([f64; 3], [f64; 3]),
-) -> (ObliqueImpact, JkrForceLaw) {
-    let sphere = Body::solid_sphere(R, 2650.0).unwrap();
-    let target = if flat { Body::flat() } else { sphere };
-    let reff = if flat { R } else { 0.5 * R };
-    let law = JkrForceLaw::new(
-        JkrSphere::new(E / (2.0 * (1.0 - NU * NU)), reff, W).unwrap(),
-        SeparationRule::LoadControlled,
-    );
-    let imp = ObliqueImpact {
-        sphere,
-        target,
-        normal: NormalContact {
-            pull_off_force: 1.5 * std::f64::consts::PI * W * reff,
-            damping: c,
-            damping_exponent: 1.0,
-        },
-        friction: Some(friction),
-        sphere_spin: spins.0,
-        target_spin: spins.1,
-    };
-    (imp, law)
-}
-
-/// [`silica`] with the friction of [`friction`] and a spin about z, at speed
+/// [`silica`] (JKR load-controlled, viscoelastic damping `c a ḋ`) with the
+/// friction of [`friction`] and a spin about z, at speed
 /// `v` and angle 10°; `capture`: watched (as simulated) or not.
 fn impact(flat: bool, linear: bool, c: f64, v: f64, capture: bool) -> ObliqueOutcome {
     impact_spinning(flat, linear, c, v, capture, [0.0, 0.0, 1e4])
@@ -77,7 +42,8 @@ fn impact_spinning(
     capture: bool,
     spin: [f64; 3],
 ) -> ObliqueOutcome {
-    let (imp, mut law) = silica(flat, friction(linear), c, (spin, [0.0; 3]));
+    let load = SeparationRule::LoadControlled;
+    let (imp, mut law) = silica(flat, load, (c, 1.0), friction(linear), (spin, [0.0; 3]));
     WITHOUT_CAPTURE.with(|w| w.set(!capture));
     let out = imp.simulate(
         &mut law,
@@ -175,15 +141,15 @@ fn overdamped_contacts_are_captured() {
 #[test]
 fn the_angular_momentum_of_a_pair_is_conserved() {
     use super::capture::MOMENTA;
-    let shear = EffectiveShear::of_pair(E, NU, E, NU).unwrap();
-    let t = Tangential::new(TangentialModel::Mindlin, 8.0 * shear.modulus(), 0.5, 0.3).unwrap();
+    let t = Tangential::new(TangentialModel::Mindlin, 8.0 * shear_modulus(), 0.5, 0.3).unwrap();
     let fr = Friction::sliding(t)
         .with_rolling(Rolling::sds(50.0, 1e-9, 0.1).unwrap())
         .with_twisting(Twisting::Marshall);
     let m_eff = 0.5 * Body::solid_sphere(R, 2650.0).unwrap().mass;
     for (c, angle) in [(0.0, 10.0), (0.0, 60.0), (30.0, 40.0)] {
         let spins = ([2e4, -1e4, 3e4], [-1e4, 5e3, 1e4]);
-        let (imp, mut law) = silica(false, fr, c, spins);
+        let load = SeparationRule::LoadControlled;
+        let (imp, mut law) = silica(false, load, (c, 1.0), fr, spins);
         MOMENTA.with(|m| m.borrow_mut().clear());
         imp.simulate(
             &mut law,

@@ -157,6 +157,8 @@ mod polar;
 #[cfg(test)]
 mod polar_tests;
 mod segment;
+#[cfg(test)]
+mod silica_tests;
 mod simulate;
 mod state;
 

@@ -372,11 +372,12 @@ pub(super) fn with_state<const M: usize>(
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used)]
-    use crate::oblique::{Body, NormalContact, ObliqueImpact, ObliqueOutcome};
-    use crate::{EffectiveShear, Friction, Rolling, Tangential, TangentialModel, Twisting};
+    use crate::oblique::silica_tests::{shear_modulus, silica};
+    use crate::oblique::ObliqueOutcome;
+    use crate::{Friction, Rolling, Tangential, TangentialModel, Twisting};
     use std::cell::Cell;
     use tabor_dynamics::SimulationSettings;
-    use tabor_jkr::{JkrForceLaw, JkrSphere, SeparationRule};
+    use tabor_jkr::SeparationRule;
 
     thread_local! {
         /// Integrate every segment on the full state (the reference).
@@ -398,31 +399,13 @@ mod tests {
         full: bool,
         accuracy: f64,
     ) -> ObliqueOutcome {
-        let (e, nu, w, r) = (54e9, 0.17, 0.05, 1e-6);
-        let sphere = Body::solid_sphere(r, 2650.0).unwrap();
-        let target = if flat { Body::flat() } else { sphere };
-        let reff = if flat { r } else { 0.5 * r };
-        let shear = EffectiveShear::of_pair(e, nu, e, nu).unwrap();
         let friction =
-            Friction::sliding(Tangential::new(model, 8.0 * shear.modulus(), 0.0, 0.3).unwrap())
+            Friction::sliding(Tangential::new(model, 8.0 * shear_modulus(), 0.0, 0.3).unwrap())
                 .with_rolling(Rolling::sds(50.0, 0.0, 0.1).unwrap())
                 .with_twisting(Twisting::Marshall);
-        let mut law = JkrForceLaw::new(
-            JkrSphere::new(e / (2.0 * (1.0 - nu * nu)), reff, w).unwrap(),
-            SeparationRule::LoadControlled,
-        );
-        let imp = ObliqueImpact {
-            sphere,
-            target,
-            normal: NormalContact {
-                pull_off_force: 1.5 * std::f64::consts::PI * w * reff,
-                damping: 0.0,
-                damping_exponent: 1.0,
-            },
-            friction: Some(friction),
-            sphere_spin: [0.0, 0.0, 3e4],
-            target_spin: [0.0, 0.0, if flat { 0.0 } else { -1e4 }],
-        };
+        let spins = ([0.0, 0.0, 3e4], [0.0, 0.0, if flat { 0.0 } else { -1e4 }]);
+        let load = SeparationRule::LoadControlled;
+        let (imp, mut law) = silica(flat, load, (0.0, 1.0), friction, spins);
         FULL.with(|f| f.set(full));
         let out = imp
             .simulate(

@@ -3,10 +3,11 @@
 #![allow(clippy::unwrap_used)]
 
 use super::polar::{CARTESIAN, POLAR_SEGMENTS};
-use super::{Body, NormalContact, ObliqueImpact, ObliqueOutcome};
-use crate::{EffectiveShear, Friction, Rolling, Tangential, TangentialModel, Twisting};
+use super::silica_tests::{shear_modulus, silica};
+use super::ObliqueOutcome;
+use crate::{Friction, Rolling, Tangential, TangentialModel, Twisting};
 use tabor_dynamics::SimulationSettings;
-use tabor_jkr::{JkrForceLaw, JkrSphere, SeparationRule};
+use tabor_jkr::SeparationRule;
 
 /// A variant of the silica pair of `examples/scenes/silica_oblique.toml`.
 #[derive(Clone, Copy, Debug)]
@@ -18,11 +19,6 @@ struct Case {
     damping: (f64, f64, f64),
     rule: SeparationRule,
 }
-
-const E: f64 = 54e9;
-const NU: f64 = 0.17;
-const W: f64 = 0.05;
-const R: f64 = 1e-6;
 
 /// The impact of `case` at 0.3 m/s and `angle`, on a flat or a pair, with
 /// spins about z (3e4 and −1e4 rad/s); `cartesian`: every planar segment on the
@@ -39,35 +35,18 @@ fn impact_at(
     cartesian: bool,
     accuracy: f64,
 ) -> (ObliqueOutcome, usize) {
-    let sphere = Body::solid_sphere(R, 2650.0).unwrap();
-    let target = if flat { Body::flat() } else { sphere };
-    let reff = if flat { R } else { 0.5 * R };
-    let shear = EffectiveShear::of_pair(E, NU, E, NU).unwrap();
     let stiffness = match case.model {
-        TangentialModel::LinearHistory => 8.0 * shear.modulus() * 1e-7,
-        _ => 8.0 * shear.modulus(),
+        TangentialModel::LinearHistory => 8.0 * shear_modulus() * 1e-7,
+        _ => 8.0 * shear_modulus(),
     };
     let tangential = Tangential::new(case.model, stiffness, case.damping.2, 0.3).unwrap();
     let mut friction = Friction::sliding(tangential).with_twisting(Twisting::Marshall);
     if let Some((k, g)) = case.rolling {
         friction = friction.with_rolling(Rolling::sds(k, g, 0.1).unwrap());
     }
-    let mut law = JkrForceLaw::new(
-        JkrSphere::new(E / (2.0 * (1.0 - NU * NU)), reff, W).unwrap(),
-        case.rule,
-    );
-    let imp = ObliqueImpact {
-        sphere,
-        target,
-        normal: NormalContact {
-            pull_off_force: 1.5 * std::f64::consts::PI * W * reff,
-            damping: case.damping.0,
-            damping_exponent: case.damping.1,
-        },
-        friction: Some(friction),
-        sphere_spin: [0.0, 0.0, 3e4],
-        target_spin: [0.0, 0.0, if flat { 0.0 } else { -1e4 }],
-    };
+    let spins = ([0.0, 0.0, 3e4], [0.0, 0.0, if flat { 0.0 } else { -1e4 }]);
+    let damping = (case.damping.0, case.damping.1);
+    let (imp, mut law) = silica(flat, case.rule, damping, friction, spins);
     CARTESIAN.with(|c| c.set(cartesian));
     POLAR_SEGMENTS.with(|c| c.set(0));
     let out = imp.simulate(

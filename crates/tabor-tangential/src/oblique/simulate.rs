@@ -308,7 +308,6 @@ impl ObliqueImpact {
         if modes.in_contact {
             setup.reset_bed(law, t, &y)?;
             setup.decide_initial_modes(law, t, &mut y, &mut modes)?;
-            setup.judge_onset(law, t, &y, &mut modes)?;
         }
         #[cfg(test)]
         setup.record_momentum(t, &y);
@@ -322,9 +321,10 @@ impl ObliqueImpact {
             .is_some_and(|f| f.tangential.model == crate::model::TangentialModel::LinearHistory);
         let decision = loop {
             // a damped contact without the energy to separate (`Modes::doomed`:
-            // it formed without it, its escape energy ran out at the event
-            // `Capture`, or a value that jumped below 0 starts a segment) sticks
-            // once its normal motion has come to rest (`Capture` again)
+            // it formed without it, judged here after its onset; its escape
+            // energy ran out at the event `Capture`; or a value that jumped
+            // below 0 starts a segment) sticks once its normal motion has come
+            // to rest (`Capture` again)
             modes.doomed &= modes.in_contact;
             if !modes.doomed
                 && setup
@@ -461,7 +461,6 @@ impl ObliqueImpact {
                             onset = Some(t);
                             setup.reset_bed(law, t, &y)?;
                             setup.decide_initial_modes(law, t, &mut y, &mut modes)?;
-                            setup.judge_onset(law, t, &y, &mut modes)?;
                         }
                         modes.in_contact = law.in_contact();
                         let g = law.branch_end(overlap, rate)?;
