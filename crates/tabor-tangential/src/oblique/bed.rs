@@ -166,6 +166,19 @@ impl MicroSlipBed {
         }
     }
 
+    /// Whether committing the state at (n, s, a, limit) would depend on the
+    /// path of the step, not only on its ends ([`LineBed::path_dependent`]; the
+    /// planar bed only, `false` for the node bed).
+    pub(super) fn path_dependent(
+        &self,
+        n: &Vector3<f64>,
+        s: &Vector3<f64>,
+        a: f64,
+        limit: f64,
+    ) -> bool {
+        matches!(self.planar_probe(n, s, a, limit), Ok(Some((line, p))) if line.path_dependent(&p))
+    }
+
     /// Commits the state at (n, s, a, limit): the return map becomes the bed's
     /// state; springs out of contact are unstrained.
     pub(super) fn commit(&mut self, n: &Vector3<f64>, s: &Vector3<f64>, a: f64, limit: f64) {

@@ -505,6 +505,52 @@ impl LineBed {
         }
     }
 
+    /// Whether the return map to the probe depends on the path of the step, not
+    /// only on its ends: where springs stop slipping or enter the contact stuck
+    /// within it. A spring that is within its limit at both ends of the step was
+    /// stuck along it (the straight path's trial and limit are linear in its
+    /// parameter), and one that ends on its cap sits there whatever the path;
+    /// but one that was on its cap at the start (or entered during the step) and
+    /// ends within it froze at a moment and a value the path decides, which the
+    /// straight path of the return map puts wrong by the path's deviation from
+    /// it (second order in the step). The entering springs' trial
+    /// `Δs (a² − z)/(a² − a₀²)` and limit `φ(a² − z)` are in a fixed ratio: all
+    /// within it, or all on it.
+    pub(super) fn path_dependent(&self, p: &LineProbe) -> bool {
+        let edge = self.z[self.z.len() - 1];
+        if p.a2 > edge && p.d.abs() < p.phi * (p.a2 - edge) {
+            return true;
+        }
+        // a committed piece on its cap (both ends, one side; the edge, where the
+        // cap is 0, on either) that leaves it
+        let on_cap = |k: usize| {
+            let cap = self.phi0 * (self.a0_sq - self.z[k]);
+            let v = self.value(k);
+            match cap > 0.0 {
+                true => (v.abs() >= cap * (1.0 - 1e-12)).then_some(v.signum()),
+                false => Some(0.0),
+            }
+        };
+        let mut side = on_cap(0);
+        for k in 1..self.z.len() {
+            let here = on_cap(k);
+            if let (Some(b0), Some(b1)) = (side, here) {
+                let a = if b0 != 0.0 { b0 } else { b1 };
+                if a != 0.0 && (b0 == b1 || b0 == 0.0 || b1 == 0.0) && self.z[k - 1] < p.a2 {
+                    let leaves = |j: usize| {
+                        let z = self.z[j].min(p.a2);
+                        a * (self.value(j) + p.d) < p.phi * (p.a2 - z)
+                    };
+                    if leaves(k - 1) || leaves(k) {
+                        return true;
+                    }
+                }
+            }
+            side = here;
+        }
+        false
+    }
+
     /// The direction of the force at the probe.
     pub(super) fn direction(p: &LineProbe) -> Vector3<f64> {
         p.e

@@ -13,8 +13,8 @@ use super::state::*;
 use std::cell::Cell;
 use tabor_dynamics::ForceLaw;
 use tabor_numerics::ode::{
-    drive_events, DormandPrince, DormandPrince853, EventDirection, EventsIntegration, OdeSolution,
-    OdeTolerance,
+    drive, drive_events, DenseStepper, DormandPrince, DormandPrince853, EventDirection,
+    EventsIntegration, OdeSolution, OdeTolerance,
 };
 use tabor_restitution::Error;
 
@@ -306,12 +306,20 @@ impl Run<'_, '_> {
         let setup = self.setup;
         let units = std::array::from_fn(|j| self.rate_unit[slots[j]]);
         let mut f = |s: f64, x: &[f64; M]| self.rates((&slots, &units), s, x);
-        let mut g = |s: f64, x: &[f64; M]| self.event(s, x);
+        let mut g = |s: f64, x: &[f64; M]| self.event(s, x)[0];
         let in_contact = self.modes.in_contact;
-        let mut commit = |stop: f64, x: &[f64; M]| {
+        // the bed committed along the step's continuous solution (its end the
+        // stepper's own state), at the event on the step that holds it
+        let mut commit = |st: &DormandPrince<M>, stop: f64| {
             if in_contact {
-                let y = Setup::full_of(&self.si(x));
-                if let Err(e) = setup.commit_bed(self.law, stop * setup.time, &y) {
+                let (t_end, x_end) = st.current();
+                let state = |t: f64| {
+                    let s = t / setup.time;
+                    let x = if s == t_end { x_end } else { st.dense(s) };
+                    Setup::full_of(&self.si(&x))
+                };
+                let step = (st.step_start() * setup.time, stop * setup.time);
+                if let Err(e) = setup.commit_bed_along(self.law, step, &state) {
                     keep_first(self.failure, e);
                 }
             }
@@ -328,8 +336,13 @@ impl Run<'_, '_> {
         };
         let x0 = std::array::from_fn(|j| yn[PLANAR[slots[j]]]);
         let mut stepper = DormandPrince::new(&mut f, s0, x0, s_end, tolerance)?;
-        let falling = [EventDirection::Falling];
-        let run = drive_events(&mut stepper, &mut f, &mut g, falling, s_end, &mut commit)?;
+        let falling = EventDirection::Falling;
+        let run = drive(&mut stepper, &mut f, &mut g, falling, s_end, &mut commit)?;
+        let run = EventsIntegration {
+            event: run.solution.event_found.then_some(0),
+            solution: run.solution,
+            event_cost: run.event_cost,
+        };
         Ok(expand(yn, &slots, run))
     }
 }

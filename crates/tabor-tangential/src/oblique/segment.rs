@@ -3,7 +3,7 @@
 
 use super::elements::{keep_first, model_error};
 use super::limits::{
-    EVENTS, EVENT_ZERO, IDENTIFIED_EVENT_VALUE, NORMAL_FORCE_ZERO, ZERO_EVENT_VALUE,
+    EVENTS, EVENT_ZERO, IDENTIFIED_EVENT_VALUE, NORMAL_FORCE_ZERO, PATH_CHORDS, ZERO_EVENT_VALUE,
 };
 use super::planar::{PLANAR_MOTION, P_XT};
 use super::simulate::Event;
@@ -199,7 +199,8 @@ impl<'a> Setup<'a> {
             true => settings.tolerance.with_error_components(motion),
             false => settings.tolerance,
         };
-        let run = if self.is_planar(y, modes) {
+        let planar = self.is_planar(y, modes);
+        let run = if planar {
             let failures = (&failure, &g_failure);
             let motion = self.controlled_motion(modes, true);
             let (ends, tolerance) = ((s0, s_end), bed_tolerance(motion));
@@ -246,7 +247,8 @@ impl<'a> Setup<'a> {
         }
         let t_hit = sol.t * self.time;
         let y_hit = self.to_si(&sol.y);
-        if micro_slip {
+        // (a planar run commits the step that holds the event itself)
+        if micro_slip && !planar {
             self.commit_bed(law, t_hit, &y_hit)?;
         }
         let mut gv = self.event_values(law, t_hit, &y_hit, modes)?;
@@ -480,6 +482,38 @@ impl<'a> Setup<'a> {
         let (a, fc, .., n) = self.contact(law, t, y)?;
         bed.borrow_mut()
             .commit(&n, &v3(y, XT), a, fr.tangential.coefficient * fc);
+        Ok(())
+    }
+
+    /// Commits the spring bed over an accepted step from SI time `start` to
+    /// `stop` along the integrator's continuous solution `state` (SI time to SI
+    /// state): one straight step of the return map where the bed's state depends
+    /// only on the step's ends, else [`PATH_CHORDS`] straight pieces along it
+    /// ([`LineBed::path_dependent`](super::line_bed::LineBed::path_dependent):
+    /// springs that stopped slipping or entered stuck during the step; the
+    /// straight path's error in their values is second order in its length).
+    pub(super) fn commit_bed_along(
+        &self,
+        law: &dyn ForceLaw,
+        (start, stop): (f64, f64),
+        state: &dyn Fn(f64) -> [f64; N],
+    ) -> Result<()> {
+        let (Some(bed), Some(fr)) = (&self.bed, &self.imp.friction) else {
+            return Ok(());
+        };
+        let mu = fr.tangential.coefficient;
+        let y = state(stop);
+        let (a, fc, .., n) = self.contact(law, stop, &y)?;
+        let s = v3(&y, XT);
+        if bed.borrow().path_dependent(&n, &s, a, mu * fc) {
+            for k in 1..PATH_CHORDS {
+                let t = start + (stop - start) * (k as f64 / PATH_CHORDS as f64);
+                let y = state(t);
+                let (a, fc, .., n) = self.contact(law, t, &y)?;
+                bed.borrow_mut().commit(&n, &v3(&y, XT), a, mu * fc);
+            }
+        }
+        bed.borrow_mut().commit(&n, &s, a, mu * fc);
         Ok(())
     }
 }
