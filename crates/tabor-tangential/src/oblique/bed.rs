@@ -167,8 +167,8 @@ impl MicroSlipBed {
     }
 
     /// Whether committing the state at (n, s, a, limit) would depend on the
-    /// path of the step, not only on its ends ([`LineBed::path_dependent`]; the
-    /// planar bed only, `false` for the node bed).
+    /// path of the step, not only on its ends ([`LineBed::path_dependent`],
+    /// [`NodeBed::path_dependent`]).
     pub(super) fn path_dependent(
         &self,
         n: &Vector3<f64>,
@@ -176,7 +176,12 @@ impl MicroSlipBed {
         a: f64,
         limit: f64,
     ) -> bool {
-        matches!(self.planar_probe(n, s, a, limit), Ok(Some((line, p))) if line.path_dependent(&p))
+        match self.planar_probe(n, s, a, limit) {
+            Err(()) => false,
+            Ok(Some((line, p))) => line.path_dependent(&p),
+            Ok(None) => Self::node_bed(&mut self.nodes.borrow_mut(), self.grid)
+                .path_dependent(n, s, a, limit),
+        }
     }
 
     /// Commits the state at (n, s, a, limit): the return map becomes the bed's

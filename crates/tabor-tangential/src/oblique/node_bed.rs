@@ -266,25 +266,68 @@ impl NodeBed {
         self.frame_top <= p.a2 && self.path + p.ds.norm() + limits <= self.budget
     }
 
-    /// The returned-mapped displacement of node i at the probe.
-    fn trial(&self, i: usize, p: &Probe) -> Vector3<f64> {
+    /// The trial displacement of node i at the probe (before the return map),
+    /// its limit there, and whether it entered the contact during the step.
+    fn unmapped(&self, i: usize, p: &Probe) -> (Vector3<f64>, f64, bool) {
         let z = i as f64 * self.dz;
         let base = self.committed(i);
         let base = p.turn.map_or(base, |r| r * base);
         // a spring the contact reached during the step entered unstrained where
         // a² (linear along the path) passed its z: it carries the part of Δs
         // after that point
-        let mut t = if z >= self.a0_sq && p.a2 > self.a0_sq {
+        let entered = z >= self.a0_sq && p.a2 > self.a0_sq;
+        let t = if entered {
             base + p.ds * ((p.a2 - z) / (p.a2 - self.a0_sq))
         } else {
             base + p.ds
         };
-        let cap = p.phi * (p.a2 - z);
+        (t, p.phi * (p.a2 - z), entered)
+    }
+
+    /// The returned-mapped displacement of node i at the probe.
+    fn trial(&self, i: usize, p: &Probe) -> Vector3<f64> {
+        let (mut t, cap, _) = self.unmapped(i, p);
         let size2 = t.norm_squared();
         if size2 > cap * cap {
             t *= cap / size2.sqrt();
         }
         t
+    }
+
+    /// Whether committing the state at (n, s, a, limit) depends on the path of
+    /// the step, not only on its ends (as the planar bed's
+    /// [`LineBed::path_dependent`](super::line_bed::LineBed::path_dependent)): a
+    /// node that entered the contact during the step or was on its limit at the
+    /// start, and ends within its limit (the frame's nodes are stuck throughout).
+    pub(super) fn path_dependent(
+        &self,
+        n: &Vector3<f64>,
+        s: &Vector3<f64>,
+        a: f64,
+        limit: f64,
+    ) -> bool {
+        let Some(p) = self.probe(n, s, a, limit) else {
+            return false;
+        };
+        let inside = ((p.a2 / self.dz).ceil() as usize).min(self.w.len());
+        let dependent = |i: usize| {
+            let (t, cap, entered) = self.unmapped(i, &p);
+            if t.norm_squared() >= cap * cap {
+                return false;
+            }
+            let cap0 = self.phi0 * (self.a0_sq - i as f64 * self.dz);
+            entered || (cap0 > 0.0 && self.committed(i).norm() >= cap0 * (1.0 - 1e-12))
+        };
+        if !self.frame_holds(&p) {
+            return (0..inside).any(dependent);
+        }
+        let first_new = (self.a0_sq / self.dz).ceil() as usize;
+        self.explicit
+            .iter()
+            .copied()
+            .filter(|&i| i < inside)
+            .chain(first_new..inside)
+            .any(dependent)
     }
 
     /// Calls `visit(i, w_i)` for every node in contact at the probe that the

@@ -12,8 +12,8 @@ use crate::model::{Tangential, TangentialModel};
 use std::cell::Cell;
 use tabor_dynamics::{ForceLaw, SimulationSettings};
 use tabor_numerics::ode::{
-    drive_events, DenseStepper, DormandPrince, DormandPrince853, EventDirection, EventsIntegration,
-    OdeTolerance,
+    drive, drive_events, DenseStepper, DormandPrince, DormandPrince853, EventDirection,
+    EventsIntegration, OdeTolerance,
 };
 use tabor_numerics::{Cost, GaussLegendre};
 use tabor_restitution::{Error, Result};
@@ -155,10 +155,20 @@ impl<'a> Setup<'a> {
                 .unwrap_or(Error::Numerics(e))
         };
         let micro_slip = self.bed.is_some() && modes.in_contact;
-        // micro-slip: the springs' state at the end of every accepted step
-        let mut commit = |stop: f64, yn: &[f64; N]| {
+        // micro-slip: the springs' state committed along every accepted step (to
+        // the event on the step that holds it)
+        let mut commit = |st: &DormandPrince<N>, stop: f64| {
             if micro_slip {
-                if let Err(e) = self.commit_bed(law, stop * self.time, &self.to_si(yn)) {
+                let (t_end, y_end) = st.current();
+                let start = st.step_start();
+                let state = |theta: f64| {
+                    self.to_si(&match theta == 1.0 && stop == t_end {
+                        true => y_end,
+                        false => st.dense(start + theta * (stop - start)),
+                    })
+                };
+                let step = (start * self.time, stop * self.time);
+                if let Err(e) = self.commit_bed_along(law, step, &state) {
                     keep_first(&failure, e);
                 }
             }
@@ -199,8 +209,7 @@ impl<'a> Setup<'a> {
             true => settings.tolerance.with_error_components(motion),
             false => settings.tolerance,
         };
-        let planar = self.is_planar(y, modes);
-        let run = if planar {
+        let run = if self.is_planar(y, modes) {
             let failures = (&failure, &g_failure);
             let motion = self.controlled_motion(modes, true);
             let (ends, tolerance) = ((s0, s_end), bed_tolerance(motion));
@@ -218,13 +227,22 @@ impl<'a> Setup<'a> {
             let tolerance = bed_tolerance(self.controlled_motion(modes, false));
             let mut stepper =
                 DormandPrince::new(&mut rhs, s0, yn, s_end, tolerance).map_err(&numerics)?;
-            drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit)
+            let mut g = |s: f64, yn: &[f64; N]| events(s, yn)[0];
+            let falling = EventDirection::Falling;
+            drive(&mut stepper, &mut rhs, &mut g, falling, s_end, &mut commit).map(|run| {
+                EventsIntegration {
+                    event: run.solution.event_found.then_some(0),
+                    solution: run.solution,
+                    event_cost: run.event_cost,
+                }
+            })
         } else {
             let motion = self.controlled_motion(modes, false);
             let tolerance = self.dop853_tolerance(settings.tolerance, quadratures, motion);
             let mut stepper =
                 DormandPrince853::new(&mut rhs, s0, yn, s_end, tolerance).map_err(&numerics)?;
-            let mut run = drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut commit);
+            let mut none = |_: f64, _: &[f64; N]| {};
+            let mut run = drive_to_event(&mut stepper, &mut rhs, &mut events, s_end, &mut none);
             self.step_hint.set(Some(stepper.proposed_step()));
             if let Ok(r) = &mut run {
                 if self.singular_sliding_power(modes) {
@@ -247,10 +265,6 @@ impl<'a> Setup<'a> {
         }
         let t_hit = sol.t * self.time;
         let y_hit = self.to_si(&sol.y);
-        // (a planar run commits the step that holds the event itself)
-        if micro_slip && !planar {
-            self.commit_bed(law, t_hit, &y_hit)?;
-        }
         let mut gv = self.event_values(law, t_hit, &y_hit, modes)?;
         for (g, o) in gv.iter_mut().zip(offset.iter()) {
             *g += o;
@@ -474,21 +488,11 @@ impl<'a> Setup<'a> {
         Ok(())
     }
 
-    /// Commits the spring bed at SI (t, y) (after an accepted step).
-    pub(super) fn commit_bed(&self, law: &dyn ForceLaw, t: f64, y: &[f64; N]) -> Result<()> {
-        let (Some(bed), Some(fr)) = (&self.bed, &self.imp.friction) else {
-            return Ok(());
-        };
-        let (a, fc, .., n) = self.contact(law, t, y)?;
-        bed.borrow_mut()
-            .commit(&n, &v3(y, XT), a, fr.tangential.coefficient * fc);
-        Ok(())
-    }
-
     /// Commits the spring bed over an accepted step from SI time `start` to
-    /// `stop` along the integrator's continuous solution `state` (SI time to SI
-    /// state): one straight step of the return map where the bed's state depends
-    /// only on the step's ends, else [`PATH_CHORDS`] straight pieces along it
+    /// `stop` along the integrator's continuous solution, `state(θ)` the SI state
+    /// at `start + θ (stop − start)` (θ = 1: the stepper's own state at `stop`):
+    /// one straight step of the return map where the bed's state depends only on
+    /// the step's ends, else [`PATH_CHORDS`] straight pieces along it
     /// ([`LineBed::path_dependent`](super::line_bed::LineBed::path_dependent):
     /// springs that stopped slipping or entered stuck during the step; the
     /// straight path's error in their values is second order in its length).
@@ -502,14 +506,14 @@ impl<'a> Setup<'a> {
             return Ok(());
         };
         let mu = fr.tangential.coefficient;
-        let y = state(stop);
+        let y = state(1.0);
         let (a, fc, .., n) = self.contact(law, stop, &y)?;
         let s = v3(&y, XT);
         if bed.borrow().path_dependent(&n, &s, a, mu * fc) {
             for k in 1..PATH_CHORDS {
-                let t = start + (stop - start) * (k as f64 / PATH_CHORDS as f64);
-                let y = state(t);
-                let (a, fc, .., n) = self.contact(law, t, &y)?;
+                let theta = k as f64 / PATH_CHORDS as f64;
+                let y = state(theta);
+                let (a, fc, .., n) = self.contact(law, start + theta * (stop - start), &y)?;
                 bed.borrow_mut().commit(&n, &v3(&y, XT), a, mu * fc);
             }
         }
