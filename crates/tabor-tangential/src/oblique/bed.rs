@@ -35,7 +35,12 @@
 //! growing contact reaches during the step enters unstrained where `a²` (taken
 //! linear along the path, as the overlap of Hertz's `a² = R δ`) passes it, and
 //! carries only the part of `Δs` after that point. After every accepted step the
-//! state is committed at the step's end.
+//! state is committed at the step's end: by this one straight path where no
+//! spring stopped slipping or entered stuck within the step (then the state
+//! depends on the step's ends alone), else along the integrator's continuous
+//! solution in [`PATH_CHORDS`](super::limits::PATH_CHORDS) straight pieces (the
+//! values of those springs depend on the path; the pieces' error is second order
+//! in their length: `Setup::commit_bed_along`).
 //!
 //! **Two forms.** A planar history (every displacement on one line of the tangent
 //! plane turned with the normal, as in an impact whose spins are normal to its
