@@ -485,6 +485,23 @@ impl LineBed {
         self.acc_from = from;
         self.acc.resize(self.z.len(), 0.0);
         self.acc[from] = 0.0;
+        self.accumulate_from(from, 0.0);
+    }
+
+    /// The accumulated integral and slack after a commit that translated the
+    /// committed profile up to breakpoint `upto` (at least `acc_from`) by
+    /// `shift`: there the integral from `z[acc_from]` gains
+    /// `shift · 2(√z_k − √z[acc_from])` (`∫ z^{−1/2} dz`); beyond, it is summed
+    /// piece by piece. The slack (limit less displacement: the limits changed)
+    /// is taken again throughout.
+    fn accumulate_from(&mut self, upto: usize, shift: f64) {
+        let from = self.acc_from;
+        self.acc.resize(self.z.len(), 0.0);
+        if shift != 0.0 {
+            for k in from + 1..=upto {
+                self.acc[k] += shift * 2.0 * (self.root[k] - self.root[from]);
+            }
+        }
         self.slack.resize(self.z.len(), f64::NEG_INFINITY);
         let mut least = f64::INFINITY;
         for k in from..self.z.len() {
@@ -492,7 +509,7 @@ impl LineBed {
             least = least.min(slack);
             self.slack[k] = least;
         }
-        for k in from..self.z.len() - 1 {
+        for k in upto..self.z.len() - 1 {
             let piece = piece_integral_r(
                 self.z[k],
                 self.z[k + 1],
@@ -593,6 +610,9 @@ impl LineBed {
         });
         // the frame's last point moves with the frame (its value is not stored)
         let keep = if holds { start + 1 } else { start };
+        // the accumulated integral up to `begin` only translates with the
+        // profile where the frame holds and starts it
+        let translated = (holds && begin > start && start == self.acc_from).then_some(begin);
         let (keep, skip) = if begin > start {
             // beyond the frame (`frame ≤ keep`), as the map would translate them
             for k in keep..=begin {
@@ -632,10 +652,15 @@ impl LineBed {
         let spent = self.path
             + (p.phi - self.phi_r).abs() * self.a_r_sq
             + p.phi * (p.a2 - self.a_r_sq).abs();
-        if !holds || 2.0 * spent > self.budget {
-            self.rebuild(p, FRAME_STEPS * change);
+        match translated {
+            Some(upto) if 2.0 * spent <= self.budget => self.accumulate_from(upto, p.d),
+            _ => {
+                if !holds || 2.0 * spent > self.budget {
+                    self.rebuild(p, FRAME_STEPS * change);
+                }
+                self.accumulate();
+            }
         }
-        self.accumulate();
     }
 
     /// The frame's shift moved into its values; no frame.
