@@ -206,6 +206,30 @@ impl MicroSlipBed {
         }
     }
 
+    /// Commits the states `(n, s, a, limit)` of `path` in turn, the last the
+    /// step's end: on a strained planar bed at once along the straight pieces
+    /// between them ([`LineBed::commit_along`]); one by one where the bed is
+    /// unstrained (it takes its direction from each increment), where a state
+    /// has no contact or leaves the bed's line, and on the node bed.
+    pub(super) fn commit_along(&mut self, path: &[(Vector3<f64>, Vector3<f64>, f64, f64)]) {
+        if self.planar.get() && self.line.as_ref().is_some_and(LineBed::is_strained) {
+            let mut probes = Vec::with_capacity(path.len());
+            for (n, s, a, limit) in path {
+                match self.planar_probe(n, s, *a, *limit) {
+                    Ok(Some((_, p))) => probes.push((p, *n, *s)),
+                    _ => break,
+                }
+            }
+            if let (Some(line), true) = (self.line.as_mut(), probes.len() == path.len()) {
+                line.commit_along(&probes);
+                return;
+            }
+        }
+        for (n, s, a, limit) in path {
+            self.commit(n, s, *a, *limit);
+        }
+    }
+
     /// Whether the planar bed holds the state (exact; else the node bed).
     pub(super) fn is_planar(&self) -> bool {
         self.planar.get()

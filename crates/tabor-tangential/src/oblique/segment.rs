@@ -506,18 +506,26 @@ impl<'a> Setup<'a> {
             return Ok(());
         };
         let mu = fr.tangential.coefficient;
-        let y = state(1.0);
-        let (a, fc, .., n) = self.contact(law, stop, &y)?;
-        let s = v3(&y, XT);
-        if bed.borrow().path_dependent(&n, &s, a, mu * fc) {
-            for k in 1..PATH_CHORDS {
-                let theta = k as f64 / PATH_CHORDS as f64;
-                let y = state(theta);
-                let (a, fc, .., n) = self.contact(law, start + theta * (stop - start), &y)?;
-                bed.borrow_mut().commit(&n, &v3(&y, XT), a, mu * fc);
+        let at = |theta: f64| -> Result<_> {
+            let y = state(theta);
+            let t = if theta == 1.0 {
+                stop
+            } else {
+                start + theta * (stop - start)
+            };
+            let (a, fc, .., n) = self.contact(law, t, &y)?;
+            Ok((n, v3(&y, XT), a, mu * fc))
+        };
+        let end = at(1.0)?;
+        if bed.borrow().path_dependent(&end.0, &end.1, end.2, end.3) {
+            let mut path = [end; PATH_CHORDS];
+            for (k, point) in path.iter_mut().enumerate().take(PATH_CHORDS - 1) {
+                *point = at((k + 1) as f64 / PATH_CHORDS as f64)?;
             }
+            bed.borrow_mut().commit_along(&path);
+        } else {
+            bed.borrow_mut().commit(&end.0, &end.1, end.2, end.3);
         }
-        bed.borrow_mut().commit(&n, &s, a, mu * fc);
         Ok(())
     }
 }

@@ -25,8 +25,9 @@
 //! The bound is that of the node bed's frame (checked at every evaluation; the
 //! frame is flattened and rebuilt where it fails or half its budget is spent).
 
-use super::limits::FRAME_STEPS;
 use nalgebra::Vector3;
+
+mod commit;
 
 #[cfg(test)]
 thread_local! {
@@ -160,6 +161,7 @@ fn clip<F: FnMut(f64, f64, f64, f64, Regime)>(
 
 /// What an evaluation of a planar bed needs of the state given: the direction
 /// `e` turned into the current tangent plane, the increment along it, a², φ.
+#[derive(Clone, Copy, Debug)]
 pub(super) struct LineProbe {
     e: Vector3<f64>,
     d: f64,
@@ -188,6 +190,9 @@ pub(super) struct LineBed {
     slack: Vec<f64>,
     /// The commit's new points (kept to spare an allocation per step).
     scratch: Vec<(f64, f64, Regime)>,
+    /// The profile's mapped tail between the pieces of a commit along a path
+    /// (kept to spare an allocation per step).
+    tail: Vec<(f64, f64)>,
     /// The committed direction (unit, in the committed tangent plane).
     e: Vector3<f64>,
     /// Whether any spring may be strained (else every direction is the bed's).
@@ -221,6 +226,7 @@ impl LineBed {
             acc_from: 0,
             slack: vec![f64::NEG_INFINITY],
             scratch: Vec::new(),
+            tail: Vec::new(),
             e: Vector3::y(),
             strained: false,
             frame: 0,
@@ -346,19 +352,7 @@ impl LineBed {
     }
 
     /// Calls `emit` for every clipped sub-interval of the return-mapped profile
-    /// from breakpoint `start` to the edge at the probe.
-    fn map_from<F: FnMut(f64, f64, f64, f64, Regime)>(
-        &self,
-        start: usize,
-        p: &LineProbe,
-        mut emit: F,
-    ) {
-        self.map_range(start, self.z.len() - 1, p, &mut emit);
-        self.map_entry(p, &mut emit);
-    }
-
-    /// [`LineBed::map_from`] for the committed pieces from breakpoint `start` to
-    /// `end` only.
+    /// of the committed pieces from breakpoint `start` to `end` at the probe.
     fn map_range<F: FnMut(f64, f64, f64, f64, Regime)>(
         &self,
         start: usize,
@@ -383,8 +377,8 @@ impl LineBed {
         }
     }
 
-    /// [`LineBed::map_from`] for the springs the contact reached during the step
-    /// only: `Δs` after a² passed them.
+    /// [`LineBed::map_range`] for the springs the contact reached during the
+    /// step: `Δs` after a² passed them.
     fn map_entry<F: FnMut(f64, f64, f64, f64, Regime)>(&self, p: &LineProbe, emit: &mut F) {
         let edge = self.z[self.z.len() - 1];
         if p.a2 > edge {
@@ -479,220 +473,9 @@ impl LineBed {
         self.acc[b] - self.acc[a] + d * 2.0 * (self.root[b] - self.root[a])
     }
 
-    /// Recomputes the accumulated integral from the frame's last breakpoint on.
-    fn accumulate(&mut self) {
-        let from = self.frame.saturating_sub(1);
-        self.acc_from = from;
-        self.acc.resize(self.z.len(), 0.0);
-        self.acc[from] = 0.0;
-        self.accumulate_from(from, 0.0);
-    }
-
-    /// The accumulated integral and slack after a commit that translated the
-    /// committed profile up to breakpoint `upto` (at least `acc_from`) by
-    /// `shift`: there the integral from `z[acc_from]` gains
-    /// `shift · 2(√z_k − √z[acc_from])` (`∫ z^{−1/2} dz`); beyond, it is summed
-    /// piece by piece. The slack (limit less displacement: the limits changed)
-    /// is taken again throughout.
-    fn accumulate_from(&mut self, upto: usize, shift: f64) {
-        let from = self.acc_from;
-        self.acc.resize(self.z.len(), 0.0);
-        if shift != 0.0 {
-            for k in from + 1..=upto {
-                self.acc[k] += shift * 2.0 * (self.root[k] - self.root[from]);
-            }
-        }
-        self.slack.resize(self.z.len(), f64::NEG_INFINITY);
-        let mut least = f64::INFINITY;
-        for k in from..self.z.len() {
-            let slack = self.phi0 * (self.a0_sq - self.z[k]) - self.value(k).abs();
-            least = least.min(slack);
-            self.slack[k] = least;
-        }
-        for k in upto..self.z.len() - 1 {
-            let piece = piece_integral_r(
-                self.z[k],
-                self.z[k + 1],
-                self.root[k],
-                self.root[k + 1],
-                self.value(k),
-                self.value(k + 1),
-            );
-            self.acc[k + 1] = self.acc[k] + piece;
-        }
-    }
-
-    /// Whether the return map to the probe depends on the path of the step, not
-    /// only on its ends: where springs stop slipping or enter the contact stuck
-    /// within it. A spring that is within its limit at both ends of the step was
-    /// stuck along it (the straight path's trial and limit are linear in its
-    /// parameter), and one that ends on its cap sits there whatever the path;
-    /// but one that was on its cap at the start (or entered during the step) and
-    /// ends within it froze at a moment and a value the path decides, which the
-    /// straight path of the return map puts wrong by the path's deviation from
-    /// it (second order in the step). The entering springs' trial
-    /// `Δs (a² − z)/(a² − a₀²)` and limit `φ(a² − z)` are in a fixed ratio: all
-    /// within it, or all on it.
-    pub(super) fn path_dependent(&self, p: &LineProbe) -> bool {
-        let edge = self.z[self.z.len() - 1];
-        if p.a2 > edge && p.d.abs() < p.phi * (p.a2 - edge) {
-            return true;
-        }
-        // a committed piece on its cap (both ends, one side; the edge, where the
-        // cap is 0, on either) that leaves it
-        let on_cap = |k: usize| {
-            let cap = self.phi0 * (self.a0_sq - self.z[k]);
-            let v = self.value(k);
-            match cap > 0.0 {
-                true => (v.abs() >= cap * (1.0 - 1e-12)).then_some(v.signum()),
-                false => Some(0.0),
-            }
-        };
-        let mut side = on_cap(0);
-        for k in 1..self.z.len() {
-            let here = on_cap(k);
-            if let (Some(b0), Some(b1)) = (side, here) {
-                let a = if b0 != 0.0 { b0 } else { b1 };
-                if a != 0.0 && (b0 == b1 || b0 == 0.0 || b1 == 0.0) && self.z[k - 1] < p.a2 {
-                    let leaves = |j: usize| {
-                        let z = self.z[j].min(p.a2);
-                        a * (self.value(j) + p.d) < p.phi * (p.a2 - z)
-                    };
-                    if leaves(k - 1) || leaves(k) {
-                        return true;
-                    }
-                }
-            }
-            side = here;
-        }
-        false
-    }
-
     /// The direction of the force at the probe.
     pub(super) fn direction(p: &LineProbe) -> Vector3<f64> {
         p.e
-    }
-
-    /// Commits the probe's state (n, s the probe's): the return map becomes the
-    /// profile (slipping runs merged into one piece), the frame moves or is
-    /// rebuilt.
-    pub(super) fn commit(&mut self, p: &LineProbe, n: &Vector3<f64>, s: &Vector3<f64>) {
-        let holds = self.frame_holds(p);
-        if !holds {
-            self.flatten();
-        }
-        let start = if holds { self.frame - 1 } else { 0 };
-        // the leading pieces within their limits by the committed slack
-        // ([`LineBed::untested`]) keep their breakpoints, translated: the map
-        // starts at the last of them
-        let begin = if start == self.acc_from {
-            self.untested(start, p)
-        } else {
-            start
-        };
-        // the new profile beyond `begin`: points with the regime of the
-        // sub-interval ending at them; a point between two runs on one cap is
-        // dropped (the cap is one line)
-        let mut points = std::mem::take(&mut self.scratch);
-        points.clear();
-        let c0 = p.phi * (p.a2 - self.z[begin]);
-        let first = (self.value(begin) + p.d).clamp(-c0, c0);
-        points.push((self.z[begin], first, Regime::Free));
-        self.map_from(begin, p, |_, z1, _, f1, regime| {
-            if points.len() > 1 && regime != Regime::Free {
-                if let Some(last) = points.last() {
-                    if last.2 == regime {
-                        points.pop();
-                    }
-                }
-            }
-            points.push((z1, f1, regime));
-        });
-        // the frame's last point moves with the frame (its value is not stored)
-        let keep = if holds { start + 1 } else { start };
-        // the accumulated integral up to `begin` only translates with the
-        // profile where the frame holds and starts it
-        let translated = (holds && begin > start && start == self.acc_from).then_some(begin);
-        let (keep, skip) = if begin > start {
-            // beyond the frame (`frame ≤ keep`), as the map would translate them
-            for k in keep..=begin {
-                self.u[k] = self.value(k) + p.d;
-            }
-            (begin + 1, 1)
-        } else {
-            (keep, if holds { 1 } else { 0 })
-        };
-        self.z.truncate(keep);
-        self.root.truncate(keep);
-        self.u.truncate(keep);
-        for &(z, f, _) in &points[skip..] {
-            self.z.push(z);
-            self.root.push(z.sqrt());
-            self.u.push(f);
-        }
-        self.scratch = points;
-        let limits = (p.phi - self.phi0).abs() * self.a0_sq + p.phi * (p.a2 - self.a0_sq).abs();
-        let change = p.d.abs() + limits;
-        if holds {
-            self.sigma += p.d;
-            self.path += p.d.abs();
-        }
-        self.strained |= p.d != 0.0;
-        let e = p.e - n * n.dot(&p.e);
-        let length = e.norm();
-        // unit in the tangent plane (the probe's direction lies in it to rounding)
-        if length > 0.5 {
-            self.e = e / length;
-        }
-        self.s0 = *s;
-        self.s0_norm = s.norm();
-        self.n0 = *n;
-        self.a0_sq = p.a2;
-        self.phi0 = p.phi;
-        let spent = self.path
-            + (p.phi - self.phi_r).abs() * self.a_r_sq
-            + p.phi * (p.a2 - self.a_r_sq).abs();
-        match translated {
-            Some(upto) if 2.0 * spent <= self.budget => self.accumulate_from(upto, p.d),
-            _ => {
-                if !holds || 2.0 * spent > self.budget {
-                    self.rebuild(p, FRAME_STEPS * change);
-                }
-                self.accumulate();
-            }
-        }
-    }
-
-    /// The frame's shift moved into its values; no frame.
-    fn flatten(&mut self) {
-        for k in 0..self.frame {
-            self.u[k] += self.sigma;
-        }
-        self.clear_frame();
-    }
-
-    /// A new frame of the leading breakpoints whose slack exceeds `budget`.
-    fn rebuild(&mut self, p: &LineProbe, budget: f64) {
-        self.flatten();
-        self.budget = budget;
-        self.phi_r = p.phi;
-        self.a_r_sq = p.a2;
-        if budget <= 0.0 {
-            return;
-        }
-        let count = self
-            .z
-            .iter()
-            .zip(&self.u)
-            .take_while(|&(&z, &u)| p.phi * (p.a2 - z) - u.abs() > budget)
-            .count();
-        if count < 2 {
-            return;
-        }
-        self.frame = count;
-        self.frame_sum = (0..count - 1)
-            .map(|k| piece_integral(self.z[k], self.z[k + 1], self.u[k], self.u[k + 1]))
-            .sum();
     }
 
     /// `∫ |w|² z^{−1/2} dz` of the committed bed within squared radius `a2`.
