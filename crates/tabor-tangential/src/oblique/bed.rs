@@ -70,6 +70,39 @@ use tabor_dynamics::ForceLaw;
 /// (`tests/micro_slip.rs` measures it).
 pub const MICRO_SLIP_NODES: usize = 1024;
 
+/// What the spring bed sees of the contact at one moment: the normal (unit), the
+/// tangential displacement `s` (m; its part along the normal is ignored), the
+/// contact radius `a` (m) and the Coulomb limit `μ F_n0` (N).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct BedState {
+    /// The unit normal of the contact.
+    pub(super) normal: Vector3<f64>,
+    /// The tangential displacement `s` (m).
+    pub(super) displacement: Vector3<f64>,
+    /// The contact radius `a` (m).
+    pub(super) radius: f64,
+    /// The Coulomb limit `μ F_n0` (N).
+    pub(super) limit: f64,
+}
+
+impl BedState {
+    /// The state of normal `normal`, displacement `displacement`, contact radius
+    /// `radius` and Coulomb limit `limit`.
+    pub(super) fn new(
+        normal: Vector3<f64>,
+        displacement: Vector3<f64>,
+        radius: f64,
+        limit: f64,
+    ) -> Self {
+        BedState {
+            normal,
+            displacement,
+            radius,
+            limit,
+        }
+    }
+}
+
 /// The MDR spring bed of a contact under Mindlin-Deresiewicz micro-slip: the
 /// planar form while the history allows it, else the node bed.
 #[derive(Clone, Debug)]
@@ -132,11 +165,14 @@ impl MicroSlipBed {
     /// the first increment off the line. `Err(())` where there is no contact.
     fn planar_probe(
         &self,
-        n: &Vector3<f64>,
-        s: &Vector3<f64>,
-        a: f64,
-        limit: f64,
+        state: &BedState,
     ) -> Result<Option<(&LineBed, super::line_bed::LineProbe)>, ()> {
+        let (n, s, a, limit) = (
+            &state.normal,
+            &state.displacement,
+            state.radius,
+            state.limit,
+        );
         let Some(line) = self.line.as_ref().filter(|_| self.planar.get()) else {
             return Ok(None);
         };
@@ -155,68 +191,55 @@ impl MicroSlipBed {
 
     /// The force of the bed on body i (N) at the state given (not committed):
     /// `−k' ∫₀^{a²} w z^{−1/2} dz`.
-    pub(super) fn force(
-        &self,
-        n: &Vector3<f64>,
-        s: &Vector3<f64>,
-        a: f64,
-        limit: f64,
-    ) -> Vector3<f64> {
-        match self.planar_probe(n, s, a, limit) {
+    pub(super) fn force(&self, state: &BedState) -> Vector3<f64> {
+        match self.planar_probe(state) {
             Err(()) => Vector3::zeros(),
             Ok(Some((line, p))) => -LineBed::direction(&p) * (self.k_line * line.integral(&p)),
+            Ok(None) => Self::node_bed(&mut self.nodes.borrow_mut(), self.grid).force(state),
+        }
+    }
+
+    /// Whether committing `state` would depend on the path of the step, not
+    /// only on its ends ([`LineBed::path_dependent`],
+    /// [`NodeBed::path_dependent`]).
+    pub(super) fn path_dependent(&self, state: &BedState) -> bool {
+        match self.planar_probe(state) {
+            Err(()) => false,
+            Ok(Some((line, p))) => line.path_dependent(&p),
             Ok(None) => {
-                Self::node_bed(&mut self.nodes.borrow_mut(), self.grid).force(n, s, a, limit)
+                Self::node_bed(&mut self.nodes.borrow_mut(), self.grid).path_dependent(state)
             }
         }
     }
 
-    /// Whether committing the state at (n, s, a, limit) would depend on the
-    /// path of the step, not only on its ends ([`LineBed::path_dependent`],
-    /// [`NodeBed::path_dependent`]).
-    pub(super) fn path_dependent(
-        &self,
-        n: &Vector3<f64>,
-        s: &Vector3<f64>,
-        a: f64,
-        limit: f64,
-    ) -> bool {
-        match self.planar_probe(n, s, a, limit) {
-            Err(()) => false,
-            Ok(Some((line, p))) => line.path_dependent(&p),
-            Ok(None) => Self::node_bed(&mut self.nodes.borrow_mut(), self.grid)
-                .path_dependent(n, s, a, limit),
-        }
-    }
-
-    /// Commits the state at (n, s, a, limit): the return map becomes the bed's
-    /// state; springs out of contact are unstrained.
-    pub(super) fn commit(&mut self, n: &Vector3<f64>, s: &Vector3<f64>, a: f64, limit: f64) {
-        let probe = match self.planar_probe(n, s, a, limit) {
+    /// Commits `state`: the return map becomes the bed's state; springs out of
+    /// contact are unstrained.
+    pub(super) fn commit(&mut self, state: &BedState) {
+        let probe = match self.planar_probe(state) {
             Err(()) => {
                 // no contact (or no limit): every spring unstrained
-                self.reset(s, n, 0.0);
+                self.reset(&state.displacement, &state.normal, 0.0);
                 return;
             }
             Ok(found) => found.map(|(_, p)| p),
         };
         match (probe, self.line.as_mut()) {
-            (Some(p), Some(line)) => line.commit(&p, n, s),
-            _ => Self::node_bed(self.nodes.get_mut(), self.grid).commit(n, s, a, limit),
+            (Some(p), Some(line)) => line.commit(&p, &state.normal, &state.displacement),
+            _ => Self::node_bed(self.nodes.get_mut(), self.grid).commit(state),
         }
     }
 
-    /// Commits the states `(n, s, a, limit)` of `path` in turn, the last the
-    /// step's end: on a strained planar bed at once along the straight pieces
-    /// between them ([`LineBed::commit_along`]); one by one where the bed is
-    /// unstrained (it takes its direction from each increment), where a state
-    /// has no contact or leaves the bed's line, and on the node bed.
-    pub(super) fn commit_along(&mut self, path: &[(Vector3<f64>, Vector3<f64>, f64, f64)]) {
+    /// Commits the states of `path` in turn, the last the step's end: on a
+    /// strained planar bed at once along the straight pieces between them
+    /// ([`LineBed::commit_along`]); one by one where the bed is unstrained (it
+    /// takes its direction from each increment), where a state has no contact
+    /// or leaves the bed's line, and on the node bed.
+    pub(super) fn commit_along(&mut self, path: &[BedState]) {
         if self.planar.get() && self.line.as_ref().is_some_and(LineBed::is_strained) {
             let mut probes = Vec::with_capacity(path.len());
-            for (n, s, a, limit) in path {
-                match self.planar_probe(n, s, *a, *limit) {
-                    Ok(Some((_, p))) => probes.push((p, *n, *s)),
+            for state in path {
+                match self.planar_probe(state) {
+                    Ok(Some((_, p))) => probes.push((p, state.normal, state.displacement)),
                     _ => break,
                 }
             }
@@ -225,8 +248,8 @@ impl MicroSlipBed {
                 return;
             }
         }
-        for (n, s, a, limit) in path {
-            self.commit(n, s, *a, *limit);
+        for state in path {
+            self.commit(state);
         }
     }
 

@@ -4,7 +4,7 @@
 //! with a growing and shrinking contact and reversals, and the hand-over to the
 //! node bed where a history leaves its line.
 
-use super::bed::MicroSlipBed;
+use super::bed::{BedState, MicroSlipBed};
 use super::line_bed::piece_integral;
 use nalgebra::Vector3;
 
@@ -52,13 +52,13 @@ fn the_planar_bed_is_exact_at_constant_normal_load() {
     let x_max = 0.7 * x_star;
     for j in 1..=7 {
         let x = x_max * j as f64 / 7.0;
-        let f = -bed.force(&n(), &along(x), A, LIMIT).y;
+        let f = -bed.force(&BedState::new(n(), along(x), A, LIMIT)).y;
         assert!(
             (f - cattaneo(x)).abs() < 1e-12 * LIMIT,
             "{x}: {f} vs {}",
             cattaneo(x)
         );
-        bed.commit(&n(), &along(x), A, LIMIT);
+        bed.commit(&BedState::new(n(), along(x), A, LIMIT));
     }
     // the energy: ½ k' (x² 2√z_c + φ² ∫_{z_c}^{a²} (a² − z)² z^{−1/2} dz)
     let phi = x_star / (A * A);
@@ -72,13 +72,13 @@ fn the_planar_bed_is_exact_at_constant_normal_load() {
     );
     for j in 1..=9 {
         let x = x_max - 1.8 * x_max * j as f64 / 9.0;
-        let f = -bed.force(&n(), &along(x), A, LIMIT).y;
+        let f = -bed.force(&BedState::new(n(), along(x), A, LIMIT)).y;
         let expected = cattaneo(x_max) - 2.0 * cattaneo(0.5 * (x_max - x));
         assert!(
             (f - expected).abs() < 1e-12 * LIMIT,
             "{x}: {f} vs {expected}"
         );
-        bed.commit(&n(), &along(x), A, LIMIT);
+        bed.commit(&BedState::new(n(), along(x), A, LIMIT));
     }
 }
 
@@ -104,8 +104,8 @@ fn the_node_beds_converge_to_the_planar_bed() {
         let mut forces = Vec::new();
         for j in 1..=400 {
             let (a, s, limit) = history(j as f64 / 400.0);
-            forces.push(bed.force(&n(), &along(s), a, limit).y);
-            bed.commit(&n(), &along(s), a, limit);
+            forces.push(bed.force(&BedState::new(n(), along(s), a, limit)).y);
+            bed.commit(&BedState::new(n(), along(s), a, limit));
         }
         forces
     };
@@ -144,22 +144,27 @@ fn a_history_off_the_line_takes_the_node_bed() {
     for bed in [&mut planar, &mut nodes] {
         bed.reset(&along(0.0), &n(), A);
         for j in 1..=5 {
-            bed.commit(&n(), &along(0.1 * x_star * j as f64), A, LIMIT);
+            bed.commit(&BedState::new(
+                n(),
+                along(0.1 * x_star * j as f64),
+                A,
+                LIMIT,
+            ));
         }
     }
     let off = along(0.5 * x_star) + Vector3::z() * 0.2 * x_star;
     let (fp, fnodes) = (
-        planar.force(&n(), &off, A, LIMIT),
-        nodes.force(&n(), &off, A, LIMIT),
+        planar.force(&BedState::new(n(), off, A, LIMIT)),
+        nodes.force(&BedState::new(n(), off, A, LIMIT)),
     );
     assert!(fp.z.abs() > 0.01 * LIMIT, "{fp}");
     assert!((fp - fnodes).norm() < 1e-6 * LIMIT, "{fp} vs {fnodes}");
-    planar.commit(&n(), &off, A, LIMIT);
-    nodes.commit(&n(), &off, A, LIMIT);
+    planar.commit(&BedState::new(n(), off, A, LIMIT));
+    nodes.commit(&BedState::new(n(), off, A, LIMIT));
     let back = along(0.2 * x_star);
     let (fp, fnodes) = (
-        planar.force(&n(), &back, A, LIMIT),
-        nodes.force(&n(), &back, A, LIMIT),
+        planar.force(&BedState::new(n(), back, A, LIMIT)),
+        nodes.force(&BedState::new(n(), back, A, LIMIT)),
     );
     assert!((fp - fnodes).norm() < 1e-6 * LIMIT, "{fp} vs {fnodes}");
 }
@@ -187,15 +192,15 @@ fn rounding_of_an_unmoved_contact_is_no_direction() {
     ];
     for (normal, along_normal) in steps {
         let s = Vector3::x() * along_normal;
-        let f = bed.force(&normal, &s, A, LIMIT);
+        let f = bed.force(&BedState::new(normal, s, A, LIMIT));
         assert!(f.iter().all(|c| c.is_finite()), "{f:?}");
         assert!(f.norm() < 1e-12 * LIMIT, "{f:?}");
-        bed.commit(&normal, &s, A, LIMIT);
+        bed.commit(&BedState::new(normal, s, A, LIMIT));
     }
     let s = Vector3::x() * 6.150267843089653e-24;
     // and the bed still loads along the first real increment, exactly
     let x = 1e-3 * 0.75 * LIMIT / (A * 0.5 * K_T);
-    let f = bed.force(&n(), &(s + Vector3::y() * x), A, LIMIT);
+    let f = bed.force(&BedState::new(n(), s + Vector3::y() * x, A, LIMIT));
     assert!(f.iter().all(|c| c.is_finite()), "{f:?}");
     assert!(
         (f.norm() - cattaneo(x)).abs() < 1e-9 * cattaneo(x),
@@ -239,16 +244,16 @@ fn pieces_within_their_limits_by_their_slack_need_no_test() {
         for lambda in [0.2, 0.5, 0.9, 1.0] {
             let a = A * (a_prev + lambda * (a_next - a_prev));
             let s = along(s_prev + lambda * (s_next - s_prev));
-            let f = fast.force(&n(), &s, a, limit(a / A));
+            let f = fast.force(&BedState::new(n(), s, a, limit(a / A)));
             all(true);
-            let g = reference.force(&n(), &s, a, limit(a / A));
+            let g = reference.force(&BedState::new(n(), s, a, limit(a / A)));
             all(false);
             assert_eq!(f, g, "step {j}, λ = {lambda}");
         }
         let a = A * a_next;
-        fast.commit(&n(), &along(s_next), a, limit(a_next));
+        fast.commit(&BedState::new(n(), along(s_next), a, limit(a_next)));
         all(true);
-        reference.commit(&n(), &along(s_next), a, limit(a_next));
+        reference.commit(&BedState::new(n(), along(s_next), a, limit(a_next)));
         all(false);
         assert_eq!(
             fast.stored_energy(a),

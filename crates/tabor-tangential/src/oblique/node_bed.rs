@@ -21,6 +21,7 @@
 //! checked at every evaluation, and the bed falls back to visiting every spring
 //! where it fails) and is rebuilt when its budget is half spent.
 
+use super::bed::BedState;
 use super::limits::FRAME_STEPS;
 use super::line_bed::LineBed;
 use nalgebra::{Matrix3, Vector3};
@@ -239,7 +240,13 @@ impl NodeBed {
         }
     }
 
-    fn probe(&self, n: &Vector3<f64>, s: &Vector3<f64>, a: f64, limit: f64) -> Option<Probe> {
+    fn probe(&self, state: &BedState) -> Option<Probe> {
+        let (n, s, a, limit) = (
+            &state.normal,
+            &state.displacement,
+            state.radius,
+            state.limit,
+        );
         if a <= 0.0 || limit.is_nan() || limit <= 0.0 {
             return None;
         }
@@ -294,19 +301,13 @@ impl NodeBed {
         t
     }
 
-    /// Whether committing the state at (n, s, a, limit) depends on the path of
+    /// Whether committing `state` depends on the path of
     /// the step, not only on its ends (as the planar bed's
     /// [`LineBed::path_dependent`](super::line_bed::LineBed::path_dependent)): a
     /// node that entered the contact during the step or was on its limit at the
     /// start, and ends within its limit (the frame's nodes are stuck throughout).
-    pub(super) fn path_dependent(
-        &self,
-        n: &Vector3<f64>,
-        s: &Vector3<f64>,
-        a: f64,
-        limit: f64,
-    ) -> bool {
-        let Some(p) = self.probe(n, s, a, limit) else {
+    pub(super) fn path_dependent(&self, state: &BedState) -> bool {
+        let Some(p) = self.probe(state) else {
             return false;
         };
         let inside = ((p.a2 / self.dz).ceil() as usize).min(self.w.len());
@@ -355,14 +356,8 @@ impl NodeBed {
     /// The force of the bed on body i (N) at the state given (not committed):
     /// `−k' ∫₀^{a²} w z^{−1/2} dz`, exact for `w` linear in z between nodes and 0
     /// at the edge.
-    pub(super) fn force(
-        &self,
-        n: &Vector3<f64>,
-        s: &Vector3<f64>,
-        a: f64,
-        limit: f64,
-    ) -> Vector3<f64> {
-        let Some(p) = self.probe(n, s, a, limit) else {
+    pub(super) fn force(&self, state: &BedState) -> Vector3<f64> {
+        let Some(p) = self.probe(state) else {
             return Vector3::zeros();
         };
         let holds = self.frame_holds(&p);
@@ -379,13 +374,14 @@ impl NodeBed {
     /// displacements (the frame moves as a whole); springs out of contact are
     /// unstrained. The frame is rebuilt when it no longer holds or half its
     /// budget is spent.
-    pub(super) fn commit(&mut self, n: &Vector3<f64>, s: &Vector3<f64>, a: f64, limit: f64) {
+    pub(super) fn commit(&mut self, state: &BedState) {
+        let (n, s, a) = (&state.normal, &state.displacement, state.radius);
         // room for the contact to double its area within the next step
         let needed = 2 * (a * a / self.dz).ceil() as usize + 8;
         if needed > self.w.len() {
             self.grow(needed);
         }
-        let Some(p) = self.probe(n, s, a, limit) else {
+        let Some(p) = self.probe(state) else {
             // no contact (or no limit): every spring unstrained
             self.reset(s, n, 0.0);
             self.phi0 = 0.0;

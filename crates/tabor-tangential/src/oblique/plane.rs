@@ -9,6 +9,7 @@
 //! Twisting sticks at θ = 0 with `ω_tw = 0` in a planar state: its torque is 0
 //! and only its stick event (the limit) remains.
 
+use super::bed::BedState;
 use super::elements::{ratio, spring_rates, twist_coefficients};
 use super::limits::{CAPTURE, EVENTS, NORMAL_FORCE_ZERO, RATE_CAP, WARMUP};
 use super::planar::{PM, P_E, P_EN, P_U, P_WI, P_WJ, P_XR, P_XT};
@@ -216,7 +217,9 @@ impl<'a> Setup<'a> {
             let limit = t.coefficient * fc;
             let xi = v2(z, P_XT);
             if let Some(bed) = &self.bed {
-                let f_bed = bed.borrow().force(&lift(&n), &lift(&xi), a, limit);
+                let f_bed = bed
+                    .borrow()
+                    .force(&BedState::new(lift(&n), lift(&xi), a, limit));
                 let s = dashpot_share(&f_bed, &lift(&(v_tr * gamma)), limit);
                 f_t = f_bed.xy() - v_tr * (gamma * s);
                 put2(dz, P_XT, &(v_tr - n * xi.dot(&n_dot)));

@@ -1,6 +1,7 @@
 //! One segment of an oblique impact: the integration from one event to the next
 //! ([`Setup::segment`]), and the spring bed's onset and commits around it.
 
+use super::bed::BedState;
 use super::elements::{keep_first, model_error};
 use super::limits::{
     EVENTS, EVENT_ZERO, IDENTIFIED_EVENT_VALUE, NORMAL_FORCE_ZERO, PATH_CHORDS, ZERO_EVENT_VALUE,
@@ -514,17 +515,17 @@ impl<'a> Setup<'a> {
                 start + theta * (stop - start)
             };
             let (a, fc, .., n) = self.contact(law, t, &y)?;
-            Ok((n, v3(&y, XT), a, mu * fc))
+            Ok(BedState::new(n, v3(&y, XT), a, mu * fc))
         };
         let end = at(1.0)?;
-        if bed.borrow().path_dependent(&end.0, &end.1, end.2, end.3) {
+        if bed.borrow().path_dependent(&end) {
             let mut path = [end; PATH_CHORDS];
             for (k, point) in path.iter_mut().enumerate().take(PATH_CHORDS - 1) {
                 *point = at((k + 1) as f64 / PATH_CHORDS as f64)?;
             }
             bed.borrow_mut().commit_along(&path);
         } else {
-            bed.borrow_mut().commit(&end.0, &end.1, end.2, end.3);
+            bed.borrow_mut().commit(&end);
         }
         Ok(())
     }

@@ -2,7 +2,7 @@
 //! friction elements, and the quantities fixed during one impact ([`Setup`]):
 //! geometry, kinetic energy and the rates of the state ([`Setup::evaluate`]).
 
-use super::bed::MicroSlipBed;
+use super::bed::{BedState, MicroSlipBed};
 use super::bodies::ObliqueImpact;
 use super::elements::*;
 use super::limits::*;
@@ -333,7 +333,7 @@ impl<'a> Setup<'a> {
             if let Some(bed) = &self.bed {
                 // Mindlin-Deresiewicz: the spring bed, a dashpot in parallel up to
                 // the Coulomb limit (the bed alone never exceeds it)
-                let f_bed = bed.borrow().force(&n, &xi, a, limit);
+                let f_bed = bed.borrow().force(&BedState::new(n, xi, a, limit));
                 let s = dashpot_share(&f_bed, &(v_tr * gamma), limit);
                 f_t = f_bed - v_tr * (gamma * s);
                 put(&mut out.dy, XT, &(v_tr - n * xi.dot(&n_dot)));
