@@ -39,14 +39,21 @@ pub struct EnergyLosses {
 impl EnergyLosses {
     /// The sum of all mechanisms (J).
     pub fn total(&self) -> f64 {
-        self.normal_adhesion
-            + self.normal_damping
-            + self.sliding_friction
-            + self.micro_slip
-            + self.tangential_damping
-            + self.tangential_spring
-            + self.rolling
-            + self.twisting
-            + self.torque_arm
+        self.by_mechanism().iter().map(|(_, w)| w).sum()
+    }
+
+    /// Every mechanism's loss (J) with its name, in the order of the fields.
+    pub(crate) fn by_mechanism(&self) -> [(&'static str, f64); 9] {
+        [
+            ("normal adhesion", self.normal_adhesion),
+            ("normal damping", self.normal_damping),
+            ("sliding friction", self.sliding_friction),
+            ("micro-slip", self.micro_slip),
+            ("tangential damping", self.tangential_damping),
+            ("tangential spring", self.tangential_spring),
+            ("rolling", self.rolling),
+            ("twisting", self.twisting),
+            ("torque arm", self.torque_arm),
+        ]
     }
 }

@@ -465,17 +465,10 @@ mod tests {
                 }
                 let total = planar.kinetic_energy;
                 let (p, f) = (&planar.losses, &full.losses);
-                for (a, b) in [
-                    (p.normal_adhesion, f.normal_adhesion),
-                    (p.sliding_friction, f.sliding_friction),
-                    (p.tangential_spring, f.tangential_spring),
-                    (p.rolling, f.rolling),
-                    (p.twisting, f.twisting),
-                    (p.torque_arm, f.torque_arm),
-                ] {
+                for ((name, a), (_, b)) in p.by_mechanism().into_iter().zip(f.by_mechanism()) {
                     assert!(
                         (a - b).abs() <= 1e-10 * total,
-                        "loss (flat {flat}, {angle}°): planar {a:e}, full {b:e}"
+                        "{name} (flat {flat}, {angle}°): planar {a:e}, full {b:e}"
                     );
                 }
                 assert!(planar.energy_error < 1e-11 && full.energy_error < 1e-11);
@@ -495,15 +488,8 @@ mod tests {
                 let reference = impact(flat, angle, false, 1e-13);
                 for accuracy in [1e-8, 1e-10] {
                     let out = impact(flat, angle, false, accuracy);
-                    let (p, f) = (&out.losses, &reference.losses);
-                    for (name, a, b) in [
-                        ("adhesion", p.normal_adhesion, f.normal_adhesion),
-                        ("sliding", p.sliding_friction, f.sliding_friction),
-                        ("spring", p.tangential_spring, f.tangential_spring),
-                        ("rolling", p.rolling, f.rolling),
-                        ("twisting", p.twisting, f.twisting),
-                        ("torque arm", p.torque_arm, f.torque_arm),
-                    ] {
+                    let (p, f) = (out.losses.by_mechanism(), reference.losses.by_mechanism());
+                    for ((name, a), (_, b)) in p.into_iter().zip(f) {
                         assert!(
                             (a - b).abs() <= 1e-9 * out.kinetic_energy,
                             "{name} (flat {flat}, {angle}°, {accuracy:e}): {a:e} vs {b:e}"
@@ -540,14 +526,8 @@ mod tests {
                         "{what} (flat {flat}, {angle}°): {a:e} vs {b:e} at 1e-13"
                     );
                 }
-                let (p, f) = (&out.losses, &reference.losses);
-                for (what, a, b) in [
-                    ("micro-slip", p.micro_slip, f.micro_slip),
-                    ("adhesion", p.normal_adhesion, f.normal_adhesion),
-                    ("spring", p.tangential_spring, f.tangential_spring),
-                    ("rolling", p.rolling, f.rolling),
-                    ("twisting", p.twisting, f.twisting),
-                ] {
+                let (p, f) = (out.losses.by_mechanism(), reference.losses.by_mechanism());
+                for ((what, a), (_, b)) in p.into_iter().zip(f) {
                     assert!(
                         (a - b).abs() <= 1e-7 * out.kinetic_energy,
                         "{what} (flat {flat}, {angle}°): {a:e} vs {b:e} at 1e-13"
@@ -618,16 +598,10 @@ mod tests {
                 );
                 let total = planar.kinetic_energy;
                 let (p, f) = (&planar.losses, &full.losses);
-                for (a, b) in [
-                    (p.normal_adhesion, f.normal_adhesion),
-                    (p.micro_slip, f.micro_slip),
-                    (p.tangential_spring, f.tangential_spring),
-                    (p.rolling, f.rolling),
-                    (p.torque_arm, f.torque_arm),
-                ] {
+                for ((name, a), (_, b)) in p.by_mechanism().into_iter().zip(f.by_mechanism()) {
                     assert!(
                         (a - b).abs() <= 1e-6 * total,
-                        "loss (flat {flat}, {angle}°): planar {a:e}, full {b:e}"
+                        "{name} (flat {flat}, {angle}°): planar {a:e}, full {b:e}"
                     );
                 }
                 assert!(planar.energy_error < 1e-11 && full.energy_error < 1e-11);
