@@ -152,26 +152,16 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
                 vector(s.velocity),
                 vector(s.angular_velocity)
             )?;
-            let l = &o.losses;
             writeln!(
                 out,
                 "energy loss            {} of {}",
                 r.value(o.energy_loss, "J"),
                 r.value(o.kinetic_energy, "J")
             )?;
-            let mechanisms = [
-                ("normal adhesion", l.normal_adhesion),
-                ("normal damping", l.normal_damping),
-                ("sliding friction", l.sliding_friction),
-                ("micro-slip", l.micro_slip),
-                ("tangential damping", l.tangential_damping),
-                ("tangential spring", l.tangential_spring),
-                ("rolling", l.rolling),
-                ("twisting", l.twisting),
-                ("torque arm", l.torque_arm),
-            ];
             // micro-slip only where the model has it (mindlin_deresiewicz)
-            for (name, value) in mechanisms
+            for (name, value) in o
+                .losses
+                .by_mechanism()
                 .into_iter()
                 .filter(|(name, value)| *name != "micro-slip" || *value != 0.0)
             {

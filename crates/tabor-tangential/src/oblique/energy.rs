@@ -42,8 +42,9 @@ impl EnergyLosses {
         self.by_mechanism().iter().map(|(_, w)| w).sum()
     }
 
-    /// Every mechanism's loss (J) with its name, in the order of the fields.
-    pub(crate) fn by_mechanism(&self) -> [(&'static str, f64); 9] {
+    /// Every mechanism's loss (J) with its name (as the command line prints
+    /// it), in the order of the fields.
+    pub fn by_mechanism(&self) -> [(&'static str, f64); 9] {
         [
             ("normal adhesion", self.normal_adhesion),
             ("normal damping", self.normal_damping),

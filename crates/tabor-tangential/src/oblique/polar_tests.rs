@@ -125,16 +125,7 @@ fn polar_segments_match_the_cartesian_ones() {
                     close(a, b, name);
                 }
                 let total = polar.kinetic_energy;
-                let losses = |o: &ObliqueOutcome| {
-                    let l = &o.losses;
-                    [
-                        ("adhesion", l.normal_adhesion),
-                        ("sliding", l.sliding_friction),
-                        ("spring", l.tangential_spring),
-                        ("rolling", l.rolling),
-                        ("torque arm", l.torque_arm),
-                    ]
-                };
+                let losses = |o: &ObliqueOutcome| o.losses.by_mechanism();
                 let (c, f) = (losses(&cartesian), losses(&fine));
                 for (k, (name, a)) in losses(&polar).into_iter().enumerate() {
                     let d = ((a - c[k].1).abs()).min((a - f[k].1).abs()) / total;
