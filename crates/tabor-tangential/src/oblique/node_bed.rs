@@ -310,7 +310,6 @@ impl NodeBed {
         let Some(p) = self.probe(state) else {
             return false;
         };
-        let inside = ((p.a2 / self.dz).ceil() as usize).min(self.w.len());
         let dependent = |i: usize| {
             let (t, cap, entered) = self.unmapped(i, &p);
             if t.norm_squared() >= cap * cap {
@@ -319,36 +318,34 @@ impl NodeBed {
             let cap0 = self.phi0 * (self.a0_sq - i as f64 * self.dz);
             entered || (cap0 > 0.0 && self.committed(i).norm() >= cap0 * (1.0 - 1e-12))
         };
-        if !self.frame_holds(&p) {
-            return (0..inside).any(dependent);
-        }
-        let first_new = (self.a0_sq / self.dz).ceil() as usize;
-        self.explicit
-            .iter()
-            .copied()
-            .filter(|&i| i < inside)
-            .chain(first_new..inside)
-            .any(dependent)
+        let all = !self.frame_holds(&p);
+        self.outside(&p, all).any(dependent)
+    }
+
+    /// The nodes in contact at the probe that the frame does not carry (every
+    /// node when `all`): those outside it at the last commit, then those the
+    /// contact reached since.
+    fn outside(&self, p: &Probe, all: bool) -> impl Iterator<Item = usize> + '_ {
+        let inside = ((p.a2 / self.dz).ceil() as usize).min(self.w.len());
+        let (a2, first_new) = (p.a2, (self.a0_sq / self.dz).ceil() as usize);
+        let (every, explicit, new) = match all {
+            true => (0..inside, &[][..], 0..0),
+            false => (0..0, &self.explicit[..], first_new..inside),
+        };
+        every
+            .chain(
+                explicit
+                    .iter()
+                    .copied()
+                    .filter(move |&i| (i as f64) * self.dz < a2),
+            )
+            .chain(new)
     }
 
     /// Calls `visit(i, w_i)` for every node in contact at the probe that the
     /// frame does not carry (every node when `all`).
     fn visit_outside<F: FnMut(usize, Vector3<f64>)>(&self, p: &Probe, all: bool, mut visit: F) {
-        let inside = (p.a2 / self.dz).ceil() as usize;
-        if all {
-            for i in 0..inside.min(self.w.len()) {
-                visit(i, self.trial(i, p));
-            }
-            return;
-        }
-        for &i in &self.explicit {
-            if (i as f64) * self.dz < p.a2 {
-                visit(i, self.trial(i, p));
-            }
-        }
-        // nodes the contact reached since the commit
-        let first_new = (self.a0_sq / self.dz).ceil() as usize;
-        for i in first_new..inside.min(self.w.len()) {
+        for i in self.outside(p, all) {
             visit(i, self.trial(i, p));
         }
     }

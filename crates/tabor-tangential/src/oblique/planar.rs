@@ -13,8 +13,8 @@ use super::state::*;
 use std::cell::Cell;
 use tabor_dynamics::ForceLaw;
 use tabor_numerics::ode::{
-    drive, drive_events, DenseStepper, DormandPrince, DormandPrince853, EventDirection,
-    EventsIntegration, OdeSolution, OdeTolerance,
+    drive_events, DormandPrince, DormandPrince853, EventDirection, EventsIntegration, OdeSolution,
+    OdeTolerance,
 };
 use tabor_restitution::Error;
 
@@ -308,24 +308,6 @@ impl Run<'_, '_> {
         let mut f = |s: f64, x: &[f64; M]| self.rates((&slots, &units), s, x);
         let mut g = |s: f64, x: &[f64; M]| self.event(s, x)[0];
         let in_contact = self.modes.in_contact;
-        // the bed committed along the step's continuous solution (its end the
-        // stepper's own state), at the event on the step that holds it
-        let mut commit = |st: &DormandPrince<M>, stop: f64| {
-            if in_contact {
-                let (t_end, x_end) = st.current();
-                let start = st.step_start();
-                let state = |theta: f64| {
-                    Setup::full_of(&self.si(&match theta == 1.0 && stop == t_end {
-                        true => x_end,
-                        false => st.dense(start + theta * (stop - start)),
-                    }))
-                };
-                let step = (start * setup.time, stop * setup.time);
-                if let Err(e) = setup.commit_bed_along(self.law, step, &state) {
-                    keep_first(self.failure, e);
-                }
-            }
-        };
         // the full state's error norm: its root-mean-square over 27 components,
         // 9 of whose errors are exactly 0, is that over these 18 with the
         // tolerance scaled by √(27/18) (so are Hairer's first-step norms): the
@@ -338,13 +320,13 @@ impl Run<'_, '_> {
         };
         let x0 = std::array::from_fn(|j| yn[PLANAR[slots[j]]]);
         let mut stepper = DormandPrince::new(&mut f, s0, x0, s_end, tolerance)?;
-        let falling = EventDirection::Falling;
-        let run = drive(&mut stepper, &mut f, &mut g, falling, s_end, &mut commit)?;
-        let run = EventsIntegration {
-            event: run.solution.event_found.then_some(0),
-            solution: run.solution,
-            event_cost: run.event_cost,
-        };
+        let si = |x: &[f64; M]| Setup::full_of(&self.si(x));
+        let bed = (
+            in_contact,
+            &si as &dyn Fn(&[f64; M]) -> [f64; N],
+            self.failure,
+        );
+        let run = setup.drive_committing(self.law, &mut stepper, (&mut f, &mut g), s_end, bed)?;
         Ok(expand(yn, &slots, run))
     }
 }

@@ -156,24 +156,6 @@ impl<'a> Setup<'a> {
                 .unwrap_or(Error::Numerics(e))
         };
         let micro_slip = self.bed.is_some() && modes.in_contact;
-        // micro-slip: the springs' state committed along every accepted step (to
-        // the event on the step that holds it)
-        let mut commit = |st: &DormandPrince<N>, stop: f64| {
-            if micro_slip {
-                let (t_end, y_end) = st.current();
-                let start = st.step_start();
-                let state = |theta: f64| {
-                    self.to_si(&match theta == 1.0 && stop == t_end {
-                        true => y_end,
-                        false => st.dense(start + theta * (stop - start)),
-                    })
-                };
-                let step = (start * self.time, stop * self.time);
-                if let Err(e) = self.commit_bed_along(law, step, &state) {
-                    keep_first(&failure, e);
-                }
-            }
-        };
         let mut events = |s: f64, yn: &[f64; N]| [g(s, yn)];
         // the smooth models with DOP853 (as the central simulated impact), the
         // spring bed, piecewise smooth within a step, with Dormand-Prince 5(4)
@@ -229,14 +211,13 @@ impl<'a> Setup<'a> {
             let mut stepper =
                 DormandPrince::new(&mut rhs, s0, yn, s_end, tolerance).map_err(&numerics)?;
             let mut g = |s: f64, yn: &[f64; N]| events(s, yn)[0];
-            let falling = EventDirection::Falling;
-            drive(&mut stepper, &mut rhs, &mut g, falling, s_end, &mut commit).map(|run| {
-                EventsIntegration {
-                    event: run.solution.event_found.then_some(0),
-                    solution: run.solution,
-                    event_cost: run.event_cost,
-                }
-            })
+            let to_si = |yn: &[f64; N]| self.to_si(yn);
+            let bed = (
+                micro_slip,
+                &to_si as &dyn Fn(&[f64; N]) -> [f64; N],
+                &failure,
+            );
+            self.drive_committing(law, &mut stepper, (&mut rhs, &mut g), s_end, bed)
         } else {
             let motion = self.controlled_motion(modes, false);
             let tolerance = self.dop853_tolerance(settings.tolerance, quadratures, motion);
@@ -418,6 +399,14 @@ pub(super) fn sliding_work_to_event<S, F, const M: usize>(
     sol.y[k] = stepper.dense(t_n)[k] + half * work;
 }
 
+/// Whether a run commits the spring bed (in contact, with micro-slip), the SI full
+/// state of the stepper's state, and the cell that keeps a commit's first error.
+type BedCommits<'c, const M: usize> = (
+    bool,
+    &'c dyn Fn(&[f64; M]) -> [f64; N],
+    &'c Cell<Option<Error>>,
+);
+
 /// One run of [`drive_events`] to the falling zero of the event function `g`, the
 /// dense output prepared only on the step that contains it; `observer` sees the
 /// end of every other accepted step.
@@ -487,6 +476,50 @@ impl<'a> Setup<'a> {
             bed.borrow_mut().reset(&v3(y, XT), &n, a);
         }
         Ok(())
+    }
+
+    /// Dormand-Prince 5(4) (the spring bed's method) from its current point to the
+    /// falling zero of the event function `g` (or `s_end`), committing the bed
+    /// along every accepted step where `commits.0` ([`Setup::commit_bed_along`];
+    /// on the step that holds the event, to the event): its continuous solution
+    /// is taken at the step's pieces, the step's end is the stepper's own state,
+    /// `commits.1` turns a state into the SI full one, and a commit's error is
+    /// kept in `commits.2`.
+    pub(super) fn drive_committing<const M: usize, F, G>(
+        &self,
+        law: &dyn ForceLaw,
+        stepper: &mut DormandPrince<M>,
+        (f, g): (&mut F, &mut G),
+        s_end: f64,
+        (commits, si, failure): BedCommits<'_, M>,
+    ) -> tabor_numerics::Result<EventsIntegration<M>>
+    where
+        F: FnMut(f64, &[f64; M]) -> [f64; M],
+        G: FnMut(f64, &[f64; M]) -> f64,
+    {
+        let mut commit = |st: &DormandPrince<M>, stop: f64| {
+            if !commits {
+                return;
+            }
+            let (t_end, x_end) = st.current();
+            let start = st.step_start();
+            let state = |theta: f64| {
+                si(&match theta == 1.0 && stop == t_end {
+                    true => x_end,
+                    false => st.dense(start + theta * (stop - start)),
+                })
+            };
+            let step = (start * self.time, stop * self.time);
+            if let Err(e) = self.commit_bed_along(law, step, &state) {
+                keep_first(failure, e);
+            }
+        };
+        let run = drive(stepper, f, g, EventDirection::Falling, s_end, &mut commit)?;
+        Ok(EventsIntegration {
+            event: run.solution.event_found.then_some(0),
+            solution: run.solution,
+            event_cost: run.event_cost,
+        })
     }
 
     /// Commits the spring bed over an accepted step from SI time `start` to
