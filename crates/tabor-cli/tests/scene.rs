@@ -447,3 +447,36 @@ fn grazing_impacts_answer_in_the_turned_line_of_centres_or_are_refused() {
     assert_eq!(v["normal_restitution"], 0.0);
     assert!(v["rebound_angle"].is_null() && v["tangential_restitution"].is_null());
 }
+
+#[test]
+fn a_missing_tangential_restitution_says_why() {
+    // The text report has no tangential restitution where the contact point does
+    // not slide before the impact (angle 0, no spin) or where the bodies stick
+    // (80° at 0.3 m/s: 0.052 m/s along the normal, below the sticking velocity);
+    // the reason it gave used to be the first in both cases.
+    let line = |angle: &str| {
+        let out = tabor(&["impact", &scene("silica_oblique.toml"), "--angle", angle]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout)
+            .unwrap()
+            .lines()
+            .find(|l| l.starts_with("tangential restitution"))
+            .map(str::to_owned)
+            .unwrap()
+    };
+    assert!(
+        line("0").ends_with("- (no sliding before impact)"),
+        "{}",
+        line("0")
+    );
+    assert!(
+        line("80").ends_with("- (the bodies stick)"),
+        "{}",
+        line("80")
+    );
+    assert!(line("40").ends_with("(contact point)"), "{}", line("40"));
+}

@@ -138,6 +138,9 @@ pub fn impact(args: &ImpactArgs) -> Outcome {
                     "tangential restitution {} (contact point)",
                     r.value(e, "")
                 )?,
+                // `None` for bodies that stick, or a contact point that does
+                // not slide before the impact
+                None if o.sticks => writeln!(out, "tangential restitution - (the bodies stick)")?,
                 None => writeln!(out, "tangential restitution - (no sliding before impact)")?,
             }
             match o.rebound_angle {
