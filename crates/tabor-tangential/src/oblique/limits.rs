@@ -46,6 +46,14 @@ pub(super) const FRAME_STEPS: f64 = 16.0;
 /// (10° / 40°) of its converged value to 3.8e-7 / 2.5e-7, at the same steps.
 pub(super) const PATH_CHORDS: usize = 4;
 
+/// How long (in time units L/v) an element that chatters stays frozen the first
+/// time (`ObliqueImpact::simulate`; twice as long at each further freeze): the
+/// chattering at a tangency of a trial force and its limit passes within a
+/// fraction of the contact (the transient of a Maugis-Dugdale jump-in with
+/// tangential damping), and a freeze that outlasts it holds the element in a
+/// mode the motion has left.
+pub(super) const FROZEN_FIRST: f64 = 1e-3;
+
 /// The number of event functions of a segment (`Setup::event_values`).
 pub(super) const EVENTS: usize = 11;
 

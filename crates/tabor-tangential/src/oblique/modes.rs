@@ -254,16 +254,34 @@ impl<'a> Setup<'a> {
         y: &mut [f64; N],
         modes: &mut Modes,
     ) -> Result<()> {
+        for element in 0..3 {
+            self.decide_element(law, t, y, modes, element)?;
+        }
+        Ok(())
+    }
+
+    /// [`Setup::decide_modes`] for one element (0 tangential, 1 rolling, 2
+    /// twisting); nothing for an element the contact does not have (or the
+    /// tangential one of a spring bed).
+    fn decide_element(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &mut [f64; N],
+        modes: &mut Modes,
+        element: usize,
+    ) -> Result<()> {
         let Some(fr) = &self.imp.friction else {
             return Ok(());
         };
-        for slot in [XT, XR] {
+        if element < 2 {
+            let slot = [XT, XR][element];
             if (slot == XR && fr.rolling.is_none()) || (slot == XT && self.bed.is_some()) {
-                continue;
+                return Ok(());
             }
             let (trial, limit, ..) = self.element(law, t, y, slot)?;
             if trial.norm() <= limit {
-                continue;
+                return Ok(());
             }
             let mut slip = *modes;
             if slot == XT {
@@ -285,8 +303,7 @@ impl<'a> Setup<'a> {
             } else {
                 self.leave_slip(law, t, y, modes, slot)?;
             }
-        }
-        if fr.twisting.is_some() {
+        } else if fr.twisting.is_some() {
             let m = self.twist_trial(law, t, y)?;
             let (a, fc, ..) = self.contact(law, t, y)?;
             let (_, _, l) = twist_coefficients(
@@ -308,6 +325,30 @@ impl<'a> Setup<'a> {
             }
         }
         Ok(())
+    }
+
+    /// Looks again at a frozen element (0 tangential, 1 rolling, 2 twisting) at
+    /// its thaw time: it is no longer frozen; where it sticks, it slips if its
+    /// trial force (capped while it was frozen) is beyond its limit and keeps
+    /// outgrowing it ([`Setup::decide_modes`]); where it slips, it sticks if its
+    /// slip rate is not positive ([`Setup::stick_reversed_slips`]). Returns the
+    /// number of tangential switches.
+    pub(super) fn thaw(
+        &self,
+        law: &dyn ForceLaw,
+        t: f64,
+        y: &mut [f64; N],
+        modes: &mut Modes,
+        element: usize,
+    ) -> Result<usize> {
+        modes.frozen[element] = false;
+        modes.thaw[element] = f64::INFINITY;
+        let mode = [modes.tangential, modes.rolling, modes.twisting][element];
+        if mode == Mode::Stick {
+            self.decide_element(law, t, y, modes, element)?;
+            return Ok(usize::from(element == 0 && modes.tangential == Mode::Slip));
+        }
+        self.stick_reversed_slips(law, t, y, modes)
     }
 
     /// After an event: each slipping element whose slip rate is ≤ 0 there
@@ -396,9 +437,10 @@ impl<'a> Setup<'a> {
             g[8] = WARMUP - overlap / self.length;
             return Ok(g);
         }
-        if !modes.in_contact || self.imp.friction.is_none() || modes.frozen == [true; 3] {
+        if !modes.in_contact || self.imp.friction.is_none() || modes.frozen_for_good() {
             return Ok(g);
         }
+        modes.thaw_events(&mut g, t, self.time);
         let normal = &self.imp.normal;
         if normal.pull_off_force <= 0.0 && normal.damping > 0.0 {
             let np = self.normal(law, overlap, rate, false)?;

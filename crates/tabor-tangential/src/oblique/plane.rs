@@ -387,9 +387,10 @@ impl<'a> Setup<'a> {
         let Some(fr) = self.imp.friction.as_ref() else {
             return Ok(g);
         };
-        if !modes.in_contact || modes.frozen == [true; 3] {
+        if !modes.in_contact || modes.frozen_for_good() {
             return Ok(g);
         }
+        modes.thaw_events(&mut g, t, self.time);
         let normal = &self.imp.normal;
         if normal.pull_off_force <= 0.0 && normal.damping > 0.0 {
             let np = self.normal(law, overlap, rate, false)?;

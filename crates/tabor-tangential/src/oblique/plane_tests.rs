@@ -159,6 +159,7 @@ fn planar_modes() -> Vec<Modes> {
     let base = Modes {
         in_contact: true,
         frozen: [false; 3],
+        thaw: [f64::INFINITY; 3],
         warmup: false,
         loading: true,
         tangential: Mode::Stick,

@@ -372,9 +372,9 @@ impl Polar<'_, '_> {
         Ok(out)
     }
 
-    /// [`Setup::planar_event_values`] of the polar SI state `z` (undamped: no
-    /// dashpot in a trial force, no zero of a damped normal force).
-    fn event_values(&self, z: &[f64; PN]) -> Result<[f64; EVENTS]> {
+    /// [`Setup::planar_event_values`] of the polar SI state `z` at SI time `t`
+    /// (undamped: no dashpot in a trial force, no zero of a damped normal force).
+    fn event_values(&self, t: f64, z: &[f64; PN]) -> Result<[f64; EVENTS]> {
         let s = self.setup;
         let modes = self.modes;
         let (q, rate) = (z[Q], z[RATE]);
@@ -385,9 +385,10 @@ impl Polar<'_, '_> {
         let Some(fr) = s.imp.friction.as_ref() else {
             return Ok(g);
         };
-        if modes.frozen == [true; 3] {
+        if modes.frozen_for_good() {
             return Ok(g);
         }
+        modes.thaw_events(&mut g, t, s.time);
         let slip_rates = if modes.tangential == Mode::Slip || modes.rolling == Mode::Slip {
             self.rates_at(z, &p, &mut [0.0; PN])?
         } else {
@@ -503,8 +504,8 @@ impl Polar<'_, '_> {
                 }
             }
         };
-        let mut g = |_: f64, x: &[f64; M]| -> [f64; 1] {
-            [match self.event_values(&self.si(x)) {
+        let mut g = |sn: f64, x: &[f64; M]| -> [f64; 1] {
+            [match self.event_values(sn * time, &self.si(x)) {
                 Ok(v) => combine(v),
                 Err(e) => {
                     keep_first(g_failure, e);

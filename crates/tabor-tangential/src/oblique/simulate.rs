@@ -294,6 +294,7 @@ impl ObliqueImpact {
         let mut modes = Modes {
             in_contact: law.in_contact(),
             frozen: [false; 3],
+            thaw: [f64::INFINITY; 3],
             warmup: false,
             loading: true,
             tangential: Mode::Stick,
@@ -315,11 +316,20 @@ impl ObliqueImpact {
         let mut events = 0usize;
         let mut slip_switches = 0usize;
         let mut last_switch: [Option<f64>; 3] = [None; 3];
+        // how long an element that chatters stays frozen: doubled at each freeze
+        let mut freeze_for = [FROZEN_FIRST * setup.time; 3];
         let linear_history = self
             .friction
             .as_ref()
             .is_some_and(|f| f.tangential.model == crate::model::TangentialModel::LinearHistory);
         let decision = loop {
+            // a frozen element whose thaw time has come without its event (an
+            // event of another kind at the same time) is looked at again here
+            for element in 0..3 {
+                if modes.frozen[element] && modes.thaw[element] <= t {
+                    slip_switches += setup.thaw(law, t, &mut y, &mut modes, element)?;
+                }
+            }
             // a damped contact without the energy to separate (`Modes::doomed`:
             // it formed without it, judged here after its onset; its escape
             // energy ran out at the event `Capture`; or a value that jumped
@@ -399,21 +409,36 @@ impl ObliqueImpact {
                 // Two switches of one element in immediate succession (10⁻⁹ of
                 // the time unit) are chattering at a tangency of its trial force
                 // and its limit (a stiff dashpot keeps them together): that
-                // element is frozen, its force capped at the limit.
+                // element is frozen, its force capped at the limit, for
+                // FROZEN_FIRST of the time unit, then twice as long each time it
+                // chatters again. Frozen for the rest of the impact, an element
+                // frozen in slip kept pushing along its old direction after the
+                // motion had turned: the bodies gained energy (a Maugis-Dugdale
+                // jump-in with tangential damping: e_t = −3.7, the kinetic
+                // energy up by 170 %).
                 let element = match event {
                     Event::TangentialLimit | Event::TangentialStick => 0,
                     Event::RollingLimit | Event::RollingStick => 1,
                     _ => 2,
                 };
+                // a frozen element's event is its thaw time: it is looked at
+                // again, and chattering there freezes it for twice as long
+                if modes.frozen[element] {
+                    slip_switches += setup.thaw(law, t, &mut y, &mut modes, element)?;
+                    continue;
+                }
                 let near_end = law.branch_end(overlap, rate)? < 1e-6 * setup.length;
                 let repeated = last_switch[element].is_some_and(|s: f64| t - s < 1e-9 * setup.time);
                 last_switch[element] = Some(t);
                 if near_end {
                     modes.frozen = [true; 3];
+                    modes.thaw = [f64::INFINITY; 3];
                     continue;
                 }
                 if repeated {
                     modes.frozen[element] = true;
+                    modes.thaw[element] = t + freeze_for[element];
+                    freeze_for[element] *= 2.0;
                     continue;
                 }
             }

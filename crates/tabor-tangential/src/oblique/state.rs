@@ -55,6 +55,10 @@ pub(super) struct Modes {
     /// ended (chattering, see `ObliqueImpact::simulate`): a frozen element keeps
     /// its mode, its stick force capped at the limit.
     pub(super) frozen: [bool; 3],
+    /// The SI time at which each frozen element is looked at again (its event
+    /// slot's value falls to 0 there: [`Modes::thaw_events`]); ∞ where it stays
+    /// frozen for the rest of the impact (at a vanishing contact).
+    pub(super) thaw: [f64; 3],
     /// The first 10⁻⁶ of the overlap scale of a contact that starts without a
     /// Coulomb limit: no friction force yet, the springs follow the motion.
     pub(super) warmup: bool,
@@ -74,6 +78,28 @@ pub(super) struct Modes {
     /// its capture waits for the normal motion to come to rest
     /// (`Setup::capture_value`).
     pub(super) doomed: bool,
+}
+
+impl Modes {
+    /// True where every element is frozen for the rest of the impact: no
+    /// element has an event value.
+    pub(super) fn frozen_for_good(&self) -> bool {
+        self.frozen == [true; 3] && self.thaw.iter().all(|t| t.is_infinite())
+    }
+
+    /// The event values of the frozen elements that are looked at again at
+    /// their thaw time, at SI time `t` (`time`: the time unit): `(thaw − t)/time`
+    /// in the slot of the element's switch from its mode (its limit while it
+    /// sticks, its stick while it slips), which a frozen element leaves empty.
+    pub(super) fn thaw_events(&self, g: &mut [f64; EVENTS], t: f64, time: f64) {
+        let modes = [self.tangential, self.rolling, self.twisting];
+        for (i, mode) in modes.into_iter().enumerate() {
+            if self.frozen[i] && self.thaw[i].is_finite() {
+                let slot = 2 + 2 * i + usize::from(mode == Mode::Slip);
+                g[slot] = (self.thaw[i] - t) / time;
+            }
+        }
+    }
 }
 
 /// Everything fixed during one impact.
