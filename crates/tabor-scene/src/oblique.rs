@@ -106,7 +106,9 @@ impl Scene {
     /// The oblique impact at relative speed `speed` (m/s) and angle `angle`
     /// (degrees, [0, 90)), simulated with translation and rotation
     /// (`tabor_tangential::oblique`) through the normal force law of the model the
-    /// scene selects at the normal speed `v cos α` (Hertz, JKR with the scene's
+    /// scene selects at the normal speed `v cos α`, with the scene's adhesion even
+    /// where the central loss finds it negligible (it sets the friction limits
+    /// and the contact at first touch) (Hertz, JKR with the scene's
     /// separation rule, Maugis-Dugdale, the elasto-plastic laws, the
     /// viscous-adhesive model with its Kuwabara-Kono damping, and any of these with
     /// the scene's `[damping]`: its normal damping `c a^β ḋ`, β = 1 for
@@ -122,7 +124,10 @@ impl Scene {
         let alpha = check_angle(angle).map_err(SceneError::model)?;
         let normal_speed = v * alpha.to_radians().cos();
         let prepared = self.prepared()?;
-        let outcome = prepared.outcome_at(normal_speed)?;
+        let mut outcome = prepared.outcome_at(normal_speed)?;
+        // the law of every effect the oblique impact needs (adhesion kept where
+        // the central loss found it negligible: it sets the friction limits)
+        outcome.combination = prepared.oblique_combination(normal_speed)?;
         let rule = outcome.combination.rule;
         let models = prepared.models();
         let adhesive = outcome.combination.effects.contains(&EffectKind::Adhesion);

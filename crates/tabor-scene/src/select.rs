@@ -232,6 +232,37 @@ impl<'a> Prepared<'a> {
         })
     }
 
+    /// The combination an oblique impact at normal speed `speed` simulates:
+    /// [`Prepared::select`]'s, but with the scene's adhesion where that dropped it
+    /// as negligible. The drop is judged on the central loss; adhesion also sets
+    /// the friction limits (the pull-off force in `F_n + 2 F_pull-off`) and the
+    /// contact at first touch (a finite radius, the tangential spring sticking
+    /// from the start, where a law without adhesion runs a friction-free
+    /// warm-up), which the central loss does not measure: two stiff 9 mm spheres
+    /// with w = 2.8e-3 J/m² at 0.032 m/s and 42.6°, e_t 0.4028 without adhesion
+    /// (its drop at accuracy 1e-8), 0.4008 with it.
+    pub(crate) fn oblique_combination(&self, speed: f64) -> Result<Combination, SceneError> {
+        let selection = self.select(speed)?;
+        let dropped_adhesion = selection
+            .dropped
+            .iter()
+            .any(|d| d.effect == EffectKind::Adhesion);
+        if !dropped_adhesion {
+            return Ok(selection.combination());
+        }
+        let mut used = self.models().candidates;
+        for d in &selection.dropped {
+            if d.effect != EffectKind::Adhesion {
+                used = used.without(d.effect);
+            }
+        }
+        let evaluation = self
+            .models()
+            .evaluate(&used, speed)
+            .map_err(|e| self.locate(e))?;
+        Ok(Combination::of(evaluation.rule, &used))
+    }
+
     /// Where the scene's model sticks (the root of ε(v) = 0 of the model that
     /// answers at each speed, searched within the model's validity), with the
     /// work spent.
