@@ -127,7 +127,7 @@ impl Scene {
         let mut outcome = prepared.outcome_at(normal_speed)?;
         // the law of every effect the oblique impact needs (adhesion kept where
         // the central loss found it negligible: it sets the friction limits)
-        outcome.combination = prepared.oblique_combination(normal_speed)?;
+        outcome.combination = prepared.oblique_combination(&outcome.combination, normal_speed)?;
         let rule = outcome.combination.rule;
         let models = prepared.models();
         let adhesive = outcome.combination.effects.contains(&EffectKind::Adhesion);

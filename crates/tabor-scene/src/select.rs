@@ -232,28 +232,35 @@ impl<'a> Prepared<'a> {
         })
     }
 
-    /// The combination an oblique impact at normal speed `speed` simulates:
-    /// [`Prepared::select`]'s, but with the scene's adhesion where that dropped it
-    /// as negligible. The drop is judged on the central loss; adhesion also sets
-    /// the friction limits (the pull-off force in `F_n + 2 F_pull-off`) and the
-    /// contact at first touch (a finite radius, the tangential spring sticking
-    /// from the start, where a law without adhesion runs a friction-free
-    /// warm-up), which the central loss does not measure: two stiff 9 mm spheres
-    /// with w = 2.8e-3 J/m² at 0.032 m/s and 42.6°, e_t 0.4028 without adhesion
-    /// (its drop at accuracy 1e-8), 0.4008 with it.
-    pub(crate) fn oblique_combination(&self, speed: f64) -> Result<Combination, SceneError> {
-        let selection = self.select(speed)?;
-        let dropped_adhesion = selection
-            .dropped
-            .iter()
-            .any(|d| d.effect == EffectKind::Adhesion);
-        if !dropped_adhesion {
-            return Ok(selection.combination());
+    /// The combination an oblique impact at normal speed `speed` simulates: the
+    /// central one there (`central`, [`Prepared::select`]'s), but with the
+    /// scene's adhesion where that dropped it as negligible. The drop is judged on
+    /// the central loss; adhesion also sets the friction limits (the pull-off
+    /// force in `F_n + 2 F_pull-off`) and the contact at first touch (a finite
+    /// radius, the tangential spring sticking from the start, where a law
+    /// without adhesion runs a friction-free warm-up), which the central loss
+    /// does not measure: two stiff 9 mm spheres with w = 2.8e-3 J/m² at 0.032 m/s
+    /// and 42.6°, e_t 0.4028 without adhesion (its drop at accuracy 1e-8), 0.4008
+    /// with it.
+    pub(crate) fn oblique_combination(
+        &self,
+        central: &Combination,
+        speed: f64,
+    ) -> Result<Combination, SceneError> {
+        let candidates = self.models().candidates;
+        let used_centrally = |e: EffectKind| central.effects.contains(&e);
+        if !candidates.contains(EffectKind::Adhesion) || used_centrally(EffectKind::Adhesion) {
+            return Ok(central.clone());
         }
-        let mut used = self.models().candidates;
-        for d in &selection.dropped {
-            if d.effect != EffectKind::Adhesion {
-                used = used.without(d.effect);
+        // the central set (the other drops kept), adhesion back in
+        let mut used = candidates;
+        for effect in [
+            EffectKind::Plasticity,
+            EffectKind::Viscoelasticity,
+            EffectKind::Damping,
+        ] {
+            if !used_centrally(effect) {
+                used = used.without(effect);
             }
         }
         let evaluation = self
