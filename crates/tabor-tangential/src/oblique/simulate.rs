@@ -323,8 +323,8 @@ impl ObliqueImpact {
             .as_ref()
             .is_some_and(|f| f.tangential.model == crate::model::TangentialModel::LinearHistory);
         let decision = loop {
-            // a frozen element whose thaw time has come without its event (an
-            // event of another kind at the same time) is looked at again here
+            // a frozen element whose thaw time has come (its own event, or one of
+            // another kind at the same time) is looked at again here
             for element in 0..3 {
                 if modes.frozen[element] && modes.thaw[element] <= t {
                     slip_switches += setup.thaw(law, t, &mut y, &mut modes, element)?;
@@ -421,10 +421,11 @@ impl ObliqueImpact {
                     Event::RollingLimit | Event::RollingStick => 1,
                     _ => 2,
                 };
-                // a frozen element's event is its thaw time: it is looked at
-                // again, and chattering there freezes it for twice as long
+                // a frozen element's event is its thaw time, located to within
+                // ulps of it: due now (looked at again before the next segment;
+                // chattering there freezes it for twice as long)
                 if modes.frozen[element] {
-                    slip_switches += setup.thaw(law, t, &mut y, &mut modes, element)?;
+                    modes.thaw[element] = modes.thaw[element].min(t);
                     continue;
                 }
                 let near_end = law.branch_end(overlap, rate)? < 1e-6 * setup.length;
